@@ -1,0 +1,55 @@
+// Image: linear-light float RGBA, row-major, top row first. Everything inside flarekit works
+// on this; 8-bit files are sRGB-decoded on read and encoded on write (see ImageIO.h).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace flarekit {
+
+struct Rgba {
+    float r = 0.f, g = 0.f, b = 0.f, a = 0.f;
+};
+
+class Image {
+public:
+    Image() = default;
+    Image(int width, int height);  //!< zero-filled (transparent black)
+
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    std::size_t pixelCount() const { return std::size_t(m_width) * std::size_t(m_height); }
+    bool empty() const { return m_width == 0 || m_height == 0; }
+
+    float* row(int y) { return m_data.data() + std::size_t(y) * std::size_t(m_width) * 4; }
+    const float* row(int y) const { return m_data.data() + std::size_t(y) * std::size_t(m_width) * 4; }
+    Rgba& at(int x, int y) { return reinterpret_cast<Rgba*>(row(y))[x]; }
+    const Rgba& at(int x, int y) const { return reinterpret_cast<const Rgba*>(row(y))[x]; }
+    float* data() { return m_data.data(); }
+    const float* data() const { return m_data.data(); }
+
+    void fill(Rgba value);
+
+private:
+    int m_width = 0;
+    int m_height = 0;
+    std::vector<float> m_data;
+};
+
+static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba must alias four packed floats");
+
+//! Largest accepted width or height, in pixels (issue 3: "> 32768-pixel image" is rejected).
+inline constexpr int kMaxImageSide = 32768;
+//! Largest accepted pixel count: 2^28 pixels is 4 GiB of float RGBA, a sixth of a 24 GiB machine.
+inline constexpr std::size_t kMaxImagePixels = std::size_t(1) << 28;
+
+//! 8-bit interleaved image, used by the exact seed-002 blend path (no colour conversion).
+struct Image8 {
+    int width = 0;
+    int height = 0;
+    int channels = 0;  //!< 1..4
+    std::vector<std::uint8_t> pixels;
+};
+
+}  // namespace flarekit

@@ -1,0 +1,42 @@
+// Image files through OpenImageIO: EXR, PNG, JPEG, TIFF and every other format OIIO reads.
+#pragma once
+
+#include <string>
+
+#include "flarekit/Image.h"
+#include "flarekit/Result.h"
+
+namespace flarekit {
+
+struct LoadedImage {
+    Image image;                 //!< linear float RGBA
+    int fileChannels = 0;        //!< channels in the file (1 grey, 2 grey+alpha, 3, 4, ...)
+    bool hasAlpha = false;       //!< the file had an alpha channel
+    bool wasFloat = false;       //!< half/float file, kept linear; integer files are sRGB-decoded
+    std::size_t nonFinite = 0;   //!< NaN/Inf values replaced by 0
+    int droppedChannels = 0;     //!< channels past the 4th, not kept
+};
+
+//! Reads any OIIO-supported file. Sizes are checked before pixels are allocated.
+Result<LoadedImage> readImage(const std::string& path);
+
+enum class SampleFormat { Auto, U8, U16, Half, Float };
+
+struct WriteOptions {
+    SampleFormat format = SampleFormat::Auto;  //!< Auto: .exr half, .hdr/.pfm float, .tif 16-bit, else 8-bit
+    bool alpha = false;                        //!< write RGBA (ignored by formats without alpha)
+};
+
+//! Writes atomically: to a temporary file beside `path`, renamed over it on success.
+//! Integer formats are sRGB-encoded; float formats are written linear.
+Status writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
+
+//! Reads an 8-bit file exactly (no colour conversion); fails on other bit depths.
+Result<Image8> readImage8(const std::string& path);
+//! Writes an 8-bit image exactly (no colour conversion), atomically.
+Status writeImage8(const std::string& path, const Image8& image);
+
+//! Fails with InvalidInput when the directory `path` would be written into does not exist.
+Status checkOutputPath(const std::string& path);
+
+}  // namespace flarekit

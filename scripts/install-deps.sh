@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package flarekit needs to build, test and benchmark.
+# Idempotent: packages already present are skipped, apt-get runs only when needed.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  # image I/O (EXR, PNG, JPEG, TIFF) and its command-line tools
+  libopenimageio-dev openimageio-tools
+  # JSON presets and scenes, CLI parsing, threads
+  nlohmann-json3-dev libcli11-dev libtbb-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # contact-sheet labels are rendered by OIIO with this font
+  fonts-dejavu-core
+  # headless OpenGL (later issues; Mesa llvmpipe gives GL without a GPU)
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root or install sudo" >&2; exit 1; }
+  SUDO=sudo
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,238 @@
+// Image files through OpenImageIO. Sizes are validated from the header before any pixel
+// memory is allocated, so a corrupt or hostile header cannot make flarekit allocate gigabytes.
+#include "flarekit/ImageIO.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "core/AtomicFile.h"
+#include "flarekit/Color.h"
+
+namespace flarekit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return ioError(path + ": cannot read: no such file");
+    if (fs::is_directory(path, ec)) return ioError(path + ": cannot read: is a directory");
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+        std::string why = firstLine(OIIO::geterror());
+        return invalidInput(path + ": cannot read image: " + (why.empty() ? "unknown format" : why));
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide) {
+        return invalidInput(path + ": image size " + std::to_string(spec.width) + "x" +
+                            std::to_string(spec.height) + ": expected width and height in [1, " +
+                            std::to_string(kMaxImageSide) + "]");
+    }
+    if (std::size_t(spec.width) * std::size_t(spec.height) > kMaxImagePixels) {
+        return invalidInput(path + ": image size " + std::to_string(spec.width) + "x" +
+                            std::to_string(spec.height) + ": expected at most " +
+                            std::to_string(kMaxImagePixels) + " pixels");
+    }
+    if (spec.nchannels < 1) return invalidInput(path + ": image has no channels");
+    return in;
+}
+
+bool isFloatType(OIIO::TypeDesc type) {
+    return type.basetype == OIIO::TypeDesc::HALF || type.basetype == OIIO::TypeDesc::FLOAT ||
+           type.basetype == OIIO::TypeDesc::DOUBLE;
+}
+
+bool declaredLinear(const OIIO::ImageSpec& spec) {
+    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+    std::transform(cs.begin(), cs.end(), cs.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return cs == "linear" || cs == "lin_srgb" || cs == "scene_linear";
+}
+
+}  // namespace
+
+Result<LoadedImage> readImage(const std::string& path) {
+    auto opened = openInput(path);
+    if (!opened) return opened.error();
+    auto& in = opened.value();
+    const OIIO::ImageSpec spec = in->spec();
+    const int keep = std::min(spec.nchannels, 4);
+    std::vector<float> raw(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(keep));
+    if (!in->read_image(0, 0, 0, keep, OIIO::TypeDesc::FLOAT, raw.data())) {
+        return invalidInput(path + ": cannot decode image: " + firstLine(in->geterror()));
+    }
+    in->close();
+
+    LoadedImage out;
+    out.fileChannels = spec.nchannels;
+    out.droppedChannels = spec.nchannels - keep;
+    out.wasFloat = isFloatType(spec.format);
+    out.hasAlpha = keep == 2 || keep == 4;
+    const bool decodeSrgb = !out.wasFloat && !declaredLinear(spec);
+    out.image = Image(spec.width, spec.height);
+
+    float* dst = out.image.data();
+    const std::size_t n = out.image.pixelCount();
+    std::size_t nonFinite = 0;
+    auto clean = [&](float v) {
+        if (std::isfinite(v)) return v;
+        ++nonFinite;
+        return 0.f;
+    };
+    auto colour = [&](float v) {
+        v = clean(v);
+        return decodeSrgb ? srgbToLinear(v) : v;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const float* s = raw.data() + i * std::size_t(keep);
+        float* d = dst + i * 4;
+        if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
+            d[0] = d[1] = d[2] = colour(s[0]);
+        } else {
+            d[0] = colour(s[0]);
+            d[1] = colour(s[1]);
+            d[2] = colour(s[2]);
+        }
+        d[3] = out.hasAlpha ? clean(s[keep - 1]) : 1.f;
+    }
+    out.nonFinite = nonFinite;
+    return out;
+}
+
+Status checkOutputPath(const std::string& path) {
+    if (path.empty()) return invalidInput("output: expected a file name, got an empty path");
+    fs::path p(path);
+    fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) {
+        return invalidInput(path + ": output directory '" + dir.string() + "' does not exist");
+    }
+    if (fs::is_directory(p, ec)) return invalidInput(path + ": output path is a directory");
+    if (!OIIO::is_imageio_format_name(lowerExtension(path).erase(0, 1))) {
+        // Not conclusive for every extension; ImageOutput::create is the real test.
+        auto probe = OIIO::ImageOutput::create(path);
+        if (!probe) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
+    }
+    return Ok{};
+}
+
+namespace {
+
+SampleFormat resolveFormat(const std::string& path, SampleFormat requested) {
+    if (requested != SampleFormat::Auto) return requested;
+    const std::string ext = lowerExtension(path);
+    if (ext == ".exr") return SampleFormat::Half;
+    if (ext == ".hdr" || ext == ".pfm") return SampleFormat::Float;
+    if (ext == ".tif" || ext == ".tiff") return SampleFormat::U16;
+    return SampleFormat::U8;
+}
+
+Status writeWithOiio(const std::string& path, const std::string& tempPath, OIIO::ImageSpec spec,
+                     OIIO::TypeDesc dataType, const void* data) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
+    if (!out->open(tempPath, spec)) return ioError(path + ": cannot write: " + firstLine(out->geterror()));
+    if (!out->write_image(dataType, data)) return ioError(path + ": cannot write: " + firstLine(out->geterror()));
+    if (!out->close()) return ioError(path + ": cannot write: " + firstLine(out->geterror()));
+    return Ok{};
+}
+
+}  // namespace
+
+Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
+    if (Status s = checkOutputPath(path); !s) return s;
+    auto probe = OIIO::ImageOutput::create(path);
+    if (!probe) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
+    const bool alpha = options.alpha && probe->supports("alpha");
+    const int channels = alpha ? 4 : 3;
+    const SampleFormat format = resolveFormat(path, options.format);
+    const bool isFloat = format == SampleFormat::Half || format == SampleFormat::Float;
+
+    OIIO::TypeDesc fileType = format == SampleFormat::U8    ? OIIO::TypeDesc::UINT8
+                              : format == SampleFormat::U16 ? OIIO::TypeDesc::UINT16
+                              : format == SampleFormat::Half ? OIIO::TypeDesc::HALF
+                                                            : OIIO::TypeDesc::FLOAT;
+    OIIO::ImageSpec spec(image.width(), image.height(), channels, fileType);
+    if (alpha) spec.alpha_channel = 3;
+    spec.attribute("oiio:ColorSpace", isFloat ? "Linear" : "sRGB");
+    spec.attribute("Software", "flarekit");
+
+    // Convert to the file's encoding here so the code values are flarekit's, not a plugin's.
+    const std::size_t count = image.pixelCount() * std::size_t(channels);
+    const float* src = image.data();
+    auto sample = [&](std::size_t i) {
+        const std::size_t pixel = i / std::size_t(channels), c = i % std::size_t(channels);
+        const float v = src[pixel * 4 + c];
+        return std::isfinite(v) ? v : 0.f;
+    };
+    auto encode = [&](std::size_t i) {  // sRGB for colour, linear alpha, in [0, 1]
+        const float v = std::clamp(sample(i), 0.f, 1.f);
+        return i % std::size_t(channels) < 3 ? linearToSrgb(v) : v;
+    };
+    if (format == SampleFormat::U8) {
+        std::vector<std::uint8_t> bytes(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            bytes[i] = i % std::size_t(channels) < 3 ? linearToSrgb8(sample(i))
+                                                     : std::uint8_t(std::lround(encode(i) * 255.f));
+        }
+        return writeAtomically(path, [&](const std::string& temp) {
+            return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT8, bytes.data());
+        });
+    }
+    if (format == SampleFormat::U16) {
+        std::vector<std::uint16_t> words(count);
+        for (std::size_t i = 0; i < count; ++i) words[i] = std::uint16_t(std::lround(encode(i) * 65535.f));
+        return writeAtomically(path, [&](const std::string& temp) {
+            return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT16, words.data());
+        });
+    }
+    std::vector<float> linear(count);
+    for (std::size_t i = 0; i < count; ++i) linear[i] = sample(i);
+    return writeAtomically(path, [&](const std::string& temp) {
+        return writeWithOiio(path, temp, spec, OIIO::TypeDesc::FLOAT, linear.data());
+    });
+}
+
+Result<Image8> readImage8(const std::string& path) {
+    auto opened = openInput(path);
+    if (!opened) return opened.error();
+    auto& in = opened.value();
+    const OIIO::ImageSpec spec = in->spec();
+    if (spec.format != OIIO::TypeDesc::UINT8) {
+        return invalidInput(path + ": expected an 8-bit image, got " + std::string(spec.format.c_str()) + " samples");
+    }
+    if (spec.nchannels > 4) {
+        return invalidInput(path + ": expected 1 to 4 channels, got " + std::to_string(spec.nchannels));
+    }
+    Image8 out;
+    out.width = spec.width;
+    out.height = spec.height;
+    out.channels = spec.nchannels;
+    out.pixels.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, out.pixels.data())) {
+        return invalidInput(path + ": cannot decode image: " + firstLine(in->geterror()));
+    }
+    return out;
+}
+
+Status writeImage8(const std::string& path, const Image8& image) {
+    if (Status s = checkOutputPath(path); !s) return s;
+    OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
+    if (image.channels == 4) spec.alpha_channel = 3;
+    spec.attribute("Software", "flarekit");
+    return writeAtomically(path, [&](const std::string& temp) {
+        return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT8, image.pixels.data());
+    });
+}
+
+}  // namespace flarekit

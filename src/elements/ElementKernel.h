@@ -1,0 +1,47 @@
+// An element prepared for shading: its parameters resolved to pixels, plus derived tables.
+// shadeElement() is the per-pixel function every renderer calls (contact sheet, flare, tests).
+#pragma once
+
+#include <vector>
+
+#include "flarekit/Elements.h"
+
+namespace flarekit {
+
+struct Spike {
+    float angle;   //!< radians in [0, 2*pi), measured in the element's local frame
+    float length;  //!< fraction of radius
+    float weight;  //!< brightness multiplier
+};
+
+struct ElementKernel {
+    ElementParams params;
+    Rgb outer{}, inner{};      //!< colour x intensity at the rim and at the centre
+    float radiusPx = 1.f;      //!< R
+    float pixel = 1.f;         //!< one pixel in local units (fractions of R), for antialiasing
+    float cosRot = 1.f, sinRot = 0.f;
+    std::vector<Spike> spikes; //!< streaks/rays, sorted by angle
+    float maxHalfWidth = 0.f;  //!< widest spike half-width plus half a pixel
+    float halfExtentX = 0.f, halfExtentY = 0.f;  //!< support half-size in pixels (bounding box)
+};
+
+ElementKernel prepareElement(const ElementParams& params, float radiusPx);
+
+//! Premultiplied RGBA at pixel offset (dx, dy) from the element centre (pixel centre minus
+//! element centre, in pixels; +y down).
+Rgba shadeElement(const ElementKernel& kernel, float dx, float dy);
+
+// Per-type shaders over local coordinates (x, y) in fractions of the radius, d = |(x, y)|.
+Rgba shadeGlow(const ElementKernel& k, float x, float y);
+Rgba shadeRing(const ElementKernel& k, float x, float y);
+Rgba shadeSpikes(const ElementKernel& k, float x, float y);
+Rgba shadeDisc(const ElementKernel& k, float x, float y);
+Rgba shadePolygon(const ElementKernel& k, float x, float y);
+std::vector<Spike> makeSpikes(const ElementParams& params);
+//! The glow falloff g(d) of Glow.cpp: 1 at the centre, 0 at and past the rim.
+float glowProfile(float d);
+
+//! Colour between k.inner (u = 0) and k.outer (u = 1), scaled by `amount`, alpha = amount.
+Rgba gradient(const ElementKernel& k, float u, float amount);
+
+}  // namespace flarekit

@@ -1,0 +1,73 @@
+// The contact sheet of `flarekit elements`: every element of a preset in its own cell, with a
+// label drawn by OpenImageIO's text renderer.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "flarekit/Flare.h"
+
+namespace flarekit {
+
+namespace {
+//! Share of a cell's half-size the element's radius takes, leaving room for the label.
+constexpr float kCellFill = 0.8f;
+constexpr int kMaxColumns = 4;
+//! Font shipped by Debian's fonts-dejavu-core (installed by scripts/install-deps.sh).
+constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+std::string label(std::size_t index, const ElementParams& e) {
+    std::ostringstream os;
+    os << index << ": " << elementTypeName(e.type) << "  t=" << e.t << "  size=" << e.size;
+    return os.str();
+}
+}  // namespace
+
+Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
+    if (cellSize < 32 || cellSize > 4096) {
+        return invalidInput("cell size: expected an integer in [32, 4096], got " + std::to_string(cellSize));
+    }
+    const int n = int(preset.elements.size());
+    const int columns = std::min(n, kMaxColumns), rows = (n + columns - 1) / columns;
+    ContactSheet sheet;
+    sheet.image = Image(columns * cellSize, rows * cellSize);
+    sheet.image.fill({0.f, 0.f, 0.f, 1.f});
+    sheet.labelled = true;
+
+    OIIO::ImageSpec spec(sheet.image.width(), sheet.image.height(), 4, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf canvas(spec, sheet.image.data());  // wraps our pixels, no copy
+    const int fontSize = std::max(10, cellSize / 16);
+    const float labelColour[] = {0.8f, 0.8f, 0.8f, 1.f};
+
+    for (int i = 0; i < n; ++i) {
+        ElementParams e = preset.elements[std::size_t(i)];
+        e.intensity *= preset.intensity;
+        const float radius = kCellFill * 0.5f * float(cellSize) / std::max(1.f, e.aspect);
+        const Image sprite = renderElement(e, radius);
+        const int cx = (i % columns) * cellSize + cellSize / 2, cy = (i / columns) * cellSize + cellSize / 2;
+        for (int y = 0; y < sprite.height(); ++y) {
+            const int ty = cy - sprite.height() / 2 + y;
+            if (ty < (i / columns) * cellSize || ty >= (i / columns + 1) * cellSize) continue;
+            for (int x = 0; x < sprite.width(); ++x) {
+                const int tx = cx - sprite.width() / 2 + x;
+                if (tx < (i % columns) * cellSize || tx >= (i % columns + 1) * cellSize) continue;
+                Rgba& d = sheet.image.at(tx, ty);
+                const Rgba& s = sprite.at(x, y);
+                d.r += s.r;
+                d.g += s.g;
+                d.b += s.b;
+            }
+        }
+        if (sheet.labelled) {
+            sheet.labelled = OIIO::ImageBufAlgo::render_text(
+                canvas, (i % columns) * cellSize + fontSize / 2, (i / columns) * cellSize + fontSize + fontSize / 2,
+                label(std::size_t(i), e), fontSize, kFontFile, labelColour);
+            OIIO::geterror();  // clear a font error; `labelled` reports it
+        }
+    }
+    return sheet;
+}
+
+}  // namespace flarekit

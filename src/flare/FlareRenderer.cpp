@@ -1,0 +1,76 @@
+// Draws a preset's elements into an image. The image is split into bands of rows run in
+// parallel; each band shades only the part of each element's bounding box inside it, so the
+// cost is the pixels the elements cover. Elements composite in preset order within a pixel,
+// so the result does not depend on the thread count.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/Parallel.h"
+#include "elements/ElementKernel.h"
+#include "flarekit/Flare.h"
+
+namespace flarekit {
+
+namespace {
+
+//! Elements smaller than this radius (pixels) are below one pixel's footprint and skipped.
+constexpr float kMinRadiusPx = 0.5f;
+//! Rows per parallel task: enough work per task, small enough to balance two cores.
+constexpr int kBandRows = 16;
+
+struct PlacedElement {
+    ElementKernel kernel;
+    Point centre;
+    int x0, y0, x1, y1;  //!< clipped bounding box, half-open
+};
+
+std::vector<PlacedElement> placeElements(const Image& image, const Preset& preset, Point light, float intensity) {
+    std::vector<PlacedElement> placed;
+    const float height = float(image.height());
+    for (const ElementParams& e : preset.elements) {
+        const float radius = e.size * height;
+        const float k = e.intensity * preset.intensity * intensity;
+        if (radius < kMinRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
+        ElementParams scaled = e;
+        scaled.intensity = k;
+        PlacedElement p{prepareElement(scaled, radius), flareVectorPoint(light, image.width(), image.height(), e.t), 0, 0, 0, 0};
+        // Clip in double: a light far outside the frame must not overflow int.
+        auto clip = [](double v, int hi) { return int(std::clamp(v, 0.0, double(hi))); };
+        p.x0 = clip(std::floor(double(p.centre.x) - p.kernel.halfExtentX), image.width());
+        p.x1 = clip(std::ceil(double(p.centre.x) + p.kernel.halfExtentX), image.width());
+        p.y0 = clip(std::floor(double(p.centre.y) - p.kernel.halfExtentY), image.height());
+        p.y1 = clip(std::ceil(double(p.centre.y) + p.kernel.halfExtentY), image.height());
+        if (p.x0 < p.x1 && p.y0 < p.y1) placed.push_back(std::move(p));
+    }
+    return placed;
+}
+
+}  // namespace
+
+FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity) {
+    FlareStats stats;
+    if (image.empty() || !std::isfinite(light.x) || !std::isfinite(light.y)) return stats;
+    const std::vector<PlacedElement> placed = placeElements(image, preset, light, intensity);
+    const int bands = (image.height() + kBandRows - 1) / kBandRows;
+    parallelFor(0, bands, 1, [&](int b0, int b1) {
+        std::vector<Rgba> span(std::size_t(image.width()));
+        const int yBegin = b0 * kBandRows, yEnd = std::min(image.height(), b1 * kBandRows);
+        for (const PlacedElement& p : placed) {
+            const int y0 = std::max(yBegin, p.y0), y1 = std::min(yEnd, p.y1);
+            for (int y = y0; y < y1; ++y) {
+                const float dy = float(y) + 0.5f - p.centre.y;
+                for (int x = p.x0; x < p.x1; ++x) {
+                    span[std::size_t(x - p.x0)] = shadeElement(p.kernel, float(x) + 0.5f - p.centre.x, dy);
+                }
+                compositeSpan(p.kernel.params.blend, reinterpret_cast<const float*>(span.data()), image.row(y) + std::size_t(p.x0) * 4,
+                              std::size_t(p.x1 - p.x0));
+            }
+        }
+    });
+    stats.elementsDrawn = placed.size();
+    for (const PlacedElement& p : placed) stats.pixelsShaded += std::size_t(p.x1 - p.x0) * std::size_t(p.y1 - p.y0);
+    return stats;
+}
+
+}  // namespace flarekit

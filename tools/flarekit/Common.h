@@ -1,0 +1,32 @@
+// What every subcommand shares: turning library errors into one stderr line and an exit code
+// (0 success, 2 bad input, 1 internal failure), warnings, and small argument parsers.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+#include "flarekit/Flare.h"
+#include "flarekit/Result.h"
+
+namespace flarekit::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInternal = 1;
+inline constexpr int kExitBadInput = 2;
+
+//! Prints "flarekit: <message>" and returns the exit code for the error.
+int report(const Error& error);
+void warn(const std::string& message);
+
+//! "X,Y" in pixels (finite numbers); nullopt when malformed.
+std::optional<Point> parsePoint(const std::string& text);
+
+//! Each subcommand adds itself to the app; its callback stores the exit code.
+void addBlendCommand(CLI::App& app, int& exitCode);
+void addApplyCommand(CLI::App& app, int& exitCode);
+void addElementsCommand(CLI::App& app, int& exitCode);
+void addPresetsCommand(CLI::App& app, int& exitCode);
+
+}  // namespace flarekit::cli

@@ -1,0 +1,43 @@
+// flarekit presets: list the shipped presets, validate a preset file, or print the parameter
+// reference generated from the table that validates presets.
+#include <cstdio>
+
+#include "Common.h"
+
+namespace flarekit::cli {
+
+namespace {
+struct PresetsArgs {
+    bool params = false;
+    std::string check;
+};
+
+int runPresets(const PresetsArgs& a) {
+    if (a.params) {
+        std::fputs(presetParameterReference().c_str(), stdout);
+        return kExitOk;
+    }
+    if (!a.check.empty()) {
+        auto preset = loadPreset(a.check);
+        if (!preset) return report(preset.error());
+        std::printf("%s: ok, %zu elements\n", a.check.c_str(), preset->elements.size());
+        return kExitOk;
+    }
+    for (const std::string& name : shippedPresetNames()) {
+        auto preset = loadPreset(name);
+        if (!preset) return report(preset.error());
+        std::printf("%-18s %2zu elements  %s\n", name.c_str(), preset->elements.size(), preset->description.c_str());
+    }
+    return kExitOk;
+}
+}  // namespace
+
+void addPresetsCommand(CLI::App& app, int& exitCode) {
+    auto args = std::make_shared<PresetsArgs>();
+    CLI::App* cmd = app.add_subcommand("presets", "List shipped presets, check a preset file, or print the parameter reference");
+    cmd->add_flag("--params", args->params, "print every element parameter (Markdown table)");
+    cmd->add_option("--check", args->check, "validate a preset (name or file) and report");
+    cmd->callback([args, &exitCode] { exitCode = runPresets(*args); });
+}
+
+}  // namespace flarekit::cli
