@@ -28,7 +28,11 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) return ioError(path + ": cannot read: no such file");
     if (fs::is_directory(path, ec)) return ioError(path + ": cannot read: is a directory");
-    auto in = OIIO::ImageInput::open(path);
+    // Straight (unassociated) alpha in memory: without this hint OIIO's PNG reader multiplies
+    // colour by alpha, which would change the bytes `flarekit blend` must use exactly.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         std::string why = firstLine(OIIO::geterror());
         return invalidInput(path + ": cannot read image: " + (why.empty() ? "unknown format" : why));
@@ -163,7 +167,10 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
                               : format == SampleFormat::Half ? OIIO::TypeDesc::HALF
                                                             : OIIO::TypeDesc::FLOAT;
     OIIO::ImageSpec spec(image.width(), image.height(), channels, fileType);
-    if (alpha) spec.alpha_channel = 3;
+    if (alpha) {
+        spec.alpha_channel = 3;
+        spec.attribute("oiio:UnassociatedAlpha", 1);  // written as held: no division by alpha
+    }
     spec.attribute("oiio:ColorSpace", isFloat ? "Linear" : "sRGB");
     spec.attribute("Software", "flarekit");
 
@@ -228,7 +235,10 @@ Result<Image8> readImage8(const std::string& path) {
 Status writeImage8(const std::string& path, const Image8& image) {
     if (Status s = checkOutputPath(path); !s) return s;
     OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
-    if (image.channels == 4) spec.alpha_channel = 3;
+    if (image.channels == 2 || image.channels == 4) {
+        spec.alpha_channel = image.channels - 1;
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
     spec.attribute("Software", "flarekit");
     return writeAtomically(path, [&](const std::string& temp) {
         return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT8, image.pixels.data());

@@ -30,7 +30,7 @@ int runApply(const ApplyArgs& a) {
     if (!autoLight && !fixed) return report(invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'"));
     auto preset = loadPreset(a.preset);
     if (!preset) return report(preset.error());
-    auto loaded = readImage(a.in);
+    auto loaded = readQuietly(readImage, a.in);
     if (!loaded) return report(loaded.error());
     if (loaded->nonFinite > 0) warn(a.in + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
     if (loaded->droppedChannels > 0) {

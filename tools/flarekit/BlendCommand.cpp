@@ -13,9 +13,9 @@ struct BlendArgs {
 int runBlend(const BlendArgs& a) {
     if (Status s = checkOutputPath(a.out); !s) return report(s.error());
     const Blend8Mode mode = *parseBlend8Mode(a.mode);  // CLI11 checked membership
-    auto src = readImage8(a.src);
+    auto src = readQuietly(readImage8, a.src);
     if (!src) return report(src.error());
-    auto dst = readImage8(a.dst);
+    auto dst = readQuietly(readImage8, a.dst);
     if (!dst) return report(dst.error());
     auto blended = blendImages8(mode, *src, *dst);
     if (!blended) return report({blended.error().code, a.src + " onto " + a.dst + ": " + blended.error().message});

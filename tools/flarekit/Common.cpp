@@ -2,7 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <unistd.h>
+
 #include <cstdio>
+#include <cstring>
 
 namespace flarekit::cli {
 
@@ -12,6 +15,32 @@ int report(const Error& error) {
 }
 
 void warn(const std::string& message) { std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str()); }
+
+LibraryNoiseFilter::LibraryNoiseFilter() {
+    std::fflush(stderr);
+    m_capture = std::tmpfile();
+    if (!m_capture) return;
+    m_saved = ::dup(STDERR_FILENO);
+    if (m_saved < 0 || ::dup2(::fileno(m_capture), STDERR_FILENO) < 0) {
+        if (m_saved >= 0) ::close(m_saved);
+        m_saved = -1;
+        std::fclose(m_capture);
+        m_capture = nullptr;
+    }
+}
+
+LibraryNoiseFilter::~LibraryNoiseFilter() {
+    if (!m_capture) return;
+    std::fflush(stderr);
+    ::dup2(m_saved, STDERR_FILENO);
+    ::close(m_saved);
+    std::rewind(m_capture);
+    char line[4096];
+    while (std::fgets(line, sizeof line, m_capture)) {
+        if (std::strncmp(line, "libpng ", 7) != 0) std::fputs(line, stderr);
+    }
+    std::fclose(m_capture);
+}
 
 std::optional<Point> parsePoint(const std::string& text) {
     const auto comma = text.find(',');

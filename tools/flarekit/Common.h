@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,27 @@ inline constexpr int kExitBadInput = 2;
 //! Prints "flarekit: <message>" and returns the exit code for the error.
 int report(const Error& error);
 void warn(const std::string& message);
+
+//! Holds back what libraries print on stderr while it lives; on destruction replays it except
+//! libpng's own "libpng error: ..." lines, which repeat what flarekit reports in its one line.
+class LibraryNoiseFilter {
+public:
+    LibraryNoiseFilter();
+    ~LibraryNoiseFilter();
+    LibraryNoiseFilter(const LibraryNoiseFilter&) = delete;
+    LibraryNoiseFilter& operator=(const LibraryNoiseFilter&) = delete;
+
+private:
+    std::FILE* m_capture = nullptr;
+    int m_saved = -1;
+};
+
+//! readImage / readImage8 with library noise filtered.
+template <typename Reader>
+auto readQuietly(Reader reader, const std::string& path) {
+    LibraryNoiseFilter filter;
+    return reader(path);
+}
 
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);

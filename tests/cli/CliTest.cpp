@@ -1,0 +1,178 @@
+// The CLI used as users use it: real files in, files out, exit codes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "Cli.h"
+#include "RawFiles.h"
+#include "flarekit/Blend.h"
+#include "flarekit/Color.h"
+#include "flarekit/ImageIO.h"
+
+using namespace flarekit;
+using namespace flarekit::test;
+
+namespace {
+
+Image8 randomImage(int w, int h, int channels, unsigned seed) {
+    std::mt19937 rng(seed);
+    Image8 img{w, h, channels, std::vector<std::uint8_t>(std::size_t(w * h * channels))};
+    for (auto& b : img.pixels) b = std::uint8_t(rng() & 0xFF);
+    return img;
+}
+
+double meanAbsDiff(const Image& a, const Image& b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixelCount() * 4; ++i) sum += std::abs(a.data()[i] - b.data()[i]);
+    return sum / double(a.pixelCount());
+}
+
+}  // namespace
+
+TEST(CliBlend, EveryModeIsBitExactOnFiles) {
+    TempDir dir;
+    const Image8 src = randomImage(97, 31, 4, 1), dst = randomImage(97, 31, 3, 2);
+    ASSERT_TRUE(writeImage8(dir.file("s.png"), src).ok());
+    ASSERT_TRUE(writeImage8(dir.file("d.png"), dst).ok());
+    for (const char* mode : {"alpha", "alpha-shift", "premultiplied", "add"}) {
+        const CliResult r = runCli({"blend", "--mode", mode, "--src", dir.file("s.png"), "--dst", dir.file("d.png"), "-o",
+                                    dir.file(std::string(mode) + ".png")});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        auto out = readImage8(dir.file(std::string(mode) + ".png"));
+        ASSERT_TRUE(out.ok());
+        ASSERT_EQ(out->channels, 3);
+        for (std::size_t i = 0; i < std::size_t(97 * 31); ++i) {
+            const int a = src.pixels[i * 4 + 3];
+            for (std::size_t c = 0; c < 3; ++c) {
+                const int s = src.pixels[i * 4 + c], d = dst.pixels[i * 3 + c];
+                int want = 0;
+                if (std::string(mode) == "alpha") want = (s * a + d * (255 - a)) / 255;
+                if (std::string(mode) == "alpha-shift") want = (s * a + d * (255 - a)) >> 8;
+                if (std::string(mode) == "premultiplied") want = s * a / 255 + ((d * (255 - a)) >> 8);
+                if (std::string(mode) == "add") want = std::min(s + d, 255);
+                ASSERT_EQ(out->pixels[i * 3 + c], want) << mode << " pixel " << i;
+            }
+        }
+    }
+}
+
+TEST(CliBlend, SizeMismatchAndBadModeExitTwoWithoutOutput) {
+    TempDir dir;
+    ASSERT_TRUE(writeImage8(dir.file("s.png"), randomImage(8, 8, 4, 3)).ok());
+    ASSERT_TRUE(writeImage8(dir.file("d.png"), randomImage(9, 8, 3, 4)).ok());
+    CliResult r = runCli({"blend", "--mode", "alpha", "--src", dir.file("s.png"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("sizes differ"), std::string::npos) << r.err;
+    r = runCli({"blend", "--mode", "multiply", "--src", dir.file("s.png"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    ASSERT_TRUE(writeImage8(dir.file("rgb.png"), randomImage(9, 8, 3, 5)).ok());
+    r = runCli({"blend", "--mode", "alpha", "--src", dir.file("rgb.png"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("expected RGBA"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
+    EXPECT_EQ(dir.entries(), 3u);
+}
+
+TEST(CliApply, AutoLightOnTheSampleAddsAFlare) {
+    TempDir dir;
+    const CliResult r = runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light", "auto", "-v"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("light at 930.0,250.0"), std::string::npos) << r.out;
+    auto in = readImage(kSunset), out = readImage(dir.file("o.png"));
+    ASSERT_TRUE(in.ok() && out.ok());
+    EXPECT_GT(meanAbsDiff(in->image, out->image), 0.01);
+    // The secondary at t = -1 (radius 65 px) lands at the mirrored point: brighter there.
+    const int mx = 1280 - 930, my = 720 - 250;
+    double added = 0;
+    for (int y = my - 60; y < my + 60; ++y) {
+        for (int x = mx - 60; x < mx + 60; ++x) added += out->image.at(x, y).r - in->image.at(x, y).r;
+    }
+    EXPECT_GT(added / (120.0 * 120.0), 0.02);
+    EXPECT_EQ(dir.entries(), 1u);
+}
+
+TEST(CliApply, EveryShippedPresetAndFormatWorks) {
+    TempDir dir;
+    for (const char* preset : {"tanczos-classic", "sun-wide", "anamorphic", "hexagon-ghosts", "subtle", "starburst"}) {
+        const CliResult r = runCli({"apply", kSunset, "-o", dir.file(std::string(preset) + ".jpg"), "--preset", preset});
+        EXPECT_EQ(r.exitCode, 0) << preset << ": " << r.err;
+    }
+    const CliResult hdr = runCli({"apply", kSunsetHdr, "-o", dir.file("hdr.exr"), "--light", "930,250"});
+    ASSERT_EQ(hdr.exitCode, 0) << hdr.err;
+    auto out = readImage(dir.file("hdr.exr"));
+    ASSERT_TRUE(out.ok());
+    EXPECT_TRUE(out->wasFloat);
+    EXPECT_GT(out->image.at(930, 250).r, 50.f);  // HDR kept linear, flare added on top
+    const CliResult tif = runCli({"apply", kSunset, "-o", dir.file("o.tif"), "--depth", "16"});
+    EXPECT_EQ(tif.exitCode, 0) << tif.err;
+}
+
+TEST(CliApply, ExplicitLightOutsideTheFrame) {
+    TempDir dir;
+    const CliResult r = runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light=-300,-200", "--intensity", "2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto in = readImage(kSunset), out = readImage(dir.file("o.png"));
+    EXPECT_GT(meanAbsDiff(in->image, out->image), 0.001);
+}
+
+TEST(CliApply, NoLightWritesTheImageUnchangedWithAWarning) {
+    TempDir dir;
+    Image grey(64, 48);
+    grey.fill({0.1f, 0.1f, 0.1f, 1.f});
+    ASSERT_TRUE(writeImage(dir.file("grey.png"), grey).ok());
+    const CliResult r = runCli({"apply", dir.file("grey.png"), "-o", dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.err.find(dir.file("grey.png").append(": no light found")), std::string::npos) << r.err;
+    auto a = readImage8(dir.file("grey.png")), b = readImage8(dir.file("o.png"));
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->pixels, b->pixels);
+}
+
+TEST(CliApply, KeepsAlpha) {
+    TempDir dir;
+    Image img(32, 32);
+    img.fill({1.f, 1.f, 1.f, 0.5f});
+    ASSERT_TRUE(writeImage(dir.file("a.png"), img, {SampleFormat::U8, true}).ok());
+    ASSERT_EQ(runCli({"apply", dir.file("a.png"), "-o", dir.file("o.png")}).exitCode, 0);
+    auto out = readImage8(dir.file("o.png"));
+    ASSERT_TRUE(out.ok());
+    EXPECT_EQ(out->channels, 4);
+    EXPECT_EQ(out->pixels[3], 128);
+}
+
+TEST(CliElements, WritesALabelledSheet) {
+    TempDir dir;
+    const CliResult r = runCli({"elements", "--preset", "hexagon-ghosts", "-o", dir.file("sheet.png"), "--cell", "128"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");  // labels drawn: no font warning
+    auto sheet = readImage(dir.file("sheet.png"));
+    ASSERT_TRUE(sheet.ok());
+    EXPECT_EQ(sheet->image.width(), 4 * 128);
+    EXPECT_EQ(sheet->image.height(), 3 * 128);  // 9 elements in rows of 4
+}
+
+TEST(CliPresets, ListsChecksAndDocuments) {
+    CliResult r = runCli({"presets"});
+    ASSERT_EQ(r.exitCode, 0);
+    for (const char* name : {"tanczos-classic", "sun-wide", "anamorphic", "hexagon-ghosts", "subtle"}) {
+        EXPECT_NE(r.out.find(name), std::string::npos) << name;
+    }
+    r = runCli({"presets", "--params"});
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("| `min_length` | rays |"), std::string::npos) << r.out;
+    r = runCli({"presets", "--check", "subtle"});
+    EXPECT_EQ(r.exitCode, 0);
+}
+
+TEST(CliHelp, EverySubcommandHasHelp) {
+    for (const char* sub : {"blend", "apply", "elements", "presets"}) {
+        const CliResult r = runCli({sub, "--help"});
+        EXPECT_EQ(r.exitCode, 0) << sub;
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
+    }
+    EXPECT_EQ(runCli({"frobnicate"}).exitCode, 2);
+    EXPECT_EQ(runCli({}).exitCode, 2);
+}

@@ -1,0 +1,138 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "RawFiles.h"
+#include "TempDir.h"
+#include "flarekit/Color.h"
+#include "flarekit/ImageIO.h"
+
+using namespace flarekit;
+using flarekit::test::TempDir;
+
+TEST(Color, EightBitCodesSurviveDecodeAndEncode) {
+    for (int code = 0; code < 256; ++code) EXPECT_EQ(linearToSrgb8(srgb8ToLinear(std::uint8_t(code))), code);
+    EXPECT_NEAR(srgbToLinear(0.5f), 0.214041f, 1e-5f);  // IEC 61966-2-1
+    EXPECT_EQ(linearToSrgb8(std::numeric_limits<float>::quiet_NaN()), 0);
+    EXPECT_EQ(linearToSrgb8(7.f), 255);
+}
+
+TEST(ImageIO, PngRoundTripIsExactInCodeValues) {
+    TempDir dir;
+    Image img(37, 11);
+    for (int y = 0; y < 11; ++y) {
+        for (int x = 0; x < 37; ++x) {
+            img.at(x, y) = {srgb8ToLinear(std::uint8_t(x * 7)), srgb8ToLinear(std::uint8_t(y * 23)),
+                            srgb8ToLinear(std::uint8_t(x + y)), 1.f};
+        }
+    }
+    ASSERT_TRUE(writeImage(dir.file("a.png"), img).ok());
+    auto back = readImage(dir.file("a.png"));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_FALSE(back->wasFloat);
+    EXPECT_FALSE(back->hasAlpha);
+    for (int y = 0; y < 11; ++y) {
+        for (int x = 0; x < 37; ++x) {
+            ASSERT_EQ(linearToSrgb8(back->image.at(x, y).r), x * 7);
+            ASSERT_EQ(linearToSrgb8(back->image.at(x, y).g), y * 23);
+        }
+    }
+    auto raw = readImage8(dir.file("a.png"));
+    ASSERT_TRUE(raw.ok());
+    EXPECT_EQ(raw->channels, 3);
+    EXPECT_EQ(raw->pixels[3 * 5], 35);  // x = 5 red code, no colour conversion
+}
+
+TEST(ImageIO, ExrKeepsLinearHdrValues) {
+    TempDir dir;
+    Image img(4, 3);
+    img.fill({50.f, 0.001f, 2.5f, 0.5f});
+    ASSERT_TRUE(writeImage(dir.file("a.exr"), img, {SampleFormat::Float, true}).ok());
+    auto back = readImage(dir.file("a.exr"));
+    ASSERT_TRUE(back.ok());
+    EXPECT_TRUE(back->wasFloat);
+    EXPECT_TRUE(back->hasAlpha);
+    EXPECT_FLOAT_EQ(back->image.at(2, 1).r, 50.f);
+    EXPECT_FLOAT_EQ(back->image.at(2, 1).g, 0.001f);
+    EXPECT_FLOAT_EQ(back->image.at(2, 1).a, 0.5f);
+}
+
+TEST(ImageIO, NonFiniteValuesAreReplacedAndCounted) {
+    TempDir dir;
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    ASSERT_TRUE(test::writeRawFloat(dir.file("bad.exr"), 2, 1, 3, {nan, 1.f, 2.f, inf, -inf, 3.f}));
+    auto r = readImage(dir.file("bad.exr"));
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_EQ(r->nonFinite, 3u);
+    EXPECT_EQ(r->image.at(0, 0).r, 0.f);
+    EXPECT_EQ(r->image.at(0, 0).g, 1.f);
+    EXPECT_EQ(r->image.at(1, 0).r, 0.f);
+    EXPECT_EQ(r->image.at(1, 0).g, 0.f);
+    EXPECT_EQ(r->image.at(1, 0).b, 3.f);
+}
+
+TEST(ImageIO, ChannelsPastRgbaAreCountedNotRead) {
+    TempDir dir;
+    ASSERT_TRUE(test::writeRawFloat(dir.file("five.exr"), 1, 1, 5, {0.1f, 0.2f, 0.3f, 0.4f, 0.5f}));
+    auto r = readImage(dir.file("five.exr"));
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->fileChannels, 5);
+    EXPECT_EQ(r->droppedChannels, 1);
+}
+
+TEST(ImageIO, OversizedImagesAreRejectedBeforeAllocating) {
+    TempDir dir;
+    ASSERT_TRUE(test::writeRawBytes(dir.file("wide.png"), kMaxImageSide + 1, 1, 1,
+                                    std::vector<unsigned char>(std::size_t(kMaxImageSide) + 1, 9)));
+    auto r = readImage(dir.file("wide.png"));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message, dir.file("wide.png") + ": image size 32769x1: expected width and height in [1, 32768]");
+}
+
+TEST(ImageIO, TruncatedFilesAreErrors) {
+    TempDir dir;
+    Image img(64, 64);
+    img.fill({0.5f, 0.25f, 1.f, 1.f});
+    for (const char* name : {"t.png", "t.exr"}) {
+        ASSERT_TRUE(writeImage(dir.file(name), img).ok());
+        test::truncateFile(dir.file(name), dir.file(std::string("cut-") + name), 60);
+        auto r = readImage(dir.file(std::string("cut-") + name));
+        ASSERT_FALSE(r.ok()) << name;
+        EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
+    }
+}
+
+TEST(ImageIO, GreyAndGreyAlphaArePromoted) {
+    TempDir dir;
+    Image8 grey{2, 1, 2, {128, 255, 64, 0}};
+    ASSERT_TRUE(writeImage8(dir.file("ga.png"), grey).ok());
+    auto back = readImage(dir.file("ga.png"));
+    ASSERT_TRUE(back.ok());
+    EXPECT_TRUE(back->hasAlpha);
+    EXPECT_FLOAT_EQ(back->image.at(0, 0).r, back->image.at(0, 0).b);
+    EXPECT_FLOAT_EQ(back->image.at(0, 0).r, srgb8ToLinear(128));
+    EXPECT_FLOAT_EQ(back->image.at(1, 0).a, 0.f);
+}
+
+TEST(ImageIO, AtomicWriteLeavesOnlyTheTarget) {
+    TempDir dir;
+    ASSERT_TRUE(writeImage(dir.file("x.png"), Image(8, 8)).ok());
+    EXPECT_EQ(dir.entries(), 1u);
+    EXPECT_FALSE(writeImage(dir.file("missing/x.png"), Image(8, 8)).ok());
+    EXPECT_FALSE(writeImage(dir.file("x.nosuchformat"), Image(8, 8)).ok());
+    EXPECT_EQ(dir.entries(), 1u);
+}
+
+TEST(ImageIO, MissingAndGarbageFilesAreErrorsNotCrashes) {
+    TempDir dir;
+    auto missing = readImage(dir.file("none.png"));
+    ASSERT_FALSE(missing.ok());
+    EXPECT_EQ(missing.error().code, ErrorCode::Io);
+    std::ofstream(dir.file("junk.png")) << "this is not a png";
+    auto junk = readImage(dir.file("junk.png"));
+    ASSERT_FALSE(junk.ok());
+    EXPECT_EQ(junk.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(junk.error().message.find("junk.png"), std::string::npos);
+}
