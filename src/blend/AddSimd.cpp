@@ -1,6 +1,12 @@
 // Saturating add with SIMD: 32 bytes per instruction with AVX2 (vpaddusb), 16 with SSE2
 // (paddusb), picked once at run time; the hardware saturating add is exactly Figure 7's
 // min(s + d, 255). Tails shorter than a vector use the scalar formula.
+// Large spans (whole frames) are bound by memory traffic, not arithmetic: there the output is
+// written with streaming (non-temporal) stores, which skip reading the destination lines into
+// cache first, the same choice glibc's memcpy makes for large copies. AVX-512BW was tried and
+// measured no faster than AVX2 on this workload (docs/benchmarks.md), so it is not used.
+#include <cstdint>
+
 #include "flarekit/Blend.h"
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -27,9 +33,27 @@ void addSse2(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out, st
     addTail(a + i, b + i, out + i, n - i);
 }
 
+//! Spans at least this long use streaming stores: 4 MiB is past the per-core L2 of current
+//! x86 parts, so the output would leave the cache before anyone re-read it anyway.
+constexpr std::size_t kStreamingBytes = std::size_t(4) << 20;
+
 __attribute__((target("avx2"))) void addAvx2(const std::uint8_t* a, const std::uint8_t* b,
                                              std::uint8_t* out, std::size_t n) {
     std::size_t i = 0;
+    if (n >= kStreamingBytes) {
+        // Streaming stores need 32-byte aligned destinations: the head goes through the formula.
+        i = (32 - (reinterpret_cast<std::uintptr_t>(out) & 31)) & 31;
+        addTail(a, b, out, i);
+        for (; i + 64 <= n; i += 64) {
+            const __m256i a0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i));
+            const __m256i b0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i));
+            const __m256i a1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i + 32));
+            const __m256i b1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i + 32));
+            _mm256_stream_si256(reinterpret_cast<__m256i*>(out + i), _mm256_adds_epu8(a0, b0));
+            _mm256_stream_si256(reinterpret_cast<__m256i*>(out + i + 32), _mm256_adds_epu8(a1, b1));
+        }
+        _mm_sfence();  // order the streaming stores before any later read of `out`
+    }
     for (; i + 64 <= n; i += 64) {  // two vectors per iteration keeps both load ports busy
         const __m256i a0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i));
         const __m256i b0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i));

@@ -122,6 +122,19 @@ TEST(Blend8, SimdAddHandlesEveryAlignmentAndTail) {
     EXPECT_EQ(inPlace, want);
 }
 
+TEST(Blend8, SimdAddStreamingPathForWholeFramesMatches) {
+    // Spans of 4 MiB and more take the streaming-store path: test it at an odd alignment.
+    const std::size_t n = (std::size_t(9) << 20) + 77;
+    std::vector<std::uint8_t> a(n + 3), b(n + 3), simd(n + 3, 1), scalar(n + 3, 1);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        a[i] = std::uint8_t(i * 2654435761u >> 13);
+        b[i] = std::uint8_t(i * 40503u >> 5);
+    }
+    blend8::addSpanSimd(a.data() + 3, b.data() + 3, simd.data() + 3, n);
+    blend8::addSpanScalar16(a.data() + 3, b.data() + 3, scalar.data() + 3, n);
+    EXPECT_EQ(simd, scalar);
+}
+
 TEST(Blend8, LutIsFigure8) {
     const std::uint8_t* alut = blend8::addLut();
     for (int i = 0; i < 512; ++i) ASSERT_EQ(alut[i], i > 255 ? 255 : i);

@@ -10,7 +10,7 @@ namespace {
 void blob(Image& img, float cx, float cy, float radius, float value) {
     for (int y = 0; y < img.height(); ++y) {
         for (int x = 0; x < img.width(); ++x) {
-            if (std::hypot(x + 0.5f - cx, y + 0.5f - cy) < radius) img.at(x, y) = {value, value, value, 1.f};
+            if (std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy) < radius) img.at(x, y) = {value, value, value, 1.f};
         }
     }
 }

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# flarekit set-up on a fresh Debian 12 machine: installs the packages it needs, builds
+# (Release), then runs one job.
+#   ./setup.sh demo   renders every shipped preset onto the sample images into out/
+#   ./setup.sh test   runs the whole test suite (CI runs this; with CI=true warnings are errors)
+set -euo pipefail
+cd "$(dirname "$0")"
+job="${1:-}"
+case "$job" in
+  demo|test) ;;
+  *) echo "usage: $0 demo|test" >&2; exit 2 ;;
+esac
+
+./scripts/install-deps.sh
+
+werror=OFF
+if [ "${CI:-}" = "true" ]; then werror=ON; fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_WERROR="$werror"
+cmake --build build -j"$(nproc)"
+
+case "$job" in
+  demo) ./scripts/demo.sh build/flarekit out ;;
+  test) ctest --test-dir build -j"$(nproc)" --output-on-failure ;;
+esac
