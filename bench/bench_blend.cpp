@@ -51,12 +51,26 @@ void BM_Add(benchmark::State& state) {
     state.SetLabel(Add == &blend8::addSpanSimd ? std::string(blend8::addSimdIsa()) : "");
 }
 
+// In place, dst = min(src + dst, 255), as `flarekit blend --mode add` runs it.
+template <void (*Add)(const std::uint8_t*, const std::uint8_t*, std::uint8_t*, std::size_t)>
+void BM_AddInPlace(benchmark::State& state) {
+    const std::size_t n = std::size_t(state.range(0));
+    auto a = randomBytes(n, 1), b = randomBytes(n, 2);
+    for (auto _ : state) {
+        Add(a.data(), b.data(), b.data(), n);
+        benchmark::DoNotOptimize(b.data());
+        benchmark::ClobberMemory();
+    }
+    setRates(state, n, n / 4);
+}
+
 constexpr std::int64_t kFrame = 1920 * 1080 * 4;
 constexpr std::int64_t kCached = 256 * 1024;
 BENCHMARK(BM_Memcpy)->Arg(kFrame)->Arg(kCached);
 BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanScalar16)->Name("BM_AddScalar16")->Arg(kFrame)->Arg(kCached);
 BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanLut)->Name("BM_AddLut")->Arg(kFrame)->Arg(kCached);
 BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanSimd)->Name("BM_AddSimd")->Arg(kFrame)->Arg(kCached);
+BENCHMARK_TEMPLATE(BM_AddInPlace, blend8::addSpanSimd)->Name("BM_AddSimdInPlace")->Arg(kFrame)->Arg(kCached);
 
 // Alpha modes over a 1920x1080 frame: src RGBA, dst RGB.
 template <int Mode>

@@ -37,6 +37,25 @@ void addSse2(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out, st
 //! x86 parts, so the output would leave the cache before anyone re-read it anyway.
 constexpr std::size_t kStreamingBytes = std::size_t(4) << 20;
 
+//! Adds 64 bytes per iteration (two vectors keep both load ports busy) from i while a whole
+//! block fits; Stream picks streaming stores (out + i must then be 32-byte aligned).
+template <bool Stream>
+__attribute__((target("avx2"))) std::size_t addAvx2Blocks(const std::uint8_t* a, const std::uint8_t* b,
+                                                          std::uint8_t* out, std::size_t i, std::size_t n) {
+    for (; i + 64 <= n; i += 64) {
+        for (std::size_t k = i; k < i + 64; k += 32) {
+            const __m256i va = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + k));
+            const __m256i vb = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + k));
+            if constexpr (Stream) {
+                _mm256_stream_si256(reinterpret_cast<__m256i*>(out + k), _mm256_adds_epu8(va, vb));
+            } else {
+                _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm256_adds_epu8(va, vb));
+            }
+        }
+    }
+    return i;
+}
+
 __attribute__((target("avx2"))) void addAvx2(const std::uint8_t* a, const std::uint8_t* b,
                                              std::uint8_t* out, std::size_t n) {
     std::size_t i = 0;
@@ -44,30 +63,11 @@ __attribute__((target("avx2"))) void addAvx2(const std::uint8_t* a, const std::u
         // Streaming stores need 32-byte aligned destinations: the head goes through the formula.
         i = (32 - (reinterpret_cast<std::uintptr_t>(out) & 31)) & 31;
         addTail(a, b, out, i);
-        for (; i + 64 <= n; i += 64) {
-            const __m256i a0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i));
-            const __m256i b0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i));
-            const __m256i a1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i + 32));
-            const __m256i b1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i + 32));
-            _mm256_stream_si256(reinterpret_cast<__m256i*>(out + i), _mm256_adds_epu8(a0, b0));
-            _mm256_stream_si256(reinterpret_cast<__m256i*>(out + i + 32), _mm256_adds_epu8(a1, b1));
-        }
+        i = addAvx2Blocks<true>(a, b, out, i, n);
         _mm_sfence();  // order the streaming stores before any later read of `out`
     }
-    for (; i + 64 <= n; i += 64) {  // two vectors per iteration keeps both load ports busy
-        const __m256i a0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i));
-        const __m256i b0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i));
-        const __m256i a1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i + 32));
-        const __m256i b1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i + 32));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), _mm256_adds_epu8(a0, b0));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i + 32), _mm256_adds_epu8(a1, b1));
-    }
-    for (; i + 32 <= n; i += 32) {
-        const __m256i va = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i));
-        const __m256i vb = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), _mm256_adds_epu8(va, vb));
-    }
-    addSse2(a + i, b + i, out + i, n - i);
+    i = addAvx2Blocks<false>(a, b, out, i, n);
+    addSse2(a + i, b + i, out + i, n - i);  // the last 0..63 bytes
 }
 #endif
 

@@ -1,5 +1,6 @@
 #include "flarekit/Color.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -26,9 +27,20 @@ float srgb8ToLinear(std::uint8_t code) {
 }
 
 std::uint8_t linearToSrgb8(float linear) {
+    // Rounding to the nearest code without pow: code k covers linear values from the decode of
+    // (k - 0.5)/255 up to that of (k + 0.5)/255, so a binary search over the 255 boundaries
+    // (computed once, in double) gives the correctly rounded code in 8 comparisons.
+    static const std::array<float, 255> bounds = [] {
+        std::array<float, 255> b{};
+        for (int k = 0; k < 255; ++k) {
+            const double e = (k + 0.5) / 255.0;
+            b[std::size_t(k)] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
+        }
+        return b;
+    }();
     if (!(linear > 0.f)) return 0;  // also maps NaN to 0
     if (linear >= 1.f) return 255;
-    return std::uint8_t(std::lround(linearToSrgb(linear) * 255.f));
+    return std::uint8_t(std::upper_bound(bounds.begin(), bounds.end(), linear) - bounds.begin());
 }
 
 }  // namespace flarekit

@@ -5,11 +5,13 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 
 #include "core/AtomicFile.h"
+#include "core/Parallel.h"
 #include "flarekit/Color.h"
 
 namespace flarekit {
@@ -52,6 +54,16 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
     return in;
 }
 
+//! fn(i) for every i in [0, count), spread over the cores in chunks.
+template <typename Fn>
+void forEachSample(std::size_t count, Fn fn) {
+    constexpr std::size_t kChunk = 1 << 16;
+    parallelFor(0, int((count + kChunk - 1) / kChunk), 1, [&](int c0, int c1) {
+        const std::size_t end = std::min(count, std::size_t(c1) * kChunk);
+        for (std::size_t i = std::size_t(c0) * kChunk; i < end; ++i) fn(i);
+    });
+}
+
 bool isFloatType(OIIO::TypeDesc type) {
     return type.basetype == OIIO::TypeDesc::HALF || type.basetype == OIIO::TypeDesc::FLOAT ||
            type.basetype == OIIO::TypeDesc::DOUBLE;
@@ -71,44 +83,52 @@ Result<LoadedImage> readImage(const std::string& path) {
     auto& in = opened.value();
     const OIIO::ImageSpec spec = in->spec();
     const int keep = std::min(spec.nchannels, 4);
-    std::vector<float> raw(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(keep));
-    if (!in->read_image(0, 0, 0, keep, OIIO::TypeDesc::FLOAT, raw.data())) {
-        return invalidInput(path + ": cannot decode image: " + firstLine(in->geterror()));
-    }
-    in->close();
-
     LoadedImage out;
     out.fileChannels = spec.nchannels;
     out.droppedChannels = spec.nchannels - keep;
     out.wasFloat = isFloatType(spec.format);
     out.hasAlpha = keep == 2 || keep == 4;
     const bool decodeSrgb = !out.wasFloat && !declaredLinear(spec);
-    out.image = Image(spec.width, spec.height);
+    // 8-bit sRGB files decode exactly through a 256-entry table; everything else as float.
+    const bool bytes = spec.format == OIIO::TypeDesc::UINT8 && decodeSrgb;
+    const std::size_t samples = std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(keep);
+    std::vector<std::uint8_t> raw8(bytes ? samples : 0);
+    std::vector<float> rawF(bytes ? 0 : samples);
+    const bool read = bytes ? in->read_image(0, 0, 0, keep, OIIO::TypeDesc::UINT8, raw8.data())
+                            : in->read_image(0, 0, 0, keep, OIIO::TypeDesc::FLOAT, rawF.data());
+    if (!read) return invalidInput(path + ": cannot decode image: " + firstLine(in->geterror()));
+    in->close();
 
-    float* dst = out.image.data();
-    const std::size_t n = out.image.pixelCount();
-    std::size_t nonFinite = 0;
-    auto clean = [&](float v) {
-        if (std::isfinite(v)) return v;
-        ++nonFinite;
-        return 0.f;
-    };
-    auto colour = [&](float v) {
-        v = clean(v);
-        return decodeSrgb ? srgbToLinear(v) : v;
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-        const float* s = raw.data() + i * std::size_t(keep);
-        float* d = dst + i * 4;
-        if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
-            d[0] = d[1] = d[2] = colour(s[0]);
-        } else {
-            d[0] = colour(s[0]);
-            d[1] = colour(s[1]);
-            d[2] = colour(s[2]);
+    out.image = Image(spec.width, spec.height);
+    std::atomic<std::size_t> nonFinite{0};
+    parallelFor(0, spec.height, 16, [&](int y0, int y1) {
+        std::size_t bad = 0;
+        auto sample = [&](std::size_t i) -> float {
+            if (bytes) return raw8[i] * (1.f / 255.f);
+            const float v = rawF[i];
+            if (std::isfinite(v)) return v;
+            ++bad;
+            return 0.f;
+        };
+        auto colour = [&](std::size_t i) {
+            if (bytes) return srgb8ToLinear(raw8[i]);
+            const float v = sample(i);
+            return decodeSrgb ? srgbToLinear(v) : v;
+        };
+        for (std::size_t p = std::size_t(y0) * std::size_t(spec.width); p < std::size_t(y1) * std::size_t(spec.width); ++p) {
+            const std::size_t s = p * std::size_t(keep);
+            float* d = out.image.data() + p * 4;
+            if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
+                d[0] = d[1] = d[2] = colour(s);
+            } else {
+                d[0] = colour(s);
+                d[1] = colour(s + 1);
+                d[2] = colour(s + 2);
+            }
+            d[3] = out.hasAlpha ? sample(s + std::size_t(keep) - 1) : 1.f;
         }
-        d[3] = out.hasAlpha ? clean(s[keep - 1]) : 1.f;
-    }
+        nonFinite += bad;
+    });
     out.nonFinite = nonFinite;
     return out;
 }
@@ -188,23 +208,23 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     };
     if (format == SampleFormat::U8) {
         std::vector<std::uint8_t> bytes(count);
-        for (std::size_t i = 0; i < count; ++i) {
+        forEachSample(count, [&](std::size_t i) {
             bytes[i] = i % std::size_t(channels) < 3 ? linearToSrgb8(sample(i))
                                                      : std::uint8_t(std::lround(encode(i) * 255.f));
-        }
+        });
         return writeAtomically(path, [&](const std::string& temp) {
             return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT8, bytes.data());
         });
     }
     if (format == SampleFormat::U16) {
         std::vector<std::uint16_t> words(count);
-        for (std::size_t i = 0; i < count; ++i) words[i] = std::uint16_t(std::lround(encode(i) * 65535.f));
+        forEachSample(count, [&](std::size_t i) { words[i] = std::uint16_t(std::lround(encode(i) * 65535.f)); });
         return writeAtomically(path, [&](const std::string& temp) {
             return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT16, words.data());
         });
     }
     std::vector<float> linear(count);
-    for (std::size_t i = 0; i < count; ++i) linear[i] = sample(i);
+    forEachSample(count, [&](std::size_t i) { linear[i] = sample(i); });
     return writeAtomically(path, [&](const std::string& temp) {
         return writeWithOiio(path, temp, spec, OIIO::TypeDesc::FLOAT, linear.data());
     });

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/FastMath.h"
 #include "core/Random.h"
 #include "elements/Coverage.h"
 #include "elements/ElementKernel.h"
@@ -38,13 +39,13 @@ std::vector<Spike> makeSpikes(const ElementParams& p) {
 
 Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
     const float d = std::sqrt(x * x + y * y);
-    float theta = std::atan2(y, x);
+    float theta = fastAtan2(y, x);
     if (theta < 0.f) theta += kTwoPi;
     const float halfWidth = 0.5f * k.params.thickness;
 
     // Only spikes within this angle can reach the pixel: perp = d*sin(delta) <= maxHalfWidth.
     const std::size_t n = k.spikes.size();
-    const float window = d > k.maxHalfWidth ? std::asin(k.maxHalfWidth / d) : 0.5f * std::numbers::pi_v<float>;
+    const float window = d > k.maxHalfWidth ? asinUpperBound(k.maxHalfWidth / d) : 0.5f * std::numbers::pi_v<float>;
     float lo = theta - window;
     if (lo < 0.f) lo += kTwoPi;
     const auto first = std::lower_bound(k.spikes.begin(), k.spikes.end(), lo,
