@@ -163,6 +163,9 @@ TEST(CliPresets, ListsChecksAndDocuments) {
     r = runCli({"presets", "--params"});
     ASSERT_EQ(r.exitCode, 0);
     EXPECT_NE(r.out.find("| `min_length` | rays |"), std::string::npos) << r.out;
+    // docs/presets.md carries this reference verbatim: regenerate it when the table changes.
+    EXPECT_NE(slurp(std::string(FLAREKIT_DOCS) + "/presets.md").find(r.out), std::string::npos)
+        << "docs/presets.md is out of date: flarekit presets --params";
     r = runCli({"presets", "--check", "subtle"});
     EXPECT_EQ(r.exitCode, 0);
 }
