@@ -8,6 +8,17 @@ namespace flarekit {
 
 namespace {
 constexpr std::array<std::string_view, 4> kBlend8Names = {"alpha", "alpha-shift", "premultiplied", "add"};
+
+//! The first three channels of every pixel, packed as RGB bytes.
+std::vector<std::uint8_t> packRgb(const Image8& image) {
+    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+    const std::size_t stride = std::size_t(image.channels);
+    std::vector<std::uint8_t> rgb(pixels * 3);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * stride + c];
+    }
+    return rgb;
+}
 }
 
 std::optional<Blend8Mode> parseBlend8Mode(std::string_view name) {
@@ -36,10 +47,7 @@ Result<Image8> blendImages8(Blend8Mode mode, const Image8& src, const Image8& ds
     const std::size_t pixels = std::size_t(src.width) * std::size_t(src.height);
 
     // Work on an RGB copy of dst: the output is RGB.
-    Image8 out{dst.width, dst.height, 3, std::vector<std::uint8_t>(pixels * 3)};
-    for (std::size_t i = 0; i < pixels; ++i) {
-        for (int c = 0; c < 3; ++c) out.pixels[i * 3 + std::size_t(c)] = dst.pixels[i * std::size_t(dst.channels) + std::size_t(c)];
-    }
+    Image8 out{dst.width, dst.height, 3, packRgb(dst)};
     switch (mode) {
         case Blend8Mode::Alpha: blend8::alphaSpan(src.pixels.data(), out.pixels.data(), 3, pixels); break;
         case Blend8Mode::AlphaShift: blend8::alphaShiftSpan(src.pixels.data(), out.pixels.data(), 3, pixels); break;
@@ -50,11 +58,8 @@ Result<Image8> blendImages8(Blend8Mode mode, const Image8& src, const Image8& ds
             break;
         }
         case Blend8Mode::Add: {
-            // Pack src's RGB so both operands are contiguous bytes for the SIMD add.
-            std::vector<std::uint8_t> rgb(pixels * 3);
-            for (std::size_t i = 0; i < pixels; ++i) {
-                for (int c = 0; c < 3; ++c) rgb[i * 3 + std::size_t(c)] = src.pixels[i * std::size_t(src.channels) + std::size_t(c)];
-            }
+            // src's RGB packed so both operands are contiguous bytes for the SIMD add.
+            const std::vector<std::uint8_t> rgb = packRgb(src);
             blend8::addSpanSimd(rgb.data(), out.pixels.data(), out.pixels.data(), rgb.size());
             break;
         }

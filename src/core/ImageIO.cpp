@@ -133,6 +133,15 @@ Result<LoadedImage> readImage(const std::string& path) {
     return out;
 }
 
+namespace {
+//! The OIIO writer for path's extension, or the error naming the unsupported extension.
+Result<std::unique_ptr<OIIO::ImageOutput>> createOutput(const std::string& path) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
+    return out;
+}
+}  // namespace
+
 Status checkOutputPath(const std::string& path) {
     if (path.empty()) return invalidInput("output: expected a file name, got an empty path");
     fs::path p(path);
@@ -142,11 +151,8 @@ Status checkOutputPath(const std::string& path) {
         return invalidInput(path + ": output directory '" + dir.string() + "' does not exist");
     }
     if (fs::is_directory(p, ec)) return invalidInput(path + ": output path is a directory");
-    if (!OIIO::is_imageio_format_name(lowerExtension(path).erase(0, 1))) {
-        // Not conclusive for every extension; ImageOutput::create is the real test.
-        auto probe = OIIO::ImageOutput::create(path);
-        if (!probe) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
-    }
+    auto out = createOutput(path);
+    if (!out) return out.error();
     return Ok{};
 }
 
@@ -161,13 +167,13 @@ SampleFormat resolveFormat(const std::string& path, SampleFormat requested) {
     return SampleFormat::U8;
 }
 
-Status writeWithOiio(const std::string& path, const std::string& tempPath, OIIO::ImageSpec spec,
-                     OIIO::TypeDesc dataType, const void* data) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
-    if (!out->open(tempPath, spec)) return ioError(path + ": cannot write: " + firstLine(out->geterror()));
-    if (!out->write_image(dataType, data)) return ioError(path + ": cannot write: " + firstLine(out->geterror()));
-    if (!out->close()) return ioError(path + ": cannot write: " + firstLine(out->geterror()));
+//! Writes through a writer from createOutput (chosen by the final name's extension) into the
+//! temporary file.
+Status writeWithOiio(OIIO::ImageOutput& out, const std::string& path, const std::string& tempPath,
+                     const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType, const void* data) {
+    if (!out.open(tempPath, spec)) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
+    if (!out.write_image(dataType, data)) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
+    if (!out.close()) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
     return Ok{};
 }
 
@@ -175,9 +181,10 @@ Status writeWithOiio(const std::string& path, const std::string& tempPath, OIIO:
 
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     if (Status s = checkOutputPath(path); !s) return s;
-    auto probe = OIIO::ImageOutput::create(path);
-    if (!probe) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
-    const bool alpha = options.alpha && probe->supports("alpha");
+    auto out = createOutput(path);
+    if (!out) return out.error();
+    OIIO::ImageOutput& writer = **out;
+    const bool alpha = options.alpha && writer.supports("alpha");
     const int channels = alpha ? 4 : 3;
     const SampleFormat format = resolveFormat(path, options.format);
     const bool isFloat = format == SampleFormat::Half || format == SampleFormat::Float;
@@ -213,20 +220,20 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
                                                      : std::uint8_t(std::lround(encode(i) * 255.f));
         });
         return writeAtomically(path, [&](const std::string& temp) {
-            return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT8, bytes.data());
+            return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::UINT8, bytes.data());
         });
     }
     if (format == SampleFormat::U16) {
         std::vector<std::uint16_t> words(count);
         forEachSample(count, [&](std::size_t i) { words[i] = std::uint16_t(std::lround(encode(i) * 65535.f)); });
         return writeAtomically(path, [&](const std::string& temp) {
-            return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT16, words.data());
+            return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::UINT16, words.data());
         });
     }
     std::vector<float> linear(count);
     forEachSample(count, [&](std::size_t i) { linear[i] = sample(i); });
     return writeAtomically(path, [&](const std::string& temp) {
-        return writeWithOiio(path, temp, spec, OIIO::TypeDesc::FLOAT, linear.data());
+        return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::FLOAT, linear.data());
     });
 }
 
@@ -254,6 +261,8 @@ Result<Image8> readImage8(const std::string& path) {
 
 Status writeImage8(const std::string& path, const Image8& image) {
     if (Status s = checkOutputPath(path); !s) return s;
+    auto out = createOutput(path);
+    if (!out) return out.error();
     OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
     if (image.channels == 2 || image.channels == 4) {
         spec.alpha_channel = image.channels - 1;
@@ -261,7 +270,7 @@ Status writeImage8(const std::string& path, const Image8& image) {
     }
     spec.attribute("Software", "flarekit");
     return writeAtomically(path, [&](const std::string& temp) {
-        return writeWithOiio(path, temp, spec, OIIO::TypeDesc::UINT8, image.pixels.data());
+        return writeWithOiio(**out, path, temp, spec, OIIO::TypeDesc::UINT8, image.pixels.data());
     });
 }
 

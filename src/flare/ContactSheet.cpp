@@ -46,23 +46,17 @@ Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
         e.intensity *= preset.intensity;
         const float radius = kCellFill * 0.5f * float(cellSize) / std::max(1.f, e.aspect);
         const Image sprite = renderElement(e, radius);
-        const int cx = (i % columns) * cellSize + cellSize / 2, cy = (i / columns) * cellSize + cellSize / 2;
-        for (int y = 0; y < sprite.height(); ++y) {
-            const int ty = cy - sprite.height() / 2 + y;
-            if (ty < (i / columns) * cellSize || ty >= (i / columns + 1) * cellSize) continue;
-            for (int x = 0; x < sprite.width(); ++x) {
-                const int tx = cx - sprite.width() / 2 + x;
-                if (tx < (i % columns) * cellSize || tx >= (i % columns + 1) * cellSize) continue;
-                Rgba& d = sheet.image.at(tx, ty);
-                const Rgba& s = sprite.at(x, y);
-                d.r += s.r;
-                d.g += s.g;
-                d.b += s.b;
-            }
+        // Sprite centred in its cell, clipped to the cell (a wide streak may overhang it).
+        const int cellX = (i % columns) * cellSize, cellY = (i / columns) * cellSize;
+        const int left = cellX + cellSize / 2 - sprite.width() / 2, top = cellY + cellSize / 2 - sprite.height() / 2;
+        const int x0 = std::max(left, cellX), x1 = std::min(left + sprite.width(), cellX + cellSize);
+        const int y0 = std::max(top, cellY), y1 = std::min(top + sprite.height(), cellY + cellSize);
+        for (int y = y0; y < y1; ++y) {
+            compositeSpan(BlendMode::Add, &sprite.at(x0 - left, y - top).r, &sheet.image.at(x0, y).r, std::size_t(x1 - x0));
         }
         if (sheet.labelled) {
             sheet.labelled = OIIO::ImageBufAlgo::render_text(
-                canvas, (i % columns) * cellSize + fontSize / 2, (i / columns) * cellSize + fontSize + fontSize / 2,
+                canvas, cellX + fontSize / 2, cellY + fontSize + fontSize / 2,
                 label(std::size_t(i), e), fontSize, kFontFile, labelColour);
             OIIO::geterror();  // clear a font error; `labelled` reports it
         }
