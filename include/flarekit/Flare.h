@@ -56,8 +56,13 @@ struct FlareStats {
 FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity);
 
 struct LightSearchOptions {
-    float minLuminance = 0.5f;  //!< no light unless the peak linear luminance reaches this
-    float nearPeak = 0.9f;      //!< a light's pixels are those >= nearPeak * peak luminance
+    //! No light unless the peak linear luminance reaches this. 0.5 linear is sRGB code 188: a
+    //! light source in an 8-bit photo is near 255, while the brightest pixel of an overcast or
+    //! indoor frame without a light is usually well below.
+    float minLuminance = 0.5f;
+    //! A light's pixels are those >= nearPeak * peak ("the pixels near the maximum", issue 3);
+    //! 0.9 keeps a clipped sun's disc and its hottest halo, not the whole sky.
+    float nearPeak = 0.9f;
 };
 
 struct FoundLight {
