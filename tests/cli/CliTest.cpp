@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <random>
 
 #include "Cli.h"
@@ -171,11 +172,50 @@ TEST(CliPresets, ListsChecksAndDocuments) {
 }
 
 TEST(CliHelp, EverySubcommandHasHelp) {
-    for (const char* sub : {"blend", "apply", "elements", "presets"}) {
+    for (const char* sub : {"blend", "apply", "elements", "presets", "visibility"}) {
         const CliResult r = runCli({sub, "--help"});
         EXPECT_EQ(r.exitCode, 0) << sub;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
     }
     EXPECT_EQ(runCli({"frobnicate"}).exitCode, 2);
     EXPECT_EQ(runCli({}).exitCode, 2);
+}
+
+TEST(CliVisibility, RaycastPrintsOneJsonObject) {
+    const CliResult r = runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json", "--method",
+                                "raycast", "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(lineCount(r.out), 1);
+    EXPECT_EQ(r.out.rfind("{\"method\": \"raycast\", \"coverage\": 1.000000, \"in_frame\": 1.000000, \"samples\": 16384", 0), 0u)
+        << r.out;
+}
+
+TEST(CliVisibility, HalfHiddenSunFromAFile) {
+    TempDir dir;
+    std::ofstream(dir.file("half.json")) << R"({"image": {"width": 640, "height": 360},
+        "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1]},
+        "sun": {"direction": [0, 0, -1], "angular_radius_deg": 2},
+        "objects": [{"type": "box", "min": [-100, -100, -30], "max": [0, 100, -20]}]})";
+    const CliResult r = runCli({"visibility", dir.file("half.json"), "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto at = r.out.find("\"coverage\": ");
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_NEAR(std::stod(r.out.substr(at + 12)), 0.5, 0.005);
+}
+
+TEST(CliVisibility, BadSceneAndMethodsWithoutGlExitTwo) {
+    TempDir dir;
+    std::ofstream(dir.file("bad.json")) << R"({"image": {"width": 640, "height": 360},
+        "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1]}, "sun": {"direction": [0, 0, -1]},
+        "objects": [{"type": "sphere", "center": [0, 0, -5], "radius": "big"}]})";
+    CliResult r = runCli({"visibility", dir.file("bad.json")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, "flarekit: " + dir.file("bad.json") + ": objects[0].radius: expected a positive number, got \"big\"\n");
+    r = runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json", "--method", "query"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1);
+    r = runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json", "--method", "magic"});
+    EXPECT_EQ(r.exitCode, 2);
+    r = runCli({"visibility", dir.file("missing.json")});
+    EXPECT_EQ(r.exitCode, 2);
 }

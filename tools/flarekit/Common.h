@@ -50,5 +50,6 @@ void addBlendCommand(CLI::App& app, int& exitCode);
 void addApplyCommand(CLI::App& app, int& exitCode);
 void addElementsCommand(CLI::App& app, int& exitCode);
 void addPresetsCommand(CLI::App& app, int& exitCode);
+void addVisibilityCommand(CLI::App& app, int& exitCode);
 
 }  // namespace flarekit::cli

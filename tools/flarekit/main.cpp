@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     addApplyCommand(app, exitCode);
     addElementsCommand(app, exitCode);
     addPresetsCommand(app, exitCode);
+    addVisibilityCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

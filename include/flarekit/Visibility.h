@@ -1,0 +1,32 @@
+// Sun visibility: the fraction of the sun's disc (uniform over the cone of directions) whose
+// rays from the camera hit no object (architecture.md, "Coverage"). `raycast` computes it on
+// the CPU and is the ground truth the GPU methods are judged against.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "flarekit/Result.h"
+#include "flarekit/Scene.h"
+
+namespace flarekit {
+
+struct VisibilityResult {
+    std::string method;
+    double coverage = 0;     //!< visible fraction of the disc, 0..1
+    double inFrame = 0;      //!< fraction of the disc inside the camera's frame, 0..1
+    std::size_t samples = 0; //!< rays cast
+    double milliseconds = 0; //!< wall time of the estimate
+};
+
+struct RaycastOptions {
+    //! Samples per side of the stratified grid: 128^2 = 16384 rays. With one jittered sample
+    //! per stratum, a straight edge across the disc gives a standard error of about
+    //! sqrt(2 * 128) / 16384 = 0.001, well inside issue 4's 0.005.
+    int samplesPerSide = 128;
+    std::uint64_t seed = 1;  //!< jitter seed: the same seed gives the same estimate
+};
+
+Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options = {});
+
+}  // namespace flarekit

@@ -1,0 +1,104 @@
+// `raycast`: the ground-truth coverage. Directions are spread uniformly over the sun's cone
+// (uniform in solid angle) by stratified jittered samples: a square grid of strata is mapped
+// to the unit disc by Shirley and Chiu's concentric map (equal-area, so the strata stay equal
+// and compact), and the disc to the cone by 1 - cos(theta) = rho^2 (1 - cos(alpha)), which is
+// equal-area on the sphere too. Rows of strata are cast in parallel.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "core/Parallel.h"
+#include "core/Random.h"
+#include "flarekit/Visibility.h"
+#include "occlusion/raycast/SceneBvh.h"
+
+namespace flarekit {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+//! Shirley & Chiu 1997, "A Low Distortion Map Between Disk and Square": (a, b) in [-1, 1]^2.
+void concentric(double a, double b, double& rho, double& phi) {
+    if (a == 0 && b == 0) {
+        rho = phi = 0;
+    } else if (std::abs(a) > std::abs(b)) {
+        rho = a;
+        phi = (kPi / 4) * (b / a);
+    } else {
+        rho = b;
+        phi = kPi / 2 - (kPi / 4) * (a / b);
+    }
+}
+
+struct Frame {  // camera basis and frustum half-extents, for the in-frame fraction
+    Vec3 right, up, forward;
+    double tanHalfY, tanHalfX;
+};
+
+Frame cameraFrame(const Scene& s) {
+    Frame f;
+    f.forward = normalize(s.camera.lookAt - s.camera.position);
+    f.right = normalize(cross(f.forward, s.camera.up));
+    f.up = cross(f.right, f.forward);
+    f.tanHalfY = std::tan(s.camera.fovYDeg * kPi / 360.0);
+    f.tanHalfX = f.tanHalfY * double(s.width) / double(s.height);
+    return f;
+}
+
+bool inFrame(const Frame& f, Vec3 d) {
+    const double z = dot(d, f.forward);
+    if (z <= 0) return false;
+    return std::abs(dot(d, f.right)) <= f.tanHalfX * z && std::abs(dot(d, f.up)) <= f.tanHalfY * z;
+}
+
+}  // namespace
+
+Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options) {
+    if (options.samplesPerSide < 1 || options.samplesPerSide > 4096) {
+        return invalidInput("raycast samples per side: expected an integer in [1, 4096], got " +
+                            std::to_string(options.samplesPerSide));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const SceneBvh bvh(scene);
+    const Frame frame = cameraFrame(scene);
+    const Vec3 s = scene.sun.direction;
+    // Orthonormal basis (t1, t2) perpendicular to the sun direction.
+    const Vec3 helper = std::abs(s.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 t1 = normalize(cross(s, helper)), t2 = cross(s, t1);
+    const double oneMinusCosAlpha = 1.0 - std::cos(scene.sun.angularRadiusDeg * kPi / 180.0);
+    const int n = options.samplesPerSide;
+
+    std::atomic<std::size_t> visible{0}, framed{0};
+    parallelFor(0, n, 4, [&](int row0, int row1) {
+        std::size_t vis = 0, fr = 0;
+        for (int row = row0; row < row1; ++row) {
+            SplitMix64 rng(options.seed * 0x9E3779B97F4A7C15ull + std::uint64_t(row));  // per row: thread-count independent
+            for (int col = 0; col < n; ++col) {
+                const double a = 2.0 * (double(col) + rng.nextFloat()) / n - 1.0, b = 2.0 * (double(row) + rng.nextFloat()) / n - 1.0;
+                double rho = 0, phi = 0;
+                concentric(a, b, rho, phi);
+                const double cosTheta = 1.0 - rho * rho * oneMinusCosAlpha;
+                const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+                // rho may be negative (concentric map): sign folds into the angle.
+                const double sign = rho < 0 ? -1.0 : 1.0;
+                const Vec3 d = cosTheta * s + (sign * sinTheta) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+                vis += bvh.occluded(scene.camera.position, d) ? 0 : 1;
+                fr += inFrame(frame, d) ? 1 : 0;
+            }
+        }
+        visible += vis;
+        framed += fr;
+    });
+    VisibilityResult r;
+    r.method = "raycast";
+    r.samples = std::size_t(n) * std::size_t(n);
+    r.coverage = double(visible) / double(r.samples);
+    r.inFrame = double(framed) / double(r.samples);
+    r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+}  // namespace flarekit

@@ -1,0 +1,40 @@
+// A bounding-volume hierarchy over every object of a scene, for any-hit (shadow-style) rays.
+// Built by median splits on the longest axis of the primitive centroids; leaves hold up to
+// kLeafSize primitives.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "flarekit/Scene.h"
+
+namespace flarekit {
+
+class SceneBvh {
+public:
+    explicit SceneBvh(const Scene& scene);
+    //! True when the ray origin + t*dir (t > 0) hits any object.
+    bool occluded(Vec3 origin, Vec3 dir) const;
+    std::size_t primitiveCount() const { return m_prims.size(); }
+
+private:
+    enum class Kind : std::uint8_t { Sphere, Box, Triangle };
+    struct Prim {
+        Kind kind;
+        std::uint32_t index;
+        Vec3 lo, hi, centre;
+    };
+    struct Node {
+        Vec3 lo, hi;
+        std::uint32_t first, count;  //!< leaf: prims [first, first + count); inner: count == 0
+        std::uint32_t right;         //!< inner: right child (left child is this + 1)
+    };
+    std::uint32_t build(std::uint32_t first, std::uint32_t count);
+    bool hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir) const;
+
+    const Scene& m_scene;
+    std::vector<Prim> m_prims;
+    std::vector<Node> m_nodes;
+};
+
+}  // namespace flarekit
