@@ -1,14 +1,12 @@
 // Preset JSON: parsed with nlohmann-json, validated field by field against ParamTable so
 // every message names the file, the field and what was expected.
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include "core/JsonText.h"
 #include "flare/ParamTable.h"
 #include "flarekit/Flare.h"
 
@@ -35,11 +33,7 @@ std::string formatRange(double lo, double hi) {
     return os.str();
 }
 
-std::string got(const json& value) {
-    std::string text = value.dump();
-    if (text.size() > 60) text = text.substr(0, 57) + "...";
-    return text;
-}
+std::string got(const json& value) { return jsonExcerpt(value); }
 
 class Validator {
 public:
@@ -159,14 +153,9 @@ private:
 }  // namespace
 
 Result<Preset> parsePreset(const std::string& jsonText, const std::string& source) {
-    json doc;
-    try {
-        doc = json::parse(jsonText);
-    } catch (const json::parse_error& e) {
-        std::string what = e.what();
-        const auto pos = what.find("parse error");
-        return invalidInput(source + ": invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
-    }
+    auto parsed = parseJsonText(jsonText, source);
+    if (!parsed) return parsed.error();
+    const json& doc = *parsed;
     Validator check(source);
     if (!doc.is_object()) return check.fail("(top level)", "expected an object, got " + got(doc));
     Preset preset;
@@ -245,13 +234,9 @@ Result<Preset> loadPreset(const std::string& nameOrPath) {
                                 (names.empty() ? "(no shipped presets found)" : names));
         }
     }
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) return ioError(path + ": cannot read: no such file");
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in) return ioError(path + ": cannot read preset");
-    return parsePreset(text.str(), path);
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    return parsePreset(*text, path);
 }
 
 std::string presetParameterReference() {

@@ -1,10 +1,6 @@
 // Scene JSON (architecture.md contract) with full validation: every error names the file and
 // the field, and says what was expected.
-#include <nlohmann/json.hpp>
-
-#include <fstream>
-#include <sstream>
-
+#include "core/JsonText.h"
 #include "flarekit/Image.h"
 #include "flarekit/Scene.h"
 
@@ -17,10 +13,7 @@ namespace {
 //! Largest accepted scene triangle count: 4 million keeps a scene's memory under ~0.5 GB.
 constexpr std::size_t kMaxTriangles = std::size_t(4) << 20;
 
-std::string got(const json& v) {
-    std::string s = v.dump();
-    return s.size() > 60 ? s.substr(0, 57) + "..." : s;
-}
+std::string got(const json& v) { return jsonExcerpt(v); }
 
 struct SceneReader {
     std::string source;
@@ -180,23 +173,15 @@ Result<Scene> readScene(const json& doc, const SceneReader& r) {
 }  // namespace
 
 Result<Scene> parseScene(const std::string& jsonText, const std::string& source) {
-    json doc;
-    try {
-        doc = json::parse(jsonText);
-    } catch (const json::parse_error& e) {
-        const std::string what = e.what();
-        const auto pos = what.find("parse error");
-        return invalidInput(source + ": invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
-    }
-    return readScene(doc, SceneReader{source});
+    auto doc = parseJsonText(jsonText, source);
+    if (!doc) return doc.error();
+    return readScene(*doc, SceneReader{source});
 }
 
 Result<Scene> loadScene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return ioError(path + ": cannot read: no such file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parseScene(text.str(), path);
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    return parseScene(*text, path);
 }
 
 }  // namespace flarekit
