@@ -1,0 +1,77 @@
+#include "gl/GlObjects.h"
+
+#include <vector>
+
+#include "core/AtomicFile.h"
+
+namespace flarekit::gl {
+
+Texture makeTexture2D(GLenum internalFormat, int width, int height) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &name);
+    glTextureStorage2D(name, 1, internalFormat, width, height);
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return Texture(name);
+}
+
+Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* depth) {
+    GLuint name = 0;
+    glCreateFramebuffers(1, &name);
+    Framebuffer fb(name);
+    glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, color.get(), 0);
+    if (depth) glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth->get(), 0);
+    const GLenum status = glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        return internalError("OpenGL: framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+    }
+    return fb;
+}
+
+namespace {
+std::string infoLog(GLuint object, bool isProgram) {
+    GLint length = 0;
+    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(std::size_t(length > 1 ? length : 1), '\0');
+    isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
+              : glGetShaderInfoLog(object, length, nullptr, log.data());
+    return firstLine(log.data());
+}
+}  // namespace
+
+Result<Program> linkProgram(std::initializer_list<ShaderSource> sources) {
+    Program program(glCreateProgram());
+    std::vector<Shader> shaders;
+    for (const ShaderSource& s : sources) {
+        Shader shader(glCreateShader(s.stage));
+        const char* text = s.text.c_str();
+        glShaderSource(shader.get(), 1, &text, nullptr);
+        glCompileShader(shader.get());
+        GLint ok = 0;
+        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+        if (!ok) return internalError("OpenGL: " + s.name + ": compile error: " + infoLog(shader.get(), false));
+        glAttachShader(program.get(), shader.get());
+        shaders.push_back(std::move(shader));
+    }
+    glLinkProgram(program.get());
+    GLint ok = 0;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (!ok) return internalError("OpenGL: link error: " + infoLog(program.get(), true));
+    return program;
+}
+
+TimerQuery::TimerQuery() {
+    GLuint name = 0;
+    glCreateQueries(GL_TIME_ELAPSED, 1, &name);
+    m_query = Query(name);
+}
+
+double TimerQuery::milliseconds() const {
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(m_query.get(), GL_QUERY_RESULT, &ns);
+    return double(ns) * 1e-6;
+}
+
+}  // namespace flarekit::gl

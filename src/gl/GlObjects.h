@@ -1,0 +1,87 @@
+// Move-only owners of GL object names: each deletes its name when destroyed. A context must
+// be current wherever these are created, used or destroyed.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+#include <utility>
+
+#include "flarekit/Result.h"
+
+namespace flarekit::gl {
+
+template <void (*Delete)(GLuint)>
+class Name {
+public:
+    Name() = default;
+    explicit Name(GLuint name) : m_name(name) {}
+    ~Name() { reset(); }
+    Name(Name&& other) noexcept : m_name(std::exchange(other.m_name, 0)) {}
+    Name& operator=(Name&& other) noexcept {
+        if (this != &other) {
+            reset();
+            m_name = std::exchange(other.m_name, 0);
+        }
+        return *this;
+    }
+    Name(const Name&) = delete;
+    Name& operator=(const Name&) = delete;
+
+    GLuint get() const { return m_name; }
+    explicit operator bool() const { return m_name != 0; }
+    void reset() {
+        if (m_name) Delete(m_name);
+        m_name = 0;
+    }
+
+private:
+    GLuint m_name = 0;
+};
+
+namespace detail {
+inline void deleteTexture(GLuint n) { glDeleteTextures(1, &n); }
+inline void deleteFramebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
+inline void deleteBuffer(GLuint n) { glDeleteBuffers(1, &n); }
+inline void deleteVertexArray(GLuint n) { glDeleteVertexArrays(1, &n); }
+inline void deleteQuery(GLuint n) { glDeleteQueries(1, &n); }
+inline void deleteProgram(GLuint n) { glDeleteProgram(n); }
+inline void deleteShader(GLuint n) { glDeleteShader(n); }
+}  // namespace detail
+
+using Texture = Name<detail::deleteTexture>;
+using Framebuffer = Name<detail::deleteFramebuffer>;
+using Buffer = Name<detail::deleteBuffer>;
+using VertexArray = Name<detail::deleteVertexArray>;
+using Query = Name<detail::deleteQuery>;
+using Program = Name<detail::deleteProgram>;
+using Shader = Name<detail::deleteShader>;
+
+//! An immutable 2D texture (glTextureStorage2D) of the given internal format.
+Texture makeTexture2D(GLenum internalFormat, int width, int height);
+//! A framebuffer with `color` at attachment 0 (and `depth` when non-zero); fails with the
+//! completeness status when incomplete.
+Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* depth = nullptr);
+
+struct ShaderSource {
+    GLenum stage;      //!< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
+    std::string name;  //!< for error messages, e.g. "ghosts.frag"
+    std::string text;
+};
+//! Compiles and links; a failure returns the first line of the driver's log with the name.
+Result<Program> linkProgram(std::initializer_list<ShaderSource> sources);
+
+//! GPU time of the commands between begin() and end(), from GL_TIME_ELAPSED. Reading waits
+//! for the GPU to finish them.
+class TimerQuery {
+public:
+    TimerQuery();
+    void begin() const { glBeginQuery(GL_TIME_ELAPSED, m_query.get()); }
+    void end() const { glEndQuery(GL_TIME_ELAPSED); }
+    double milliseconds() const;
+
+private:
+    Query m_query;
+};
+
+}  // namespace flarekit::gl

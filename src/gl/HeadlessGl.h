@@ -1,0 +1,33 @@
+// A headless OpenGL 4.5 core context through EGL, with no window and no X server. On a
+// machine with a GPU driver the EGL device platform finds the GPU; elsewhere Mesa's
+// surfaceless platform gives llvmpipe (software GL). Functions load through libepoxy.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "flarekit/Result.h"
+
+namespace flarekit::gl {
+
+class HeadlessGl {
+public:
+    //! Creates a context and makes it current on the calling thread. FLAREKIT_EGL_PLATFORM
+    //! (device | surfaceless) forces one platform; by default devices are tried first.
+    static Result<std::unique_ptr<HeadlessGl>> create();
+    ~HeadlessGl();
+    HeadlessGl(const HeadlessGl&) = delete;
+    HeadlessGl& operator=(const HeadlessGl&) = delete;
+
+    std::string renderer() const;  //!< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string version() const;   //!< GL_VERSION
+    const std::string& platform() const { return m_platform; }  //!< "device" or "surfaceless"
+
+private:
+    HeadlessGl() = default;
+    void* m_display = nullptr;
+    void* m_context = nullptr;
+    std::string m_platform;
+};
+
+}  // namespace flarekit::gl
