@@ -74,6 +74,10 @@ struct FoundLight {
     float flareScale = 0.f;   //!< intensity for the flare: brightness up to 1, 1 + ln(brightness) above
 };
 
+//! The flare intensity for a light of this linear luminance: linear up to display white, then
+//! 1 + ln(brightness), so an HDR sun of 50 gives a strong flare without washing out the frame.
+float flareScaleForBrightness(float brightness);
+
 //! `--light auto`: the brightest region, as the connected region (4-neighbours) of pixels
 //! near the peak with the largest summed luminance.
 FoundLight findLight(const Image& image, const LightSearchOptions& options = {});

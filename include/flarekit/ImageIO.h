@@ -27,6 +27,10 @@ struct WriteOptions {
     bool alpha = false;                        //!< write RGBA (ignored by formats without alpha)
 };
 
+//! The sample format writeImage will use for `path` (Auto resolved from the extension).
+SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested = SampleFormat::Auto);
+inline bool isFloatFormat(SampleFormat f) { return f == SampleFormat::Half || f == SampleFormat::Float; }
+
 //! Writes atomically: to a temporary file beside `path`, renamed over it on success.
 //! Integer formats are sRGB-encoded; float formats are written linear.
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});

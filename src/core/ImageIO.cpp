@@ -179,6 +179,8 @@ Status writeWithOiio(OIIO::ImageOutput& out, const std::string& path, const std:
 
 }  // namespace
 
+SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested) { return resolveFormat(path, requested); }
+
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     if (Status s = checkOutputPath(path); !s) return s;
     auto out = createOutput(path);

@@ -10,15 +10,9 @@
 
 namespace flarekit {
 
-namespace {
-
-float flareScaleFor(float brightness) {
-    // Up to display white the flare follows the light linearly; above it (HDR suns of 50 and
-    // more) logarithmically, so a bright sun gives a strong flare without washing out the frame.
+float flareScaleForBrightness(float brightness) {
     return brightness <= 1.f ? brightness : 1.f + std::log(brightness);
 }
-
-}  // namespace
 
 FoundLight findLight(const Image& image, const LightSearchOptions& options) {
     FoundLight result;
@@ -77,7 +71,7 @@ FoundLight findLight(const Image& image, const LightSearchOptions& options) {
         }
     }
     result.found = true;
-    result.flareScale = flareScaleFor(result.brightness);
+    result.flareScale = flareScaleForBrightness(result.brightness);
     return result;
 }
 

@@ -172,7 +172,7 @@ TEST(CliPresets, ListsChecksAndDocuments) {
 }
 
 TEST(CliHelp, EverySubcommandHasHelp) {
-    for (const char* sub : {"blend", "apply", "elements", "presets", "visibility"}) {
+    for (const char* sub : {"blend", "apply", "elements", "presets", "visibility", "render"}) {
         const CliResult r = runCli({sub, "--help"});
         EXPECT_EQ(r.exitCode, 0) << sub;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
@@ -218,4 +218,24 @@ TEST(CliVisibility, BadSceneAndMethodsWithoutGlExitTwo) {
     EXPECT_EQ(r.exitCode, 2);
     r = runCli({"visibility", dir.file("missing.json")});
     EXPECT_EQ(r.exitCode, 2);
+}
+
+TEST(CliRender, RendersTheContractSceneWithAFlare) {
+    TempDir dir;
+    const std::string scene = std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json";
+    CliResult r = runCli({"render", scene, "-o", dir.file("f.png"), "-v"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("coverage 1.0000"), std::string::npos) << r.out;
+    r = runCli({"render", scene, "-o", dir.file("f.exr"), "--no-flare"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto png = readImage(dir.file("f.png")), exr = readImage(dir.file("f.exr"));
+    ASSERT_TRUE(png.ok() && exr.ok());
+    EXPECT_EQ(png->image.width(), 640);
+    EXPECT_TRUE(exr->wasFloat);
+    float peak = 0;
+    for (std::size_t i = 0; i < exr->image.pixelCount(); ++i) peak = std::max(peak, exr->image.data()[i * 4]);
+    EXPECT_NEAR(peak, 50.f, 0.1f);  // the sun disc, linear HDR
+    r = runCli({"render", dir.file("missing.json"), "-o", dir.file("x.png")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1);
 }

@@ -51,5 +51,6 @@ void addApplyCommand(CLI::App& app, int& exitCode);
 void addElementsCommand(CLI::App& app, int& exitCode);
 void addPresetsCommand(CLI::App& app, int& exitCode);
 void addVisibilityCommand(CLI::App& app, int& exitCode);
+void addRenderCommand(CLI::App& app, int& exitCode);
 
 }  // namespace flarekit::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     addElementsCommand(app, exitCode);
     addPresetsCommand(app, exitCode);
     addVisibilityCommand(app, exitCode);
+    addRenderCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,64 @@
+#include "scene/SceneMesh.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace flarekit {
+
+namespace {
+void push(std::vector<MeshVertex>& out, Vec3 p, Vec3 n, Vec3 c) {
+    out.push_back({{float(p.x), float(p.y), float(p.z)}, {float(n.x), float(n.y), float(n.z)},
+                   {float(c.x), float(c.y), float(c.z)}});
+}
+
+Vec3 unitSphere(int slice, int stack) {
+    const double theta = std::numbers::pi * stack / kSphereStacks, phi = 2 * std::numbers::pi * slice / kSphereSlices;
+    return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+}
+}  // namespace
+
+std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
+    std::vector<MeshVertex> out;
+    for (const Sphere& s : scene.spheres) {
+        for (int st = 0; st < kSphereStacks; ++st) {
+            for (int sl = 0; sl < kSphereSlices; ++sl) {
+                const Vec3 a = unitSphere(sl, st), b = unitSphere(sl + 1, st), c = unitSphere(sl + 1, st + 1),
+                           d = unitSphere(sl, st + 1);
+                for (Vec3 n : {a, b, c, a, c, d}) push(out, s.center + n * s.radius, n, s.color);
+            }
+        }
+    }
+    for (const Box& b : scene.boxes) {
+        const Vec3 lo = b.min, hi = b.max;
+        // Each face: normal axis, sign, and its four corners in order.
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int side = 0; side < 2; ++side) {
+                const double v = side ? hi[axis] : lo[axis];
+                const int u1 = (axis + 1) % 3, u2 = (axis + 2) % 3;
+                Vec3 corner[4];
+                const double uv[4][2] = {{lo[u1], lo[u2]}, {hi[u1], lo[u2]}, {hi[u1], hi[u2]}, {lo[u1], hi[u2]}};
+                for (int k = 0; k < 4; ++k) {
+                    double p[3];
+                    p[axis] = v;
+                    p[u1] = uv[k][0];
+                    p[u2] = uv[k][1];
+                    corner[k] = {p[0], p[1], p[2]};
+                }
+                double nn[3] = {0, 0, 0};
+                nn[axis] = side ? 1 : -1;
+                const Vec3 n{nn[0], nn[1], nn[2]};
+                for (int k : {0, 1, 2, 0, 2, 3}) push(out, corner[k], n, b.color);
+            }
+        }
+    }
+    for (const Triangle& t : scene.triangles) {
+        const Vec3 c = cross(t.b - t.a, t.c - t.a);
+        const Vec3 n = length(c) > 0 ? normalize(c) : Vec3{0, 1, 0};
+        push(out, t.a, n, t.color);
+        push(out, t.b, n, t.color);
+        push(out, t.c, n, t.color);
+    }
+    return out;
+}
+
+}  // namespace flarekit

@@ -1,0 +1,21 @@
+// Every object of a scene as one triangle list (position, normal, colour per vertex) for the
+// GL renderer: spheres tessellated as latitude-longitude grids, boxes as 12 triangles.
+#pragma once
+
+#include <vector>
+
+#include "flarekit/Scene.h"
+
+namespace flarekit {
+
+struct MeshVertex {
+    float position[3], normal[3], color[3];
+};
+
+//! Sphere tessellation: 64 x 32 quads keep the silhouette within 0.12% of the radius
+//! (1 - cos(pi / 64)), under a pixel for a sphere up to ~800 px across.
+inline constexpr int kSphereSlices = 64, kSphereStacks = 32;
+
+std::vector<MeshVertex> buildSceneMesh(const Scene& scene);
+
+}  // namespace flarekit

@@ -1,0 +1,104 @@
+// The GL scene renderer against the scene's own geometry: the sun disc where the camera maths
+// puts it, objects where they project, and the flare scaled by coverage.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "flarekit/Render.h"
+#include "gl/HeadlessGl.h"
+#include "scene/CameraMath.h"
+
+using namespace flarekit;
+
+namespace {
+void needContext() {
+    static auto gl = gl::HeadlessGl::create();
+    ASSERT_TRUE(gl.ok()) << gl.error().message;
+}
+
+Scene openSky() {
+    Scene s;
+    s.width = 320;
+    s.height = 180;
+    s.camera.position = {0, 1.7, 0};
+    s.camera.lookAt = {0, 5, -20};
+    s.sun.direction = normalize(Vec3{0.2, 0.3, -1});
+    s.sun.angularRadiusDeg = 2.0;
+    return s;
+}
+}  // namespace
+
+TEST(SceneRender, SunDiscIsDrawnAtItsProjectionWithColourTimesIntensity) {
+    needContext();
+    const Scene s = openSky();
+    auto frame = renderScene(s);
+    ASSERT_TRUE(frame.ok()) << frame.error().message;
+    Point sun;
+    ASSERT_TRUE(projectDirection(s, s.sun.direction, sun));
+    const Rgba& p = frame->at(int(sun.x), int(sun.y));
+    // RGBA16F keeps 11 significant bits: 47.5 is exact to within 0.03.
+    EXPECT_NEAR(p.r, 50 * 1.0, 0.05);
+    EXPECT_NEAR(p.g, 50 * 0.95, 0.05);
+    EXPECT_NEAR(p.b, 50 * 0.85, 0.05);
+    const Rgba& sky = frame->at(int(sun.x) + 40, int(sun.y));  // 40 px is ~10 deg away
+    EXPECT_LT(sky.r, 2.f);
+}
+
+TEST(SceneRender, SphereCoversItsProjectionAndNothingElse) {
+    needContext();
+    Scene s = openSky();
+    const Scene empty = s;
+    const Vec3 centre{-3, 3, -25};
+    s.spheres.push_back({centre, 1.5, {0.8, 0.1, 0.1}});
+    auto withSphere = renderScene(s), without = renderScene(empty);
+    ASSERT_TRUE(withSphere.ok() && without.ok());
+    Point c;
+    ASSERT_TRUE(projectPoint(s, centre, c));
+    const Rgba& inside = withSphere->at(int(c.x), int(c.y));
+    EXPECT_GT(inside.r, 2 * inside.b);  // red albedo, not sky blue
+    // The sphere's angular radius asin(1.5 / d) in pixels, with a 3-pixel margin either side.
+    const double d = length(centre - s.camera.position), rad = std::asin(1.5 / d);
+    const double pxPerRad = 180 / (2 * std::tan(30 * M_PI / 180));
+    const int r = int(rad * pxPerRad);
+    const Rgba& outside = withSphere->at(int(c.x) + r + 3, int(c.y));
+    const Rgba& outsideSky = without->at(int(c.x) + r + 3, int(c.y));
+    EXPECT_FLOAT_EQ(outside.b, outsideSky.b);
+    const Rgba& rim = withSphere->at(int(c.x) + r - 3, int(c.y));
+    EXPECT_NE(rim.b, without->at(int(c.x) + r - 3, int(c.y)).b);
+}
+
+TEST(SceneRender, FlareScalesWithCoverage) {
+    needContext();
+    const Scene s = openSky();
+    auto base = renderScene(s);
+    ASSERT_TRUE(base.ok());
+    auto preset = loadPreset("tanczos-classic");
+    ASSERT_TRUE(preset.ok());
+    Image none = *base, half = *base, full = *base;
+    EXPECT_EQ(addSunFlare(none, s, *preset, 0.0).flareIntensity, 0.f);
+    addSunFlare(half, s, *preset, 0.5);
+    const FlaredFrame f = addSunFlare(full, s, *preset, 1.0);
+    EXPECT_TRUE(f.sunInFront);
+    double added0 = 0, addedHalf = 0, addedFull = 0;
+    for (std::size_t i = 0; i < base->pixelCount() * 4; ++i) {
+        added0 += none.data()[i] - base->data()[i];
+        addedHalf += half.data()[i] - base->data()[i];
+        addedFull += full.data()[i] - base->data()[i];
+    }
+    EXPECT_EQ(added0, 0.0);
+    EXPECT_GT(addedFull, 1000.0);
+    EXPECT_NEAR(addedHalf / addedFull, 0.5, 1e-4);
+}
+
+TEST(SceneRender, SunBehindTheCameraGivesNoFlare) {
+    needContext();
+    Scene s = openSky();
+    s.sun.direction = {0, 0.3, 1};
+    auto frame = renderScene(s);
+    ASSERT_TRUE(frame.ok());
+    const Image before = *frame;
+    auto preset = loadPreset("subtle");
+    EXPECT_FALSE(addSunFlare(*frame, s, *preset, 1.0).sunInFront);
+    EXPECT_EQ(0, std::memcmp(before.data(), frame->data(), before.pixelCount() * sizeof(Rgba)));
+}
