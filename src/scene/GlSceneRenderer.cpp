@@ -48,6 +48,10 @@ Result<Image> renderScene(const Scene& scene) {
 
     glBindFramebuffer(GL_FRAMEBUFFER, fb->get());
     glViewport(0, 0, w, h);
+    // glClear obeys the write masks, and the previous call may have left depth writes off (a
+    // scene without objects ends after the sky pass): set them before clearing.
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
 

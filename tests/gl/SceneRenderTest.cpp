@@ -68,6 +68,22 @@ TEST(SceneRender, SphereCoversItsProjectionAndNothingElse) {
     EXPECT_NE(rim.b, without->at(int(c.x) + r - 3, int(c.y)).b);
 }
 
+TEST(SceneRender, ObjectsDrawAfterAnEmptySceneInTheSameContext) {
+    // Regression: an empty scene left depth writes off, so the next frame's depth clear did
+    // nothing and every object failed the depth test.
+    needContext();
+    ASSERT_TRUE(renderScene(openSky()).ok());
+    Scene s = openSky();
+    const Vec3 centre{0, 3, -20};
+    s.spheres.push_back({centre, 1.5, {0.8, 0.1, 0.1}});
+    auto frame = renderScene(s);
+    ASSERT_TRUE(frame.ok());
+    Point c;
+    ASSERT_TRUE(projectPoint(s, centre, c));
+    const Rgba& p = frame->at(int(c.x), int(c.y));
+    EXPECT_GT(p.r, 2 * p.b);
+}
+
 TEST(SceneRender, FlareScalesWithCoverage) {
     needContext();
     const Scene s = openSky();
