@@ -5,10 +5,15 @@
 
 namespace flarekit {
 
-Mat4 lookAtMatrix(const SceneCamera& c) {
+CameraBasis cameraBasis(const SceneCamera& c) {
     const Vec3 f = normalize(c.lookAt - c.position);
     const Vec3 s = normalize(cross(f, c.up));
-    const Vec3 u = cross(s, f);
+    return {s, cross(s, f), f};
+}
+
+Mat4 lookAtMatrix(const SceneCamera& c) {
+    const CameraBasis b = cameraBasis(c);
+    const Vec3 s = b.right, u = b.up, f = b.forward;
     return {s.x, u.x, -f.x, 0, s.y, u.y, -f.y, 0, s.z, u.z, -f.z, 0,
             -dot(s, c.position), -dot(u, c.position), dot(f, c.position), 1};
 }

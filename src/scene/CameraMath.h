@@ -11,6 +11,12 @@ namespace flarekit {
 
 using Mat4 = std::array<double, 16>;  //!< column-major: m[col * 4 + row]
 
+//! gluLookAt's orthonormal camera basis: right, true up, and forward (the view direction).
+struct CameraBasis {
+    Vec3 right, up, forward;
+};
+CameraBasis cameraBasis(const SceneCamera& camera);
+
 Mat4 lookAtMatrix(const SceneCamera& camera);
 Mat4 perspectiveMatrix(const SceneCamera& camera, double aspect);
 Mat4 multiply(const Mat4& a, const Mat4& b);

@@ -5,20 +5,14 @@
 #include <vector>
 
 #include "gl/GlObjects.h"
+#include "GlTestContext.h"
 #include "gl/HeadlessGl.h"
 
 using namespace flarekit;
 using namespace flarekit::gl;
 
 namespace {
-HeadlessGl& context() {
-    static auto gl = HeadlessGl::create();
-    if (!gl.ok()) {
-        ADD_FAILURE() << gl.error().message;
-        std::abort();
-    }
-    return *gl.value();
-}
+HeadlessGl& context() { return test::glContext(); }
 
 const char* kFullscreenVs = R"(#version 450 core
 void main() {

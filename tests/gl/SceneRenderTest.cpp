@@ -6,16 +6,13 @@
 #include <cstring>
 
 #include "flarekit/Render.h"
-#include "gl/HeadlessGl.h"
+#include "GlTestContext.h"
 #include "scene/CameraMath.h"
 
 using namespace flarekit;
 
 namespace {
-void needContext() {
-    static auto gl = gl::HeadlessGl::create();
-    ASSERT_TRUE(gl.ok()) << gl.error().message;
-}
+void needContext() { test::glContext(); }
 
 Scene openSky() {
     Scene s;

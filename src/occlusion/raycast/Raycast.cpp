@@ -13,6 +13,7 @@
 #include "core/Random.h"
 #include "flarekit/Visibility.h"
 #include "occlusion/raycast/SceneBvh.h"
+#include "scene/CameraMath.h"
 
 namespace flarekit {
 
@@ -34,24 +35,22 @@ void concentric(double a, double b, double& rho, double& phi) {
 }
 
 struct Frame {  // camera basis and frustum half-extents, for the in-frame fraction
-    Vec3 right, up, forward;
+    CameraBasis basis;
     double tanHalfY, tanHalfX;
 };
 
 Frame cameraFrame(const Scene& s) {
     Frame f;
-    f.forward = normalize(s.camera.lookAt - s.camera.position);
-    f.right = normalize(cross(f.forward, s.camera.up));
-    f.up = cross(f.right, f.forward);
+    f.basis = cameraBasis(s.camera);
     f.tanHalfY = std::tan(s.camera.fovYDeg * kPi / 360.0);
     f.tanHalfX = f.tanHalfY * double(s.width) / double(s.height);
     return f;
 }
 
 bool inFrame(const Frame& f, Vec3 d) {
-    const double z = dot(d, f.forward);
+    const double z = dot(d, f.basis.forward);
     if (z <= 0) return false;
-    return std::abs(dot(d, f.right)) <= f.tanHalfX * z && std::abs(dot(d, f.up)) <= f.tanHalfY * z;
+    return std::abs(dot(d, f.basis.right)) <= f.tanHalfX * z && std::abs(dot(d, f.basis.up)) <= f.tanHalfY * z;
 }
 
 }  // namespace
