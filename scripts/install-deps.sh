@@ -14,7 +14,7 @@ packages=(
   # contact-sheet labels are rendered by OIIO with this font
   fonts-dejavu-core
   # headless OpenGL (later issues; Mesa llvmpipe gives GL without a GPU)
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg
 )
 
 missing=()

@@ -2,6 +2,8 @@
 // measured coverage. A GL context must be current (gl::HeadlessGl) for renderScene.
 #pragma once
 
+#include <memory>
+
 #include "flarekit/Flare.h"
 #include "flarekit/Image.h"
 #include "flarekit/Scene.h"
@@ -9,9 +11,52 @@
 
 namespace flarekit {
 
-//! The frame as linear HDR RGBA: sky gradient, the sun disc at infinity (colour x intensity),
-//! lit objects. Rendered into RGBA16F with a 32-bit float depth buffer.
-Result<Image> renderScene(const Scene& scene);
+struct RenderOptions {
+    //! Samples per pixel: 1 (no MSAA) or 2, 4, 8. Multisampled frames are resolved into the
+    //! single-sample colour and depth textures after each draw.
+    int msaaSamples = 1;
+    //! Sun shadows from a shadow map (2048^2, orthographic from the sun) covering
+    //! `shadowRange` metres around the view ahead of the camera; outside it, surfaces are lit.
+    bool shadows = true;
+    double shadowRange = 160;
+};
+
+//! A GL scene renderer that keeps its programs, targets and the scene's mesh between frames,
+//! so an animation pays only for drawing. A GL context must be current while it lives; it
+//! is move-only.
+class SceneRenderer {
+public:
+    //! Targets of the scene's image size; uploads the scene's objects once.
+    static Result<SceneRenderer> create(const Scene& scene, const RenderOptions& options = {});
+    ~SceneRenderer();
+    SceneRenderer(SceneRenderer&&) noexcept;
+    SceneRenderer& operator=(SceneRenderer&&) noexcept;
+
+    //! Replaces the uploaded objects with the scene's (same image size).
+    Status setGeometry(const Scene& scene);
+    //! Draws sky, sun and the uploaded objects seen by `scene`'s camera and sun (its objects
+    //! are not re-read). Stays on the GPU: nothing is read back.
+    Status draw(const Scene& scene);
+    //! The last frame as linear HDR RGBA, top row first (waits for the GPU).
+    Result<Image> readColor() const;
+
+    int width() const;
+    int height() const;
+    //! The last frame's single-sample targets (GL names): RGBA16F colour, DEPTH_COMPONENT32F.
+    unsigned colorTexture() const;
+    unsigned depthTexture() const;
+    //! The framebuffer holding those two textures.
+    unsigned framebuffer() const;
+
+private:
+    struct Impl;
+    explicit SceneRenderer(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m;
+};
+
+//! One frame with a throwaway SceneRenderer: linear HDR RGBA with the sky gradient, the sun
+//! disc at infinity (colour x intensity) and lit objects, from RGBA16F + 32-bit float depth.
+Result<Image> renderScene(const Scene& scene, const RenderOptions& options = {});
 
 struct FlaredFrame {
     bool sunInFront = false;  //!< false when the sun is behind the camera: no flare

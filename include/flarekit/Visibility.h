@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "flarekit/Result.h"
@@ -28,5 +29,23 @@ struct RaycastOptions {
 };
 
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options = {});
+
+//! Ray casting for many frames over the same objects (an animation): the BVH is built once
+//! from a copy of the scene's objects; each measure() takes the camera, sun and image size of
+//! the scene it is given and ignores that scene's objects. Safe to measure from one thread
+//! at a time (each call is itself multi-threaded).
+class RaycastCaster {
+public:
+    explicit RaycastCaster(const Scene& geometry);
+    ~RaycastCaster();
+    RaycastCaster(RaycastCaster&&) noexcept;
+    RaycastCaster& operator=(RaycastCaster&&) noexcept;
+    Result<VisibilityResult> measure(const Scene& view, const RaycastOptions& options = {}) const;
+    std::size_t primitiveCount() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m;
+};
 
 }  // namespace flarekit

@@ -24,6 +24,16 @@ Mat4 perspectiveMatrix(const SceneCamera& c, double aspect) {
     return {f / aspect, 0, 0, 0, 0, f, 0, 0, 0, 0, (fa + n) / (n - fa), -1, 0, 0, 2 * fa * n / (n - fa), 0};
 }
 
+Mat4 orthographicMatrix(double halfWidth, double halfHeight, double nearPlane, double farPlane) {
+    Mat4 m{};
+    m[0] = 1 / halfWidth;
+    m[5] = 1 / halfHeight;
+    m[10] = -2 / (farPlane - nearPlane);
+    m[14] = -(farPlane + nearPlane) / (farPlane - nearPlane);
+    m[15] = 1;
+    return m;
+}
+
 Mat4 multiply(const Mat4& a, const Mat4& b) {
     Mat4 r{};
     for (int col = 0; col < 4; ++col) {

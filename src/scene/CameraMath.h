@@ -19,6 +19,8 @@ CameraBasis cameraBasis(const SceneCamera& camera);
 
 Mat4 lookAtMatrix(const SceneCamera& camera);
 Mat4 perspectiveMatrix(const SceneCamera& camera, double aspect);
+//! glOrtho(-halfWidth, halfWidth, -halfHeight, halfHeight, nearPlane, farPlane).
+Mat4 orthographicMatrix(double halfWidth, double halfHeight, double nearPlane, double farPlane);
 Mat4 multiply(const Mat4& a, const Mat4& b);
 Mat4 inverse(const Mat4& m);  //!< general 4x4 inverse (cofactors)
 std::array<float, 16> toFloat(const Mat4& m);

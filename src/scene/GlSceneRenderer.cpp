@@ -1,5 +1,7 @@
 // The GL scene pass: sky and sun first (full-screen, no depth), then every object in one
-// draw with depth testing. Read back bottom-up and flipped to flarekit's top-row-first order.
+// draw with depth testing. Programs, targets and the mesh live as long as the SceneRenderer,
+// so a frame of an animation costs only its draw. Read back bottom-up and flipped to
+// flarekit's top-row-first order.
 #include <epoxy/gl.h>
 
 #include <cmath>
@@ -22,40 +24,219 @@ constexpr float kHorizon[3] = {0.6f, 0.7f, 0.85f};
 constexpr float kZenith[3] = {0.12f, 0.25f, 0.6f};
 //! Ambient light on objects: a quarter of the average sky.
 constexpr float kAmbientShare = 0.25f;
+//! Shadow map side: 2048 texels over 160 m is 8 cm a texel, finer than the demo's leaves.
+constexpr int kShadowMapSize = 2048;
+//! The sun's camera sits this far back along the sun direction so casters up to there (tall
+//! buildings beyond the shadowed region) still land in the map.
+constexpr double kShadowEyeDistance = 1000;
 
 void setVec3(GLuint program, const char* name, Vec3 v) {
     glProgramUniform3f(program, glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
 }
 
+gl::Texture makeMultisample(GLenum format, int samples, int w, int h) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
+    glTextureStorage2DMultisample(name, samples, format, w, h, GL_TRUE);
+    return gl::Texture(name);
+}
+
+Result<gl::Framebuffer> framebufferOf(GLuint color, GLuint depth) {
+    GLuint name = 0;
+    glCreateFramebuffers(1, &name);
+    gl::Framebuffer fb(name);
+    glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, color, 0);
+    glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth, 0);
+    const GLenum status = glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        return internalError("OpenGL: scene framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+    }
+    return fb;
+}
+
 }  // namespace
 
-Result<Image> renderScene(const Scene& scene) {
-    const int w = scene.width, h = scene.height;
-    gl::Texture color = gl::makeTexture2D(GL_RGBA16F, w, h);
-    gl::Texture depth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, w, h);
-    auto fb = gl::makeFramebuffer(color, &depth);
-    if (!fb) return fb.error();
+struct SceneRenderer::Impl {
+    int width = 0, height = 0, samples = 1;
+    gl::Texture color, depth;            // single-sample results
+    gl::Framebuffer target;              // color + depth
+    gl::Texture msColor, msDepth;        // MSAA only
+    gl::Framebuffer msTarget;            // MSAA only
+    bool shadows = true;
+    double shadowRange = 160;
+    gl::Texture shadowMap;
+    gl::Framebuffer shadowTarget;
+    gl::Program sky, objects, shadowPass;
+    gl::VertexArray vao;
+    gl::Buffer vertices;
+    GLsizei vertexCount = 0;
+
+    std::array<float, 16> drawShadowMap(const Scene& scene);
+};
+
+SceneRenderer::SceneRenderer(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
+SceneRenderer::~SceneRenderer() = default;
+SceneRenderer::SceneRenderer(SceneRenderer&&) noexcept = default;
+SceneRenderer& SceneRenderer::operator=(SceneRenderer&&) noexcept = default;
+
+int SceneRenderer::width() const { return m->width; }
+int SceneRenderer::height() const { return m->height; }
+unsigned SceneRenderer::colorTexture() const { return m->color.get(); }
+unsigned SceneRenderer::depthTexture() const { return m->depth.get(); }
+unsigned SceneRenderer::framebuffer() const { return m->target.get(); }
+
+Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOptions& options) {
+    const int samples = options.msaaSamples;
+    if (samples != 1 && samples != 2 && samples != 4 && samples != 8) {
+        return invalidInput("msaa: expected 1, 2, 4 or 8 samples, got " + std::to_string(samples));
+    }
+    GLint maxSamples = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+    if (samples > maxSamples) {
+        return invalidInput("msaa: " + std::to_string(samples) + " samples requested, the GL supports " +
+                            std::to_string(maxSamples));
+    }
+    auto impl = std::make_unique<Impl>();
+    impl->width = scene.width;
+    impl->height = scene.height;
+    impl->samples = samples;
+    if (!(options.shadowRange > 0 && options.shadowRange < 1e6)) {
+        return invalidInput("shadow range: expected a positive number of metres below 1e6, got " +
+                            std::to_string(options.shadowRange));
+    }
+    impl->shadows = options.shadows;
+    impl->shadowRange = options.shadowRange;
+    if (options.shadows) {
+        impl->shadowMap = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize);
+        glTextureParameteri(impl->shadowMap.get(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTextureParameteri(impl->shadowMap.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        GLuint fb = 0;
+        glCreateFramebuffers(1, &fb);
+        impl->shadowTarget = gl::Framebuffer(fb);
+        glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, impl->shadowMap.get(), 0);
+        glNamedFramebufferDrawBuffer(fb, GL_NONE);
+        glNamedFramebufferReadBuffer(fb, GL_NONE);
+        if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            return internalError("OpenGL: shadow-map framebuffer incomplete");
+        }
+        auto shadowPass = gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
+                                           {GL_FRAGMENT_SHADER, "shadow.frag", shaders::shadow_frag}});
+        if (!shadowPass) return shadowPass.error();
+        impl->shadowPass = std::move(*shadowPass);
+    }
+    impl->color = gl::makeTexture2D(GL_RGBA16F, scene.width, scene.height);
+    impl->depth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, scene.width, scene.height);
+    auto target = framebufferOf(impl->color.get(), impl->depth.get());
+    if (!target) return target.error();
+    impl->target = std::move(*target);
+    if (samples > 1) {
+        impl->msColor = makeMultisample(GL_RGBA16F, samples, scene.width, scene.height);
+        impl->msDepth = makeMultisample(GL_DEPTH_COMPONENT32F, samples, scene.width, scene.height);
+        auto ms = framebufferOf(impl->msColor.get(), impl->msDepth.get());
+        if (!ms) return ms.error();
+        impl->msTarget = std::move(*ms);
+    }
     auto sky = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
                                 {GL_FRAGMENT_SHADER, "sky.frag", shaders::sky_frag}});
     if (!sky) return sky.error();
+    impl->sky = std::move(*sky);
     auto objects = gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
                                     {GL_FRAGMENT_SHADER, "scene.frag", shaders::scene_frag}});
     if (!objects) return objects.error();
+    impl->objects = std::move(*objects);
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    impl->vao = gl::VertexArray(vao);
+    SceneRenderer renderer(std::move(impl));
+    if (Status s = renderer.setGeometry(scene); !s) return s.error();
+    return renderer;
+}
 
+Status SceneRenderer::setGeometry(const Scene& scene) {
+    if (scene.width != m->width || scene.height != m->height) {
+        return invalidInput("scene renderer: geometry for a " + std::to_string(scene.width) + "x" +
+                            std::to_string(scene.height) + " scene given to a " + std::to_string(m->width) + "x" +
+                            std::to_string(m->height) + " renderer");
+    }
+    const std::vector<MeshVertex> mesh = buildSceneMesh(scene);
+    m->vertices.reset();
+    m->vertexCount = GLsizei(mesh.size());
+    if (mesh.empty()) return Ok{};
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    m->vertices = gl::Buffer(buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
+    const GLuint vao = m->vao.get();
+    glVertexArrayVertexBuffer(vao, 0, buffer, 0, sizeof(MeshVertex));
+    for (GLuint attr = 0; attr < 3; ++attr) {
+        glEnableVertexArrayAttrib(vao, attr);
+        glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
+        glVertexArrayAttribBinding(vao, attr, 0);
+    }
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+        return internalError("OpenGL: mesh upload failed (error 0x" + std::to_string(err) + ")");
+    }
+    return Ok{};
+}
+
+//! Renders the objects' depth as seen from the sun into the shadow map and returns the matrix
+//! from world space to shadow-map coordinates in [0, 1]^3. The map covers a square of side
+//! 2 x range centred `range` x 0.6 ahead of the camera on the ground plane of its view.
+std::array<float, 16> SceneRenderer::Impl::drawShadowMap(const Scene& scene) {
+    Impl& m = *this;
+    const CameraBasis view = cameraBasis(scene.camera);
+    Vec3 ahead = view.forward;
+    ahead.y = 0;
+    ahead = length(ahead) > 1e-6 ? normalize(ahead) : Vec3{0, 0, -1};
+    const Vec3 focus = scene.camera.position + ahead * (0.6 * m.shadowRange);
+    SceneCamera sunCamera;
+    sunCamera.position = focus + scene.sun.direction * kShadowEyeDistance;
+    sunCamera.lookAt = focus;
+    sunCamera.up = std::abs(scene.sun.direction.y) < 0.99 ? Vec3{0, 1, 0} : Vec3{0, 0, -1};
+    const Mat4 sunViewProjection = multiply(
+        orthographicMatrix(m.shadowRange, m.shadowRange, 0.0, 2 * kShadowEyeDistance), lookAtMatrix(sunCamera));
+    const GLuint p = m.shadowPass.get();
+    const auto vp = toFloat(sunViewProjection);
+    glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, vp.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, m.shadowTarget.get());
+    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    // Slope-scaled offset against acne on surfaces the low sun grazes.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 4.0f);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(p);
+    glBindVertexArray(m.vao.get());
+    glDrawArrays(GL_TRIANGLES, 0, m.vertexCount);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    // NDC [-1, 1] -> [0, 1] on all three axes.
+    Mat4 bias{};
+    bias[0] = bias[5] = bias[10] = 0.5;
+    bias[12] = bias[13] = bias[14] = 0.5;
+    bias[15] = 1;
+    return toFloat(multiply(bias, sunViewProjection));
+}
+
+Status SceneRenderer::draw(const Scene& scene) {
+    const int w = m->width, h = m->height;
     const Mat4 viewProjection = multiply(perspectiveMatrix(scene.camera, double(w) / h), lookAtMatrix(scene.camera));
     const auto vp = toFloat(viewProjection), inv = toFloat(inverse(viewProjection));
     const Vec3 sunRadiance = scene.sun.color * scene.sun.intensity;
 
-    glBindFramebuffer(GL_FRAMEBUFFER, fb->get());
+    glBindFramebuffer(GL_FRAMEBUFFER, m->samples > 1 ? m->msTarget.get() : m->target.get());
     glViewport(0, 0, w, h);
-    // glClear obeys the write masks, and the previous call may have left depth writes off (a
+    // glClear obeys the write masks, and the previous frame may have left depth writes off (a
     // scene without objects ends after the sky pass): set them before clearing.
     glDepthMask(GL_TRUE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
 
-    const GLuint s = sky->get();
+    const GLuint s = m->sky.get();
     glProgramUniformMatrix4fv(s, glGetUniformLocation(s, "inverseViewProjection"), 1, GL_FALSE, inv.data());
     glProgramUniform2f(s, glGetUniformLocation(s, "viewportSize"), float(w), float(h));
     setVec3(s, "sunDirection", scene.sun.direction);
@@ -64,31 +245,28 @@ Result<Image> renderScene(const Scene& scene) {
                        float(std::cos(scene.sun.angularRadiusDeg * std::numbers::pi / 180.0)));
     glProgramUniform3fv(s, glGetUniformLocation(s, "horizonColor"), 1, kHorizon);
     glProgramUniform3fv(s, glGetUniformLocation(s, "zenithColor"), 1, kZenith);
-    GLuint vaoName = 0;
-    glCreateVertexArrays(1, &vaoName);
-    gl::VertexArray vao(vaoName);
-    glBindVertexArray(vaoName);
+    glBindVertexArray(m->vao.get());
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glUseProgram(s);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    const std::vector<MeshVertex> mesh = buildSceneMesh(scene);
-    gl::Buffer vertices;
-    if (!mesh.empty()) {
-        GLuint buffer = 0;
-        glCreateBuffers(1, &buffer);
-        vertices = gl::Buffer(buffer);
-        glNamedBufferStorage(buffer, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
-        glVertexArrayVertexBuffer(vaoName, 0, buffer, 0, sizeof(MeshVertex));
-        for (GLuint attr = 0; attr < 3; ++attr) {
-            glEnableVertexArrayAttrib(vaoName, attr);
-            glVertexArrayAttribFormat(vaoName, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
-            glVertexArrayAttribBinding(vaoName, attr, 0);
+    if (m->vertexCount > 0) {
+        const GLuint o = m->objects.get();
+        glProgramUniform1i(o, glGetUniformLocation(o, "shadowsEnabled"), m->shadows ? 1 : 0);
+        if (m->shadows) {
+            const auto shadow = m->drawShadowMap(scene);
+            glProgramUniformMatrix4fv(o, glGetUniformLocation(o, "shadowMatrix"), 1, GL_FALSE, shadow.data());
+            glProgramUniform1f(o, glGetUniformLocation(o, "shadowTexel"), float(2 * m->shadowRange / kShadowMapSize));
+            glProgramUniform1i(o, glGetUniformLocation(o, "sunShadow"), 0);
+            glBindTextureUnit(0, m->shadowMap.get());
+            glBindFramebuffer(GL_FRAMEBUFFER, m->samples > 1 ? m->msTarget.get() : m->target.get());
+            glViewport(0, 0, w, h);
+            glBindVertexArray(m->vao.get());
         }
-        const GLuint o = objects->get();
         glProgramUniformMatrix4fv(o, glGetUniformLocation(o, "viewProjection"), 1, GL_FALSE, vp.data());
         setVec3(o, "sunDirection", scene.sun.direction);
+        setVec3(o, "cameraPosition", scene.camera.position);
         setVec3(o, "sunRadiance", sunRadiance);
         const float ambient[3] = {kAmbientShare * 0.5f * (kHorizon[0] + kZenith[0]),
                                   kAmbientShare * 0.5f * (kHorizon[1] + kZenith[1]),
@@ -99,22 +277,41 @@ Result<Image> renderScene(const Scene& scene) {
         glDepthMask(GL_TRUE);
         glDisable(GL_CULL_FACE);  // triangles are double-sided
         glUseProgram(o);
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(mesh.size()));
+        glDrawArrays(GL_TRIANGLES, 0, m->vertexCount);
     }
-
-    Image frame(w, h);
-    std::vector<float> pixels(std::size_t(w) * std::size_t(h) * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, pixels.data());
+    if (m->samples > 1) {
+        // Resolve: colour averages the samples; depth blits must use NEAREST (one sample).
+        glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
         return internalError("OpenGL: scene render failed (error 0x" + std::to_string(err) + ")");
+    }
+    return Ok{};
+}
+
+Result<Image> SceneRenderer::readColor() const {
+    const int w = m->width, h = m->height;
+    Image frame(w, h);
+    std::vector<float> pixels(std::size_t(w) * std::size_t(h) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(m->color.get(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+        return internalError("OpenGL: reading the frame failed (error 0x" + std::to_string(err) + ")");
     }
     for (int y = 0; y < h; ++y) {
         const float* src = pixels.data() + std::size_t(h - 1 - y) * std::size_t(w) * 4;
         std::copy(src, src + std::size_t(w) * 4, frame.row(y));
     }
     return frame;
+}
+
+Result<Image> renderScene(const Scene& scene, const RenderOptions& options) {
+    auto renderer = SceneRenderer::create(scene, options);
+    if (!renderer) return renderer.error();
+    if (Status s = renderer->draw(scene); !s) return s.error();
+    return renderer->readColor();
 }
 
 FlaredFrame addSunFlare(Image& frame, const Scene& scene, const Preset& preset, double coverage) {

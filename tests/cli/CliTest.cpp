@@ -172,7 +172,7 @@ TEST(CliPresets, ListsChecksAndDocuments) {
 }
 
 TEST(CliHelp, EverySubcommandHasHelp) {
-    for (const char* sub : {"blend", "apply", "elements", "presets", "visibility", "render"}) {
+    for (const char* sub : {"blend", "apply", "elements", "presets", "visibility", "render", "demo"}) {
         const CliResult r = runCli({sub, "--help"});
         EXPECT_EQ(r.exitCode, 0) << sub;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
@@ -238,4 +238,48 @@ TEST(CliRender, RendersTheContractSceneWithAFlare) {
     r = runCli({"render", dir.file("missing.json"), "-o", dir.file("x.png")});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1);
+}
+
+TEST(CliDemo, WritesFramesLogStripAndVideo) {
+    TempDir dir;
+    const std::string out = dir.file("demo");  // created by the command
+    CliResult r = runCli({"demo", "-o", out, "--frames", "6", "--size", "160x90"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("demo: 6/6 (100%)"), std::string::npos) << r.err;  // plain progress off a TTY
+    for (int i = 1; i <= 6; ++i) {
+        auto frame = readImage(out + "/frame_000" + std::to_string(i) + ".png");
+        ASSERT_TRUE(frame.ok()) << i;
+        EXPECT_EQ(frame->image.width(), 160);
+        EXPECT_EQ(frame->image.height(), 90);
+    }
+    EXPECT_FALSE(std::filesystem::exists(out + "/frame_0007.png"));
+    const std::string csv = slurp(out + "/coverage.csv");
+    EXPECT_EQ(lineCount(csv), 7);  // header + 6 frames
+    EXPECT_EQ(csv.rfind("frame,time_s,coverage_raw,coverage_smoothed", 0), 0u);
+    auto strip = readImage(out + "/strip.png");
+    ASSERT_TRUE(strip.ok());
+    EXPECT_EQ(strip->image.width(), 3 * 160);
+    // The install script installs ffmpeg, so the video is part of the contract here.
+    ASSERT_TRUE(std::filesystem::exists(out + "/demo.mp4")) << r.err;
+    EXPECT_GT(std::filesystem::file_size(out + "/demo.mp4"), 1000u);
+    EXPECT_FALSE(std::filesystem::exists(out + "/demo.mp4.partial.mp4"));
+}
+
+TEST(CliDemo, BadOptionsExitTwoWithOneLine) {
+    TempDir dir;
+    const std::string file = dir.file("plain-file");
+    std::ofstream(file) << "x";
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"demo", "-o", dir.file("a"), "--size", "160by90"},
+          {"demo", "-o", dir.file("a"), "--size", "4x4"},
+          {"demo", "-o", dir.file("a"), "--method", "telepathy"},
+          {"demo", "-o", dir.file("a"), "--frames", "0"},
+          {"demo", "-o", dir.file("a"), "--guard-band", "2"},
+          {"demo", "-o", file + "/sub"},
+          {"demo", "-o", file}}) {
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exitCode, 2) << args.back() << ": " << r.err;
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a")));  // nothing created on bad input
 }

@@ -115,3 +115,90 @@ TEST(SceneRender, SunBehindTheCameraGivesNoFlare) {
     EXPECT_FALSE(addSunFlare(*frame, s, *preset, 1.0).sunInFront);
     EXPECT_EQ(0, std::memcmp(before.data(), frame->data(), before.pixelCount() * sizeof(Rgba)));
 }
+
+TEST(SceneRender, PersistentRendererMatchesOneShotFramesAfterACameraMove) {
+    needContext();
+    Scene s = openSky();
+    s.spheres.push_back({{-3, 3, -25}, 1.5, {0.8, 0.1, 0.1}});
+    s.boxes.push_back({{2, 0, -30}, {4, 5, -28}, {0.4, 0.4, 0.4}});
+    auto renderer = SceneRenderer::create(s);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+    ASSERT_TRUE(renderer->draw(s).ok());
+    Scene moved = s;
+    moved.camera.position = {1, 2, 3};
+    moved.camera.lookAt = {-1, 3, -25};
+    Scene cameraOnly = moved;  // draw() takes camera and sun only: objects stay uploaded
+    cameraOnly.spheres.clear();
+    cameraOnly.boxes.clear();
+    ASSERT_TRUE(renderer->draw(cameraOnly).ok());
+    auto kept = renderer->readColor();
+    auto fresh = renderScene(moved);
+    ASSERT_TRUE(kept.ok() && fresh.ok());
+    EXPECT_EQ(0, std::memcmp(kept->data(), fresh->data(), kept->pixelCount() * sizeof(Rgba)));
+}
+
+TEST(SceneRender, BoxCastsItsShadowWhereTheSunRayPredicts) {
+    needContext();
+    Scene s = openSky();
+    s.camera.position = {0, 6, 0};
+    s.camera.lookAt = {0, 0, -20};
+    s.sun.direction = normalize(Vec3{0.3, 0.8, -0.5});
+    const Vec3 grey{0.5, 0.5, 0.5};
+    s.boxes.push_back({{-50, -1, -80}, {50, 0, 10}, grey});  // ground
+    const Vec3 blocker{-2, 3, -22};
+    s.boxes.push_back({blocker - Vec3{1, 0.2, 1}, blocker + Vec3{1, 0.2, 1}, grey});
+    // The ground point whose ray to the sun passes through the blocker's centre, and one 5 m
+    // beside it that nothing shades.
+    const Vec3 shadowed = blocker - s.sun.direction * (blocker.y / s.sun.direction.y);
+    const Vec3 lit = shadowed + Vec3{-5, 0, 0};
+    Point ps, pl;
+    ASSERT_TRUE(projectPoint(s, shadowed, ps) && projectPoint(s, lit, pl));
+    auto frame = renderScene(s);
+    RenderOptions noShadows;
+    noShadows.shadows = false;
+    auto flat = renderScene(s, noShadows);
+    ASSERT_TRUE(frame.ok() && flat.ok());
+    // Lambert: albedo x (sun x 0.1 x cos + ambient); in shadow the sun term is gone.
+    const double sunTerm = 0.5 * 50 * 0.1 * s.sun.direction.y;  // red channel, sun colour r = 1
+    const float inShadow = frame->at(int(ps.x), int(ps.y)).r, inSun = frame->at(int(pl.x), int(pl.y)).r;
+    EXPECT_NEAR(inSun - inShadow, sunTerm, 0.02 * sunTerm);
+    EXPECT_NEAR(flat->at(int(ps.x), int(ps.y)).r, inSun, 0.01f * inSun);
+}
+
+TEST(SceneRender, MsaaSmoothsEdgesAndKeepsInteriors) {
+    needContext();
+    Scene s = openSky();
+    const Vec3 centre{0, 3, -20};
+    s.spheres.push_back({centre, 2.0, {0.8, 0.1, 0.1}});
+    RenderOptions msaa;
+    msaa.msaaSamples = 4;
+    auto aliased = renderScene(s), smooth = renderScene(s, msaa);
+    ASSERT_TRUE(aliased.ok() && smooth.ok()) << (smooth.ok() ? "" : smooth.error().message);
+    Point c;
+    ASSERT_TRUE(projectPoint(s, centre, c));
+    EXPECT_NEAR(smooth->at(int(c.x), int(c.y)).r, aliased->at(int(c.x), int(c.y)).r, 1e-3f);
+    // Along the row through the centre, the 1x frame only has sky or sphere values; 4x MSAA has
+    // at least one pixel part way between at the silhouette.
+    const int y = int(c.y);
+    const float skyB = aliased->at(1, y).b, sphereB = aliased->at(int(c.x), y).b;
+    int between = 0;
+    for (int x = 0; x < s.width; ++x) {
+        const float b = smooth->at(x, y).b;
+        if (b > std::min(skyB, sphereB) + 0.02f && b < std::max(skyB, sphereB) - 0.02f) ++between;
+    }
+    EXPECT_GE(between, 2);
+}
+
+TEST(SceneRender, BadRendererSettingsAreErrors) {
+    needContext();
+    RenderOptions bad;
+    bad.msaaSamples = 3;
+    EXPECT_FALSE(SceneRenderer::create(openSky(), bad).ok());
+    auto renderer = SceneRenderer::create(openSky());
+    ASSERT_TRUE(renderer.ok());
+    Scene other = openSky();
+    other.width = 64;
+    const Status s = renderer->setGeometry(other);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message.find("64x180"), std::string::npos) << s.error().message;
+}

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     addPresetsCommand(app, exitCode);
     addVisibilityCommand(app, exitCode);
     addRenderCommand(app, exitCode);
+    addDemoCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -55,13 +55,34 @@ bool inFrame(const Frame& f, Vec3 d) {
 
 }  // namespace
 
+struct RaycastCaster::Impl {
+    explicit Impl(const Scene& geometry) : scene(geometry), bvh(scene) {}
+    Scene scene;  // the BVH refers to its objects
+    SceneBvh bvh;
+};
+
+RaycastCaster::RaycastCaster(const Scene& geometry) : m(std::make_unique<Impl>(geometry)) {}
+RaycastCaster::~RaycastCaster() = default;
+RaycastCaster::RaycastCaster(RaycastCaster&&) noexcept = default;
+RaycastCaster& RaycastCaster::operator=(RaycastCaster&&) noexcept = default;
+std::size_t RaycastCaster::primitiveCount() const { return m->bvh.primitiveCount(); }
+
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    auto result = RaycastCaster(scene).measure(scene, options);
+    if (result) {  // include the BVH build, as before
+        result->milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
+    return result;
+}
+
+Result<VisibilityResult> RaycastCaster::measure(const Scene& scene, const RaycastOptions& options) const {
     if (options.samplesPerSide < 1 || options.samplesPerSide > 4096) {
         return invalidInput("raycast samples per side: expected an integer in [1, 4096], got " +
                             std::to_string(options.samplesPerSide));
     }
     const auto start = std::chrono::steady_clock::now();
-    const SceneBvh bvh(scene);
+    const SceneBvh& bvh = m->bvh;
     const Frame frame = cameraFrame(scene);
     const Vec3 s = scene.sun.direction;
     // Orthonormal basis (t1, t2) perpendicular to the sun direction.

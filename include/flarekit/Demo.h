@@ -1,0 +1,67 @@
+// The built-in demo: a drive along a road lined with trees, past buildings, through a tunnel
+// and into a left turn, with a low sun ahead on the right that flickers through the foliage,
+// vanishes in the tunnel and leaves the frame in the turn (the seeds' racing-game setting).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "flarekit/Flare.h"
+#include "flarekit/Image.h"
+#include "flarekit/Scene.h"
+#include "flarekit/Temporal.h"
+
+namespace flarekit {
+
+//! The drive takes 8 s of animation time whatever the frame count: 231 m at 28.9 m/s
+//! (104 km/h); frame i shows time 8 i / frames, so --frames sets the frame rate (240: 30 fps).
+inline constexpr double kDemoDurationSeconds = 8.0;
+
+//! The demo world with the camera at `t` (0 = start, 1 = end of the drive).
+Scene demoScene(int width, int height, double t);
+
+struct DemoSettings {
+    int width = 1280, height = 720;
+    int frames = 240;
+    std::string method = "raycast";  //!< visibility method
+    int raycastSamplesPerSide = 64;  //!< 4096 rays a frame; the temporal filter absorbs the noise
+    int msaaSamples = 1;
+    TemporalParams temporal;
+};
+
+//! Range checks of every setting (no GL needed); errors name the setting.
+Status validateDemoSettings(const DemoSettings& settings);
+
+struct DemoFrame {
+    Image image;  //!< tone-mapped (ACES fitted) linear [0, 1]: write as PNG for sRGB
+    double time = 0;          //!< seconds into the drive
+    double rawCoverage = 0;   //!< the method's coverage this frame
+    double inFrame = 0;       //!< fraction of the disc inside the frame
+    TemporalState temporal;   //!< smoothed coverage, edge fade, exposure
+    bool sunInFront = false;
+    Point sunPixel;
+    float flareIntensity = 0;
+    double renderMs = 0, visibilityMs = 0, flareMs = 0;
+};
+
+//! Renders the demo frame by frame (in order: the temporal filter carries state). A GL
+//! context must be current on the calling thread while it lives.
+class DemoAnimation {
+public:
+    static Result<DemoAnimation> create(const DemoSettings& settings, const Preset& preset);
+    ~DemoAnimation();
+    DemoAnimation(DemoAnimation&&) noexcept;
+    DemoAnimation& operator=(DemoAnimation&&) noexcept;
+
+    int frameCount() const;
+    std::size_t primitiveCount() const;  //!< objects in the world (triangles, spheres, boxes)
+    //! The next frame (0, 1, 2, ...); an error past the last.
+    Result<DemoFrame> next();
+
+private:
+    struct Impl;
+    explicit DemoAnimation(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m;
+};
+
+}  // namespace flarekit

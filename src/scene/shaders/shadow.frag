@@ -1,0 +1,3 @@
+#version 450 core
+// Shadow pass: depth only.
+void main() {}

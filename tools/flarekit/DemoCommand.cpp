@@ -1,0 +1,252 @@
+// flarekit demo: the built-in drive (road, trees, buildings, tunnel, turn) rendered to PNG
+// frames, a coverage log, a strip of six frames and, with ffmpeg installed, an MP4.
+// PNG encoding runs on a writer thread so the GL/raycast/flare work of the next frame overlaps it.
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "Common.h"
+#include "Progress.h"
+#include "Video.h"
+#include "core/AtomicFile.h"
+#include "flarekit/Demo.h"
+#include "flarekit/ImageIO.h"
+#include "gl/HeadlessGl.h"
+
+namespace flarekit::cli {
+
+namespace {
+
+struct DemoArgs {
+    std::string outDir, size = "1280x720", preset = "tanczos-classic";
+    DemoSettings settings;
+    bool noVideo = false;
+};
+
+//! Writes frames in order on its own thread; at most `capacity` frames wait in memory.
+class FrameWriter {
+public:
+    explicit FrameWriter(std::size_t capacity) : m_capacity(capacity), m_thread([this] { run(); }) {}
+    ~FrameWriter() { (void)close(); }
+    void push(std::string path, Image image) {
+        std::unique_lock lock(m_mutex);
+        m_cv.wait(lock, [&] { return m_queue.size() < m_capacity; });
+        m_queue.emplace_back(std::move(path), std::move(image));
+        m_cv.notify_all();
+    }
+    //! Waits for every queued frame; the first write error, if any.
+    Status close() {
+        {
+            std::lock_guard lock(m_mutex);
+            m_closed = true;
+            m_cv.notify_all();
+        }
+        if (m_thread.joinable()) m_thread.join();
+        return m_status;
+    }
+
+private:
+    void run() {
+        for (;;) {
+            std::pair<std::string, Image> job;
+            {
+                std::unique_lock lock(m_mutex);
+                m_cv.wait(lock, [&] { return !m_queue.empty() || m_closed; });
+                if (m_queue.empty()) return;
+                job = std::move(m_queue.front());
+                m_queue.pop_front();
+                m_cv.notify_all();
+            }
+            if (!m_status) continue;  // after a failure, drain without writing
+            if (Status s = writeImage(job.first, job.second); !s) m_status = s;
+        }
+    }
+    std::size_t m_capacity;
+    std::mutex m_mutex;
+    std::condition_variable m_cv;
+    std::deque<std::pair<std::string, Image>> m_queue;
+    bool m_closed = false;
+    Status m_status = Ok{};
+    std::thread m_thread;
+};
+
+//! A box-filtered copy `factor` times smaller (strip thumbnails).
+Image shrink(const Image& src, int factor) {
+    Image out(std::max(1, src.width() / factor), std::max(1, src.height() / factor));
+    const float norm = 1.f / float(factor * factor);
+    for (int y = 0; y < out.height(); ++y) {
+        for (int x = 0; x < out.width(); ++x) {
+            Rgba sum{0, 0, 0, 0};
+            for (int j = 0; j < factor; ++j) {
+                for (int i = 0; i < factor; ++i) {
+                    const Rgba& p = src.at(x * factor + i, y * factor + j);
+                    sum.r += p.r, sum.g += p.g, sum.b += p.b, sum.a += p.a;
+                }
+            }
+            out.at(x, y) = {sum.r * norm, sum.g * norm, sum.b * norm, sum.a * norm};
+        }
+    }
+    return out;
+}
+
+//! Six evenly spaced frames side by side, 3 x 2, each 1/4 size (or less for big frames).
+class Strip {
+public:
+    Strip(int frames, int width, int height) : m_frames(frames), m_factor(std::max(1, width / 320)) {
+        m_cellW = width / m_factor;
+        m_cellH = height / m_factor;
+        m_image = Image(3 * m_cellW, 2 * m_cellH);
+    }
+    void offer(int index, const Image& frame) {
+        for (int k = 0; k < 6; ++k) {
+            if (index != pick(k)) continue;
+            const Image small = shrink(frame, m_factor);
+            for (int y = 0; y < small.height() && y < m_cellH; ++y) {
+                for (int x = 0; x < small.width() && x < m_cellW; ++x) {
+                    m_image.at((k % 3) * m_cellW + x, (k / 3) * m_cellH + y) = small.at(x, y);
+                }
+            }
+        }
+    }
+    const Image& image() const { return m_image; }
+
+private:
+    int pick(int k) const { return int(std::lround((k + 0.5) / 6.0 * (m_frames - 1))); }
+    int m_frames, m_factor, m_cellW = 0, m_cellH = 0;
+    Image m_image;
+};
+
+Status writeText(const std::string& path, const std::string& text) {
+    return writeAtomically(path, [&](const std::string& temp) -> Status {
+        std::FILE* f = std::fopen(temp.c_str(), "wb");
+        if (!f) return ioError(path + ": cannot write");
+        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        if (std::fclose(f) != 0 || !ok) return ioError(path + ": write failed");
+        return Ok{};
+    });
+}
+
+int runDemo(DemoArgs& a) {
+    int w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(a.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2) {
+        return report(invalidInput("--size: expected WIDTHxHEIGHT, e.g. 1280x720, got '" + a.size + "'"));
+    }
+    a.settings.width = w;
+    a.settings.height = h;
+    if (Status s = validateDemoSettings(a.settings); !s) return report(s.error());
+    auto preset = loadPreset(a.preset);
+    if (!preset) return report(preset.error());
+    std::error_code ec;
+    std::filesystem::create_directories(a.outDir, ec);
+    if (ec || !std::filesystem::is_directory(a.outDir)) {
+        return report(invalidInput(a.outDir + ": cannot create the output directory" + (ec ? ": " + ec.message() : "")));
+    }
+    auto gl = gl::HeadlessGl::create();
+    if (!gl) return report(gl.error());
+    auto demo = DemoAnimation::create(a.settings, *preset);
+    if (!demo) return report(demo.error());
+
+    const int n = demo->frameCount();
+    const int digits = std::max(4, int(std::to_string(n).size()));
+    const std::string dir = std::filesystem::path(a.outDir).string() + "/";
+    auto framePath = [&](int i) {
+        std::string number = std::to_string(i + 1);
+        number.insert(0, std::size_t(digits) - std::min(number.size(), std::size_t(digits)), '0');
+        return dir + "frame_" + number + ".png";
+    };
+    std::printf("demo: %d frames at %dx%d, %zu objects, method %s, %s via %s\n", n, w, h, demo->primitiveCount(),
+                a.settings.method.c_str(), (*gl)->renderer().c_str(), (*gl)->platform().c_str());
+    std::fflush(stdout);
+
+    std::string csv = "frame,time_s,coverage_raw,coverage_smoothed,in_frame,edge_fade,exposure,sun_x,sun_y,"
+                      "flare_intensity,render_ms,visibility_ms,flare_ms\n";
+    double renderMs = 0, visibilityMs = 0, flareMs = 0;
+    Strip strip(n, w, h);
+    FrameWriter writer(3);
+    Progress progress("demo", n);
+    for (int i = 0; i < n; ++i) {
+        auto frame = demo->next();
+        if (!frame) {
+            progress.finish();
+            (void)writer.close();
+            return report(frame.error());
+        }
+        char line[256];
+        std::snprintf(line, sizeof line, "%d,%.4f,%.5f,%.5f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.2f,%.2f,%.2f\n", i + 1,
+                      frame->time, frame->rawCoverage, frame->temporal.coverage, frame->inFrame,
+                      frame->temporal.edgeFade, frame->temporal.exposure, double(frame->sunPixel.x),
+                      double(frame->sunPixel.y), double(frame->flareIntensity), frame->renderMs, frame->visibilityMs,
+                      frame->flareMs);
+        csv += line;
+        renderMs += frame->renderMs;
+        visibilityMs += frame->visibilityMs;
+        flareMs += frame->flareMs;
+        strip.offer(i, frame->image);
+        writer.push(framePath(i), std::move(frame->image));
+        progress.update(i + 1);
+    }
+    progress.finish();
+    if (Status s = writer.close(); !s) return report(s.error());
+    if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
+    if (Status s = writeImage(dir + "strip.png", strip.image()); !s) return report(s.error());
+    std::printf("demo: per frame %.1f ms render, %.1f ms visibility (%s), %.1f ms flare + tone map\n", renderMs / n,
+                visibilityMs / n, a.settings.method.c_str(), flareMs / n);
+    std::printf("demo: frames %s .. %s, log %scoverage.csv, strip %sstrip.png\n", framePath(0).c_str(),
+                framePath(n - 1).c_str(), dir.c_str(), dir.c_str());
+    if (a.noVideo) return kExitOk;
+    const std::string ffmpeg = findFfmpeg();
+    if (ffmpeg.empty()) {
+        warn("ffmpeg is not installed: no MP4 (the PNG frames are written)");
+        return kExitOk;
+    }
+    const double fps = n / kDemoDurationSeconds;
+    char pattern[64];
+    std::snprintf(pattern, sizeof pattern, "frame_%%0%dd.png", digits);
+    if (Status s = encodeVideo(ffmpeg, dir + pattern, fps, dir + "demo.mp4", dir + "ffmpeg.log"); !s) {
+        return report(s.error());
+    }
+    std::filesystem::remove(dir + "ffmpeg.log", ec);  // empty on success; kept only on failure
+    std::printf("demo: video %sdemo.mp4 (%.3g fps)\n", dir.c_str(), fps);
+    return kExitOk;
+}
+
+void addTemporalOption(CLI::App* cmd, const TemporalParamSpec& spec, double& value) {
+    cmd->add_option("--" + std::string(spec.name), value, spec.help)
+        ->check(CLI::Range(spec.min, spec.max))
+        ->capture_default_str();
+}
+
+}  // namespace
+
+void addDemoCommand(CLI::App& app, int& exitCode) {
+    auto args = std::make_shared<DemoArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "demo", "Render the built-in drive (trees, buildings, tunnel, turn) with an occlusion-aware sun flare");
+    cmd->add_option("-o,--output", args->outDir, "output directory (created if missing)")->required();
+    cmd->add_option("--frames", args->settings.frames, "frames over the 8 s drive (240 = 30 fps)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    cmd->add_option("--size", args->size, "frame size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--method", args->settings.method, "visibility method (raycast for now)")->capture_default_str();
+    cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
+    cmd->add_option("--samples", args->settings.raycastSamplesPerSide, "raycast: strata per side (N^2 rays a frame)")
+        ->check(CLI::Range(1, 4096))
+        ->capture_default_str();
+    cmd->add_option("--msaa", args->settings.msaaSamples, "samples per pixel for the scene pass (1, 2, 4, 8)")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
+        ->capture_default_str();
+    addTemporalOption(cmd, kAttackSpec, args->settings.temporal.attackSeconds);
+    addTemporalOption(cmd, kReleaseSpec, args->settings.temporal.releaseSeconds);
+    addTemporalOption(cmd, kGuardBandSpec, args->settings.temporal.guardBand);
+    addTemporalOption(cmd, kAdaptStrengthSpec, args->settings.temporal.adaptStrength);
+    addTemporalOption(cmd, kAdaptDarkenSpec, args->settings.temporal.adaptDarkenSeconds);
+    addTemporalOption(cmd, kAdaptBrightenSpec, args->settings.temporal.adaptBrightenSeconds);
+    cmd->add_flag("--no-video", args->noVideo, "skip the MP4 even when ffmpeg is installed");
+    cmd->callback([args, &exitCode] { exitCode = runDemo(*args); });
+}
+
+}  // namespace flarekit::cli
