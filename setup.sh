@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # flarekit set-up on a fresh Debian 12 machine: installs the packages it needs, builds
 # (Release), then runs one job.
-#   ./setup.sh demo   renders every shipped preset onto the sample images into out/
+#   ./setup.sh demo   renders the demo drive (out/drive: frames + MP4) and every shipped preset on
+#                     the sample images into out/
 #   ./setup.sh test   runs the whole test suite (CI runs this; with CI=true warnings are errors)
 set -euo pipefail
 cd "$(dirname "$0")"

@@ -1,9 +1,12 @@
-// GL scene render time per frame (headless EGL; llvmpipe here, the GPU where one is lent):
-// wall ms of renderScene (draw + read-back) and GPU ms of the draw from a timer query.
+// GL scene render time per frame on the demo world (headless EGL; llvmpipe here, the GPU where
+// one is lent): GPU ms of the draw from a timer query, wall ms of the draw alone (glFinish)
+// and with the float read-back, with and without the sun's shadow map; and a whole demo frame
+// (draw, read-back, raycast, flare, tone map) at 720p.
 #include <benchmark/benchmark.h>
 
 #include <epoxy/gl.h>
 
+#include "flarekit/Demo.h"
 #include "flarekit/Render.h"
 #include "gl/GlObjects.h"
 #include "gl/HeadlessGl.h"
@@ -12,38 +15,82 @@ using namespace flarekit;
 
 namespace {
 
-Scene benchScene(int w, int h) {
-    Scene s;
-    s.width = w;
-    s.height = h;
-    s.camera.position = {0, 1.7, 0};
-    s.camera.lookAt = {0, 5, -20};
-    s.sun.direction = normalize(Vec3{0.2, 0.3, -1});
-    for (int i = 0; i < 40; ++i) s.spheres.push_back({{-10.0 + i * 0.5, 3.0 + (i % 5), -20.0 - i}, 1.2, {0.2, 0.5, 0.1}});
-    for (int i = 0; i < 10; ++i) s.boxes.push_back({{-20.0 + 4 * i, 0, -60}, {-18.0 + 4 * i, 6.0 + i, -55}, {0.4, 0.4, 0.4}});
-    return s;
-}
-
-void BM_RenderScene(benchmark::State& state) {
+gl::HeadlessGl* context(benchmark::State& state) {
     static auto gl = gl::HeadlessGl::create();
     if (!gl) {
         state.SkipWithError(gl.error().message.c_str());
+        return nullptr;
+    }
+    return gl->get();
+}
+
+//! args: width, height, shadows (0/1), read back (0/1)
+void BM_RenderDemoScene(benchmark::State& state) {
+    gl::HeadlessGl* gl = context(state);
+    if (!gl) return;
+    const int w = int(state.range(0)), h = int(state.range(1));
+    RenderOptions options;
+    options.shadows = state.range(2) != 0;
+    const bool readBack = state.range(3) != 0;
+    auto renderer = SceneRenderer::create(demoScene(w, h, 0), options);
+    if (!renderer) {
+        state.SkipWithError(renderer.error().message.c_str());
         return;
     }
-    const Scene s = benchScene(int(state.range(0)), int(state.range(1)));
+    std::vector<Scene> views;  // cameras along the drive; draw() reads no objects from them
+    for (int i = 0; i < 64; ++i) {
+        Scene v = demoScene(w, h, i / 64.0);
+        v.spheres.clear(), v.boxes.clear(), v.triangles.clear();
+        views.push_back(std::move(v));
+    }
     gl::TimerQuery timer;
     double gpuMs = 0;
+    std::size_t frame = 0;
     for (auto _ : state) {
         timer.begin();
-        auto frame = renderScene(s);
+        (void)renderer->draw(views[frame++ % views.size()]);
         timer.end();
+        if (readBack) {
+            auto image = renderer->readColor();
+            benchmark::DoNotOptimize(image);
+        } else {
+            glFinish();
+        }
         gpuMs += timer.milliseconds();
-        benchmark::DoNotOptimize(frame);
     }
     state.counters["gpu_ms"] = gpuMs / double(state.iterations());
-    state.SetLabel((*gl)->renderer());
+    state.counters["Mpx/s"] =
+        benchmark::Counter(double(w) * h * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.SetLabel(gl->renderer());
 }
-BENCHMARK(BM_RenderScene)->Args({1280, 720})->Args({3840, 2160})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderDemoScene)
+    ->ArgNames({"w", "h", "shadows", "readback"})
+    ->Args({1280, 720, 1, 0})
+    ->Args({1280, 720, 0, 0})
+    ->Args({1280, 720, 1, 1})
+    ->Args({3840, 2160, 1, 0})
+    ->Args({3840, 2160, 1, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_DemoFrame720p(benchmark::State& state) {
+    gl::HeadlessGl* gl = context(state);
+    if (!gl) return;
+    auto preset = loadPreset("tanczos-classic");
+    DemoSettings settings;
+    settings.frames = 100000;
+    auto demo = DemoAnimation::create(settings, *preset);
+    if (!demo) {
+        state.SkipWithError(demo.error().message.c_str());
+        return;
+    }
+    for (auto _ : state) {
+        auto frame = demo->next();
+        benchmark::DoNotOptimize(frame);
+    }
+    state.SetLabel(gl->renderer());
+}
+BENCHMARK(BM_DemoFrame720p)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The main job: every shipped preset on the sample sunset, the HDR sample, and each preset's
-# element sheet, written to OUT_DIR.   usage: scripts/demo.sh FLAREKIT OUT_DIR
+# The main job: the built-in drive (road, trees, buildings, tunnel, turn; 240 frames at
+# 1280x720 with an occlusion-aware sun flare, PNG frames + MP4), then every shipped preset on
+# the sample sunset, the HDR sample, and each preset's element sheet, all written to OUT_DIR.
+#   usage: scripts/demo.sh FLAREKIT OUT_DIR
 set -euo pipefail
 flarekit="$1"
 out="$2"
 here="$(cd "$(dirname "$0")/.." && pwd)"
+"$flarekit" demo -o "$out/drive"
 mkdir -p "$out/sheets"
 for preset in $("$flarekit" presets | awk '{print $1}'); do
   "$flarekit" apply "$here/samples/sunset.png" -o "$out/sunset-$preset.png" --preset "$preset" --light auto
@@ -13,4 +16,5 @@ for preset in $("$flarekit" presets | awk '{print $1}'); do
 done
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.exr" --preset sun-wide
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.png" --preset sun-wide
-echo "demo: done, images in $out/"
+"$flarekit" render "$here/samples/scenes/contract-example.json" -o "$out/contract-example.png"
+echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/"

@@ -6,7 +6,8 @@
 //
 // Timeline (distance s of 231 m): narrow buildings with gaps (s 0-25), tree crowns (25-70),
 // lamp posts, the tunnel (hidden, 81-123), the exit and a clear straight where exposure adapts
-// to the sun, then an 80-degree left turn that swings the sun out of the right edge.
+// to the sun, trees on the turn's verge (flicker again, 148-165), then an 80-degree left turn
+// that swings the sun out of the right edge.
 #include "demo/DemoWorld.h"
 
 #include <algorithm>

@@ -4,6 +4,7 @@
 // flarekit's top-row-first order.
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -293,17 +294,15 @@ Status SceneRenderer::draw(const Scene& scene) {
 
 Result<Image> SceneRenderer::readColor() const {
     const int w = m->width, h = m->height;
+    // Straight into the image (one buffer: the frame's pages are touched once), then flipped
+    // in place from GL's bottom-up rows to top-row-first.
     Image frame(w, h);
-    std::vector<float> pixels(std::size_t(w) * std::size_t(h) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(m->color.get(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    glGetTextureImage(m->color.get(), 0, GL_RGBA, GL_FLOAT, GLsizei(frame.pixelCount() * sizeof(Rgba)), frame.data());
     if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
         return internalError("OpenGL: reading the frame failed (error 0x" + std::to_string(err) + ")");
     }
-    for (int y = 0; y < h; ++y) {
-        const float* src = pixels.data() + std::size_t(h - 1 - y) * std::size_t(w) * 4;
-        std::copy(src, src + std::size_t(w) * 4, frame.row(y));
-    }
+    for (int y = 0; y < h / 2; ++y) std::swap_ranges(frame.row(y), frame.row(y) + std::size_t(w) * 4, frame.row(h - 1 - y));
     return frame;
 }
 

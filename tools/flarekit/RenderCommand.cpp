@@ -14,7 +14,8 @@ namespace {
 struct RenderArgs {
     std::string scene, out, preset = "tanczos-classic", method = "raycast";
     float exposure = 1.f;
-    bool noFlare = false, verbose = false;
+    int msaa = 1;
+    bool noFlare = false, noShadows = false, verbose = false;
 };
 
 int runRender(const RenderArgs& a) {
@@ -28,7 +29,10 @@ int runRender(const RenderArgs& a) {
     if (!preset) return report(preset.error());
     auto gl = gl::HeadlessGl::create();
     if (!gl) return report(gl.error());
-    auto frame = renderScene(*scene);
+    RenderOptions options;
+    options.msaaSamples = a.msaa;
+    options.shadows = !a.noShadows;
+    auto frame = renderScene(*scene, options);
     if (!frame) return report(frame.error());
     auto visibility = raycastVisibility(*scene);
     if (!visibility) return report(visibility.error());
@@ -56,6 +60,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--exposure", args->exposure, "exposure before tone mapping (8/16-bit outputs)")
         ->check(CLI::Range(0.f, 1000.f))
         ->capture_default_str();
+    cmd->add_option("--msaa", args->msaa, "samples per pixel (1, 2, 4, 8)")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
+        ->capture_default_str();
+    cmd->add_flag("--no-shadows", args->noShadows, "light every surface (no sun shadow map)");
     cmd->add_flag("--no-flare", args->noFlare, "the frame only");
     cmd->add_flag("-v,--verbose", args->verbose, "print the renderer, coverage and sun position");
     cmd->callback([args, &exitCode] { exitCode = runRender(*args); });
