@@ -45,8 +45,16 @@ public:
     //! The last frame's single-sample targets (GL names): RGBA16F colour, DEPTH_COMPONENT32F.
     unsigned colorTexture() const;
     unsigned depthTexture() const;
+    //! Samples per pixel, and with MSAA the multisampled depth (GL_TEXTURE_2D_MULTISAMPLE)
+    //! before its one-sample resolve; 0 without MSAA.
+    int msaaSamples() const;
+    unsigned multisampleDepthTexture() const;
     //! The framebuffer holding those two textures.
     unsigned framebuffer() const;
+    //! The uploaded mesh (positions, normals, colours at attributes 0-2), for passes that
+    //! re-draw the objects from another camera (texture masking's sun map).
+    unsigned meshVertexArray() const;
+    int meshVertexCount() const;
 
 private:
     struct Impl;

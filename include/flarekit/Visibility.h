@@ -30,6 +30,10 @@ struct RaycastOptions {
 
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options = {});
 
+//! The fraction of the sun's disc (uniform over its cone) inside the camera's frame, from
+//! samplesPerSide^2 stratified directions; no occlusion.
+double sunInFrameFraction(const Scene& scene, int samplesPerSide = 64);
+
 //! Ray casting for many frames over the same objects (an animation): the BVH is built once
 //! from a copy of the scene's objects; each measure() takes the camera, sun and image size of
 //! the scene it is given and ignores that scene's objects. Safe to measure from one thread

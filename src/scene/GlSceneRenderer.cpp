@@ -85,6 +85,10 @@ int SceneRenderer::height() const { return m->height; }
 unsigned SceneRenderer::colorTexture() const { return m->color.get(); }
 unsigned SceneRenderer::depthTexture() const { return m->depth.get(); }
 unsigned SceneRenderer::framebuffer() const { return m->target.get(); }
+int SceneRenderer::msaaSamples() const { return m->samples; }
+unsigned SceneRenderer::multisampleDepthTexture() const { return m->msDepth.get(); }
+unsigned SceneRenderer::meshVertexArray() const { return m->vao.get(); }
+int SceneRenderer::meshVertexCount() const { return m->vertexCount; }
 
 Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOptions& options) {
     const int samples = options.msaaSamples;

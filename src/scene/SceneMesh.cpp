@@ -1,5 +1,6 @@
 #include "scene/SceneMesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -57,6 +58,28 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
         push(out, t.a, n, t.color);
         push(out, t.b, n, t.color);
         push(out, t.c, n, t.color);
+    }
+    return out;
+}
+
+std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene) {
+    std::vector<MeshObjectRange> out;
+    int first = 0;
+    for (const Sphere& s : scene.spheres) {
+        const int count = 6 * kSphereSlices * kSphereStacks;
+        // The tessellation lies inside the sphere, its flat facets at least r cos(pi/64) out.
+        out.push_back({first, count, s.center, s.radius, s.radius * 0.99});
+        first += count;
+    }
+    for (const Box& b : scene.boxes) {
+        const Vec3 half = (b.max - b.min) * 0.5;
+        out.push_back({first, 36, b.min + half, length(half), std::min({half.x, half.y, half.z})});
+        first += 36;
+    }
+    for (const Triangle& t : scene.triangles) {
+        const Vec3 c = (t.a + t.b + t.c) * (1.0 / 3.0);
+        out.push_back({first, 3, c, std::max({length(t.a - c), length(t.b - c), length(t.c - c)}), 0.0});
+        first += 3;
     }
     return out;
 }

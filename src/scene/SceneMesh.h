@@ -18,4 +18,14 @@ inline constexpr int kSphereSlices = 64, kSphereStacks = 32;
 
 std::vector<MeshVertex> buildSceneMesh(const Scene& scene);
 
+//! Where each object's vertices sit in buildSceneMesh's list (spheres, then boxes, then
+//! triangles, in scene order), with a bounding sphere and, for spheres and boxes, the radius
+//! of a ball the object surely contains (0 for triangles), for culling and early-outs.
+struct MeshObjectRange {
+    int first = 0, count = 0;
+    Vec3 centre;
+    double boundRadius = 0, solidRadius = 0;
+};
+std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene);
+
 }  // namespace flarekit

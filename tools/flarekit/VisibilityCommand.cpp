@@ -1,36 +1,78 @@
-// flarekit visibility: how much of the sun a scene's camera sees. Only the CPU ground truth
-// `raycast` exists so far; the GPU methods of the contract arrive with the GL backend.
+// flarekit visibility: how much of the sun a scene's camera sees, by the CPU ground truth
+// (`raycast`) or any GPU method of issue 5 on the headless GL backend.
+#include <chrono>
 #include <cstdio>
 
 #include "Common.h"
+#include "flarekit/GpuVisibility.h"
+#include "flarekit/Render.h"
 #include "flarekit/Visibility.h"
+#include "gl/HeadlessGl.h"
 
 namespace flarekit::cli {
 
 namespace {
 struct VisibilityArgs {
-    std::string scene, method = "raycast";
+    std::string scene, method = "raycast", variant = "circle";
     int samplesPerSide = RaycastOptions{}.samplesPerSide;
+    int msaa = 1;
     bool json = false;
 };
 
-int runVisibility(const VisibilityArgs& a) {
-    if (a.method != "raycast") {
-        return report(invalidInput("--method: '" + a.method +
-                                   "' needs the OpenGL backend, which is not built yet; available: raycast"));
+//! Draws the frame and runs the method, re-drawing the same frame until a late method's
+//! (pbo, query) result arrives: it reports how many frames that took.
+Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
+    auto gl = gl::HeadlessGl::create();
+    if (!gl) return gl.error();
+    RenderOptions render;
+    render.msaaSamples = a.msaa;
+    render.shadows = false;  // visibility reads depth only
+    auto renderer = SceneRenderer::create(scene, render);
+    if (!renderer) return renderer.error();
+    GpuVisibilityOptions options;
+    options.textureMaskVariant = a.variant;
+    auto method = createGpuVisibility(a.method, scene, options);
+    if (!method) return method.error();
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<double> coverage;
+    for (int frame = 0; frame < 16 && !coverage; ++frame) {
+        if (Status s = renderer->draw(scene); !s) return s.error();
+        if (Status s = (*method)->measure(scene, *renderer); !s) return s.error();
+        coverage = (*method)->latestCoverage();
+        latency = frame;
     }
+    if (!coverage) return internalError(a.method + ": no result after 16 frames");
+    VisibilityResult r;
+    r.method = a.method;
+    r.coverage = *coverage;
+    r.inFrame = sunInFrameFraction(scene);
+    r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+int runVisibility(const VisibilityArgs& a) {
     auto scene = loadScene(a.scene);
     if (!scene) return report(scene.error());
-    RaycastOptions options;
-    options.samplesPerSide = a.samplesPerSide;
-    auto r = raycastVisibility(*scene, options);
+    int latency = 0;
+    Result<VisibilityResult> r = internalError("unreached");
+    if (a.method == "raycast") {
+        RaycastOptions options;
+        options.samplesPerSide = a.samplesPerSide;
+        r = raycastVisibility(*scene, options);
+    } else {
+        r = runGpu(a, *scene, latency);
+    }
     if (!r) return report(r.error());
     if (a.json) {
-        std::printf("{\"method\": \"%s\", \"coverage\": %.6f, \"in_frame\": %.6f, \"samples\": %zu, \"cpu_ms\": %.3f}\n",
-                    r->method.c_str(), r->coverage, r->inFrame, r->samples, r->milliseconds);
+        std::printf("{\"method\": \"%s\", \"coverage\": %.6f, \"in_frame\": %.6f, \"samples\": %zu, "
+                    "\"latency_frames\": %d, \"cpu_ms\": %.3f}\n",
+                    r->method.c_str(), r->coverage, r->inFrame, r->samples, latency, r->milliseconds);
     } else {
-        std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame, %zu rays, %.1f ms\n",
-                    r->method.c_str(), r->coverage, 100 * r->coverage, 100 * r->inFrame, r->samples, r->milliseconds);
+        std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame", r->method.c_str(),
+                    r->coverage, 100 * r->coverage, 100 * r->inFrame);
+        if (r->samples) std::printf(", %zu rays", r->samples);
+        if (latency) std::printf(", result %d frame%s late", latency, latency > 1 ? "s" : "");
+        std::printf(", %.1f ms\n", r->milliseconds);
     }
     return kExitOk;
 }
@@ -41,15 +83,22 @@ void addVisibilityCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand("visibility", "Fraction of the sun's disc visible from a scene's camera");
     cmd->add_option("scene", args->scene, "scene JSON (see architecture.md)")->required();
     cmd->add_option("--method", args->method,
-                    "raycast (CPU ground truth); readback pbo query texture-mask texture-mask-screen burnout "
-                    "compute need the GL backend")
+                    "raycast (CPU ground truth) or a GPU method: readback pbo query texture-mask "
+                    "texture-mask-screen burnout compute")
         ->check(CLI::IsMember({"raycast", "readback", "pbo", "query", "texture-mask", "texture-mask-screen", "burnout",
                                "compute"}))
+        ->capture_default_str();
+    cmd->add_option("--variant", args->variant, "texture-mask sampling: square (16x16, 256 points), circle, bilinear (64 points)")
+        ->check(CLI::IsMember({"square", "circle", "bilinear"}))
         ->capture_default_str();
     cmd->add_option("--samples", args->samplesPerSide, "raycast: strata per side (N^2 rays)")
         ->check(CLI::Range(1, 4096))
         ->capture_default_str();
-    cmd->add_flag("--json", args->json, "print one JSON object: method, coverage, in_frame, samples, cpu_ms");
+    cmd->add_option("--msaa", args->msaa, "GPU methods: samples per pixel of the scene pass")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
+        ->capture_default_str();
+    cmd->add_flag("--json", args->json,
+                  "print one JSON object: method, coverage, in_frame, samples, latency_frames, cpu_ms");
     cmd->callback([args, &exitCode] { exitCode = runVisibility(*args); });
 }
 

@@ -55,6 +55,28 @@ bool inFrame(const Frame& f, Vec3 d) {
 
 }  // namespace
 
+double sunInFrameFraction(const Scene& scene, int samplesPerSide) {
+    const Frame frame = cameraFrame(scene);
+    const Vec3 s = normalize(scene.sun.direction);
+    const Vec3 helper = std::abs(s.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 t1 = normalize(cross(s, helper)), t2 = cross(s, t1);
+    const double oneMinusCosAlpha = 1.0 - std::cos(scene.sun.angularRadiusDeg * kPi / 180.0);
+    const int n = std::max(1, samplesPerSide);
+    std::size_t framed = 0;
+    for (int row = 0; row < n; ++row) {
+        for (int col = 0; col < n; ++col) {
+            double rho = 0, phi = 0;
+            concentric(2.0 * (col + 0.5) / n - 1.0, 2.0 * (row + 0.5) / n - 1.0, rho, phi);
+            const double cosTheta = 1.0 - rho * rho * oneMinusCosAlpha;
+            const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+            const double sign = rho < 0 ? -1.0 : 1.0;
+            const Vec3 d = cosTheta * s + (sign * sinTheta) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+            framed += inFrame(frame, d) ? 1 : 0;
+        }
+    }
+    return double(framed) / double(std::size_t(n) * std::size_t(n));
+}
+
 struct RaycastCaster::Impl {
     explicit Impl(const Scene& geometry) : scene(geometry), bvh(scene) {}
     Scene scene;  // the BVH refers to its objects

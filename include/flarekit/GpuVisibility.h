@@ -1,0 +1,49 @@
+// GPU sun visibility, one interface for every method of the seeds (issue 5): after the scene
+// pass, measure() starts the method on that frame; its newest result sits in a 1x1 R32F
+// texture on the GPU (what flare shaders read: no CPU read-back in the frame loop), and
+// latestCoverage() fetches it for reporting. A GL context must be current.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flarekit/Render.h"
+#include "flarekit/Result.h"
+#include "flarekit/Scene.h"
+
+namespace flarekit {
+
+struct GpuVisibilityOptions {
+    //! texture-mask sampling: "square" (the seed: a 16x16 sun map, one point per texel, 256),
+    //! "circle" (its improvement: an 18x18 map, points only on the texels inside the disc) or
+    //! "bilinear" (16x16, 64 points each averaging a 2x2 block through bilinear filtering).
+    std::string textureMaskVariant = "circle";
+    int pboRing = 3;  //!< pbo: buffers in flight; results arrive up to ring - 1 frames late
+};
+
+class GpuVisibility {
+public:
+    virtual ~GpuVisibility() = default;
+    virtual std::string name() const = 0;
+    //! Starts measuring the frame `renderer` has just drawn for `view` (camera and sun).
+    virtual Status measure(const Scene& view, const SceneRenderer& renderer) = 0;
+    //! GL name of the 1x1 R32F texture with the newest available coverage (0 until the first).
+    virtual unsigned coverageTexture() const = 0;
+    //! Collects finished work without waiting (pbo, query) and returns the newest coverage, or
+    //! nullopt if none has arrived yet. Reading it may wait for the GPU (one texel).
+    virtual std::optional<double> latestCoverage() = 0;
+    //! Frames between a measure() and its result becoming the newest (0: same frame).
+    virtual int latencyFrames() const = 0;
+};
+
+//! The contract's GPU method names: readback pbo query texture-mask texture-mask-screen burnout compute.
+const std::vector<std::string>& gpuVisibilityMethods();
+
+//! A method over the objects `renderer` has uploaded (texture-mask re-draws them from the sun's
+//! own camera, so it needs `world` for culling).
+Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,
+                                                           const GpuVisibilityOptions& options = {});
+
+}  // namespace flarekit

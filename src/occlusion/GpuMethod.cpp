@@ -1,0 +1,50 @@
+#include "occlusion/GpuMethod.h"
+
+#include "flarekit_shaders.h"
+
+namespace flarekit::occlusion {
+
+GpuMethod::GpuMethod() : m_coverage(gl::makeTexture2D(GL_R32F, 1, 1)) {
+    glTextureParameteri(m_coverage.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(m_coverage.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    const float zero = 0.f;
+    glTextureSubImage2D(m_coverage.get(), 0, 0, 0, 1, 1, GL_RED, GL_FLOAT, &zero);
+}
+
+void GpuMethod::publish(double coverage) {
+    const float value = float(coverage);
+    glTextureSubImage2D(m_coverage.get(), 0, 0, 0, 1, 1, GL_RED, GL_FLOAT, &value);
+    m_hasResult = true;
+}
+
+std::optional<double> GpuMethod::latestCoverage() {
+    if (!m_hasResult) return std::nullopt;
+    float value = 0;
+    glGetTextureImage(m_coverage.get(), 0, GL_RED, GL_FLOAT, sizeof value, &value);
+    return double(value);
+}
+
+Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources, const std::string& defines) {
+    const std::string prelude = std::string("#version 450 core\n") + defines + shaders::sun_disc_glsl + "\n#line 2\n";
+    std::vector<gl::ShaderSource> full;
+    for (const gl::ShaderSource& s : sources) {
+        std::string text = s.text;
+        // The shader files start with their own #version line: replace it with the prelude.
+        if (text.rfind("#version", 0) == 0) text = text.substr(text.find('\n') + 1);
+        full.push_back({s.stage, s.name, prelude + text});
+    }
+    switch (full.size()) {
+        case 1: return gl::linkProgram({full[0]});
+        case 2: return gl::linkProgram({full[0], full[1]});
+        default: return internalError("linkWithDisc: one or two shaders");
+    }
+}
+
+Status glStatus(const std::string& what) {
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+        return internalError("OpenGL: " + what + " failed (error 0x" + std::to_string(err) + ")");
+    }
+    return Ok{};
+}
+
+}  // namespace flarekit::occlusion

@@ -1,0 +1,39 @@
+// What the GPU visibility methods share: the 1x1 R32F coverage texture they write, programs
+// with the sun_disc.glsl prelude, a full-screen triangle, and error checks.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include "flarekit/GpuVisibility.h"
+#include "gl/GlObjects.h"
+#include "occlusion/SunDisc.h"
+
+namespace flarekit::occlusion {
+
+class GpuMethod : public GpuVisibility {
+public:
+    GpuMethod();
+    unsigned coverageTexture() const override { return m_coverage.get(); }
+    std::optional<double> latestCoverage() override;
+
+protected:
+    //! Stores a CPU-side result in the coverage texture (read-back methods).
+    void publish(double coverage);
+    //! Binds the coverage texture as image unit 0 / a draw target for GPU-side results.
+    GLuint coverageName() const { return m_coverage.get(); }
+    void markPublished() { m_hasResult = true; }
+    bool hasResult() const { return m_hasResult; }
+
+private:
+    gl::Texture m_coverage;
+    bool m_hasResult = false;
+};
+
+//! Links a program whose shaders get "#version 450 core", `defines` (e.g. "#define X\n") and
+//! the sun_disc.glsl prelude.
+Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources, const std::string& defines = "");
+Status glStatus(const std::string& what);
+
+}  // namespace flarekit::occlusion

@@ -1,0 +1,44 @@
+// The GPU method factory: contract names to implementations (one folder each).
+#include "flarekit/GpuVisibility.h"
+
+#include "occlusion/GpuMethod.h"
+
+namespace flarekit {
+
+namespace occlusion {
+std::unique_ptr<GpuVisibility> makeReadbackMethod();
+std::unique_ptr<GpuVisibility> makePboMethod(int ring);
+Result<std::unique_ptr<GpuVisibility>> makeQueryMethod();
+Result<std::unique_ptr<GpuVisibility>> makeComputeMethod();
+Result<std::unique_ptr<GpuVisibility>> makeTextureMaskMethod(const Scene& world, const std::string& variant);
+Result<std::unique_ptr<GpuVisibility>> makeTextureMaskScreenMethod();
+Result<std::unique_ptr<GpuVisibility>> makeBurnoutMethod();
+}  // namespace occlusion
+
+const std::vector<std::string>& gpuVisibilityMethods() {
+    static const std::vector<std::string> names = {"readback",           "pbo",     "query",  "texture-mask",
+                                                   "texture-mask-screen", "burnout", "compute"};
+    return names;
+}
+
+Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,
+                                                           const GpuVisibilityOptions& options) {
+    using namespace occlusion;
+    if (method == "readback") return makeReadbackMethod();
+    if (method == "pbo") {
+        if (options.pboRing < 1 || options.pboRing > 16) {
+            return invalidInput("pbo ring: expected 1 to 16 buffers, got " + std::to_string(options.pboRing));
+        }
+        return makePboMethod(options.pboRing);
+    }
+    if (method == "query") return makeQueryMethod();
+    if (method == "compute") return makeComputeMethod();
+    if (method == "texture-mask") return makeTextureMaskMethod(world, options.textureMaskVariant);
+    if (method == "texture-mask-screen") return makeTextureMaskScreenMethod();
+    if (method == "burnout") return makeBurnoutMethod();
+    std::string list;
+    for (const std::string& n : gpuVisibilityMethods()) list += (list.empty() ? "" : " ") + n;
+    return invalidInput("method: '" + method + "' is not a GPU visibility method; expected one of: " + list);
+}
+
+}  // namespace flarekit

@@ -1,0 +1,103 @@
+// `pbo`: the lock method without the lock. The depth under the disc is copied into one of a
+// ring of pixel buffer objects (the copy runs on the GPU's timeline), a fence marks it, and a
+// later frame maps the buffer once its fence has signalled, so the CPU never waits; the result
+// arrives one or more frames late (latencyFrames() reports how many it took).
+#include <vector>
+
+#include "occlusion/GpuMethod.h"
+#include "occlusion/readback/DepthCoverage.h"
+
+namespace flarekit::occlusion {
+
+namespace {
+class PboMethod final : public GpuMethod {
+public:
+    explicit PboMethod(int ring) : m_slots(std::size_t(ring)) {
+        for (Slot& s : m_slots) {
+            GLuint b = 0;
+            glCreateBuffers(1, &b);
+            s.buffer = gl::Buffer(b);
+        }
+    }
+    ~PboMethod() override {
+        for (Slot& s : m_slots)
+            if (s.fence) glDeleteSync(s.fence);
+    }
+    std::string name() const override { return "pbo"; }
+    int latencyFrames() const override { return m_latency; }
+
+    Status measure(const Scene& view, const SceneRenderer& renderer) override {
+        ++m_frame;
+        collect(false);
+        Slot& slot = m_slots[std::size_t(m_frame % long(m_slots.size()))];
+        if (slot.fence) collectSlot(slot, true);  // the ring is full: the oldest must finish
+        slot.view = sunDiscView(view);
+        slot.frame = m_frame;
+        if (slot.view.empty()) {
+            publish(0.0);
+            return Ok{};
+        }
+        const int w = slot.view.x1 - slot.view.x0, h = slot.view.y1 - slot.view.y0;
+        const GLsizeiptr bytes = GLsizeiptr(w) * h * GLsizeiptr(sizeof(float));
+        if (bytes > slot.capacity) {
+            glNamedBufferData(slot.buffer.get(), bytes, nullptr, GL_STREAM_READ);
+            slot.capacity = bytes;
+        }
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer.framebuffer());
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(slot.view.x0, slot.view.y0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);  // async
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        glFlush();  // so the fence can signal without anyone waiting on it
+        return glStatus("pbo: glReadPixels into a buffer");
+    }
+
+    std::optional<double> latestCoverage() override {
+        collect(false);
+        return GpuMethod::latestCoverage();
+    }
+
+private:
+    struct Slot {
+        gl::Buffer buffer;
+        GLsizeiptr capacity = 0;
+        GLsync fence = nullptr;
+        SunDiscView view;
+        long frame = 0;
+    };
+
+    void collect(bool wait) {
+        // Oldest first, so the newest finished result is published last.
+        for (long f = m_frame - long(m_slots.size()) + 1; f <= m_frame; ++f) {
+            if (f < 1) continue;
+            Slot& s = m_slots[std::size_t(f % long(m_slots.size()))];
+            if (s.fence && s.frame == f) collectSlot(s, wait);
+        }
+    }
+
+    void collectSlot(Slot& s, bool wait) {
+        const GLenum state = glClientWaitSync(s.fence, 0, wait ? GLuint64(10'000'000'000) : 0);
+        if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return;
+        glDeleteSync(s.fence);
+        s.fence = nullptr;
+        const int w = s.view.x1 - s.view.x0, h = s.view.y1 - s.view.y0;
+        const auto* depth = static_cast<const float*>(
+            glMapNamedBufferRange(s.buffer.get(), 0, GLsizeiptr(w) * h * GLsizeiptr(sizeof(float)), GL_MAP_READ_BIT));
+        if (!depth) return;
+        const double coverage = coverageFromDepth(s.view, depth, s.view.x0, s.view.y0, w, h);
+        glUnmapNamedBuffer(s.buffer.get());
+        publish(coverage);
+        m_latency = int(m_frame - s.frame);
+    }
+
+    std::vector<Slot> m_slots;
+    long m_frame = 0;
+    int m_latency = 0;
+};
+}  // namespace
+
+std::unique_ptr<GpuVisibility> makePboMethod(int ring) { return std::make_unique<PboMethod>(ring); }
+
+}  // namespace flarekit::occlusion

@@ -1,0 +1,124 @@
+// `query`: occlusion queries. The disc is drawn at the far plane twice over the frame's depth
+// (no colour writes): once with the depth test (GL_SAMPLES_PASSED counts the sky pixels under
+// the disc) and once without (counts all of the disc's pixels on screen). Coverage is their
+// ratio. Results are collected when GL_QUERY_RESULT_AVAILABLE says so, normally the next frame,
+// so the CPU never waits. Pixels count whole (centre inside the disc), unweighted.
+#include <vector>
+
+#include "flarekit_shaders.h"
+#include "occlusion/GpuMethod.h"
+
+namespace flarekit::occlusion {
+
+namespace {
+constexpr int kRing = 3;  //!< query pairs in flight
+
+class QueryMethod final : public GpuMethod {
+public:
+    static Result<std::unique_ptr<GpuVisibility>> create() {
+        auto program = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                                     {GL_FRAGMENT_SHADER, "disc_at_far.frag", shaders::disc_at_far_frag}});
+        if (!program) return program.error();
+        return std::unique_ptr<GpuVisibility>(new QueryMethod(std::move(*program)));
+    }
+    std::string name() const override { return "query"; }
+    int latencyFrames() const override { return m_latency; }
+
+    Status measure(const Scene& view, const SceneRenderer& renderer) override {
+        ++m_frame;
+        collect();
+        Pair& p = m_pairs[std::size_t(m_frame % kRing)];
+        if (p.pending) collectPair(p, true);
+        const SunDiscView v = sunDiscView(view);
+        if (v.empty()) {
+            publish(0.0);
+            return Ok{};
+        }
+        setSunDiscUniforms(m_program.get(), v);
+        glBindFramebuffer(GL_FRAMEBUFFER, renderer.framebuffer());
+        glViewport(0, 0, v.width, v.height);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_DEPTH_TEST);
+        glBindVertexArray(m_vao.get());
+        glUseProgram(m_program.get());
+        glDepthFunc(GL_LEQUAL);  // sky depth is the cleared 1.0
+        glBeginQuery(GL_SAMPLES_PASSED, p.visible.get());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glDepthFunc(GL_ALWAYS);
+        glBeginQuery(GL_SAMPLES_PASSED, p.total.get());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glDepthFunc(GL_LESS);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDisable(GL_SCISSOR_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        p.pending = true;
+        p.frame = m_frame;
+        glFlush();
+        return glStatus("query: disc draws");
+    }
+
+    std::optional<double> latestCoverage() override {
+        collect();
+        return GpuMethod::latestCoverage();
+    }
+
+    //! The query holding the newest visible-sample count, for conditional rendering of the
+    //! flare (glBeginConditionalRender(query, GL_QUERY_NO_WAIT)); 0 before the first frame.
+    GLuint lastVisibleQuery() const { return m_frame ? m_pairs[std::size_t(m_frame % kRing)].visible.get() : 0; }
+
+private:
+    struct Pair {
+        gl::Query visible, total;
+        bool pending = false;
+        long frame = 0;
+    };
+    explicit QueryMethod(gl::Program program) : m_program(std::move(program)) {
+        for (Pair& p : m_pairs) {
+            GLuint q[2];
+            glCreateQueries(GL_SAMPLES_PASSED, 2, q);
+            p.visible = gl::Query(q[0]);
+            p.total = gl::Query(q[1]);
+        }
+        GLuint vao = 0;
+        glCreateVertexArrays(1, &vao);
+        m_vao = gl::VertexArray(vao);
+    }
+    void collect() {
+        for (long f = m_frame - kRing + 1; f <= m_frame; ++f) {
+            if (f < 1) continue;
+            Pair& p = m_pairs[std::size_t(f % kRing)];
+            if (p.pending && p.frame == f) collectPair(p, false);
+        }
+    }
+    void collectPair(Pair& p, bool wait) {
+        GLuint ready = 0;
+        if (!wait) {
+            glGetQueryObjectuiv(p.total.get(), GL_QUERY_RESULT_AVAILABLE, &ready);
+            if (!ready) return;
+            glGetQueryObjectuiv(p.visible.get(), GL_QUERY_RESULT_AVAILABLE, &ready);
+            if (!ready) return;
+        }
+        GLuint64 visible = 0, total = 0;
+        glGetQueryObjectui64v(p.visible.get(), GL_QUERY_RESULT, &visible);
+        glGetQueryObjectui64v(p.total.get(), GL_QUERY_RESULT, &total);
+        p.pending = false;
+        publish(total ? double(visible) / double(total) : 0.0);
+        m_latency = int(m_frame - p.frame);
+    }
+
+    gl::Program m_program;
+    gl::VertexArray m_vao;
+    Pair m_pairs[kRing];
+    long m_frame = 0;
+    int m_latency = 0;
+};
+}  // namespace
+
+Result<std::unique_ptr<GpuVisibility>> makeQueryMethod() { return QueryMethod::create(); }
+
+}  // namespace flarekit::occlusion

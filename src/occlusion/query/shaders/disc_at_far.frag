@@ -1,0 +1,9 @@
+#version 450 core
+// The sun's disc drawn at the far plane, for occlusion queries: a pixel counts when its centre
+// is inside the disc and, with the depth test on, nothing nearer than the far plane covers it.
+out vec4 fragColor;
+void main() {
+    if (!inSunDisc(rayThrough(gl_FragCoord.xy))) discard;
+    gl_FragDepth = 1.0;
+    fragColor = vec4(1.0);
+}

@@ -1,0 +1,68 @@
+// `texture-mask-screen`: texture masking without the re-render. The sun map's texels look up
+// the main frame's depth along their rays (sky = sun visible), then the same point sum. Only
+// what is on screen can be measured; off-screen texels leave the normalisation.
+#include "flarekit_shaders.h"
+#include "occlusion/GpuMethod.h"
+#include "occlusion/texturemask/SunMapSum.h"
+#include "scene/CameraMath.h"
+
+namespace flarekit::occlusion {
+
+namespace {
+class TextureMaskScreenMethod final : public GpuMethod {
+public:
+    static Result<std::unique_ptr<GpuVisibility>> create() {
+        auto layout = sunMapLayout("circle");
+        if (!layout) return layout.error();
+        auto sum = SunMapSum::create(std::move(*layout));
+        if (!sum) return sum.error();
+        auto fromDepth = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                                       {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}});
+        if (!fromDepth) return fromDepth.error();
+        return std::unique_ptr<GpuVisibility>(new TextureMaskScreenMethod(std::move(*sum), std::move(*fromDepth)));
+    }
+    std::string name() const override { return "texture-mask-screen"; }
+    int latencyFrames() const override { return 0; }
+
+    Status measure(const Scene& view, const SceneRenderer& renderer) override {
+        const int n = m_sum.size();
+        const GLuint p = m_fromDepth.get();
+        setSunDiscUniforms(p, sunDiscView(view));  // the main camera, for the projection
+        const CameraBasis map = cameraBasis(sunCamera(view));
+        auto vec3 = [&](const char* name, Vec3 a) {
+            glProgramUniform3f(p, glGetUniformLocation(p, name), float(a.x), float(a.y), float(a.z));
+        };
+        vec3("mapRight", map.right);
+        vec3("mapUp", map.up);
+        vec3("mapForward", map.forward);
+        glProgramUniform1f(p, glGetUniformLocation(p, "mapTanHalf"),
+                           float(std::tan(view.sun.angularRadiusDeg * 3.14159265358979323846 / 180.0)));
+        glProgramUniform1f(p, glGetUniformLocation(p, "mapSize"), float(n));
+        glBindFramebuffer(GL_FRAMEBUFFER, m_sum.sunMapFramebuffer());
+        glViewport(0, 0, n, n);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        glBindTextureUnit(0, renderer.depthTexture());
+        glBindVertexArray(m_vao.get());
+        glUseProgram(p);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (Status s = m_sum.sumInto(coverageName()); !s) return s;
+        markPublished();
+        return Ok{};
+    }
+
+private:
+    TextureMaskScreenMethod(SunMapSum sum, gl::Program fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
+        GLuint vao = 0;
+        glCreateVertexArrays(1, &vao);
+        m_vao = gl::VertexArray(vao);
+    }
+    SunMapSum m_sum;
+    gl::Program m_fromDepth;
+    gl::VertexArray m_vao;
+};
+}  // namespace
+
+Result<std::unique_ptr<GpuVisibility>> makeTextureMaskScreenMethod() { return TextureMaskScreenMethod::create(); }
+
+}  // namespace flarekit::occlusion

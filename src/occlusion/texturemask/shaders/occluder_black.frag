@@ -1,0 +1,4 @@
+#version 450 core
+// Sun map, step 2: occluders in black over the sun (colour mask: red only).
+out vec4 fragColor;
+void main() { fragColor = vec4(0.0); }

@@ -1,0 +1,140 @@
+// Every GPU visibility method against the ray-cast truth (256^2 rays) on the generated scenes
+// (tests/support/OcclusionScenes.h). Scenes are judged where the disc is fully in frame and at
+// least 100 px in area. Bounds: 0.05 for every method (issue 5), 0.02 for `compute` reading the
+// MSAA samples; on the thin-pole scenes the single-sample methods get the documented bounds of
+// docs/occlusion.md (one depth sample per pixel or texel puts the pole's edges up to half a
+// sample off, which on a 16 px disc is 0.04 per edge).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "GlTestContext.h"
+#include "OcclusionScenes.h"
+#include "flarekit/GpuVisibility.h"
+#include "flarekit/Visibility.h"
+
+using namespace flarekit;
+
+namespace {
+
+struct Truth {
+    std::string name;
+    Scene scene;
+    double coverage;
+    bool judged;
+};
+
+const std::vector<Truth>& truths() {
+    static const std::vector<Truth> all = [] {
+        std::vector<Truth> t;
+        for (auto& c : test::occlusionCases()) {
+            RaycastOptions o;
+            o.samplesPerSide = 256;
+            const double radiusPx = c.scene.sun.angularRadiusDeg * M_PI / 180 * (c.scene.height / 2.0) /
+                                    std::tan(c.scene.camera.fovYDeg * M_PI / 360);
+            const bool judged = M_PI * radiusPx * radiusPx >= 100 && sunInFrameFraction(c.scene) >= 1.0;
+            t.push_back({c.name, c.scene, raycastVisibility(c.scene, o)->coverage, judged});
+        }
+        return t;
+    }();
+    return all;
+}
+
+double measure(const std::string& method, const Scene& scene, int msaa = 1, const std::string& variant = "circle") {
+    RenderOptions render;
+    render.msaaSamples = msaa;
+    render.shadows = false;  // visibility reads depth only
+    auto renderer = SceneRenderer::create(scene, render);
+    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
+    GpuVisibilityOptions options;
+    options.textureMaskVariant = variant;
+    auto m = createGpuVisibility(method, scene, options);
+    EXPECT_TRUE(m.ok()) << m.error().message;
+    if (!renderer.ok() || !m.ok()) return NAN;
+    for (int frame = 0; frame < 8; ++frame) {
+        EXPECT_TRUE(renderer->draw(scene).ok());
+        EXPECT_TRUE((*m)->measure(scene, *renderer).ok());
+        if (auto c = (*m)->latestCoverage()) return *c;
+    }
+    ADD_FAILURE() << method << ": no result after 8 frames";
+    return NAN;
+}
+
+void judge(const std::string& method, double bound, double poleBound, int msaa = 1, const std::string& variant = "circle") {
+    test::glContext();
+    int judged = 0;
+    for (const Truth& t : truths()) {
+        const double v = measure(method, t.scene, msaa, variant);
+        ASSERT_TRUE(v >= 0 && v <= 1) << t.name << ": " << v;
+        if (!t.judged) continue;
+        ++judged;
+        const bool pole = t.name.rfind("pole-", 0) == 0;
+        EXPECT_NEAR(v, t.coverage, pole ? poleBound : bound) << method << " on " << t.name;
+    }
+    EXPECT_GE(judged, 30);
+}
+
+}  // namespace
+
+TEST(OcclusionAccuracy, Readback) { judge("readback", 0.05, 0.08); }
+TEST(OcclusionAccuracy, Pbo) { judge("pbo", 0.05, 0.08); }
+TEST(OcclusionAccuracy, Query) { judge("query", 0.05, 0.08); }
+TEST(OcclusionAccuracy, TextureMaskCircle) { judge("texture-mask", 0.05, 0.08, 1, "circle"); }
+TEST(OcclusionAccuracy, TextureMaskSquare) { judge("texture-mask", 0.05, 0.08, 1, "square"); }
+TEST(OcclusionAccuracy, TextureMaskBilinear) { judge("texture-mask", 0.05, 0.08, 1, "bilinear"); }
+TEST(OcclusionAccuracy, TextureMaskScreen) { judge("texture-mask-screen", 0.05, 0.09); }
+TEST(OcclusionAccuracy, Burnout) { judge("burnout", 0.05, 0.12); }
+TEST(OcclusionAccuracy, ComputeSingleSample) { judge("compute", 0.05, 0.08); }
+TEST(OcclusionAccuracy, ComputeOnMsaaSamplesWithinTwoHundredths) { judge("compute", 0.02, 0.02, 4); }
+
+TEST(OcclusionAccuracy, ExactCasesAreExact) {
+    test::glContext();
+    for (const Truth& t : truths()) {
+        if (t.name.rfind("visible-", 0) && t.name.rfind("hidden-", 0) && t.name.rfind("half-box-", 0)) continue;
+        for (const std::string& method : gpuVisibilityMethods()) {
+            const double v = measure(method, t.scene);
+            // Fully visible/hidden: exact. Half: exact but for texture masking's 8-bit sum of the
+            // 18x18 map, whose 254 disc texels cannot split evenly (127/254 vs 128/254).
+            EXPECT_NEAR(v, t.coverage, t.name.rfind("half-box-", 0) == 0 ? 0.005 : 1e-6) << method << " on " << t.name;
+        }
+    }
+}
+
+TEST(OcclusionAccuracy, TextureMaskMeasuresASunOutsideTheFrame) {
+    test::glContext();
+    const Scene s = test::offscreenHalfHidden();
+    RaycastOptions o;
+    o.samplesPerSide = 256;
+    const VisibilityResult truth = *raycastVisibility(s, o);
+    ASSERT_EQ(truth.inFrame, 0.0);
+    ASSERT_NEAR(truth.coverage, 0.5, 0.005);
+    EXPECT_NEAR(measure("texture-mask", s), 0.5, 0.01);
+    EXPECT_EQ(measure("readback", s), 0.0);  // screen-space: nothing on screen to measure
+    EXPECT_EQ(measure("compute", s), 0.0);
+}
+
+TEST(OcclusionAccuracy, LateMethodsReportTheirLatency) {
+    test::glContext();
+    const Scene s = truths().front().scene;
+    auto renderer = SceneRenderer::create(s);
+    ASSERT_TRUE(renderer.ok());
+    for (const char* name : {"pbo", "query"}) {
+        auto m = createGpuVisibility(name, s);
+        ASSERT_TRUE(m.ok());
+        int frames = 0;
+        std::optional<double> c;
+        while (!c && frames < 8) {
+            ASSERT_TRUE(renderer->draw(s).ok());
+            ASSERT_TRUE((*m)->measure(s, *renderer).ok());
+            c = (*m)->latestCoverage();
+            ++frames;
+        }
+        ASSERT_TRUE(c.has_value()) << name;
+        EXPECT_EQ(*c, 1.0);
+        EXPECT_LE((*m)->latencyFrames(), 3) << name;
+    }
+    auto bad = createGpuVisibility("telepathy", s);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("readback pbo query"), std::string::npos) << bad.error().message;
+}
