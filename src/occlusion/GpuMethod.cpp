@@ -40,6 +40,11 @@ Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources
     }
 }
 
+Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText) {
+    return gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                            {GL_FRAGMENT_SHADER, fragmentName, fragmentText}});
+}
+
 Status glStatus(const std::string& what) {
     if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
         return internalError("OpenGL: " + what + " failed (error 0x" + std::to_string(err) + ")");

@@ -22,17 +22,13 @@ public:
         auto white = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
                                    {GL_FRAGMENT_SHADER, "burnout_white.frag", shaders::burnout_white_frag}});
         if (!white) return white.error();
-        auto black = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                      {GL_FRAGMENT_SHADER, "burnout_black.frag", shaders::burnout_black_frag}});
+        auto black = linkFullscreen("burnout_black.frag", shaders::burnout_black_frag);
         if (!black) return black.error();
-        auto combine = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                        {GL_FRAGMENT_SHADER, "burnout_combine.frag", shaders::burnout_combine_frag}});
+        auto combine = linkFullscreen("burnout_combine.frag", shaders::burnout_combine_frag);
         if (!combine) return combine.error();
-        auto down = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                     {GL_FRAGMENT_SHADER, "burnout_downsample.frag", shaders::burnout_downsample_frag}});
+        auto down = linkFullscreen("burnout_downsample.frag", shaders::burnout_downsample_frag);
         if (!down) return down.error();
-        auto resolve = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                        {GL_FRAGMENT_SHADER, "resolve_ratio.frag", shaders::resolve_ratio_frag}});
+        auto resolve = linkFullscreen("resolve_ratio.frag", shaders::resolve_ratio_frag);
         if (!resolve) return resolve.error();
         m->m_white = std::move(*white), m->m_black = std::move(*black), m->m_combine = std::move(*combine);
         m->m_down = std::move(*down), m->m_resolve = std::move(*resolve);

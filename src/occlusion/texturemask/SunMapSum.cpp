@@ -77,8 +77,7 @@ Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
                                 {GL_FRAGMENT_SHADER, "sum_points.frag", shaders::sum_points_frag}});
     if (!sum) return sum.error();
     s.m_sum = std::move(*sum);
-    auto resolve = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                    {GL_FRAGMENT_SHADER, "resolve_ratio.frag", shaders::resolve_ratio_frag}});
+    auto resolve = linkFullscreen("resolve_ratio.frag", shaders::resolve_ratio_frag);
     if (!resolve) return resolve.error();
     s.m_resolve = std::move(*resolve);
     glProgramUniform1f(s.m_sum.get(), glGetUniformLocation(s.m_sum.get(), "unit"), s.m_layout.unit);
