@@ -7,6 +7,7 @@
 #include "flarekit/Render.h"
 #include "flarekit/Tonemap.h"
 #include "flarekit/Visibility.h"
+#include "scene/CameraMath.h"
 
 namespace flarekit {
 
@@ -19,10 +20,13 @@ Scene demoScene(int width, int height, double t) {
 struct DemoAnimation::Impl {
     Impl(DemoSettings s, Preset p, Scene w, SceneRenderer r)
         : settings(std::move(s)), preset(std::move(p)), world(std::move(w)), renderer(std::move(r)), caster(world),
-          filter(settings.temporal) {}
+          filter(settings.temporal) {
+        view.width = world.width, view.height = world.height, view.sun = world.sun;
+    }
     DemoSettings settings;
     Preset preset;
     Scene world;
+    Scene view;  // no objects: they are uploaded to the renderer and in the caster's BVH
     SceneRenderer renderer;
     RaycastCaster caster;
     TemporalFilter filter;
@@ -73,10 +77,7 @@ Result<DemoFrame> DemoAnimation::next() {
     using Clock = std::chrono::steady_clock;
     auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
 
-    Scene view = d.world;  // camera and sun only are read from it
-    view.spheres.clear();
-    view.boxes.clear();
-    view.triangles.clear();
+    Scene& view = d.view;  // camera, sun and size: what draw() and measure() read each frame
     view.camera = demo::cameraAt(t);
     DemoFrame frame;
     frame.time = t * kDemoDurationSeconds;
@@ -95,10 +96,7 @@ Result<DemoFrame> DemoAnimation::next() {
 
     frame.rawCoverage = visibility->coverage;
     frame.inFrame = visibility->inFrame;
-    // Where the sun projects, without drawing anything yet.
-    FlaredFrame where = addSunFlare(*image, view, d.preset, 0.0);
-    frame.sunInFront = where.sunInFront;
-    frame.sunPixel = where.sunPixel;
+    frame.sunInFront = projectDirection(view, view.sun.direction, frame.sunPixel);
     frame.temporal = d.filter.update(frame.rawCoverage, frame.sunPixel, frame.sunInFront, d.settings.width,
                                      d.settings.height, index == 0 ? 0.0 : dt);
     const FlaredFrame flare = addSunFlare(*image, view, d.preset, frame.temporal.flareWeight);
