@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 
+#include "GpuMeasure.h"
 #include "OcclusionScenes.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
@@ -33,18 +34,9 @@ std::vector<std::pair<std::string, GpuVisibilityOptions>> methods() {
 }
 
 double measure(const std::string& label, const GpuVisibilityOptions& options, const Scene& scene) {
-    const std::string name = label.substr(0, label.find(':'));
-    RenderOptions render;
-    render.msaaSamples = label == "compute:msaa4" ? 4 : 1;
-    auto renderer = SceneRenderer::create(scene, render);
-    auto method = createGpuVisibility(name, scene, options);
-    if (!renderer || !method) return NAN;
-    for (int frame = 0; frame < 8; ++frame) {
-        (void)renderer->draw(scene);
-        (void)(*method)->measure(scene, *renderer);
-        if (auto c = (*method)->latestCoverage()) return *c;
-    }
-    return NAN;
+    auto coverage = test::measureGpuCoverage(label.substr(0, label.find(':')), scene, label == "compute:msaa4" ? 4 : 1,
+                                             options.textureMaskVariant);
+    return coverage ? *coverage : NAN;
 }
 }  // namespace
 
@@ -73,8 +65,8 @@ int main(int argc, char** argv) {
         const double truth = raycastVisibility(c.scene, truthOptions)->coverage;
         const double radiusPx = c.scene.sun.angularRadiusDeg * M_PI / 180 * (c.scene.height / 2.0) /
                                 std::tan(c.scene.camera.fovYDeg * M_PI / 360);
-        const double area = M_PI * radiusPx * radiusPx;
-        const bool judged = area >= 100 && sunInFrameFraction(c.scene) >= 1.0 && c.name.find("not judged") == std::string::npos;
+        const double area = M_PI * radiusPx * radiusPx;  // for the table's "disc px" column
+        const bool judged = test::judgedScene(c.scene) && c.name.find("not judged") == std::string::npos;
         if (rows) std::printf("| %s | %.0f | %.4f |", c.name.c_str(), area, truth);
         for (const auto& m : ms) {
             const double v = measure(m.first, m.second, c.scene);

@@ -38,6 +38,12 @@ public:
     virtual int latencyFrames() const = 0;
 };
 
+//! One still frame measured to completion: draws `view` and measures it, again and again until
+//! the method's result has arrived (late methods, pbo and query, need more than one frame),
+//! at most maxFrames times. `frames` receives the frames it took minus one (the latency seen).
+Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer, const Scene& view,
+                                 int maxFrames = 16, int* frames = nullptr);
+
 //! The contract's GPU method names: readback pbo query texture-mask texture-mask-screen burnout compute.
 const std::vector<std::string>& gpuVisibilityMethods();
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "flarekit/Result.h"
+#include "flarekit/Vec3.h"
 
 namespace flarekit::gl {
 
@@ -62,6 +63,11 @@ Texture makeTexture2D(GLenum internalFormat, int width, int height);
 //! A framebuffer with `color` at attachment 0 (and `depth` when non-zero); fails with the
 //! completeness status when incomplete.
 Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* depth = nullptr);
+
+//! glProgramUniform3f of a (double) Vec3 by uniform name.
+inline void setUniform(GLuint program, const char* name, Vec3 v) {
+    glProgramUniform3f(program, glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
+}
 
 struct ShaderSource {
     GLenum stage;      //!< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER

@@ -21,6 +21,19 @@ const std::vector<std::string>& gpuVisibilityMethods() {
     return names;
 }
 
+Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer, const Scene& view, int maxFrames,
+                                 int* frames) {
+    for (int frame = 0; frame < maxFrames; ++frame) {
+        if (Status s = renderer.draw(view); !s) return s.error();
+        if (Status s = method.measure(view, renderer); !s) return s.error();
+        if (const std::optional<double> coverage = method.latestCoverage()) {
+            if (frames) *frames = frame;
+            return *coverage;
+        }
+    }
+    return internalError(method.name() + ": no result after " + std::to_string(maxFrames) + " frames");
+}
+
 Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,
                                                            const GpuVisibilityOptions& options) {
     using namespace occlusion;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "gl/GlObjects.h"
+#include "occlusion/SunCone.h"
 #include "scene/CameraMath.h"
 
 namespace flarekit::occlusion {
@@ -22,17 +24,14 @@ SunDiscView sunDiscView(const SceneCamera& camera, int width, int height, const 
     v.tanHalfY = std::tan(camera.fovYDeg * kPi / 360.0);
     v.tanHalfX = v.tanHalfY * double(width) / double(height);
     v.width = width, v.height = height;
-    v.sun = normalize(sun.direction);
-    const double radius = sun.angularRadiusDeg * kPi / 180.0;
-    v.chord2 = 2.0 * (1.0 - std::cos(radius));
-
-    const Vec3 helper = std::abs(v.sun.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 t1 = normalize(cross(v.sun, helper)), t2 = cross(v.sun, t1);
+    const SunCone cone(sun);
+    v.sun = cone.axis;
+    v.chord2 = 2.0 * cone.oneMinusCos;
     double lox = 1e300, loy = 1e300, hix = -1e300, hiy = -1e300;
     bool behind = false;
     for (int i = 0; i < kRimSamples; ++i) {
         const double phi = 2 * kPi * i / kRimSamples;
-        const Vec3 d = std::cos(radius) * v.sun + std::sin(radius) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+        const Vec3 d = cone.rim(phi);
         const double z = dot(d, v.forward);
         if (z <= 1e-9) {
             behind = true;
@@ -80,13 +79,10 @@ double discWeight(const SunDiscView& v, int x, int y) {
 // ----
 
 void setSunDiscUniforms(GLuint p, const SunDiscView& v) {
-    auto vec3 = [&](const char* name, Vec3 a) {
-        glProgramUniform3f(p, glGetUniformLocation(p, name), float(a.x), float(a.y), float(a.z));
-    };
-    vec3("camRight", v.right);
-    vec3("camUp", v.up);
-    vec3("camForward", v.forward);
-    vec3("sunDir", v.sun);
+    gl::setUniform(p, "camRight", v.right);
+    gl::setUniform(p, "camUp", v.up);
+    gl::setUniform(p, "camForward", v.forward);
+    gl::setUniform(p, "sunDir", v.sun);
     glProgramUniform2f(p, glGetUniformLocation(p, "tanHalfFov"), float(v.tanHalfX), float(v.tanHalfY));
     glProgramUniform2f(p, glGetUniformLocation(p, "frameSize"), float(v.width), float(v.height));
     glProgramUniform1f(p, glGetUniformLocation(p, "sunChord2"), float(v.chord2));

@@ -31,10 +31,6 @@ constexpr int kShadowMapSize = 2048;
 //! buildings beyond the shadowed region) still land in the map.
 constexpr double kShadowEyeDistance = 1000;
 
-void setVec3(GLuint program, const char* name, Vec3 v) {
-    glProgramUniform3f(program, glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
-}
-
 gl::Texture makeMultisample(GLenum format, int samples, int w, int h) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
@@ -244,8 +240,8 @@ Status SceneRenderer::draw(const Scene& scene) {
     const GLuint s = m->sky.get();
     glProgramUniformMatrix4fv(s, glGetUniformLocation(s, "inverseViewProjection"), 1, GL_FALSE, inv.data());
     glProgramUniform2f(s, glGetUniformLocation(s, "viewportSize"), float(w), float(h));
-    setVec3(s, "sunDirection", scene.sun.direction);
-    setVec3(s, "sunRadiance", sunRadiance);
+    gl::setUniform(s, "sunDirection", scene.sun.direction);
+    gl::setUniform(s, "sunRadiance", sunRadiance);
     glProgramUniform1f(s, glGetUniformLocation(s, "cosSunRadius"),
                        float(std::cos(scene.sun.angularRadiusDeg * std::numbers::pi / 180.0)));
     glProgramUniform3fv(s, glGetUniformLocation(s, "horizonColor"), 1, kHorizon);
@@ -270,9 +266,9 @@ Status SceneRenderer::draw(const Scene& scene) {
             glBindVertexArray(m->vao.get());
         }
         glProgramUniformMatrix4fv(o, glGetUniformLocation(o, "viewProjection"), 1, GL_FALSE, vp.data());
-        setVec3(o, "sunDirection", scene.sun.direction);
-        setVec3(o, "cameraPosition", scene.camera.position);
-        setVec3(o, "sunRadiance", sunRadiance);
+        gl::setUniform(o, "sunDirection", scene.sun.direction);
+        gl::setUniform(o, "cameraPosition", scene.camera.position);
+        gl::setUniform(o, "sunRadiance", sunRadiance);
         const float ambient[3] = {kAmbientShare * 0.5f * (kHorizon[0] + kZenith[0]),
                                   kAmbientShare * 0.5f * (kHorizon[1] + kZenith[1]),
                                   kAmbientShare * 0.5f * (kHorizon[2] + kZenith[2])};

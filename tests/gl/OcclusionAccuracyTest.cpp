@@ -10,6 +10,7 @@
 #include <map>
 
 #include "GlTestContext.h"
+#include "GpuMeasure.h"
 #include "OcclusionScenes.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
@@ -31,10 +32,7 @@ const std::vector<Truth>& truths() {
         for (auto& c : test::occlusionCases()) {
             RaycastOptions o;
             o.samplesPerSide = 256;
-            const double radiusPx = c.scene.sun.angularRadiusDeg * M_PI / 180 * (c.scene.height / 2.0) /
-                                    std::tan(c.scene.camera.fovYDeg * M_PI / 360);
-            const bool judged = M_PI * radiusPx * radiusPx >= 100 && sunInFrameFraction(c.scene) >= 1.0;
-            t.push_back({c.name, c.scene, raycastVisibility(c.scene, o)->coverage, judged});
+            t.push_back({c.name, c.scene, raycastVisibility(c.scene, o)->coverage, test::judgedScene(c.scene)});
         }
         return t;
     }();
@@ -42,23 +40,9 @@ const std::vector<Truth>& truths() {
 }
 
 double measure(const std::string& method, const Scene& scene, int msaa = 1, const std::string& variant = "circle") {
-    RenderOptions render;
-    render.msaaSamples = msaa;
-    render.shadows = false;  // visibility reads depth only
-    auto renderer = SceneRenderer::create(scene, render);
-    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
-    GpuVisibilityOptions options;
-    options.textureMaskVariant = variant;
-    auto m = createGpuVisibility(method, scene, options);
-    EXPECT_TRUE(m.ok()) << m.error().message;
-    if (!renderer.ok() || !m.ok()) return NAN;
-    for (int frame = 0; frame < 8; ++frame) {
-        EXPECT_TRUE(renderer->draw(scene).ok());
-        EXPECT_TRUE((*m)->measure(scene, *renderer).ok());
-        if (auto c = (*m)->latestCoverage()) return *c;
-    }
-    ADD_FAILURE() << method << ": no result after 8 frames";
-    return NAN;
+    auto coverage = test::measureGpuCoverage(method, scene, msaa, variant);
+    EXPECT_TRUE(coverage.ok()) << method << ": " << coverage.error().message;
+    return coverage ? *coverage : NAN;
 }
 
 void judge(const std::string& method, double bound, double poleBound, int msaa = 1, const std::string& variant = "circle") {
@@ -122,16 +106,11 @@ TEST(OcclusionAccuracy, LateMethodsReportTheirLatency) {
     for (const char* name : {"pbo", "query"}) {
         auto m = createGpuVisibility(name, s);
         ASSERT_TRUE(m.ok());
-        int frames = 0;
-        std::optional<double> c;
-        while (!c && frames < 8) {
-            ASSERT_TRUE(renderer->draw(s).ok());
-            ASSERT_TRUE((*m)->measure(s, *renderer).ok());
-            c = (*m)->latestCoverage();
-            ++frames;
-        }
-        ASSERT_TRUE(c.has_value()) << name;
+        int latency = -1;
+        auto c = measureStillFrame(**m, *renderer, s, 8, &latency);
+        ASSERT_TRUE(c.ok()) << name << ": " << c.error().message;
         EXPECT_EQ(*c, 1.0);
+        EXPECT_GE(latency, 0);
         EXPECT_LE((*m)->latencyFrames(), 3) << name;
     }
     auto bad = createGpuVisibility("telepathy", s);

@@ -19,8 +19,8 @@ struct VisibilityArgs {
     bool json = false;
 };
 
-//! Draws the frame and runs the method, re-drawing the same frame until a late method's
-//! (pbo, query) result arrives: it reports how many frames that took.
+//! Draws the frame and runs the method until its result arrives; `latency` says how many
+//! extra frames a late method (pbo, query) took.
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
     auto gl = gl::HeadlessGl::create();
     if (!gl) return gl.error();
@@ -34,14 +34,8 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     auto method = createGpuVisibility(a.method, scene, options);
     if (!method) return method.error();
     const auto start = std::chrono::steady_clock::now();
-    std::optional<double> coverage;
-    for (int frame = 0; frame < 16 && !coverage; ++frame) {
-        if (Status s = renderer->draw(scene); !s) return s.error();
-        if (Status s = (*method)->measure(scene, *renderer); !s) return s.error();
-        coverage = (*method)->latestCoverage();
-        latency = frame;
-    }
-    if (!coverage) return internalError(a.method + ": no result after 16 frames");
+    auto coverage = measureStillFrame(**method, *renderer, scene, 16, &latency);
+    if (!coverage) return coverage.error();
     VisibilityResult r;
     r.method = a.method;
     r.coverage = *coverage;

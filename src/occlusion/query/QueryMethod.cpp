@@ -67,10 +67,6 @@ public:
         return GpuMethod::latestCoverage();
     }
 
-    //! The query holding the newest visible-sample count, for conditional rendering of the
-    //! flare (glBeginConditionalRender(query, GL_QUERY_NO_WAIT)); 0 before the first frame.
-    GLuint lastVisibleQuery() const { return m_frame ? m_pairs[std::size_t(m_frame % kRing)].visible.get() : 0; }
-
 private:
     struct Pair {
         gl::Query visible, total;

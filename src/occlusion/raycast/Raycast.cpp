@@ -12,6 +12,7 @@
 #include "core/Parallel.h"
 #include "core/Random.h"
 #include "flarekit/Visibility.h"
+#include "occlusion/SunCone.h"
 #include "occlusion/raycast/SceneBvh.h"
 #include "scene/CameraMath.h"
 
@@ -20,19 +21,6 @@ namespace flarekit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-//! Shirley & Chiu 1997, "A Low Distortion Map Between Disk and Square": (a, b) in [-1, 1]^2.
-void concentric(double a, double b, double& rho, double& phi) {
-    if (a == 0 && b == 0) {
-        rho = phi = 0;
-    } else if (std::abs(a) > std::abs(b)) {
-        rho = a;
-        phi = (kPi / 4) * (b / a);
-    } else {
-        rho = b;
-        phi = kPi / 2 - (kPi / 4) * (a / b);
-    }
-}
 
 struct Frame {  // camera basis and frustum half-extents, for the in-frame fraction
     CameraBasis basis;
@@ -57,21 +45,12 @@ bool inFrame(const Frame& f, Vec3 d) {
 
 double sunInFrameFraction(const Scene& scene, int samplesPerSide) {
     const Frame frame = cameraFrame(scene);
-    const Vec3 s = normalize(scene.sun.direction);
-    const Vec3 helper = std::abs(s.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 t1 = normalize(cross(s, helper)), t2 = cross(s, t1);
-    const double oneMinusCosAlpha = 1.0 - std::cos(scene.sun.angularRadiusDeg * kPi / 180.0);
+    const occlusion::SunCone cone(scene.sun);
     const int n = std::max(1, samplesPerSide);
     std::size_t framed = 0;
     for (int row = 0; row < n; ++row) {
         for (int col = 0; col < n; ++col) {
-            double rho = 0, phi = 0;
-            concentric(2.0 * (col + 0.5) / n - 1.0, 2.0 * (row + 0.5) / n - 1.0, rho, phi);
-            const double cosTheta = 1.0 - rho * rho * oneMinusCosAlpha;
-            const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-            const double sign = rho < 0 ? -1.0 : 1.0;
-            const Vec3 d = cosTheta * s + (sign * sinTheta) * (std::cos(phi) * t1 + std::sin(phi) * t2);
-            framed += inFrame(frame, d) ? 1 : 0;
+            framed += inFrame(frame, cone.fromSquare(2.0 * (col + 0.5) / n - 1.0, 2.0 * (row + 0.5) / n - 1.0)) ? 1 : 0;
         }
     }
     return double(framed) / double(std::size_t(n) * std::size_t(n));
@@ -106,11 +85,7 @@ Result<VisibilityResult> RaycastCaster::measure(const Scene& scene, const Raycas
     const auto start = std::chrono::steady_clock::now();
     const SceneBvh& bvh = m->bvh;
     const Frame frame = cameraFrame(scene);
-    const Vec3 s = scene.sun.direction;
-    // Orthonormal basis (t1, t2) perpendicular to the sun direction.
-    const Vec3 helper = std::abs(s.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 t1 = normalize(cross(s, helper)), t2 = cross(s, t1);
-    const double oneMinusCosAlpha = 1.0 - std::cos(scene.sun.angularRadiusDeg * kPi / 180.0);
+    const occlusion::SunCone cone(scene.sun);
     const int n = options.samplesPerSide;
 
     std::atomic<std::size_t> visible{0}, framed{0};
@@ -120,13 +95,7 @@ Result<VisibilityResult> RaycastCaster::measure(const Scene& scene, const Raycas
             SplitMix64 rng(options.seed * 0x9E3779B97F4A7C15ull + std::uint64_t(row));  // per row: thread-count independent
             for (int col = 0; col < n; ++col) {
                 const double a = 2.0 * (double(col) + rng.nextFloat()) / n - 1.0, b = 2.0 * (double(row) + rng.nextFloat()) / n - 1.0;
-                double rho = 0, phi = 0;
-                concentric(a, b, rho, phi);
-                const double cosTheta = 1.0 - rho * rho * oneMinusCosAlpha;
-                const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-                // rho may be negative (concentric map): sign folds into the angle.
-                const double sign = rho < 0 ? -1.0 : 1.0;
-                const Vec3 d = cosTheta * s + (sign * sinTheta) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+                const Vec3 d = cone.fromSquare(a, b);
                 vis += bvh.occluded(scene.camera.position, d) ? 0 : 1;
                 fr += inFrame(frame, d) ? 1 : 0;
             }

@@ -35,7 +35,6 @@ public:
         m->m_disc = std::move(*disc);
         m->m_black = std::move(*black);
         m->m_ranges = sceneMeshRanges(world);
-        m->m_variant = variant;
         return std::unique_ptr<GpuVisibility>(std::move(m));
     }
     std::string name() const override { return "texture-mask"; }
@@ -73,8 +72,6 @@ public:
         return Ok{};
     }
 
-    std::size_t lastDrawnObjects() const { return m_firsts.size(); }
-
 private:
     explicit TextureMaskMethod(SunMapSum sum) : m_sum(std::move(sum)) {
         GLuint vao = 0;
@@ -111,7 +108,6 @@ private:
     std::vector<MeshObjectRange> m_ranges;
     std::vector<GLint> m_firsts;
     std::vector<GLsizei> m_counts;
-    std::string m_variant;
 };
 }  // namespace
 

@@ -1,6 +1,9 @@
 // `texture-mask-screen`: texture masking without the re-render. The sun map's texels look up
 // the main frame's depth along their rays (sky = sun visible), then the same point sum. Only
 // what is on screen can be measured; off-screen texels leave the normalisation.
+#include <cmath>
+#include <numbers>
+
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/texturemask/SunMapSum.h"
@@ -29,14 +32,11 @@ public:
         const GLuint p = m_fromDepth.get();
         setSunDiscUniforms(p, sunDiscView(view));  // the main camera, for the projection
         const CameraBasis map = cameraBasis(sunCamera(view));
-        auto vec3 = [&](const char* name, Vec3 a) {
-            glProgramUniform3f(p, glGetUniformLocation(p, name), float(a.x), float(a.y), float(a.z));
-        };
-        vec3("mapRight", map.right);
-        vec3("mapUp", map.up);
-        vec3("mapForward", map.forward);
+        gl::setUniform(p, "mapRight", map.right);
+        gl::setUniform(p, "mapUp", map.up);
+        gl::setUniform(p, "mapForward", map.forward);
         glProgramUniform1f(p, glGetUniformLocation(p, "mapTanHalf"),
-                           float(std::tan(view.sun.angularRadiusDeg * 3.14159265358979323846 / 180.0)));
+                           float(std::tan(view.sun.angularRadiusDeg * std::numbers::pi / 180.0)));
         glProgramUniform1f(p, glGetUniformLocation(p, "mapSize"), float(n));
         glBindFramebuffer(GL_FRAMEBUFFER, m_sum.sunMapFramebuffer());
         glViewport(0, 0, n, n);
