@@ -72,6 +72,10 @@ struct FlaredFrame {
     float flareIntensity = 0; //!< coverage x the sun's brightness scale
 };
 
+//! The flare's brightness for a fully visible sun: flareScaleForBrightness of the luminance of
+//! colour x intensity.
+float sunFlareScale(const SceneSun& sun);
+
 //! Adds the preset's flare for the scene's sun, scaled by `coverage` (0..1), to `frame`.
 FlaredFrame addSunFlare(Image& frame, const Scene& scene, const Preset& preset, double coverage);
 

@@ -1,9 +1,15 @@
 // The demo's frame loop: camera along the road, GL scene pass, sun visibility, the temporal
-// filter (smoothed coverage, edge fade, exposure), the sprite flare, tone mapping.
+// filter (smoothed coverage, edge fade, exposure), the sprite flare, tone mapping. With
+// `raycast` the last three run on the CPU over the read-back frame; with a GPU method they run
+// on the GPU from the method's 1x1 coverage texture, and the CPU reads only the finished frame.
+#include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "demo/DemoWorld.h"
 #include "flarekit/Demo.h"
+#include "flarekit/GpuFlare.h"
+#include "flarekit/GpuVisibility.h"
 #include "flarekit/Render.h"
 #include "flarekit/Tonemap.h"
 #include "flarekit/Visibility.h"
@@ -11,11 +17,24 @@
 
 namespace flarekit {
 
+namespace {
+using Clock = std::chrono::steady_clock;
+double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+}  // namespace
+
 Scene demoScene(int width, int height, double t) {
     Scene s = demo::buildWorld(width, height);
     s.camera = demo::cameraAt(t);
     return s;
 }
+
+//! The GPU half of a frame for the GPU methods: nothing crosses to the CPU but the image.
+struct GpuFlarePath {
+    std::unique_ptr<GpuVisibility> method;
+    GpuTemporalFilter filter;
+    GpuSpriteFlare flare;
+    GpuTonemap tonemap;
+};
 
 struct DemoAnimation::Impl {
     Impl(DemoSettings s, Preset p, Scene w, SceneRenderer r)
@@ -30,7 +49,11 @@ struct DemoAnimation::Impl {
     SceneRenderer renderer;
     RaycastCaster caster;
     TemporalFilter filter;
+    std::optional<GpuFlarePath> gpu;  // set for GPU methods
     int nextFrame = 0;
+
+    Status drawFlareOnCpu(DemoFrame& frame, int index, double dt);
+    Status drawFlareOnGpu(DemoFrame& frame, double dt);
 };
 
 DemoAnimation::DemoAnimation(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
@@ -49,8 +72,11 @@ Status validateDemoSettings(const DemoSettings& settings) {
         return invalidInput("size: expected each side in [16, 16384], got " + std::to_string(settings.width) + "x" +
                             std::to_string(settings.height));
     }
-    if (settings.method != "raycast") {
-        return invalidInput("method: '" + settings.method + "' is not available for the demo yet; available: raycast");
+    const auto& gpuMethods = gpuVisibilityMethods();
+    if (settings.method != "raycast" && std::find(gpuMethods.begin(), gpuMethods.end(), settings.method) == gpuMethods.end()) {
+        std::string names = "raycast";
+        for (const std::string& n : gpuMethods) names += " " + n;
+        return invalidInput("method: expected one of " + names + ", got '" + settings.method + "'");
     }
     if (settings.raycastSamplesPerSide < 1 || settings.raycastSamplesPerSide > 4096) {
         return invalidInput("samples: expected an integer in [1, 4096], got " +
@@ -64,7 +90,21 @@ Result<DemoAnimation> DemoAnimation::create(const DemoSettings& settings, const 
     Scene world = demo::buildWorld(settings.width, settings.height);
     auto renderer = SceneRenderer::create(world, {settings.msaaSamples});
     if (!renderer) return renderer.error();
-    return DemoAnimation(std::make_unique<Impl>(settings, preset, std::move(world), std::move(*renderer)));
+    std::optional<GpuFlarePath> gpu;
+    if (settings.method != "raycast") {
+        auto method = createGpuVisibility(settings.method, world);
+        if (!method) return method.error();
+        auto filter = GpuTemporalFilter::create(settings.temporal);
+        if (!filter) return filter.error();
+        auto flare = GpuSpriteFlare::create(preset, settings.height);
+        if (!flare) return flare.error();
+        auto tonemap = GpuTonemap::create(settings.width, settings.height);
+        if (!tonemap) return tonemap.error();
+        gpu.emplace(GpuFlarePath{std::move(*method), std::move(*filter), std::move(*flare), std::move(*tonemap)});
+    }
+    auto impl = std::make_unique<Impl>(settings, preset, std::move(world), std::move(*renderer));
+    impl->gpu = std::move(gpu);
+    return DemoAnimation(std::move(impl));
 }
 
 Result<DemoFrame> DemoAnimation::next() {
@@ -74,40 +114,78 @@ Result<DemoFrame> DemoAnimation::next() {
     // Frame i shows time i x dt with dt = duration / frames: 240 frames are 30 fps for 8 s.
     const double t = double(index) / d.settings.frames;
     const double dt = kDemoDurationSeconds / d.settings.frames;
-    using Clock = std::chrono::steady_clock;
-    auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
 
     Scene& view = d.view;  // camera, sun and size: what draw() and measure() read each frame
     view.camera = demo::cameraAt(t);
     DemoFrame frame;
     frame.time = t * kDemoDurationSeconds;
 
+    frame.sunInFront = projectDirection(view, view.sun.direction, frame.sunPixel);
     const auto t0 = Clock::now();
     if (Status s = d.renderer.draw(view); !s) return s.error();
-    auto image = d.renderer.readColor();
+    frame.renderMs = ms(t0, Clock::now());
+    const double dtNow = index == 0 ? 0.0 : dt;
+    if (Status s = d.gpu ? d.drawFlareOnGpu(frame, dtNow) : d.drawFlareOnCpu(frame, index, dtNow); !s) return s.error();
+    return frame;
+}
+
+// raycast: rays on the CPU, then filter, flare and tone map over the read-back frame.
+Status DemoAnimation::Impl::drawFlareOnCpu(DemoFrame& frame, int index, double dt) {
+    const auto t0 = Clock::now();
+    auto image = renderer.readColor();
     if (!image) return image.error();
+    frame.renderMs += ms(t0, Clock::now());
     const auto t1 = Clock::now();
     RaycastOptions rays;
-    rays.samplesPerSide = d.settings.raycastSamplesPerSide;
+    rays.samplesPerSide = settings.raycastSamplesPerSide;
     rays.seed = std::uint64_t(index) + 1;  // fresh jitter each frame: noise averages out over time
-    auto visibility = d.caster.measure(view, rays);
+    auto visibility = caster.measure(view, rays);
     if (!visibility) return visibility.error();
     const auto t2 = Clock::now();
-
     frame.rawCoverage = visibility->coverage;
     frame.inFrame = visibility->inFrame;
-    frame.sunInFront = projectDirection(view, view.sun.direction, frame.sunPixel);
-    frame.temporal = d.filter.update(frame.rawCoverage, frame.sunPixel, frame.sunInFront, d.settings.width,
-                                     d.settings.height, index == 0 ? 0.0 : dt);
-    const FlaredFrame flare = addSunFlare(*image, view, d.preset, frame.temporal.flareWeight);
+    frame.temporal = filter.update(frame.rawCoverage, frame.sunPixel, frame.sunInFront, settings.width,
+                                   settings.height, dt);
+    const FlaredFrame flare = addSunFlare(*image, view, preset, frame.temporal.flareWeight);
     frame.flareIntensity = flare.flareIntensity;
     tonemapAcesFitted(*image, float(frame.temporal.exposure));
-    const auto t3 = Clock::now();
     frame.image = std::move(*image);
-    frame.renderMs = ms(t0, t1);
     frame.visibilityMs = ms(t1, t2);
-    frame.flareMs = ms(t2, t3);
-    return frame;
+    frame.flareMs = ms(t2, Clock::now());
+    return Ok{};
+}
+
+// A GPU method: measure, filter, flare and tone map are all GPU passes chained through 1x1
+// textures; the only read is the finished frame (and, after it, the few values for the CSV).
+Status DemoAnimation::Impl::drawFlareOnGpu(DemoFrame& frame, double dt) {
+    GpuFlarePath& g = *gpu;
+    const auto t0 = Clock::now();
+    if (Status s = g.method->measure(view, renderer); !s) return s;
+    const auto t1 = Clock::now();
+    if (Status s = g.filter.update(g.method->coverageTexture(), frame.sunPixel, frame.sunInFront, settings.width,
+                                   settings.height, dt);
+        !s) {
+        return s;
+    }
+    auto flare = g.flare.draw(renderer, view, g.filter.stateTexture(), int(GpuStateChannel::FlareWeight));
+    if (!flare) return flare.error();
+    if (Status s = g.tonemap.apply(renderer, g.filter.stateTexture(), int(GpuStateChannel::Exposure)); !s) return s;
+    auto image = g.tonemap.read();  // the frame's output: the one wait in the loop
+    if (!image) return image.error();
+    frame.image = std::move(*image);
+    const auto t2 = Clock::now();
+    // Reporting only; the GPU has finished the frame, so these reads cost a texel each.
+    auto consumed = g.filter.readConsumedCoverage();
+    if (!consumed) return consumed.error();
+    frame.rawCoverage = *consumed;
+    frame.inFrame = sunInFrameFraction(view);
+    auto state = g.filter.readState();
+    if (!state) return state.error();
+    frame.temporal = *state;
+    frame.flareIntensity = float(frame.temporal.flareWeight) * flare->flareIntensity;
+    frame.visibilityMs = ms(t0, t1);
+    frame.flareMs = ms(t1, t2);
+    return Ok{};
 }
 
 }  // namespace flarekit

@@ -231,7 +231,8 @@ void addDemoCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->add_option("--size", args->size, "frame size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--method", args->settings.method, "visibility method (raycast for now)")->capture_default_str();
+    cmd->add_option("--method", args->settings.method, "visibility method: raycast (CPU flare) or a GPU method (readback pbo query texture-mask texture-mask-screen burnout compute: flare, smoothing and tone map on the GPU)")
+        ->capture_default_str();
     cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
     cmd->add_option("--samples", args->settings.raycastSamplesPerSide, "raycast: strata per side (N^2 rays a frame)")
         ->check(CLI::Range(1, 4096))

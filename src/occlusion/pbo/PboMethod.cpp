@@ -28,13 +28,17 @@ public:
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         ++m_frame;
-        collect(false);
+        // This frame's slot holds the oldest frame in flight: with a full ring it must finish
+        // (wait) and be published before the newer ones collect() finds done.
         Slot& slot = m_slots[std::size_t(m_frame % long(m_slots.size()))];
-        if (slot.fence) collectSlot(slot, true);  // the ring is full: the oldest must finish
+        collectFrame(slot, slot.frame, true);
+        collect(false);
         slot.view = sunDiscView(view);
         slot.frame = m_frame;
         if (slot.view.empty()) {
-            publish(0.0);
+            // No disc on screen: the answer (0) is known now, but it is published in frame order
+            // with the reads still in flight, so an older result never overwrites it.
+            slot.knownEmpty = true;
             return Ok{};
         }
         const int w = slot.view.x1 - slot.view.x0, h = slot.view.y1 - slot.view.y0;
@@ -64,6 +68,7 @@ private:
         gl::Buffer buffer;
         GLsizeiptr capacity = 0;
         GLsync fence = nullptr;
+        bool knownEmpty = false;  //!< the disc was off screen: coverage 0 without a read
         SunDiscView view;
         long frame = 0;
     };
@@ -73,7 +78,18 @@ private:
         for (long f = m_frame - long(m_slots.size()) + 1; f <= m_frame; ++f) {
             if (f < 1) continue;
             Slot& s = m_slots[std::size_t(f % long(m_slots.size()))];
-            if (s.fence && s.frame == f) collectSlot(s, wait);
+            collectFrame(s, f, wait);
+        }
+    }
+
+    void collectFrame(Slot& s, long frame, bool wait) {
+        if (s.frame != frame) return;
+        if (s.knownEmpty) {
+            s.knownEmpty = false;
+            publish(0.0);
+            m_latency = int(m_frame - s.frame);
+        } else if (s.fence) {
+            collectSlot(s, wait);
         }
     }
 

@@ -26,12 +26,18 @@ public:
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         ++m_frame;
-        collect();
+        // This frame's pair holds the oldest frame in flight: with a full ring it must finish
+        // (wait) and be published before the newer ones collect() finds done.
         Pair& p = m_pairs[std::size_t(m_frame % kRing)];
         if (p.pending) collectPair(p, true);
+        collect();
         const SunDiscView v = sunDiscView(view);
+        p.frame = m_frame;
         if (v.empty()) {
-            publish(0.0);
+            // No disc on screen: 0 is known now, published in frame order with the queries in
+            // flight so an older result never overwrites it.
+            p.pending = true;
+            p.knownEmpty = true;
             return Ok{};
         }
         setSunDiscUniforms(m_program.get(), v);
@@ -57,7 +63,6 @@ public:
         glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         p.pending = true;
-        p.frame = m_frame;
         glFlush();
         return glStatus("query: disc draws");
     }
@@ -71,6 +76,7 @@ private:
     struct Pair {
         gl::Query visible, total;
         bool pending = false;
+        bool knownEmpty = false;  //!< the disc was off screen: coverage 0, nothing queried
         long frame = 0;
     };
     explicit QueryMethod(gl::Program program) : m_program(std::move(program)) {
@@ -92,6 +98,12 @@ private:
         }
     }
     void collectPair(Pair& p, bool wait) {
+        if (p.knownEmpty) {
+            p.pending = p.knownEmpty = false;
+            publish(0.0);
+            m_latency = int(m_frame - p.frame);
+            return;
+        }
         GLuint ready = 0;
         if (!wait) {
             glGetQueryObjectuiv(p.total.get(), GL_QUERY_RESULT_AVAILABLE, &ready);

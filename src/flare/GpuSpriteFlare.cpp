@@ -1,0 +1,132 @@
+// GpuSpriteFlare: each element is rendered once on the CPU (renderElement, the kernels of
+// renderFlare) into a texture, then drawn every frame as a quad centred where renderFlare puts
+// it. With the element centre on a pixel centre the texels land on pixels one to one and the
+// result equals renderFlare's; elsewhere bilinear filtering shifts it by the sub-pixel offset.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "flarekit/GpuFlare.h"
+#include "flarekit_shaders.h"
+#include "gl/GlObjects.h"
+#include "scene/CameraMath.h"
+
+namespace flarekit {
+
+namespace {
+//! renderFlare skips elements below half a pixel in radius (FlareRenderer.cpp); so do we.
+constexpr float kMinRadiusPx = 0.5f;
+//! Largest element texture side: an element of size 4 (its range's top) at 2160p would need
+//! 17k texels a side; bigger ones are rendered smaller and magnified (they are soft anyway).
+constexpr int kMaxTextureSide = 2048;
+
+struct ElementSprite {
+    float t;             //!< position on the flare vector
+    float halfW, halfH;  //!< quad half size, frame pixels
+    BlendMode blend;
+    gl::Texture texture;
+};
+
+void setBlend(BlendMode mode) {
+    // Premultiplied source, the same equations as compositeSpan (Blend.h). Add keeps the
+    // destination's alpha; Screen and Over combine alpha as Porter-Duff over.
+    switch (mode) {
+        case BlendMode::Add: glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE); break;
+        case BlendMode::Screen: glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); break;
+        case BlendMode::Over: glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); break;
+    }
+}
+}  // namespace
+
+struct GpuSpriteFlare::Impl {
+    int height = 0;
+    gl::Program program;
+    gl::VertexArray vao;
+    std::vector<ElementSprite> sprites;
+};
+
+Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) {
+    if (height < 1) return invalidInput("sprite flare: frame height must be positive");
+    auto program = gl::linkProgram({{GL_VERTEX_SHADER, "sprite_flare.vert", shaders::sprite_flare_vert},
+                                    {GL_FRAGMENT_SHADER, "sprite_flare.frag", shaders::sprite_flare_frag}});
+    if (!program) return program.error();
+    auto m = std::make_unique<Impl>();
+    m->height = height;
+    m->program = std::move(*program);
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    m->vao = gl::VertexArray(vao);
+    for (const ElementParams& e : preset.elements) {
+        const float radius = e.size * float(height);
+        const float k = e.intensity * preset.intensity;
+        if (radius < kMinRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
+        ElementParams scaled = e;
+        scaled.intensity = k;
+        // Texels per frame pixel: 1 unless the element would exceed the texture limit.
+        const float extent = 2.f * radius * std::max(1.f, e.aspect) + 8.f;
+        const float texScale = std::min(1.f, float(kMaxTextureSide) / extent);
+        const Image image = renderElement(scaled, radius * texScale);
+        ElementSprite sprite{e.t, 0.5f * float(image.width()) / texScale, 0.5f * float(image.height()) / texScale,
+                             e.blend, gl::makeTexture2D(GL_RGBA16F, image.width(), image.height())};
+        const GLuint tex = sprite.texture.get();
+        glTextureSubImage2D(tex, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT, image.data());
+        glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        const float transparent[4] = {0.f, 0.f, 0.f, 0.f};
+        glTextureParameterfv(tex, GL_TEXTURE_BORDER_COLOR, transparent);
+        m->sprites.push_back(std::move(sprite));
+    }
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+        return internalError("OpenGL: uploading the flare's element textures failed (error 0x" + std::to_string(err) + ")");
+    }
+    return GpuSpriteFlare(std::move(m));
+}
+
+GpuSpriteFlare::GpuSpriteFlare(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
+GpuSpriteFlare::~GpuSpriteFlare() = default;
+GpuSpriteFlare::GpuSpriteFlare(GpuSpriteFlare&&) noexcept = default;
+GpuSpriteFlare& GpuSpriteFlare::operator=(GpuSpriteFlare&&) noexcept = default;
+
+std::size_t GpuSpriteFlare::elementCount() const { return m->sprites.size(); }
+
+Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scene& view, unsigned weightTexture,
+                                         int channel) const {
+    if (target.height() != m->height) return invalidInput("sprite flare: made for another frame height");
+    if (channel < 0 || channel > 3) return invalidInput("sprite flare: weight channel must be 0..3");
+    FlaredFrame result;
+    result.sunInFront = projectDirection(view, view.sun.direction, result.sunPixel);
+    result.flareIntensity = sunFlareScale(view.sun);
+    if (!result.sunInFront || !std::isfinite(result.sunPixel.x) || !std::isfinite(result.sunPixel.y)) return result;
+    const GLuint p = m->program.get();
+    const int w = target.width(), h = target.height();
+    glProgramUniform1i(p, glGetUniformLocation(p, "weightChannel"), channel);
+    glProgramUniform1f(p, glGetUniformLocation(p, "brightnessScale"), result.flareIntensity);
+    glProgramUniform2f(p, glGetUniformLocation(p, "frameSize"), float(w), float(h));
+    const GLint centreAt = glGetUniformLocation(p, "centre"), halfAt = glGetUniformLocation(p, "halfSize");
+
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBindTextureUnit(1, weightTexture);
+    glBindVertexArray(m->vao.get());
+    glUseProgram(p);
+    for (const ElementSprite& s : m->sprites) {
+        const Point c = flareVectorPoint(result.sunPixel, w, h, s.t);  // top-left origin
+        glProgramUniform2f(p, centreAt, c.x, float(h) - c.y);
+        glProgramUniform2f(p, halfAt, s.halfW, s.halfH);
+        setBlend(s.blend);
+        glBindTextureUnit(0, s.texture.get());
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    }
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+        return internalError("OpenGL: drawing the sprite flare failed (error 0x" + std::to_string(err) + ")");
+    }
+    return result;
+}
+
+}  // namespace flarekit
