@@ -1,8 +1,13 @@
 // flarekit render: the scene through the headless GL renderer, with the sprite flare at the
-// sun scaled by its coverage (ray-cast; the GPU methods come with the occlusion issue).
+// sun scaled by its coverage. With `raycast` the flare is drawn on the CPU over the read-back
+// frame; with a GPU method the flare is drawn on the GPU and reads the method's 1x1 coverage
+// texture in its vertex shader (the coverage is read back only for --verbose).
+#include <algorithm>
 #include <cstdio>
 
 #include "Common.h"
+#include "flarekit/GpuFlare.h"
+#include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Render.h"
 #include "flarekit/Tonemap.h"
@@ -12,16 +17,62 @@ namespace flarekit::cli {
 
 namespace {
 struct RenderArgs {
-    std::string scene, out, preset = "tanczos-classic", method = "raycast";
+    std::string scene, out, preset = "tanczos-classic", method = "raycast", variant = "circle";
     float exposure = 1.f;
     int msaa = 1;
     bool noFlare = false, noShadows = false, verbose = false;
 };
 
+struct RenderedFrame {
+    Image image;
+    FlaredFrame flare;
+    double coverage = 0, inFrame = 0;
+};
+
+Result<RenderedFrame> renderWithRaycast(const Scene& scene, const Preset& preset, const RenderOptions& options, bool flare) {
+    auto frame = renderScene(scene, options);
+    if (!frame) return frame.error();
+    auto visibility = raycastVisibility(scene);
+    if (!visibility) return visibility.error();
+    RenderedFrame r{std::move(*frame), {}, visibility->coverage, visibility->inFrame};
+    r.flare = flare ? addSunFlare(r.image, scene, preset, visibility->coverage) : FlaredFrame{};
+    return r;
+}
+
+Result<RenderedFrame> renderWithGpuMethod(const Scene& scene, const Preset& preset, const RenderOptions& options,
+                                          const RenderArgs& a) {
+    auto renderer = SceneRenderer::create(scene, options);
+    if (!renderer) return renderer.error();
+    GpuVisibilityOptions methodOptions;
+    methodOptions.textureMaskVariant = a.variant;
+    auto method = createGpuVisibility(a.method, scene, methodOptions);
+    if (!method) return method.error();
+    // A still frame: late methods (pbo, query) need the frame drawn until their result is in.
+    auto coverage = measureStillFrame(**method, *renderer, scene);
+    if (!coverage) return coverage.error();
+    RenderedFrame r{{}, {}, *coverage, sunInFrameFraction(scene)};
+    if (!a.noFlare) {
+        auto flare = GpuSpriteFlare::create(preset, scene.height);
+        if (!flare) return flare.error();
+        auto drawn = flare->draw(*renderer, scene, (*method)->coverageTexture(), 0);
+        if (!drawn) return drawn.error();
+        r.flare = *drawn;
+        r.flare.flareIntensity *= float(*coverage);  // for the report; the GPU read it itself
+    }
+    auto image = renderer->readColor();
+    if (!image) return image.error();
+    r.image = std::move(*image);
+    return r;
+}
+
 int runRender(const RenderArgs& a) {
     if (Status s = checkOutputPath(a.out); !s) return report(s.error());
-    if (a.method != "raycast") {
-        return report(invalidInput("--method: '" + a.method + "' is not available yet; available: raycast"));
+    const auto& gpuMethods = gpuVisibilityMethods();
+    const bool onGpu = std::find(gpuMethods.begin(), gpuMethods.end(), a.method) != gpuMethods.end();
+    if (a.method != "raycast" && !onGpu) {
+        std::string names = "raycast";
+        for (const std::string& n : gpuMethods) names += " " + n;
+        return report(invalidInput("--method: expected one of " + names + ", got '" + a.method + "'"));
     }
     auto scene = loadScene(a.scene);
     if (!scene) return report(scene.error());
@@ -32,19 +83,18 @@ int runRender(const RenderArgs& a) {
     RenderOptions options;
     options.msaaSamples = a.msaa;
     options.shadows = !a.noShadows;
-    auto frame = renderScene(*scene, options);
+    auto frame = onGpu ? renderWithGpuMethod(*scene, *preset, options, a)
+                       : renderWithRaycast(*scene, *preset, options, !a.noFlare);
     if (!frame) return report(frame.error());
-    auto visibility = raycastVisibility(*scene);
-    if (!visibility) return report(visibility.error());
-    const FlaredFrame flare = a.noFlare ? FlaredFrame{} : addSunFlare(*frame, *scene, *preset, visibility->coverage);
     if (a.verbose) {
+        const FlaredFrame& flare = frame->flare;
         std::printf("%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare intensity %.3f\n",
-                    (*gl)->renderer().c_str(), (*gl)->platform().c_str(), visibility->coverage, visibility->method.c_str(),
-                    visibility->inFrame, double(flare.sunPixel.x), double(flare.sunPixel.y),
+                    (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->coverage, a.method.c_str(),
+                    frame->inFrame, double(flare.sunPixel.x), double(flare.sunPixel.y),
                     flare.sunInFront ? "" : " (behind the camera)", double(flare.flareIntensity));
     }
-    if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(*frame, a.exposure);
-    if (Status s = writeImage(a.out, *frame); !s) return report(s.error());
+    if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.exposure);
+    if (Status s = writeImage(a.out, frame->image); !s) return report(s.error());
     return kExitOk;
 }
 }  // namespace
@@ -56,7 +106,13 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("-o,--output", args->out, "output image: EXR stays linear HDR, 8/16-bit outputs are tone-mapped")
         ->required();
     cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
-    cmd->add_option("--method", args->method, "visibility method (raycast for now)")->capture_default_str();
+    cmd->add_option("--method", args->method,
+                    "visibility method: raycast (flare drawn on the CPU) or a GPU method (readback pbo query "
+                    "texture-mask texture-mask-screen burnout compute: the flare reads its coverage on the GPU)")
+        ->capture_default_str();
+    cmd->add_option("--variant", args->variant, "texture-mask sampling: square (16x16, 256 points), circle, bilinear")
+        ->check(CLI::IsMember({"square", "circle", "bilinear"}))
+        ->capture_default_str();
     cmd->add_option("--exposure", args->exposure, "exposure before tone mapping (8/16-bit outputs)")
         ->check(CLI::Range(0.f, 1000.f))
         ->capture_default_str();
