@@ -39,7 +39,8 @@ public:
 };
 
 //! One still frame measured to completion: draws `view` and measures it, again and again until
-//! the method's result has arrived (late methods, pbo and query, need more than one frame),
+//! a result of this view has arrived (late methods, pbo and query, need more than one frame;
+//! a method reused from another view may hold that view's result until then),
 //! at most maxFrames times. `frames` receives the frames it took minus one (the latency seen).
 Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer, const Scene& view,
                                  int maxFrames = 16, int* frames = nullptr);

@@ -26,7 +26,10 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
     for (int frame = 0; frame < maxFrames; ++frame) {
         if (Status s = renderer.draw(view); !s) return s.error();
         if (Status s = method.measure(view, renderer); !s) return s.error();
-        if (const std::optional<double> coverage = method.latestCoverage()) {
+        // The newest result must come from a measure() of this call, not from an earlier view
+        // the method saw: its latency (frames behind the newest measure) tells which.
+        const std::optional<double> coverage = method.latestCoverage();
+        if (coverage && method.latencyFrames() <= frame) {
             if (frames) *frames = frame;
             return *coverage;
         }
