@@ -29,12 +29,12 @@ std::vector<std::pair<std::string, GpuVisibilityOptions>> methods() {
             m.emplace_back(name, GpuVisibilityOptions{});
         }
     }
-    m.emplace_back("compute:msaa4", GpuVisibilityOptions{});
+    for (const char* name : {"readback", "pbo", "query", "compute"}) m.emplace_back(std::string(name) + ":msaa4", GpuVisibilityOptions{});
     return m;
 }
 
 double measure(const std::string& label, const GpuVisibilityOptions& options, const Scene& scene) {
-    auto coverage = test::measureGpuCoverage(label.substr(0, label.find(':')), scene, label == "compute:msaa4" ? 4 : 1,
+    auto coverage = test::measureGpuCoverage(label.substr(0, label.find(':')), scene, label.ends_with(":msaa4") ? 4 : 1,
                                              options.textureMaskVariant);
     return coverage ? *coverage : NAN;
 }

@@ -26,6 +26,9 @@ struct DemoSettings {
     std::string method = "raycast";  //!< visibility method
     int raycastSamplesPerSide = 64;  //!< 4096 rays a frame; the temporal filter absorbs the noise
     int msaaSamples = 1;
+    //! `query` only: the flare's draws are conditional on the sun's occlusion query
+    //! (glBeginConditionalRender), so the GPU skips them when the sun is hidden.
+    bool conditionalRender = false;
     TemporalParams temporal;
 };
 

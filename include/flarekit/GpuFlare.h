@@ -61,7 +61,11 @@ public:
     //! flareScaleForBrightness(sun) x the `channel` of 1x1 `weightTexture` (a coverage texture,
     //! channel 0, or the temporal state's FlareWeight, channel 3). Returns where the sun projects
     //! and the brightness scale (flareIntensity = that scale; the weight stays on the GPU).
-    Result<FlaredFrame> draw(const SceneRenderer& target, const Scene& view, unsigned weightTexture, int channel) const;
+    //! With `conditionQuery` (GpuVisibility::conditionalRenderQuery()) the draws are made
+    //! conditional on it (glBeginConditionalRender, GL_QUERY_NO_WAIT: the GPU skips them when
+    //! no sample of the sun passed, and never makes the CPU wait).
+    Result<FlaredFrame> draw(const SceneRenderer& target, const Scene& view, unsigned weightTexture, int channel,
+                             unsigned conditionQuery = 0) const;
     std::size_t elementCount() const;  //!< elements with a texture (radius >= half a pixel)
 
 private:

@@ -36,6 +36,10 @@ public:
     virtual std::optional<double> latestCoverage() = 0;
     //! Frames between a measure() and its result becoming the newest (0: same frame).
     virtual int latencyFrames() const = 0;
+    //! A GL query of the newest measure() that counts the sun's visible samples, for
+    //! glBeginConditionalRender (`query` only; 0 for the other methods): drawing gated by it
+    //! is skipped by the GPU when the sun was hidden, with no CPU involvement.
+    virtual unsigned conditionalRenderQuery() const { return 0; }
 };
 
 //! One still frame measured to completion: draws `view` and measures it, again and again until

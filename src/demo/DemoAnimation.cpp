@@ -78,6 +78,10 @@ Status validateDemoSettings(const DemoSettings& settings) {
         for (const std::string& n : gpuMethods) names += " " + n;
         return invalidInput("method: expected one of " + names + ", got '" + settings.method + "'");
     }
+    if (settings.conditionalRender && settings.method != "query") {
+        return invalidInput("conditional-render: needs --method query (the only method with an occlusion query), got '" +
+                            settings.method + "'");
+    }
     if (settings.raycastSamplesPerSide < 1 || settings.raycastSamplesPerSide > 4096) {
         return invalidInput("samples: expected an integer in [1, 4096], got " +
                             std::to_string(settings.raycastSamplesPerSide));
@@ -167,7 +171,8 @@ Status DemoAnimation::Impl::drawFlareOnGpu(DemoFrame& frame, double dt) {
         !s) {
         return s;
     }
-    auto flare = g.flare.draw(renderer, view, g.filter.stateTexture(), int(GpuStateChannel::FlareWeight));
+    auto flare = g.flare.draw(renderer, view, g.filter.stateTexture(), int(GpuStateChannel::FlareWeight),
+                              settings.conditionalRender ? g.method->conditionalRenderQuery() : 0);
     if (!flare) return flare.error();
     if (Status s = g.tonemap.apply(renderer, g.filter.stateTexture(), int(GpuStateChannel::Exposure)); !s) return s;
     auto image = g.tonemap.read();  // the frame's output: the one wait in the loop

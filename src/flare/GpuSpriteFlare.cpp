@@ -92,7 +92,7 @@ GpuSpriteFlare& GpuSpriteFlare::operator=(GpuSpriteFlare&&) noexcept = default;
 std::size_t GpuSpriteFlare::elementCount() const { return m->sprites.size(); }
 
 Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scene& view, unsigned weightTexture,
-                                         int channel) const {
+                                         int channel, unsigned conditionQuery) const {
     if (target.height() != m->height) return invalidInput("sprite flare: made for another frame height");
     if (channel < 0 || channel > 3) return invalidInput("sprite flare: weight channel must be 0..3");
     FlaredFrame result;
@@ -113,6 +113,7 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     glBindTextureUnit(1, weightTexture);
     glBindVertexArray(m->vao.get());
     glUseProgram(p);
+    if (conditionQuery) glBeginConditionalRender(conditionQuery, GL_QUERY_NO_WAIT);
     for (const ElementSprite& s : m->sprites) {
         const Point c = flareVectorPoint(result.sunPixel, w, h, s.t);  // top-left origin
         glProgramUniform2f(p, centreAt, c.x, float(h) - c.y);
@@ -121,6 +122,7 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
         glBindTextureUnit(0, s.texture.get());
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     }
+    if (conditionQuery) glEndConditionalRender();
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (const GLenum err = glGetError(); err != GL_NO_ERROR) {

@@ -6,8 +6,8 @@
 namespace flarekit {
 
 namespace occlusion {
-std::unique_ptr<GpuVisibility> makeReadbackMethod();
-std::unique_ptr<GpuVisibility> makePboMethod(int ring);
+Result<std::unique_ptr<GpuVisibility>> makeReadbackMethod();
+Result<std::unique_ptr<GpuVisibility>> makePboMethod(int ring);
 Result<std::unique_ptr<GpuVisibility>> makeQueryMethod();
 Result<std::unique_ptr<GpuVisibility>> makeComputeMethod();
 Result<std::unique_ptr<GpuVisibility>> makeTextureMaskMethod(const Scene& world, const std::string& variant);

@@ -8,6 +8,7 @@
 
 #include "GlTestContext.h"
 #include "flarekit/GpuFlare.h"
+#include "flarekit/GpuVisibility.h"
 #include "flarekit/Tonemap.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
@@ -15,6 +16,12 @@
 using namespace flarekit;
 
 namespace {
+
+RenderOptions noShadows() {
+    RenderOptions o;
+    o.shadows = false;
+    return o;
+}
 
 //! A scene with no objects whose sun projects to pixel (px, py) (top-left origin).
 Scene sceneWithSunAt(double px, double py) {
@@ -41,7 +48,7 @@ struct FlarePair {
     Image gpu, cpu;
 };
 FlarePair drawBoth(const Preset& preset, const Scene& scene, float weight) {
-    auto renderer = SceneRenderer::create(scene, {1, false});
+    auto renderer = SceneRenderer::create(scene, noShadows());
     EXPECT_TRUE(renderer.ok()) << renderer.error().message;
     EXPECT_TRUE(renderer->draw(scene).ok());
     auto base = renderer->readColor();
@@ -139,7 +146,7 @@ TEST(GpuSpriteFlare, ShippedPresetsMatchTheCpuFlare) {
 TEST(GpuSpriteFlare, SubPixelLightKeepsTheFlaresEnergy) {
     test::glContext();
     const Scene scene = sceneWithSunAt(401.37, 97.81);
-    auto renderer = SceneRenderer::create(scene, {1, false});
+    auto renderer = SceneRenderer::create(scene, noShadows());
     ASSERT_TRUE(renderer.ok());
     ASSERT_TRUE(renderer->draw(scene).ok());
     const double base = energy(*renderer->readColor());
@@ -195,7 +202,7 @@ TEST(GpuTemporalFilter, FollowsTheCpuFilterFrameByFrame) {
 TEST(GpuTonemap, EqualsTheCpuToneMapWithTheExposureFromATexture) {
     test::glContext();
     const Scene scene = sceneWithSunAt(300, 120);  // the sun disc: 50 x its colour
-    auto renderer = SceneRenderer::create(scene, {1, false});
+    auto renderer = SceneRenderer::create(scene, noShadows());
     ASSERT_TRUE(renderer.ok());
     ASSERT_TRUE(renderer->draw(scene).ok());
     auto tonemap = GpuTonemap::create(scene.width, scene.height);
@@ -209,5 +216,38 @@ TEST(GpuTonemap, EqualsTheCpuToneMapWithTheExposureFromATexture) {
         tonemapAcesFitted(cpu, e);
         EXPECT_EQ(mismatches(*gpu, cpu, 1e-3f), 0u) << e;  // the display target is half float
     }
-    EXPECT_FALSE(tonemap->apply(*SceneRenderer::create(Scene{160, 90}), 0, 0).ok());  // size mismatch
+    Scene small;
+    small.width = 160, small.height = 90;
+    EXPECT_FALSE(tonemap->apply(*SceneRenderer::create(small), 0, 0).ok());  // size mismatch
+}
+
+TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
+    test::glContext();
+    auto preset = loadPreset("tanczos-classic");
+    ASSERT_TRUE(preset.ok());
+    for (const bool hidden : {true, false}) {
+        Scene scene = sceneWithSunAt(400, 120);
+        // A sphere on the sun's ray 30 m away, 3 m across: covers the 1.5-degree disc whole.
+        if (hidden) scene.spheres.push_back({scene.camera.position + scene.sun.direction * 30.0, 1.5});
+        auto renderer = SceneRenderer::create(scene, noShadows());
+        ASSERT_TRUE(renderer.ok());
+        auto query = createGpuVisibility("query", scene);
+        ASSERT_TRUE(query.ok());
+        ASSERT_TRUE(renderer->draw(scene).ok());
+        ASSERT_TRUE((*query)->measure(scene, *renderer).ok());
+        ASSERT_NE((*query)->conditionalRenderQuery(), 0u);
+        glFinish();  // the test wants the query's answer, not GL_QUERY_NO_WAIT's licence to guess
+        const double base = energy(*renderer->readColor());
+        auto flare = GpuSpriteFlare::create(*preset, scene.height);
+        ASSERT_TRUE(flare.ok());
+        // A weight of 1 regardless: only the conditional render can keep the flare away.
+        const gl::Texture one = weightTexture(1.f);
+        ASSERT_TRUE(flare->draw(*renderer, scene, one.get(), 0, (*query)->conditionalRenderQuery()).ok());
+        const double after = energy(*renderer->readColor());
+        if (hidden) {
+            EXPECT_EQ(after, base);
+        } else {
+            EXPECT_GT(after, base * 1.05);
+        }
+    }
 }

@@ -234,6 +234,8 @@ void addDemoCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--method", args->settings.method, "visibility method: raycast (CPU flare) or a GPU method (readback pbo query texture-mask texture-mask-screen burnout compute: flare, smoothing and tone map on the GPU)")
         ->capture_default_str();
     cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
+    cmd->add_flag("--conditional-render", args->settings.conditionalRender,
+                  "with --method query: draw the flare under glBeginConditionalRender on the sun's query");
     cmd->add_option("--samples", args->settings.raycastSamplesPerSide, "raycast: strata per side (N^2 rays a frame)")
         ->check(CLI::Range(1, 4096))
         ->capture_default_str();

@@ -1,10 +1,12 @@
 // `pbo`: the lock method without the lock. The depth under the disc is copied into one of a
 // ring of pixel buffer objects (the copy runs on the GPU's timeline), a fence marks it, and a
 // later frame maps the buffer once its fence has signalled, so the CPU never waits; the result
-// arrives one or more frames late (latencyFrames() reports how many it took).
+// arrives one or more frames late (latencyFrames() reports how many it took). With a
+// multisampled frame the copy is of the per-pixel sky fraction (SkyFraction), as in readback.
 #include <vector>
 
 #include "occlusion/GpuMethod.h"
+#include "occlusion/SkyFraction.h"
 #include "occlusion/readback/DepthCoverage.h"
 
 namespace flarekit::occlusion {
@@ -12,7 +14,12 @@ namespace flarekit::occlusion {
 namespace {
 class PboMethod final : public GpuMethod {
 public:
-    explicit PboMethod(int ring) : m_slots(std::size_t(ring)) {
+    static Result<std::unique_ptr<GpuVisibility>> create(int ring) {
+        auto sky = SkyFraction::create();
+        if (!sky) return sky.error();
+        return std::unique_ptr<GpuVisibility>(new PboMethod(ring, std::move(*sky)));
+    }
+    PboMethod(int ring, SkyFraction sky) : m_sky(std::move(sky)), m_slots(std::size_t(ring)) {
         for (Slot& s : m_slots) {
             GLuint b = 0;
             glCreateBuffers(1, &b);
@@ -47,10 +54,18 @@ public:
             glNamedBufferData(slot.buffer.get(), bytes, nullptr, GL_STREAM_READ);
             slot.capacity = bytes;
         }
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer.framebuffer());
+        slot.skyFraction = renderer.msaaSamples() > 1;
+        GLuint source = renderer.framebuffer();
+        if (slot.skyFraction) {
+            auto sky = m_sky.update(slot.view, renderer);
+            if (!sky) return sky.error();
+            source = *sky;
+        }
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(slot.view.x0, slot.view.y0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);  // async
+        glReadPixels(slot.view.x0, slot.view.y0, w, h, slot.skyFraction ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT,
+                     nullptr);  // async
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
         slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
@@ -69,6 +84,7 @@ private:
         GLsizeiptr capacity = 0;
         GLsync fence = nullptr;
         bool knownEmpty = false;  //!< the disc was off screen: coverage 0 without a read
+        bool skyFraction = false;  //!< holds sky fractions (MSAA frame), not depth
         SunDiscView view;
         long frame = 0;
     };
@@ -102,18 +118,20 @@ private:
         const auto* depth = static_cast<const float*>(
             glMapNamedBufferRange(s.buffer.get(), 0, GLsizeiptr(w) * h * GLsizeiptr(sizeof(float)), GL_MAP_READ_BIT));
         if (!depth) return;
-        const double coverage = coverageFromDepth(s.view, depth, s.view.x0, s.view.y0, w, h);
+        const double coverage = s.skyFraction ? coverageFromSkyFraction(s.view, depth, s.view.x0, s.view.y0, w, h)
+                                              : coverageFromDepth(s.view, depth, s.view.x0, s.view.y0, w, h);
         glUnmapNamedBuffer(s.buffer.get());
         publish(coverage);
         m_latency = int(m_frame - s.frame);
     }
 
+    SkyFraction m_sky;
     std::vector<Slot> m_slots;
     long m_frame = 0;
     int m_latency = 0;
 };
 }  // namespace
 
-std::unique_ptr<GpuVisibility> makePboMethod(int ring) { return std::make_unique<PboMethod>(ring); }
+Result<std::unique_ptr<GpuVisibility>> makePboMethod(int ring) { return PboMethod::create(ring); }
 
 }  // namespace flarekit::occlusion

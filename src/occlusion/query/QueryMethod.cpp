@@ -2,7 +2,9 @@
 // (no colour writes): once with the depth test (GL_SAMPLES_PASSED counts the sky pixels under
 // the disc) and once without (counts all of the disc's pixels on screen). Coverage is their
 // ratio. Results are collected when GL_QUERY_RESULT_AVAILABLE says so, normally the next frame,
-// so the CPU never waits. Pixels count whole (centre inside the disc), unweighted.
+// so the CPU never waits. Pixels count whole (centre inside the disc), unweighted. With a
+// multisampled frame the disc is drawn against the multisampled depth, where GL_SAMPLES_PASSED
+// counts samples, so a pixel half covered by an occluder counts half.
 #include <vector>
 
 #include "flarekit_shaders.h"
@@ -38,10 +40,11 @@ public:
             // flight so an older result never overwrites it.
             p.pending = true;
             p.knownEmpty = true;
+            m_lastVisible = m_offScreen.get();  // no samples: gated drawing is skipped
             return Ok{};
         }
         setSunDiscUniforms(m_program.get(), v);
-        glBindFramebuffer(GL_FRAMEBUFFER, renderer.framebuffer());
+        glBindFramebuffer(GL_FRAMEBUFFER, targetFor(renderer));
         glViewport(0, 0, v.width, v.height);
         glEnable(GL_SCISSOR_TEST);
         glScissor(v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0);
@@ -63,9 +66,12 @@ public:
         glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         p.pending = true;
+        m_lastVisible = p.visible.get();
         glFlush();
         return glStatus("query: disc draws");
     }
+
+    unsigned conditionalRenderQuery() const override { return m_lastVisible; }
 
     std::optional<double> latestCoverage() override {
         collect();
@@ -89,6 +95,27 @@ private:
         GLuint vao = 0;
         glCreateVertexArrays(1, &vao);
         m_vao = gl::VertexArray(vao);
+        GLuint empty = 0;
+        glCreateQueries(GL_SAMPLES_PASSED, 1, &empty);
+        m_offScreen = gl::Query(empty);
+        glBeginQuery(GL_SAMPLES_PASSED, empty);  // around nothing: 0 samples
+        glEndQuery(GL_SAMPLES_PASSED);
+    }
+    //! The frame's framebuffer, or with MSAA one holding its multisampled depth (no colour).
+    GLuint targetFor(const SceneRenderer& renderer) {
+        if (renderer.msaaSamples() <= 1) return renderer.framebuffer();
+        if (!m_msaaTarget) {
+            GLuint fb = 0;
+            glCreateFramebuffers(1, &fb);
+            m_msaaTarget = gl::Framebuffer(fb);
+            glNamedFramebufferDrawBuffer(fb, GL_NONE);
+            glNamedFramebufferReadBuffer(fb, GL_NONE);
+        }
+        if (m_msaaDepth != renderer.multisampleDepthTexture()) {
+            m_msaaDepth = renderer.multisampleDepthTexture();
+            glNamedFramebufferTexture(m_msaaTarget.get(), GL_DEPTH_ATTACHMENT, m_msaaDepth, 0);
+        }
+        return m_msaaTarget.get();
     }
     void collect() {
         for (long f = m_frame - kRing + 1; f <= m_frame; ++f) {
@@ -121,6 +148,10 @@ private:
 
     gl::Program m_program;
     gl::VertexArray m_vao;
+    gl::Framebuffer m_msaaTarget;
+    GLuint m_msaaDepth = 0;
+    GLuint m_lastVisible = 0;
+    gl::Query m_offScreen;  //!< a query that counted nothing, for frames with no disc on screen
     Pair m_pairs[kRing];
     long m_frame = 0;
     int m_latency = 0;

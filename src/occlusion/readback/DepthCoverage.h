@@ -10,5 +10,8 @@ namespace flarekit::occlusion {
 //! value 1. Coverage = sum of discWeight over sky pixels / sum over all pixels (0 when the
 //! disc has no weight in the box).
 double coverageFromDepth(const SunDiscView& v, const float* depth, int x0, int y0, int w, int h);
+//! The same from per-pixel sky fractions in [0, 1] (SkyFraction, for multisampled frames):
+//! each pixel adds its weight x its fraction.
+double coverageFromSkyFraction(const SunDiscView& v, const float* sky, int x0, int y0, int w, int h);
 
 }  // namespace flarekit::occlusion

@@ -1,9 +1,12 @@
 // `readback`: the seed's "lock" method. After the scene pass, glReadPixels copies the depth
 // under the sun's disc to the CPU, which must wait for the GPU to finish the frame first: the
-// stall the GPG2 article measures. The coverage is computed on the CPU and published.
+// stall the GPG2 article measures. The coverage is computed on the CPU and published. With a
+// multisampled frame it reads the per-pixel sky fraction of the depth samples instead (one
+// more small pass), so occluder edges count to the sample.
 #include <vector>
 
 #include "occlusion/GpuMethod.h"
+#include "occlusion/SkyFraction.h"
 #include "occlusion/readback/DepthCoverage.h"
 
 namespace flarekit::occlusion {
@@ -11,6 +14,11 @@ namespace flarekit::occlusion {
 namespace {
 class ReadbackMethod final : public GpuMethod {
 public:
+    static Result<std::unique_ptr<GpuVisibility>> create() {
+        auto sky = SkyFraction::create();
+        if (!sky) return sky.error();
+        return std::unique_ptr<GpuVisibility>(new ReadbackMethod(std::move(*sky)));
+    }
     std::string name() const override { return "readback"; }
     int latencyFrames() const override { return 0; }
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
@@ -21,20 +29,30 @@ public:
         }
         const int w = v.x1 - v.x0, h = v.y1 - v.y0;
         m_depth.resize(std::size_t(w) * std::size_t(h));
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer.framebuffer());
+        const bool multisampled = renderer.msaaSamples() > 1;
+        GLuint source = renderer.framebuffer();
+        if (multisampled) {
+            auto sky = m_sky.update(v, renderer);
+            if (!sky) return sky.error();
+            source = *sky;
+        }
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(v.x0, v.y0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, m_depth.data());  // waits for the GPU
+        glReadPixels(v.x0, v.y0, w, h, multisampled ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT, m_depth.data());  // waits
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
         if (Status s = glStatus("readback: glReadPixels"); !s) return s;
-        publish(coverageFromDepth(v, m_depth.data(), v.x0, v.y0, w, h));
+        publish(multisampled ? coverageFromSkyFraction(v, m_depth.data(), v.x0, v.y0, w, h)
+                             : coverageFromDepth(v, m_depth.data(), v.x0, v.y0, w, h));
         return Ok{};
     }
 
 private:
-    std::vector<float> m_depth;
+    explicit ReadbackMethod(SkyFraction sky) : m_sky(std::move(sky)) {}
+    SkyFraction m_sky;
+    std::vector<float> m_depth;  // depth, or sky fractions with MSAA
 };
 }  // namespace
 
-std::unique_ptr<GpuVisibility> makeReadbackMethod() { return std::make_unique<ReadbackMethod>(); }
+Result<std::unique_ptr<GpuVisibility>> makeReadbackMethod() { return ReadbackMethod::create(); }
 
 }  // namespace flarekit::occlusion
