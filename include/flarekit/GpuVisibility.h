@@ -51,6 +51,9 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
 
 //! The contract's GPU method names: readback pbo query texture-mask texture-mask-screen burnout compute.
 const std::vector<std::string>& gpuVisibilityMethods();
+bool isGpuVisibilityMethod(const std::string& name);
+//! "raycast readback pbo ...": every method name, for error messages.
+std::string visibilityMethodList();
 
 //! A method over the objects `renderer` has uploaded (texture-mask re-draws them from the sun's
 //! own camera, so it needs `world` for culling).

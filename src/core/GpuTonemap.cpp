@@ -24,9 +24,7 @@ Result<GpuTonemap> GpuTonemap::create(int width, int height) {
     auto m = std::make_unique<Impl>();
     m->width = width, m->height = height;
     m->program = std::move(*program);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    m->vao = gl::VertexArray(vao);
+    m->vao = gl::makeVertexArray();
     m->display = gl::makeTexture2D(GL_RGBA16F, width, height);
     auto fb = gl::makeFramebuffer(m->display);
     if (!fb) return fb.error();

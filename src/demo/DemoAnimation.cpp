@@ -2,7 +2,6 @@
 // filter (smoothed coverage, edge fade, exposure), the sprite flare, tone mapping. With
 // `raycast` the last three run on the CPU over the read-back frame; with a GPU method they run
 // on the GPU from the method's 1x1 coverage texture, and the CPU reads only the finished frame.
-#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -72,11 +71,8 @@ Status validateDemoSettings(const DemoSettings& settings) {
         return invalidInput("size: expected each side in [16, 16384], got " + std::to_string(settings.width) + "x" +
                             std::to_string(settings.height));
     }
-    const auto& gpuMethods = gpuVisibilityMethods();
-    if (settings.method != "raycast" && std::find(gpuMethods.begin(), gpuMethods.end(), settings.method) == gpuMethods.end()) {
-        std::string names = "raycast";
-        for (const std::string& n : gpuMethods) names += " " + n;
-        return invalidInput("method: expected one of " + names + ", got '" + settings.method + "'");
+    if (settings.method != "raycast" && !isGpuVisibilityMethod(settings.method)) {
+        return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" + settings.method + "'");
     }
     if (settings.conditionalRender && settings.method != "query") {
         return invalidInput("conditional-render: needs --method query (the only method with an occlusion query), got '" +

@@ -53,9 +53,7 @@ Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) 
     auto m = std::make_unique<Impl>();
     m->height = height;
     m->program = std::move(*program);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    m->vao = gl::VertexArray(vao);
+    m->vao = gl::makeVertexArray();
     for (const ElementParams& e : preset.elements) {
         const float radius = e.size * float(height);
         const float k = e.intensity * preset.intensity;

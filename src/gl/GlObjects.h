@@ -58,6 +58,14 @@ using Query = Name<detail::deleteQuery>;
 using Program = Name<detail::deleteProgram>;
 using Shader = Name<detail::deleteShader>;
 
+//! An empty vertex array: what attribute-less draws (full-screen triangles, quads built from
+//! gl_VertexID) bind in a core profile.
+inline VertexArray makeVertexArray() {
+    GLuint name = 0;
+    glCreateVertexArrays(1, &name);
+    return VertexArray(name);
+}
+
 //! An immutable 2D texture (glTextureStorage2D) of the given internal format.
 Texture makeTexture2D(GLenum internalFormat, int width, int height);
 //! A framebuffer with `color` at attachment 0 (and `depth` when non-zero); fails with the

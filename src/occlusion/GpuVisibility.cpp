@@ -1,6 +1,8 @@
 // The GPU method factory: contract names to implementations (one folder each).
 #include "flarekit/GpuVisibility.h"
 
+#include <algorithm>
+
 #include "occlusion/GpuMethod.h"
 
 namespace flarekit {
@@ -35,6 +37,17 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
         }
     }
     return internalError(method.name() + ": no result after " + std::to_string(maxFrames) + " frames");
+}
+
+bool isGpuVisibilityMethod(const std::string& name) {
+    const auto& names = gpuVisibilityMethods();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string visibilityMethodList() {
+    std::string list = "raycast";
+    for (const std::string& n : gpuVisibilityMethods()) list += " " + n;
+    return list;
 }
 
 Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,

@@ -16,9 +16,7 @@ Result<SkyFraction> SkyFraction::create() {
     if (!single) return single.error();
     s.m_multisample = std::move(*ms);
     s.m_single = std::move(*single);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    s.m_vao = gl::VertexArray(vao);
+    s.m_vao = gl::makeVertexArray();
     return s;
 }
 

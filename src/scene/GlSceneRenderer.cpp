@@ -145,9 +145,7 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
                                     {GL_FRAGMENT_SHADER, "scene.frag", shaders::scene_frag}});
     if (!objects) return objects.error();
     impl->objects = std::move(*objects);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    impl->vao = gl::VertexArray(vao);
+    impl->vao = gl::makeVertexArray();
     SceneRenderer renderer(std::move(impl));
     if (Status s = renderer.setGeometry(scene); !s) return s.error();
     return renderer;

@@ -27,9 +27,7 @@ Result<GpuTemporalFilter> GpuTemporalFilter::create(const TemporalParams& params
     auto m = std::make_unique<Impl>();
     m->params = params;
     m->program = std::move(*program);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    m->vao = gl::VertexArray(vao);
+    m->vao = gl::makeVertexArray();
     const float initial[4] = {0.f, 0.f, 1.f, 0.f};  // TemporalState's defaults
     m->consumed = gl::makeTexture2D(GL_R32F, 1, 1);
     for (int i = 0; i < 2; ++i) {

@@ -2,7 +2,6 @@
 // sun scaled by its coverage. With `raycast` the flare is drawn on the CPU over the read-back
 // frame; with a GPU method the flare is drawn on the GPU and reads the method's 1x1 coverage
 // texture in its vertex shader (the coverage is read back only for --verbose).
-#include <algorithm>
 #include <cstdio>
 
 #include "Common.h"
@@ -67,12 +66,9 @@ Result<RenderedFrame> renderWithGpuMethod(const Scene& scene, const Preset& pres
 
 int runRender(const RenderArgs& a) {
     if (Status s = checkOutputPath(a.out); !s) return report(s.error());
-    const auto& gpuMethods = gpuVisibilityMethods();
-    const bool onGpu = std::find(gpuMethods.begin(), gpuMethods.end(), a.method) != gpuMethods.end();
+    const bool onGpu = isGpuVisibilityMethod(a.method);
     if (a.method != "raycast" && !onGpu) {
-        std::string names = "raycast";
-        for (const std::string& n : gpuMethods) names += " " + n;
-        return report(invalidInput("--method: expected one of " + names + ", got '" + a.method + "'"));
+        return report(invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" + a.method + "'"));
     }
     auto scene = loadScene(a.scene);
     if (!scene) return report(scene.error());

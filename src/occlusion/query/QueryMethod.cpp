@@ -92,9 +92,7 @@ private:
             p.visible = gl::Query(q[0]);
             p.total = gl::Query(q[1]);
         }
-        GLuint vao = 0;
-        glCreateVertexArrays(1, &vao);
-        m_vao = gl::VertexArray(vao);
+        m_vao = gl::makeVertexArray();
         GLuint empty = 0;
         glCreateQueries(GL_SAMPLES_PASSED, 1, &empty);
         m_offScreen = gl::Query(empty);

@@ -74,9 +74,7 @@ public:
 
 private:
     explicit TextureMaskMethod(SunMapSum sum) : m_sum(std::move(sum)) {
-        GLuint vao = 0;
-        glCreateVertexArrays(1, &vao);
-        m_emptyVao = gl::VertexArray(vao);
+        m_emptyVao = gl::makeVertexArray();
     }
 
     //! Collects the objects that may overlap the sun's cone; false when one surely covers it.

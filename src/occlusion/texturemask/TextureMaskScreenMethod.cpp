@@ -53,9 +53,7 @@ public:
 
 private:
     TextureMaskScreenMethod(SunMapSum sum, gl::Program fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
-        GLuint vao = 0;
-        glCreateVertexArrays(1, &vao);
-        m_vao = gl::VertexArray(vao);
+        m_vao = gl::makeVertexArray();
     }
     SunMapSum m_sum;
     gl::Program m_fromDepth;
