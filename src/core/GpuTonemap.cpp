@@ -1,7 +1,5 @@
 // GpuTonemap: shaders/tonemap_aces.frag from the renderer's HDR colour into an RGBA16F
 // display target (linear [0, 1], like tonemapAcesFitted's output).
-#include <algorithm>
-
 #include "flarekit/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
@@ -53,32 +51,9 @@ Status GpuTonemap::apply(const SceneRenderer& source, unsigned exposureTexture, 
     glUseProgram(p);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: tone-map pass failed (error 0x" + std::to_string(err) + ")");
-    }
-    return Ok{};
+    return gl::checkError("tone-map pass");
 }
 
-Result<Image> GpuTonemap::read() const {
-    Image image(m->width, m->height);
-    const std::size_t rowFloats = std::size_t(m->width) * 4;
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    // In bands: a GLsizei byte count overflows past 2 GiB (a 16k frame is 4 GiB of floats).
-    const std::size_t rowBytes = rowFloats * sizeof(float);
-    const int bandRows = int(std::max<std::size_t>(1, (std::size_t(1) << 30) / rowBytes));
-    for (int y = 0; y < m->height; y += bandRows) {
-        const int rows = std::min(bandRows, m->height - y);
-        glGetTextureSubImage(m->display.get(), 0, 0, y, 0, m->width, rows, 1, GL_RGBA, GL_FLOAT,
-                             GLsizei(rowBytes * std::size_t(rows)), image.row(y));
-    }
-    // GL rows are bottom-up: flip in place.
-    for (int y = 0; y < m->height / 2; ++y) {
-        std::swap_ranges(image.row(y), image.row(y) + rowFloats, image.row(m->height - 1 - y));
-    }
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: reading the tone-mapped frame failed (error 0x" + std::to_string(err) + ")");
-    }
-    return image;
-}
+Result<Image> GpuTonemap::read() const { return gl::readTextureRgba(m->display.get(), m->width, m->height); }
 
 }  // namespace flarekit

@@ -76,9 +76,7 @@ Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) 
         glTextureParameterfv(tex, GL_TEXTURE_BORDER_COLOR, transparent);
         m->sprites.push_back(std::move(sprite));
     }
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: uploading the flare's element textures failed (error 0x" + std::to_string(err) + ")");
-    }
+    if (Status s = gl::checkError("uploading the flare's element textures"); !s) return s.error();
     return GpuSpriteFlare(std::move(m));
 }
 
@@ -123,9 +121,7 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     if (conditionQuery) glEndConditionalRender();
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: drawing the sprite flare failed (error 0x" + std::to_string(err) + ")");
-    }
+    if (Status s = gl::checkError("drawing the sprite flare"); !s) return s.error();
     return result;
 }
 

@@ -1,5 +1,7 @@
 #include "gl/GlObjects.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include "core/AtomicFile.h"
@@ -17,17 +19,45 @@ Texture makeTexture2D(GLenum internalFormat, int width, int height) {
     return Texture(name);
 }
 
-Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* depth) {
+namespace {
+std::string hex(GLenum code) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%04X", unsigned(code));
+    return buf;
+}
+}  // namespace
+
+Result<Framebuffer> makeFramebuffer(GLuint color, GLuint depth) {
     GLuint name = 0;
     glCreateFramebuffers(1, &name);
     Framebuffer fb(name);
-    glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, color.get(), 0);
-    if (depth) glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth->get(), 0);
+    glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, color, 0);
+    if (depth) glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth, 0);
     const GLenum status = glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        return internalError("OpenGL: framebuffer incomplete (status 0x" + std::to_string(status) + ")");
-    }
+    if (status != GL_FRAMEBUFFER_COMPLETE) return internalError("OpenGL: framebuffer incomplete (status " + hex(status) + ")");
     return fb;
+}
+
+Status checkError(const std::string& what) {
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+        return internalError("OpenGL: " + what + " failed (error " + hex(err) + ")");
+    }
+    return Ok{};
+}
+
+Result<Image> readTextureRgba(GLuint texture, int width, int height) {
+    Image image(width, height);  // read straight into it: the frame's pages are touched once
+    const std::size_t rowFloats = std::size_t(width) * 4, rowBytes = rowFloats * sizeof(float);
+    const int bandRows = int(std::max<std::size_t>(1, (std::size_t(1) << 30) / rowBytes));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int y = 0; y < height; y += bandRows) {
+        const int rows = std::min(bandRows, height - y);
+        glGetTextureSubImage(texture, 0, 0, y, 0, width, rows, 1, GL_RGBA, GL_FLOAT, GLsizei(rowBytes * std::size_t(rows)),
+                             image.row(y));
+    }
+    if (Status s = checkError("reading a frame back"); !s) return s.error();
+    for (int y = 0; y < height / 2; ++y) std::swap_ranges(image.row(y), image.row(y) + rowFloats, image.row(height - 1 - y));
+    return image;
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "flarekit/Image.h"
 #include "flarekit/Result.h"
 #include "flarekit/Vec3.h"
 
@@ -68,9 +69,19 @@ inline VertexArray makeVertexArray() {
 
 //! An immutable 2D texture (glTextureStorage2D) of the given internal format.
 Texture makeTexture2D(GLenum internalFormat, int width, int height);
-//! A framebuffer with `color` at attachment 0 (and `depth` when non-zero); fails with the
-//! completeness status when incomplete.
-Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* depth = nullptr);
+//! A framebuffer with texture `color` at attachment 0 (and `depth` when non-zero; either may be
+//! multisampled); fails with the completeness status when incomplete.
+Result<Framebuffer> makeFramebuffer(GLuint color, GLuint depth = 0);
+inline Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* depth = nullptr) {
+    return makeFramebuffer(color.get(), depth ? depth->get() : 0);
+}
+
+//! Ok, or "OpenGL: <what> failed (error 0x0502)" when glGetError reports an error.
+Status checkError(const std::string& what);
+
+//! Level 0 of a width x height colour texture as float RGBA, top row first (GL rows are
+//! bottom-up). Waits for the GPU. Read in bands, so frames past 2 GiB need no GLsizei > 2^31.
+Result<Image> readTextureRgba(GLuint texture, int width, int height);
 
 //! glProgramUniform3f of a (double) Vec3 by uniform name.
 inline void setUniform(GLuint program, const char* name, Vec3 v) {

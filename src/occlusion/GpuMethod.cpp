@@ -24,15 +24,19 @@ std::optional<double> GpuMethod::latestCoverage() {
     return double(value);
 }
 
+namespace {
+//! The shader files start with their own #version line: it is replaced by `prelude` (which
+//! starts with #version), and "#line 2" keeps the driver's line numbers those of the file.
+std::string withPrelude(std::string text, const std::string& prelude) {
+    if (text.rfind("#version", 0) == 0) text = text.substr(text.find('\n') + 1);
+    return prelude + "\n#line 2\n" + text;
+}
+}  // namespace
+
 Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources, const std::string& defines) {
-    const std::string prelude = std::string("#version 450 core\n") + defines + shaders::sun_disc_glsl + "\n#line 2\n";
+    const std::string prelude = std::string("#version 450 core\n") + defines + shaders::sun_disc_glsl;
     std::vector<gl::ShaderSource> full;
-    for (const gl::ShaderSource& s : sources) {
-        std::string text = s.text;
-        // The shader files start with their own #version line: replace it with the prelude.
-        if (text.rfind("#version", 0) == 0) text = text.substr(text.find('\n') + 1);
-        full.push_back({s.stage, s.name, prelude + text});
-    }
+    for (const gl::ShaderSource& s : sources) full.push_back({s.stage, s.name, withPrelude(s.text, prelude)});
     switch (full.size()) {
         case 1: return gl::linkProgram({full[0]});
         case 2: return gl::linkProgram({full[0], full[1]});
@@ -40,16 +44,9 @@ Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources
     }
 }
 
-Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText) {
+Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText, const std::string& defines) {
     return gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                            {GL_FRAGMENT_SHADER, fragmentName, fragmentText}});
-}
-
-Status glStatus(const std::string& what) {
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: " + what + " failed (error 0x" + std::to_string(err) + ")");
-    }
-    return Ok{};
+                            {GL_FRAGMENT_SHADER, fragmentName, withPrelude(fragmentText, "#version 450 core\n" + defines)}});
 }
 
 }  // namespace flarekit::occlusion

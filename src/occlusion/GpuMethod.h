@@ -34,9 +34,9 @@ private:
 //! Links a program whose shaders get "#version 450 core", `defines` (e.g. "#define X\n") and
 //! the sun_disc.glsl prelude.
 Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources, const std::string& defines = "");
-//! A full-screen-triangle program (fullscreen.vert) with the given fragment shader, without
-//! the disc prelude.
-Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText);
-Status glStatus(const std::string& what);
+//! A full-screen-triangle program (fullscreen.vert) with the given fragment shader, with
+//! `defines` after its #version line and without the disc prelude.
+Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText,
+                                   const std::string& defines = "");
 
 }  // namespace flarekit::occlusion

@@ -7,10 +7,7 @@ namespace flarekit::occlusion {
 
 Result<SkyFraction> SkyFraction::create() {
     SkyFraction s;
-    const std::string fragment = shaders::sky_fraction_frag;
-    const std::string body = fragment.substr(fragment.find('\n') + 1);  // after #version
-    auto ms = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                               {GL_FRAGMENT_SHADER, "sky_fraction.frag (MSAA)", "#version 450 core\n#define MULTISAMPLE\n" + body}});
+    auto ms = linkFullscreen("sky_fraction.frag (MSAA)", shaders::sky_fraction_frag, "#define MULTISAMPLE\n");
     if (!ms) return ms.error();
     auto single = linkFullscreen("sky_fraction.frag", shaders::sky_fraction_frag);
     if (!single) return single.error();
@@ -43,7 +40,7 @@ Result<GLuint> SkyFraction::update(const SunDiscView& v, const SceneRenderer& re
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (Status s = glStatus("sky fraction pass"); !s) return s.error();
+    if (Status s = gl::checkError("sky fraction pass"); !s) return s.error();
     return m_target.get();
 }
 

@@ -38,19 +38,6 @@ gl::Texture makeMultisample(GLenum format, int samples, int w, int h) {
     return gl::Texture(name);
 }
 
-Result<gl::Framebuffer> framebufferOf(GLuint color, GLuint depth) {
-    GLuint name = 0;
-    glCreateFramebuffers(1, &name);
-    gl::Framebuffer fb(name);
-    glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, color, 0);
-    glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth, 0);
-    const GLenum status = glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        return internalError("OpenGL: scene framebuffer incomplete (status 0x" + std::to_string(status) + ")");
-    }
-    return fb;
-}
-
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -127,13 +114,13 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
     }
     impl->color = gl::makeTexture2D(GL_RGBA16F, scene.width, scene.height);
     impl->depth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, scene.width, scene.height);
-    auto target = framebufferOf(impl->color.get(), impl->depth.get());
+    auto target = gl::makeFramebuffer(impl->color.get(), impl->depth.get());
     if (!target) return target.error();
     impl->target = std::move(*target);
     if (samples > 1) {
         impl->msColor = makeMultisample(GL_RGBA16F, samples, scene.width, scene.height);
         impl->msDepth = makeMultisample(GL_DEPTH_COMPONENT32F, samples, scene.width, scene.height);
-        auto ms = framebufferOf(impl->msColor.get(), impl->msDepth.get());
+        auto ms = gl::makeFramebuffer(impl->msColor.get(), impl->msDepth.get());
         if (!ms) return ms.error();
         impl->msTarget = std::move(*ms);
     }
@@ -172,10 +159,7 @@ Status SceneRenderer::setGeometry(const Scene& scene) {
         glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
         glVertexArrayAttribBinding(vao, attr, 0);
     }
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: mesh upload failed (error 0x" + std::to_string(err) + ")");
-    }
-    return Ok{};
+    return gl::checkError("mesh upload");
 }
 
 //! Renders the objects' depth as seen from the sun into the shadow map and returns the matrix
@@ -284,25 +268,10 @@ Status SceneRenderer::draw(const Scene& scene) {
         glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: scene render failed (error 0x" + std::to_string(err) + ")");
-    }
-    return Ok{};
+    return gl::checkError("scene render");
 }
 
-Result<Image> SceneRenderer::readColor() const {
-    const int w = m->width, h = m->height;
-    // Straight into the image (one buffer: the frame's pages are touched once), then flipped
-    // in place from GL's bottom-up rows to top-row-first.
-    Image frame(w, h);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(m->color.get(), 0, GL_RGBA, GL_FLOAT, GLsizei(frame.pixelCount() * sizeof(Rgba)), frame.data());
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: reading the frame failed (error 0x" + std::to_string(err) + ")");
-    }
-    for (int y = 0; y < h / 2; ++y) std::swap_ranges(frame.row(y), frame.row(y) + std::size_t(w) * 4, frame.row(h - 1 - y));
-    return frame;
-}
+Result<Image> SceneRenderer::readColor() const { return gl::readTextureRgba(m->color.get(), m->width, m->height); }
 
 Result<Image> renderScene(const Scene& scene, const RenderOptions& options) {
     auto renderer = SceneRenderer::create(scene, options);

@@ -79,10 +79,7 @@ Status GpuTemporalFilter::update(unsigned rawCoverageTexture, Point sunPixel, bo
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     m->newest = next;
     m->started = true;
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-        return internalError("OpenGL: temporal filter pass failed (error 0x" + std::to_string(err) + ")");
-    }
-    return Ok{};
+    return gl::checkError("temporal filter pass");
 }
 
 Result<TemporalState> GpuTemporalFilter::readState() const {

@@ -97,7 +97,7 @@ public:
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         markPublished();
-        return glStatus("burnout: chain");
+        return gl::checkError("burnout: chain");
     }
 
 private:

@@ -57,7 +57,7 @@ public:
         // Whoever reads the coverage next (a flare shader, or glGetTextureImage) sees the store.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         markPublished();
-        return glStatus("compute: disc reduction");
+        return gl::checkError("compute: disc reduction");
     }
 
 private:

@@ -70,7 +70,7 @@ public:
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
         slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         glFlush();  // so the fence can signal without anyone waiting on it
-        return glStatus("pbo: glReadPixels into a buffer");
+        return gl::checkError("pbo: glReadPixels into a buffer");
     }
 
     std::optional<double> latestCoverage() override {

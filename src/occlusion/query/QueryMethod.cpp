@@ -68,7 +68,7 @@ public:
         p.pending = true;
         m_lastVisible = p.visible.get();
         glFlush();
-        return glStatus("query: disc draws");
+        return gl::checkError("query: disc draws");
     }
 
     unsigned conditionalRenderQuery() const override { return m_lastVisible; }

@@ -40,7 +40,7 @@ public:
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(v.x0, v.y0, w, h, multisampled ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT, m_depth.data());  // waits
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-        if (Status s = glStatus("readback: glReadPixels"); !s) return s;
+        if (Status s = gl::checkError("readback: glReadPixels"); !s) return s;
         publish(multisampled ? coverageFromSkyFraction(v, m_depth.data(), v.x0, v.y0, w, h)
                              : coverageFromDepth(v, m_depth.data(), v.x0, v.y0, w, h));
         return Ok{};

@@ -111,7 +111,7 @@ Status SunMapSum::sumInto(GLuint coverage) {
     glUseProgram(m_resolve.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return glStatus("texture mask: sum and resolve");
+    return gl::checkError("texture mask: sum and resolve");
 }
 
 }  // namespace flarekit::occlusion
