@@ -29,7 +29,8 @@ std::vector<std::pair<std::string, GpuVisibilityOptions>> methods() {
             m.emplace_back(name, GpuVisibilityOptions{});
         }
     }
-    for (const char* name : {"readback", "pbo", "query", "compute"}) m.emplace_back(std::string(name) + ":msaa4", GpuVisibilityOptions{});
+    const std::size_t singleSample = m.size();
+    for (std::size_t i = 0; i < singleSample; ++i) m.emplace_back(m[i].first + ":msaa4", m[i].second);
     return m;
 }
 

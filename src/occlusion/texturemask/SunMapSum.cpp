@@ -1,5 +1,6 @@
 #include "occlusion/texturemask/SunMapSum.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -17,8 +18,10 @@ SceneCamera sunCamera(const Scene& view) {
     return c;
 }
 
-Result<SunMapLayout> sunMapLayout(const std::string& variant) {
+Result<SunMapLayout> sunMapLayout(const std::string& variant, int samples, bool fractional) {
     SunMapLayout l;
+    l.msaaSamples = std::max(1, samples);
+    l.fractional = fractional || l.msaaSamples > 1;
     if (variant == "square" || variant == "bilinear") {
         l.size = 16;
         l.bilinear = variant == "bilinear";
@@ -34,6 +37,12 @@ Result<SunMapLayout> sunMapLayout(const std::string& variant) {
     }
     if (variant == "circle") {
         l.size = 18;
+        if (l.fractional) {  // partial rim texels count by their G share: sum them all
+            for (int j = 0; j < l.size; ++j)
+                for (int i = 0; i < l.size; ++i)
+                    l.samples.insert(l.samples.end(), {(float(i) + 0.5f) / float(l.size), (float(j) + 0.5f) / float(l.size)});
+            return l;
+        }
         // The texels whose centre ray is in the disc, found with the shaders' own test on a
         // sun camera (its exact orientation does not matter: the disc is centred).
         Scene probe;
@@ -54,14 +63,24 @@ Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
     SunMapSum s;
     s.m_layout = std::move(layout);
     const int n = s.m_layout.size;
-    s.m_map = gl::makeTexture2D(GL_RGBA8, n, n);
+    const GLenum mapFormat = s.m_layout.fractional ? GL_RGBA16F : GL_RGBA8;
+    s.m_map = gl::makeTexture2D(mapFormat, n, n);
     const GLint filter = s.m_layout.bilinear ? GL_LINEAR : GL_NEAREST;
     glTextureParameteri(s.m_map.get(), GL_TEXTURE_MIN_FILTER, filter);
     glTextureParameteri(s.m_map.get(), GL_TEXTURE_MAG_FILTER, filter);
     auto mapTarget = gl::makeFramebuffer(s.m_map);
     if (!mapTarget) return mapTarget.error();
     s.m_mapTarget = std::move(*mapTarget);
-    s.m_intensity = gl::makeTexture2D(GL_RGBA8, 1, 1);
+    if (s.m_layout.msaaSamples > 1) {
+        GLuint ms = 0;
+        glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &ms);
+        s.m_msMap = gl::Texture(ms);
+        glTextureStorage2DMultisample(ms, s.m_layout.msaaSamples, mapFormat, n, n, GL_TRUE);
+        auto msTarget = gl::makeFramebuffer(ms);
+        if (!msTarget) return msTarget.error();
+        s.m_msTarget = std::move(*msTarget);
+    }
+    s.m_intensity = gl::makeTexture2D(s.m_layout.fractional ? GL_RGBA32F : GL_RGBA8, 1, 1);
     auto intensityTarget = gl::makeFramebuffer(s.m_intensity);
     if (!intensityTarget) return intensityTarget.error();
     s.m_intensityTarget = std::move(*intensityTarget);
@@ -86,6 +105,9 @@ Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
 }
 
 Status SunMapSum::sumInto(GLuint coverage) {
+    const int n = m_layout.size;
+    if (m_layout.msaaSamples > 1)  // the multisample resolve averages each texel's samples
+        glBlitNamedFramebuffer(m_msTarget.get(), m_mapTarget.get(), 0, 0, n, n, 0, 0, n, n, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     // Sum: every sample adds into the one texel of the intensity map.
     glBindFramebuffer(GL_FRAMEBUFFER, m_intensityTarget.get());
     glViewport(0, 0, 1, 1);

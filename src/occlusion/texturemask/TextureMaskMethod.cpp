@@ -4,9 +4,12 @@
 // drawn black over it, and points sum the map into a 1x1 intensity map on the GPU. Because it
 // has its own camera it measures suns outside the frame too. An occluder that surely hides
 // the whole cone (a sphere or box whose inner ball covers it) short-cuts to 0 without drawing.
+// When the frame is multisampled the sun map takes as many samples, so thin occluders are
+// measured to a sample as on screen (SunMapSum: fractional map, float sum).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "flarekit_shaders.h"
@@ -21,18 +24,11 @@ namespace {
 class TextureMaskMethod final : public GpuMethod {
 public:
     static Result<std::unique_ptr<GpuVisibility>> create(const Scene& world, const std::string& variant) {
-        auto layout = sunMapLayout(variant);
-        if (!layout) return layout.error();
-        auto sum = SunMapSum::create(std::move(*layout));
-        if (!sum) return sum.error();
-        auto disc = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                  {GL_FRAGMENT_SHADER, "sunmap_disc.frag", shaders::sunmap_disc_frag}});
-        if (!disc) return disc.error();
+        auto m = std::unique_ptr<TextureMaskMethod>(new TextureMaskMethod(variant));
+        if (Status s = m->prepare(1); !s) return s.error();  // checks the variant too
         auto black = gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
                                       {GL_FRAGMENT_SHADER, "occluder_black.frag", shaders::occluder_black_frag}});
         if (!black) return black.error();
-        auto m = std::unique_ptr<TextureMaskMethod>(new TextureMaskMethod(std::move(*sum)));
-        m->m_disc = std::move(*disc);
         m->m_black = std::move(*black);
         m->m_ranges = sceneMeshRanges(world);
         return std::unique_ptr<GpuVisibility>(std::move(m));
@@ -45,9 +41,11 @@ public:
             publish(0.0);  // early out: one object hides the whole sun
             return Ok{};
         }
-        const int n = m_sum.size();
+        if (Status s = prepare(renderer.msaaSamples()); !s) return s;
+        SunMapSum& sum = *m_sum;
+        const int n = sum.size();
         const SceneCamera camera = sunCamera(view);
-        glBindFramebuffer(GL_FRAMEBUFFER, m_sum.sunMapFramebuffer());
+        glBindFramebuffer(GL_FRAMEBUFFER, sum.sunMapFramebuffer());
         glViewport(0, 0, n, n);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
@@ -67,14 +65,31 @@ public:
             glMultiDrawArrays(GL_TRIANGLES, m_firsts.data(), m_counts.data(), GLsizei(m_firsts.size()));
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
-        if (Status s = m_sum.sumInto(coverageName()); !s) return s;
+        if (Status s = sum.sumInto(coverageName()); !s) return s;
         markPublished();
         return Ok{};
     }
 
 private:
-    explicit TextureMaskMethod(SunMapSum sum) : m_sum(std::move(sum)) {
+    explicit TextureMaskMethod(std::string variant) : m_variant(std::move(variant)) {
         m_emptyVao = gl::makeVertexArray();
+    }
+
+    //! The sun map and disc program for a frame of `samples` per pixel (made on first use).
+    Status prepare(int samples) {
+        samples = std::max(1, samples);
+        if (m_sum && m_sum->samples() == samples) return Ok{};
+        auto layout = sunMapLayout(m_variant, samples);
+        if (!layout) return layout.error();
+        auto sum = SunMapSum::create(std::move(*layout));
+        if (!sum) return sum.error();
+        auto disc = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                                  {GL_FRAGMENT_SHADER, "sunmap_disc.frag", shaders::sunmap_disc_frag}},
+                                 samples > 1 ? "#define PER_SAMPLE\n" : "");
+        if (!disc) return disc.error();
+        m_sum = std::move(*sum);
+        m_disc = std::move(*disc);
+        return Ok{};
     }
 
     //! Collects the objects that may overlap the sun's cone; false when one surely covers it.
@@ -100,7 +115,8 @@ private:
         return true;
     }
 
-    SunMapSum m_sum;
+    std::string m_variant;
+    std::optional<SunMapSum> m_sum;
     gl::Program m_disc, m_black;
     gl::VertexArray m_emptyVao;
     std::vector<MeshObjectRange> m_ranges;

@@ -1,10 +1,14 @@
 // `texture-mask-screen`: texture masking without the re-render. The sun map's texels look up
-// the main frame's depth along their rays (sky = sun visible), then the same point sum. Only
-// what is on screen can be measured; off-screen texels leave the normalisation.
+// the main frame's depth along their rays (sky = sun visible), 4 x 4 rays a texel so the map
+// holds area shares, not one point each, then the same point sum (float: the map is
+// fractional). Only what is on screen can be measured; off-screen texels leave the
+// normalisation.
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "flarekit_shaders.h"
+#include "occlusion/FrameDepth.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/texturemask/SunMapSum.h"
 #include "scene/CameraMath.h"
@@ -15,21 +19,26 @@ namespace {
 class TextureMaskScreenMethod final : public GpuMethod {
 public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
-        auto layout = sunMapLayout("circle");
+        auto layout = sunMapLayout("circle", 1, true);
         if (!layout) return layout.error();
         auto sum = SunMapSum::create(std::move(*layout));
         if (!sum) return sum.error();
-        auto fromDepth = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                       {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}});
-        if (!fromDepth) return fromDepth.error();
-        return std::unique_ptr<GpuVisibility>(new TextureMaskScreenMethod(std::move(*sum), std::move(*fromDepth)));
+        std::array<gl::Program, 2> fromDepth;  // single-sample frame, multisampled frame
+        for (bool multisample : {false, true}) {
+            auto p = linkWithFrameDepth({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                                         {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}},
+                                        multisample);
+            if (!p) return p.error();
+            fromDepth[multisample] = std::move(*p);
+        }
+        return std::unique_ptr<GpuVisibility>(new TextureMaskScreenMethod(std::move(*sum), std::move(fromDepth)));
     }
     std::string name() const override { return "texture-mask-screen"; }
     int latencyFrames() const override { return 0; }
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         const int n = m_sum.size();
-        const GLuint p = m_fromDepth.get();
+        const GLuint p = m_fromDepth[renderer.msaaSamples() > 1].get();
         setSunDiscUniforms(p, sunDiscView(view));  // the main camera, for the projection
         const CameraBasis map = cameraBasis(sunCamera(view));
         gl::setUniform(p, "mapRight", map.right);
@@ -42,7 +51,7 @@ public:
         glViewport(0, 0, n, n);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
-        glBindTextureUnit(0, renderer.depthTexture());
+        bindFrameDepth(p, renderer);
         glBindVertexArray(m_vao.get());
         glUseProgram(p);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -52,11 +61,11 @@ public:
     }
 
 private:
-    TextureMaskScreenMethod(SunMapSum sum, gl::Program fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
+    TextureMaskScreenMethod(SunMapSum sum, std::array<gl::Program, 2> fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
         m_vao = gl::makeVertexArray();
     }
     SunMapSum m_sum;
-    gl::Program m_fromDepth;
+    std::array<gl::Program, 2> m_fromDepth;
     gl::VertexArray m_vao;
 };
 }  // namespace

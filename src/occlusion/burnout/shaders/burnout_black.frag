@@ -1,6 +1,6 @@
 #version 450 core
 // Burnout chain, pass 2: the black rectangle at the far plane, depth-tested (LEQUAL): it lands
-// only on cells where the frame shows sky, so R = 0 exactly where the sun is visible.
+// only on sub-cells where the frame shows sky, so R = 0 exactly where the sun is visible.
 out vec4 fragColor;
 void main() {
     gl_FragDepth = 1.0;

@@ -1,8 +1,14 @@
 #version 450 core
 // Sun map, step 1 (GPG2 step 3): the sun drawn white through the sun camera, whose viewport
 // the disc fills. G marks the texels of the disc for the normalisation and stays when the
-// occluders (drawn next, red channel only) blacken R.
+// occluders (drawn next, red channel only) blacken R. A multisampled map is shaded per sample
+// (reading gl_SamplePosition asks for that), so the disc's rim is resolved to the samples too.
 out vec4 fragColor;
 void main() {
-    fragColor = inSunDisc(rayThrough(gl_FragCoord.xy)) ? vec4(1.0) : vec4(0.0);
+#ifdef PER_SAMPLE
+    vec2 p = floor(gl_FragCoord.xy) + gl_SamplePosition;
+#else
+    vec2 p = gl_FragCoord.xy;
+#endif
+    fragColor = inSunDisc(rayThrough(p)) ? vec4(1.0) : vec4(0.0);
 }

@@ -1,0 +1,59 @@
+#include "occlusion/FrameDepth.h"
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include "flarekit_shaders.h"
+#include "occlusion/GpuMethod.h"
+
+namespace flarekit::occlusion {
+
+namespace {
+//! The implementation's sample positions for `samples` per pixel, read once from a
+//! framebuffer of that many samples (GL 4.5 fixes them per sample count and format; the scene
+//! renderer's colour target is RGBA16F).
+const std::vector<float>& samplePositions(int samples) {
+    static std::map<int, std::vector<float>> cache;
+    auto it = cache.find(samples);
+    if (it != cache.end()) return it->second;
+    GLuint texture = 0, framebuffer = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &texture);
+    glTextureStorage2DMultisample(texture, samples, GL_RGBA16F, 1, 1, GL_TRUE);
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, texture, 0);
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    std::vector<float> positions;
+    for (int i = 0; i < samples; ++i) {
+        float p[2] = {0.5f, 0.5f};
+        glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(i), p);
+        positions.insert(positions.end(), {p[0], p[1]});
+    }
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous));
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &texture);
+    return cache.emplace(samples, std::move(positions)).first->second;
+}
+}  // namespace
+
+Result<gl::Program> linkWithFrameDepth(std::initializer_list<gl::ShaderSource> sources, bool multisample) {
+    std::string defines = multisample ? "#define MULTISAMPLE\n" : "";
+    return linkWithDisc(sources, defines + shaders::frame_depth_glsl);
+}
+
+void bindFrameDepth(GLuint program, const SceneRenderer& renderer) {
+    const int samples = renderer.msaaSamples();
+    if (samples <= 1) {
+        glBindTextureUnit(0, renderer.depthTexture());
+        return;
+    }
+    const std::vector<float>& positions = samplePositions(samples);
+    const int n = std::min(samples, 16);
+    glProgramUniform1i(program, glGetUniformLocation(program, "frameSampleCount"), n);
+    glProgramUniform2fv(program, glGetUniformLocation(program, "frameSamplePositions"), n, positions.data());
+    glBindTextureUnit(0, renderer.multisampleDepthTexture());
+}
+
+}  // namespace flarekit::occlusion
