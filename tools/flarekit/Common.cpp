@@ -1,5 +1,7 @@
 #include "Common.h"
 
+#include "core/AtomicFile.h"
+
 #include <charconv>
 #include <cmath>
 #include <unistd.h>
@@ -55,6 +57,16 @@ std::optional<Point> parsePoint(const std::string& text) {
     auto x = number(text.substr(0, comma)), y = number(text.substr(comma + 1));
     if (!x || !y) return std::nullopt;
     return Point{*x, *y};
+}
+
+Status writeText(const std::string& path, const std::string& text) {
+    return writeAtomically(path, [&](const std::string& temp) -> Status {
+        std::FILE* f = std::fopen(temp.c_str(), "wb");
+        if (!f) return ioError(path + ": cannot write");
+        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        if (std::fclose(f) != 0 || !ok) return ioError(path + ": write failed");
+        return Ok{};
+    });
 }
 
 }  // namespace flarekit::cli

@@ -45,6 +45,9 @@ auto readQuietly(Reader reader, const std::string& path) {
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);
 
+//! Writes a text file atomically (temporary file, then rename).
+Status writeText(const std::string& path, const std::string& text);
+
 //! Each subcommand adds itself to the app; its callback stores the exit code.
 void addBlendCommand(CLI::App& app, int& exitCode);
 void addApplyCommand(CLI::App& app, int& exitCode);
@@ -53,5 +56,6 @@ void addPresetsCommand(CLI::App& app, int& exitCode);
 void addVisibilityCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addDemoCommand(CLI::App& app, int& exitCode);
+void addPspCommand(CLI::App& app, int& exitCode);
 
 }  // namespace flarekit::cli

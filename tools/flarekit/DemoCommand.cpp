@@ -119,16 +119,6 @@ private:
     Image m_image;
 };
 
-Status writeText(const std::string& path, const std::string& text) {
-    return writeAtomically(path, [&](const std::string& temp) -> Status {
-        std::FILE* f = std::fopen(temp.c_str(), "wb");
-        if (!f) return ioError(path + ": cannot write");
-        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        if (std::fclose(f) != 0 || !ok) return ioError(path + ": write failed");
-        return Ok{};
-    });
-}
-
 int runDemo(DemoArgs& a) {
     int w = 0, h = 0;
     char tail = 0;

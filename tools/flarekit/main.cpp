@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     addVisibilityCommand(app, exitCode);
     addRenderCommand(app, exitCode);
     addDemoCommand(app, exitCode);
+    addPspCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

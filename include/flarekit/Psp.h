@@ -1,0 +1,65 @@
+// The Burnout Dominator lens flare run on an emulated PSP Graphics Engine (issue 7,
+// burnout-dominator-psp-lens-flare.md): the game's frame as a GE display list (scene, 14x14
+// visibility mask, bilinear chain to one coverage byte, render into the flare texture's CLUT
+// through a 565 alias with a write mask and a striped depth buffer, flare draw), executed by a
+// software GE whose memory is memory. `naive` runs the same list on an emulator that keeps
+// render targets apart from the memory CLUTs load from, which leaves the flare at full
+// brightness behind everything. The Ridge Racer variant accumulates the coverage and uses it
+// as a 1x1 texture modulating gouraud hexagons.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "flarekit/Image.h"
+#include "flarekit/Result.h"
+
+namespace flarekit::psp {
+
+constexpr int kScreenWidth = 480, kScreenHeight = 272;  //!< the PSP's display
+
+enum class PspTrick {
+    Burnout,    //!< 14x14 mask, bilinear chain, CLUT alpha through a 565 alias
+    RidgeRacer  //!< 16x16 mask summed by additive blending, coverage as a texture on hexagons
+};
+
+struct PspFrameInput {
+    //! kScreenWidth x kScreenHeight, row-major, non-zero = an occluder in front of the sun.
+    std::vector<std::uint8_t> occluders;
+    int sunX = 240, sunY = 100;  //!< the sun's centre in screen pixels
+    bool naive = false;          //!< the naive emulator's memory model
+    bool keepSteps = false;      //!< fill PspFrameResult::steps (the --dump images)
+    bool trace = false;          //!< fill PspFrameResult::trace (one line per GE command)
+};
+
+struct PspStep {
+    std::string name;  //!< file stem, e.g. "02-mask"
+    Image8 image;      //!< RGB
+};
+
+struct PspFrameResult {
+    Image8 frame;              //!< the displayed 480x272 RGB frame
+    bool sunInFrame = false;   //!< false: no mask, no flare (documented behaviour)
+    int coverageByte = 0;      //!< Burnout: the chain's last value; Ridge Racer: the accumulated sum
+    int clutAlpha = 0;         //!< Burnout: the alpha of the flare CLUT the GE loaded for the flare draw
+    int visiblePixels = 0;     //!< white pixels of the mask (what the coverage estimates)
+    int maskPixels = 0;        //!< 196 (Burnout) or 256 (Ridge Racer)
+    bool regionRestored = false;  //!< the backed-up region is bit-identical after the restore
+    //! The flare CLUT as the GE's CLUT load reads it, before and after the CLUT render (8888).
+    std::array<std::uint32_t, 256> clutBefore{}, clutAfter{};
+    std::vector<PspStep> steps;
+    std::vector<std::string> trace;
+};
+
+Result<PspFrameResult> runPspFrame(PspTrick trick, const PspFrameInput& input);
+
+//! Frame `t` (0 = start, 1 = end) of the demo drive (flarekit/Demo.h) as emulator input: the
+//! occluders ray-cast from the demo world at 480x272, the sun projected by its camera.
+Result<PspFrameInput> pspDemoInput(double t);
+
+//! A 480x272 mask image (any channels; non-zero in the first channel = occluder) as occluders.
+Result<std::vector<std::uint8_t>> occludersFromMask(const Image8& mask, const std::string& name);
+
+}  // namespace flarekit::psp

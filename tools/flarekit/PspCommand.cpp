@@ -1,0 +1,149 @@
+// flarekit psp: the Burnout Dominator lens flare (and Ridge Racer's simpler one) run as GE
+// display lists on the emulated PSP Graphics Engine, correct or as a naive emulator runs it.
+#include <cstdio>
+#include <filesystem>
+
+#include "Common.h"
+#include "flarekit/ImageIO.h"
+#include "flarekit/Psp.h"
+
+namespace flarekit::cli {
+
+namespace {
+struct PspArgs {
+    std::string occluders, sun, out, dumpDir, traceFile;
+    bool naive = false, json = false;
+};
+
+struct PspDemoArgs {
+    std::string outDir;
+    int frames = 48;
+};
+
+Status makeDirectory(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        return invalidInput(dir + ": cannot create the output directory" + (ec ? ": " + ec.message() : ""));
+    return Ok{};
+}
+
+std::string jsonLine(psp::PspTrick trick, bool naive, const psp::PspFrameResult& r) {
+    char text[512];
+    const bool burnout = trick == psp::PspTrick::Burnout;
+    std::snprintf(text, sizeof text,
+                  "{\"trick\": \"%s\", \"mode\": \"%s\", \"sun_in_frame\": %s, \"coverage_byte\": %d, \"clut_alpha\": %s, "
+                  "\"visible_pixels\": %d, \"mask_pixels\": %d, \"region_restored\": %s}",
+                  burnout ? "burnout" : "ridge-racer", naive ? "naive" : "correct", r.sunInFrame ? "true" : "false",
+                  r.coverageByte, burnout ? std::to_string(r.clutAlpha).c_str() : "null", r.visiblePixels, r.maskPixels,
+                  r.sunInFrame ? (r.regionRestored ? "true" : "false") : "null");
+    return text;
+}
+
+int runPsp(psp::PspTrick trick, const PspArgs& a) {
+    const auto sun = parsePoint(a.sun);
+    if (!sun) return report(invalidInput("--sun: expected X,Y in screen pixels, e.g. 240,100, got '" + a.sun + "'"));
+    auto mask = readQuietly(readImage8, a.occluders);
+    if (!mask) return report(mask.error());
+    auto occluders = psp::occludersFromMask(*mask, a.occluders);
+    if (!occluders) return report(occluders.error());
+    if (!a.dumpDir.empty())
+        if (Status s = makeDirectory(a.dumpDir); !s) return report(s.error());
+    psp::PspFrameInput in;
+    in.occluders = std::move(*occluders);
+    in.sunX = int(std::floor(sun->x)), in.sunY = int(std::floor(sun->y));
+    in.naive = a.naive;
+    in.keepSteps = !a.dumpDir.empty();
+    in.trace = !a.traceFile.empty();
+    auto r = psp::runPspFrame(trick, in);
+    if (!r) return report(r.error());
+    if (Status s = writeImage8(a.out, r->frame); !s) return report(s.error());
+    for (const psp::PspStep& step : r->steps)
+        if (Status s = writeImage8((std::filesystem::path(a.dumpDir) / (step.name + ".png")).string(), step.image); !s)
+            return report(s.error());
+    if (!a.traceFile.empty()) {
+        std::string text;
+        for (const std::string& line : r->trace) text += line + "\n";
+        if (Status s = writeText(a.traceFile, text); !s) return report(s.error());
+    }
+    if (a.json) {
+        std::printf("%s\n", jsonLine(trick, a.naive, *r).c_str());
+    } else if (!r->sunInFrame) {
+        std::printf("psp: the sun (%d, %d) is outside the 480x272 screen: no mask, no flare\n", in.sunX, in.sunY);
+    } else {
+        std::printf("psp %s (%s): %d of %d mask pixels visible, coverage byte %d", trick == psp::PspTrick::Burnout ? "burnout" : "ridge-racer",
+                    a.naive ? "naive" : "correct", r->visiblePixels, r->maskPixels, r->coverageByte);
+        if (trick == psp::PspTrick::Burnout) std::printf(", flare CLUT alpha %d", r->clutAlpha);
+        std::printf("\n");
+    }
+    return kExitOk;
+}
+
+//! Side by side: the correct frame left, the naive one right.
+Image8 sideBySide(const Image8& left, const Image8& right) {
+    Image8 out{left.width + right.width, left.height, 3, std::vector<std::uint8_t>(std::size_t((left.width + right.width) * left.height * 3))};
+    for (int y = 0; y < left.height; ++y) {
+        std::copy_n(&left.pixels[std::size_t(y * left.width * 3)], left.width * 3, &out.pixels[std::size_t(y * out.width * 3)]);
+        std::copy_n(&right.pixels[std::size_t(y * right.width * 3)], right.width * 3,
+                    &out.pixels[std::size_t((y * out.width + left.width) * 3)]);
+    }
+    return out;
+}
+
+int runPspDemo(const PspDemoArgs& a) {
+    if (Status s = makeDirectory(a.outDir); !s) return report(s.error());
+    const std::string dir = std::filesystem::path(a.outDir).string() + "/";
+    std::string csv = "frame,t,sun_x,sun_y,sun_in_frame,visible_pixels,coverage_byte,clut_alpha_correct,clut_alpha_naive\n";
+    for (int i = 0; i < a.frames; ++i) {
+        const double t = a.frames > 1 ? double(i) / (a.frames - 1) : 0.0;
+        auto in = psp::pspDemoInput(t);
+        if (!in) return report(in.error());
+        auto correct = psp::runPspFrame(psp::PspTrick::Burnout, *in);
+        if (!correct) return report(correct.error());
+        in->naive = true;
+        auto naive = psp::runPspFrame(psp::PspTrick::Burnout, *in);
+        if (!naive) return report(naive.error());
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.png", i + 1);
+        if (Status s = writeImage8(dir + name, sideBySide(correct->frame, naive->frame)); !s) return report(s.error());
+        char row[160];
+        std::snprintf(row, sizeof row, "%d,%.4f,%d,%d,%d,%d,%d,%d,%d\n", i + 1, t, in->sunX, in->sunY, correct->sunInFrame ? 1 : 0,
+                      correct->visiblePixels, correct->coverageByte, correct->clutAlpha, naive->clutAlpha);
+        csv += row;
+        std::fprintf(stderr, "\rpsp demo: frame %d/%d", i + 1, a.frames);
+    }
+    std::fprintf(stderr, "\n");
+    if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
+    std::printf("psp demo: %d frames (correct left, naive right) in %s, log %scoverage.csv\n", a.frames, dir.c_str(), dir.c_str());
+    return kExitOk;
+}
+
+void addTrick(CLI::App& psp, const char* name, psp::PspTrick trick, const char* about, int& exitCode) {
+    auto args = std::make_shared<PspArgs>();
+    CLI::App* cmd = psp.add_subcommand(name, about);
+    cmd->add_option("--occluders", args->occluders, "480x272 mask image, non-zero = occluder in front of the sun")->required();
+    cmd->add_option("--sun", args->sun, "the sun's centre X,Y in screen pixels (outside the screen: no flare)")->required();
+    cmd->add_option("-o,--output", args->out, "the final frame (PNG)")->required();
+    cmd->add_flag("--naive", args->naive, "run as a naive emulator: render targets kept apart from CLUT memory");
+    cmd->add_option("--dump", args->dumpDir, "write every step as a PNG into this directory");
+    cmd->add_option("--trace", args->traceFile, "write one line per executed GE command to this file");
+    cmd->add_flag("--json", args->json, "print one JSON object: coverage_byte, clut_alpha, visible_pixels, ...");
+    cmd->callback([args, trick, &exitCode] { exitCode = runPsp(trick, *args); });
+}
+}  // namespace
+
+void addPspCommand(CLI::App& app, int& exitCode) {
+    CLI::App* psp = app.add_subcommand("psp", "the Burnout Dominator lens flare on an emulated PSP GE (bit-exact)");
+    psp->require_subcommand(1);
+    addTrick(*psp, "burnout", psp::PspTrick::Burnout,
+             "Burnout Dominator: 14x14 mask, bilinear chain, coverage into the flare CLUT's alpha", exitCode);
+    addTrick(*psp, "ridge-racer", psp::PspTrick::RidgeRacer,
+             "Ridge Racer: 16x16 mask summed by blending, coverage as a texture on gouraud hexagons", exitCode);
+    auto demo = std::make_shared<PspDemoArgs>();
+    CLI::App* cmd = psp->add_subcommand("demo", "the demo drive through the emulator, correct and naive side by side");
+    cmd->add_option("-o,--output", demo->outDir, "output directory (frames + coverage.csv)")->required();
+    cmd->add_option("--frames", demo->frames, "frames over the drive")->check(CLI::Range(1, 2000))->capture_default_str();
+    cmd->callback([demo, &exitCode] { exitCode = runPspDemo(*demo); });
+}
+
+}  // namespace flarekit::cli
