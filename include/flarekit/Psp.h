@@ -15,6 +15,7 @@
 
 #include "flarekit/Image.h"
 #include "flarekit/Result.h"
+#include "flarekit/Scene.h"
 
 namespace flarekit::psp {
 
@@ -58,6 +59,9 @@ Result<PspFrameResult> runPspFrame(PspTrick trick, const PspFrameInput& input);
 //! Frame `t` (0 = start, 1 = end) of the demo drive (flarekit/Demo.h) as emulator input: the
 //! occluders ray-cast from the demo world at 480x272, the sun projected by its camera.
 Result<PspFrameInput> pspDemoInput(double t);
+//! The same for any scene whose image is 480x272: a pixel is an occluder when its camera ray
+//! hits an object (only sky lies behind the sun); the sun where its direction projects.
+Result<PspFrameInput> pspInputFromScene(const Scene& scene);
 
 //! A 480x272 mask image (any channels; non-zero in the first channel = occluder) as occluders.
 Result<std::vector<std::uint8_t>> occludersFromMask(const Image8& mask, const std::string& name);

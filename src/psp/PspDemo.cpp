@@ -15,7 +15,13 @@ namespace flarekit::psp {
 
 Result<PspFrameInput> pspDemoInput(double t) {
     if (!(t >= 0 && t <= 1)) return invalidInput("psp demo: time must be in [0, 1]");
-    const Scene scene = demoScene(kScreenWidth, kScreenHeight, t);
+    return pspInputFromScene(demoScene(kScreenWidth, kScreenHeight, t));
+}
+
+Result<PspFrameInput> pspInputFromScene(const Scene& scene) {
+    if (scene.width != kScreenWidth || scene.height != kScreenHeight)
+        return invalidInput("psp: the scene's image must be 480x272 (the PSP screen), got " + std::to_string(scene.width) + "x" +
+                            std::to_string(scene.height));
     const SceneBvh bvh(scene);
     const CameraBasis basis = cameraBasis(scene.camera);
     const double tanY = std::tan(scene.camera.fovYDeg * std::numbers::pi / 360.0);
