@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: the built-in drive (road, trees, buildings, tunnel, turn; 240 frames at
 # 1280x720 with an occlusion-aware sun flare, PNG frames + MP4), then every shipped preset on
-# the sample sunset, the HDR sample, and each preset's element sheet, all written to OUT_DIR.
+# the sample sunset, the HDR sample, each preset's element sheet, and the drive through the PSP
+# GE emulator (Burnout Dominator's flare, correct and naive side by side), all written to OUT_DIR.
 #   usage: scripts/demo.sh FLAREKIT OUT_DIR
 set -euo pipefail
 flarekit="$1"
@@ -17,4 +18,5 @@ done
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.exr" --preset sun-wide
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.png" --preset sun-wide
 "$flarekit" render "$here/samples/scenes/contract-example.json" -o "$out/contract-example.png"
-echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/"
+"$flarekit" psp demo -o "$out/psp" --frames 48
+echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/, PSP frames in $out/psp/"
