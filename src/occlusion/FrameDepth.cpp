@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "flarekit_shaders.h"
@@ -38,17 +39,23 @@ const std::vector<float>& samplePositions(int samples) {
 }
 }  // namespace
 
-Result<gl::Program> linkWithFrameDepth(std::initializer_list<gl::ShaderSource> sources, bool multisample) {
-    std::string defines = multisample ? "#define MULTISAMPLE\n" : "";
-    return linkWithDisc(sources, defines + shaders::frame_depth_glsl);
+Result<FrameDepthProgram> FrameDepthProgram::link(std::initializer_list<gl::ShaderSource> sources) {
+    FrameDepthProgram p;
+    for (bool multisample : {false, true}) {
+        auto program = linkWithDisc(sources, std::string(multisample ? "#define MULTISAMPLE\n" : "") + shaders::frame_depth_glsl);
+        if (!program) return program.error();
+        p.m_variants[multisample] = std::move(*program);
+    }
+    return p;
 }
 
-void bindFrameDepth(GLuint program, const SceneRenderer& renderer) {
+void FrameDepthProgram::bindDepth(const SceneRenderer& renderer) const {
     const int samples = renderer.msaaSamples();
     if (samples <= 1) {
         glBindTextureUnit(0, renderer.depthTexture());
         return;
     }
+    const GLuint program = forFrame(renderer);
     const std::vector<float>& positions = samplePositions(samples);
     const int n = std::min(samples, 16);
     glProgramUniform1i(program, glGetUniformLocation(program, "frameSampleCount"), n);

@@ -97,7 +97,7 @@ Status Ge::execute(std::uint8_t op, std::uint32_t param) {
         case GeCmd::BlendFixedA: m_fixA = param; return Ok{};
         case GeCmd::BlendFixedB: m_fixB = param; return Ok{};
         case GeCmd::MaskRgb: m_maskRgb = param; return Ok{};
-        case GeCmd::MaskAlpha: m_maskAlpha = param & 0xFF; return Ok{};
+        case GeCmd::MaskAlpha: return Ok{};  // alpha bits are stencil: colour writes keep them anyway
         case GeCmd::TransferSrc: m_trxSrc = param; return Ok{};
         case GeCmd::TransferSrcWidth: m_trxSrc = address(m_trxSrc & 0xFFFFFF, param), m_trxSrcWidth = param & 0xFFFF; return Ok{};
         case GeCmd::TransferDst: m_trxDst = param; return Ok{};
@@ -214,8 +214,7 @@ Status Ge::drawTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
     const int minX = std::max({std::min({a.x, b.x, c.x}), m_scissorX1}), maxX = std::min({std::max({a.x, b.x, c.x}), m_scissorX2 + 1});
     const int minY = std::max({std::min({a.y, b.y, c.y}), m_scissorY1}), maxY = std::min({std::max({a.y, b.y, c.y}), m_scissorY2 + 1});
     auto edge = [&](const Vertex& p, const Vertex& q, double x, double y) {
-        const double e = (double(q.x - p.x) * (y - p.y) - double(q.y - p.y) * (x - p.x)) / area;
-        return e;
+        return (double(q.x - p.x) * (y - p.y) - double(q.y - p.y) * (x - p.x)) / area;
     };
     auto topLeft = [&](const Vertex& p, const Vertex& q) {
         const int dx = q.x - p.x, dy = q.y - p.y;

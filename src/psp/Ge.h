@@ -76,7 +76,7 @@ private:
     int m_scissorX1 = 0, m_scissorY1 = 0, m_scissorX2 = 1023, m_scissorY2 = 1023;
     std::uint32_t m_depthFunc = 1;
     std::uint32_t m_blendSrc = 2, m_blendDst = 3, m_blendOp = 0, m_fixA = 0, m_fixB = 0;
-    std::uint32_t m_maskRgb = 0, m_maskAlpha = 0;
+    std::uint32_t m_maskRgb = 0;
     std::uint32_t m_trxSrc = 0, m_trxSrcWidth = 0, m_trxDst = 0, m_trxDstWidth = 0;
     std::uint32_t m_trxSrcPos = 0, m_trxDstPos = 0, m_trxSize = 0;
 };
@@ -84,8 +84,9 @@ private:
 // Pixel formats, as the GE packs them (little-endian; R in the low bits).
 std::uint32_t encodePixel(Rgba8 c, std::uint32_t format);
 Rgba8 decodePixel(std::uint32_t bits, std::uint32_t format);
-//! The colour write mask PMSKC/PMSKA (set bit = bit protected, kept from the framebuffer)
-//! converted to `format`'s bits, the same truncation as the colour.
-std::uint32_t protectedBits(std::uint32_t maskRgb, std::uint32_t maskAlpha, std::uint32_t format);
+//! The colour write mask PMSKC (set bit = bit protected, kept from the framebuffer) converted
+//! to `format`'s bits, the same truncation as the colour, plus the alpha (stencil) bits, which
+//! colour writes always keep (so PMSKA has nothing left to protect).
+std::uint32_t protectedBits(std::uint32_t maskRgb, std::uint32_t format);
 
 }  // namespace flarekit::psp

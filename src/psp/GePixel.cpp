@@ -74,9 +74,9 @@ Rgba8 decodePixel(std::uint32_t v, std::uint32_t format) {
     }
 }
 
-std::uint32_t protectedBits(std::uint32_t maskRgb, std::uint32_t maskAlpha, std::uint32_t format) {
+std::uint32_t protectedBits(std::uint32_t maskRgb, std::uint32_t format) {
+    // Alpha = stencil bits: always kept by colour writes (see above), whatever PMSKA says.
     const Rgba8 m{int(maskRgb & 0xFF), int((maskRgb >> 8) & 0xFF), int((maskRgb >> 16) & 0xFF), 0xFF};
-    (void)maskAlpha;  // alpha = stencil bits: always kept by colour writes (see above)
     return encodePixel(m, format);
 }
 
@@ -184,8 +184,7 @@ Status Ge::shade(const Fragment& f) {
         auto mix = [](int s, int a, int dd, int b) { return clamp255((s * a + dd * b + 127) / 255); };
         c = {mix(c.r, fs.r, d.r, fd.r), mix(c.g, fs.g, d.g, fd.g), mix(c.b, fs.b, d.b, fd.b), c.a};
     }
-    std::uint32_t keep = protectedBits(m_maskRgb, m_maskAlpha, m_fbFormat);
-    if (m_fbFormat != kPixel565) keep |= encodePixel({0, 0, 0, 255}, m_fbFormat);  // alpha = stencil bits
+    const std::uint32_t keep = protectedBits(m_maskRgb, m_fbFormat);
     const std::uint32_t value = (encodePixel(c, m_fbFormat) & ~keep) | (old & keep);
     if (bytes == 4)
         m_memory.gpuWrite32(at, value);

@@ -321,7 +321,7 @@ Result<PspFrameResult> runPspFrame(PspTrick trick, const PspFrameInput& in) {
             case 7:
                 out.regionRestored = framePixels(memory, rx, ry, size, size).pixels == regionBefore.pixels;
                 keep("07-restored", framePixels(memory, 0, 0, kScreenWidth, kScreenHeight));
-                if (trick == PspTrick::Burnout) keep("08-clut-before", clutStrip(clutInMemory(memory)));
+                if (trick == PspTrick::Burnout) keep("08-clut-before", clutStrip(out.clutBefore));  // step 5 is next
                 break;
             case 8: keep("09-clut-after", clutStrip(clutInMemory(memory))); break;
             case 9: keep("10-final", framePixels(memory, 0, 0, kScreenWidth, kScreenHeight)); break;

@@ -70,6 +70,7 @@ TEST(CliPsp, BadInputExitsTwoAndWritesNothing) {
                    "missing.png");
     expectBadInput(runCli({"psp", "burnout", "--occluders", good, "--sun", "240;100", "-o", dir.file("o.png")}), "--sun");
     expectBadInput(runCli({"psp", "burnout", "--occluders", good, "--sun", "1e9,5", "-o", dir.file("o.png")}), "sun");
+    expectBadInput(runCli({"psp", "burnout", "--occluders", good, "--sun", "5,-1e30", "-o", dir.file("o.png")}), "sun");
     EXPECT_EQ(dir.entries(), before);
 }
 

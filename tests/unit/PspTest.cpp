@@ -203,7 +203,7 @@ TEST(PspGe, ClutLoadCopiesAtExecution) {
 TEST(PspGe, PixelFormatsAndWriteMask) {
     for (std::uint32_t v = 0; v < 65536; ++v) ASSERT_EQ(encodePixel(decodePixel(v, kPixel565), kPixel565), v);
     // PMSKC R 0xFF, G 0x1F, B 0x00 protects bits 0-7 of a 565 pixel: the seed's 0xFF00 writes.
-    EXPECT_EQ(protectedBits(0x001FFF, 0, kPixel565), 0x00FFu);
+    EXPECT_EQ(protectedBits(0x001FFF, kPixel565), 0x00FFu);
     // The gradient CLUT entry n << 8 comes back as n in the high byte.
     for (std::uint32_t n = 0; n < 256; ++n) EXPECT_EQ(encodePixel(decodePixel(n << 8, kPixel565), kPixel565) >> 8, n);
 }

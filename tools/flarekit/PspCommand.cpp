@@ -1,5 +1,7 @@
 // flarekit psp: the Burnout Dominator lens flare (and Ridge Racer's simpler one) run as GE
 // display lists on the emulated PSP Graphics Engine, correct or as a naive emulator runs it.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -51,7 +53,9 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
         if (Status s = makeDirectory(a.dumpDir); !s) return report(s.error());
     psp::PspFrameInput in;
     in.occluders = std::move(*occluders);
-    in.sunX = int(std::floor(sun->x)), in.sunY = int(std::floor(sun->y));
+    // Clamped before the conversion to int; the library rejects anything past +-8192.
+    auto pixel = [](float v) { return int(std::floor(std::clamp(double(v), -1e6, 1e6))); };
+    in.sunX = pixel(sun->x), in.sunY = pixel(sun->y);
     in.naive = a.naive;
     in.keepSteps = !a.dumpDir.empty();
     in.trace = !a.traceFile.empty();

@@ -53,13 +53,10 @@ class BurnoutMethod final : public GpuMethod {
 public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
         auto m = std::unique_ptr<BurnoutMethod>(new BurnoutMethod());
-        for (bool multisample : {false, true}) {
-            auto white = linkWithFrameDepth({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                             {GL_FRAGMENT_SHADER, "burnout_white.frag", shaders::burnout_white_frag}},
-                                            multisample);
-            if (!white) return white.error();
-            m->m_white[multisample] = std::move(*white);
-        }
+        auto white = FrameDepthProgram::link({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                                              {GL_FRAGMENT_SHADER, "burnout_white.frag", shaders::burnout_white_frag}});
+        if (!white) return white.error();
+        m->m_white = std::move(*white);
         auto black = linkFullscreen("burnout_black.frag", shaders::burnout_black_frag);
         if (!black) return black.error();
         auto combine = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
@@ -94,7 +91,7 @@ public:
         const double side = std::max(v.rimX1 - v.rimX0, v.rimY1 - v.rimY0);
         const double cx = 0.5 * (v.rimX0 + v.rimX1), cy = 0.5 * (v.rimY0 + v.rimY1);
         const float originX = float(cx - side / 2), originY = float(cy - side / 2);
-        const GLuint w = m_white[renderer.msaaSamples() > 1].get();
+        const GLuint w = m_white.forFrame(renderer);
         setSunDiscUniforms(w, v);
         glProgramUniform2f(w, glGetUniformLocation(w, "regionOrigin"), originX, originY);
         glProgramUniform1f(w, glGetUniformLocation(w, "subCellSize"), float(side / (kGrid * kSubCells)));
@@ -111,7 +108,7 @@ public:
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_ALWAYS);  // white rectangle: no depth test (it also lays the depth copy)
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        bindFrameDepth(w, renderer);
+        m_white.bindDepth(renderer);
         glUseProgram(w);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glDepthMask(GL_FALSE);
@@ -183,7 +180,7 @@ private:
         return Ok{};
     }
 
-    std::array<gl::Program, 2> m_white;  // single-sample frame, multisampled frame
+    FrameDepthProgram m_white;
     gl::Program m_black, m_combine, m_down, m_resolve;
     gl::VertexArray m_vao;
     gl::Texture m_mask, m_maskDepth;

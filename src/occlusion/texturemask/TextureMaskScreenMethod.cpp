@@ -3,7 +3,6 @@
 // holds area shares, not one point each, then the same point sum (float: the map is
 // fractional). Only what is on screen can be measured; off-screen texels leave the
 // normalisation.
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -23,22 +22,17 @@ public:
         if (!layout) return layout.error();
         auto sum = SunMapSum::create(std::move(*layout));
         if (!sum) return sum.error();
-        std::array<gl::Program, 2> fromDepth;  // single-sample frame, multisampled frame
-        for (bool multisample : {false, true}) {
-            auto p = linkWithFrameDepth({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                         {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}},
-                                        multisample);
-            if (!p) return p.error();
-            fromDepth[multisample] = std::move(*p);
-        }
-        return std::unique_ptr<GpuVisibility>(new TextureMaskScreenMethod(std::move(*sum), std::move(fromDepth)));
+        auto fromDepth = FrameDepthProgram::link({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                                                  {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}});
+        if (!fromDepth) return fromDepth.error();
+        return std::unique_ptr<GpuVisibility>(new TextureMaskScreenMethod(std::move(*sum), std::move(*fromDepth)));
     }
     std::string name() const override { return "texture-mask-screen"; }
     int latencyFrames() const override { return 0; }
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         const int n = m_sum.size();
-        const GLuint p = m_fromDepth[renderer.msaaSamples() > 1].get();
+        const GLuint p = m_fromDepth.forFrame(renderer);
         setSunDiscUniforms(p, sunDiscView(view));  // the main camera, for the projection
         const CameraBasis map = cameraBasis(sunCamera(view));
         gl::setUniform(p, "mapRight", map.right);
@@ -51,7 +45,7 @@ public:
         glViewport(0, 0, n, n);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
-        bindFrameDepth(p, renderer);
+        m_fromDepth.bindDepth(renderer);
         glBindVertexArray(m_vao.get());
         glUseProgram(p);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -61,11 +55,11 @@ public:
     }
 
 private:
-    TextureMaskScreenMethod(SunMapSum sum, std::array<gl::Program, 2> fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
+    TextureMaskScreenMethod(SunMapSum sum, FrameDepthProgram fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
         m_vao = gl::makeVertexArray();
     }
     SunMapSum m_sum;
-    std::array<gl::Program, 2> m_fromDepth;
+    FrameDepthProgram m_fromDepth;
     gl::VertexArray m_vao;
 };
 }  // namespace
