@@ -45,7 +45,7 @@ Status checkError(const std::string& what) {
     return Ok{};
 }
 
-Result<Image> readTextureRgba(GLuint texture, int width, int height) {
+Result<Image> readTextureRgba(GLuint texture, int width, int height, bool flipRows) {
     Image image(width, height);  // read straight into it: the frame's pages are touched once
     const std::size_t rowFloats = std::size_t(width) * 4, rowBytes = rowFloats * sizeof(float);
     const int bandRows = int(std::max<std::size_t>(1, (std::size_t(1) << 30) / rowBytes));
@@ -56,7 +56,7 @@ Result<Image> readTextureRgba(GLuint texture, int width, int height) {
                              image.row(y));
     }
     if (Status s = checkError("reading a frame back"); !s) return s.error();
-    for (int y = 0; y < height / 2; ++y) std::swap_ranges(image.row(y), image.row(y) + rowFloats, image.row(height - 1 - y));
+    for (int y = 0; flipRows && y < height / 2; ++y) std::swap_ranges(image.row(y), image.row(y) + rowFloats, image.row(height - 1 - y));
     return image;
 }
 

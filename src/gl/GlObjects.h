@@ -80,8 +80,9 @@ inline Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* 
 Status checkError(const std::string& what);
 
 //! Level 0 of a width x height colour texture as float RGBA, top row first (GL rows are
-//! bottom-up). Waits for the GPU. Read in bands, so frames past 2 GiB need no GLsizei > 2^31.
-Result<Image> readTextureRgba(GLuint texture, int width, int height);
+//! bottom-up; `flipRows` false keeps GL row 0 as image row 0, for textures uploaded that way).
+//! Waits for the GPU. Read in bands, so frames past 2 GiB need no GLsizei > 2^31.
+Result<Image> readTextureRgba(GLuint texture, int width, int height, bool flipRows = true);
 
 //! glProgramUniform3f of a (double) Vec3 by uniform name.
 inline void setUniform(GLuint program, const char* name, Vec3 v) {

@@ -57,5 +57,6 @@ void addVisibilityCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addDemoCommand(CLI::App& app, int& exitCode);
 void addPspCommand(CLI::App& app, int& exitCode);
+void addPostFxCommand(CLI::App& app, int& exitCode);
 
 }  // namespace flarekit::cli

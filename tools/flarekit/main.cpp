@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     addRenderCommand(app, exitCode);
     addDemoCommand(app, exitCode);
     addPspCommand(app, exitCode);
+    addPostFxCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,98 @@
+// What every CPU post-process kernel shares with its GLSL twin (shaders/postfx_common.glsl):
+// a 4-wide float vector per RGBA pixel (one SSE register: the SIMD of the CPU chain), texel
+// fetches clamped to the edge, and bilinear filtering written out by hand. Hardware filtering
+// would round its weights to 8 bits on most GPUs; doing it the same way on both sides is what
+// lets the CPU and GL chains agree to 1e-3 (style.md habit 3).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "core/Parallel.h"
+#include "flarekit/Image.h"
+
+namespace flarekit::postfx {
+
+typedef float F4 __attribute__((vector_size(16)));  // NOLINT: GCC/Clang vector extension
+
+inline F4 splat(float s) { return F4{s, s, s, s}; }
+inline F4 rgbOnly(F4 v) { return F4{v[0], v[1], v[2], 0.f}; }
+inline F4 max0(F4 v) { return v > splat(0.f) ? v : splat(0.f); }  // lane-wise select
+inline F4 maxv(F4 a, F4 b) { return a > b ? a : b; }
+
+struct Vec2 {
+    float x = 0, y = 0;
+};
+
+//! A read-only view of an Image for kernels.
+struct Tex {
+    const float* data = nullptr;
+    int width = 0, height = 0;
+    explicit Tex(const Image& image) : data(image.data()), width(image.width()), height(image.height()) {}
+
+    F4 texel(int x, int y) const {  // GLSL texelFetch: no bounds check
+        F4 v;
+        std::memcpy(&v, data + (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4, sizeof v);
+        return v;
+    }
+};
+
+//! postfx_common.glsl fetchClamped: the texel nearest to (x, y) inside the image.
+inline F4 fetchClamped(const Tex& t, int x, int y) {
+    return t.texel(std::clamp(x, 0, t.width - 1), std::clamp(y, 0, t.height - 1));
+}
+
+//! postfx_common.glsl pointSample: the seed's PointSampler at normalised (u, v), clamped.
+inline F4 pointSample(const Tex& t, Vec2 uv) {
+    return fetchClamped(t, int(std::floor(uv.x * float(t.width))), int(std::floor(uv.y * float(t.height))));
+}
+
+//! postfx_common.glsl fetchFinite: fetchClamped with NaN and Inf read as 0, so one bad input
+//! pixel cannot spread over the whole flare.
+inline F4 fetchFinite(const Tex& t, int x, int y) {
+    F4 v = fetchClamped(t, x, y);
+    for (int i = 0; i < 4; ++i) {
+        if (!std::isfinite(v[i])) v[i] = 0.f;
+    }
+    return v;
+}
+
+//! postfx_common.glsl bilinear: linear filtering at normalised (u, v), clamp-to-edge.
+template <F4 (*Fetch)(const Tex&, int, int) = fetchClamped>
+inline F4 bilinear(const Tex& t, Vec2 uv) {
+    const float sx = uv.x * float(t.width) - 0.5f, sy = uv.y * float(t.height) - 0.5f;
+    const float ix = std::floor(sx), iy = std::floor(sy);
+    const float fx = sx - ix, fy = sy - iy;
+    const int x = int(ix), y = int(iy);
+    const F4 a = Fetch(t, x, y), b = Fetch(t, x + 1, y);
+    const F4 c = Fetch(t, x, y + 1), d = Fetch(t, x + 1, y + 1);
+    const F4 top = a + (b - a) * fx, bottom = c + (d - c) * fx;
+    return top + (bottom - top) * fy;
+}
+//! postfx_common.glsl bilinearFinite.
+inline F4 bilinearFinite(const Tex& t, Vec2 uv) { return bilinear<fetchFinite>(t, uv); }
+
+//! The centre of output pixel (x, y) in normalised coordinates, as gl_FragCoord.xy * invSize.
+inline Vec2 pixelUv(int x, int y, Vec2 invSize) { return {(float(x) + 0.5f) * invSize.x, (float(y) + 0.5f) * invSize.y}; }
+inline Vec2 inverseSize(int width, int height) { return {1.f / float(width), 1.f / float(height)}; }
+
+//! Runs kernel(x, y) -> F4 for every pixel of `out`, rows in parallel: the CPU's draw call.
+template <typename Kernel>
+void runPass(Image& out, const Kernel& kernel) {
+    const int width = out.width();
+    parallelFor(0, out.height(), std::max(1, 16384 / std::max(1, width)), [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* row = out.row(y);
+            for (int x = 0; x < width; ++x) {
+                const F4 v = kernel(x, y);
+                std::memcpy(row + std::size_t(x) * 4, &v, sizeof v);
+            }
+        }
+    });
+}
+
+//! Half the size, rounded up, never below 1: each level of the chain.
+inline int halfSize(int n) { return std::max(1, (n + 1) / 2); }
+
+}  // namespace flarekit::postfx

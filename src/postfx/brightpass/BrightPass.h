@@ -1,0 +1,34 @@
+// Bright pass: the input, filtered to half resolution (one bilinear tap at the output pixel's
+// centre is the 2x2 box of an even-sized input), through a soft-knee threshold. The curve is
+// the one Unity's post-processing stack uses for its bloom prefilter: zero below
+// threshold - knee, a quadratic ease-in up to threshold + knee, then colour x (br - T) / br, so
+// above the knee the output grows linearly with the light's value above the threshold (what
+// the energy test asserts). NaN and Inf input pixels read as 0. The seed's own threshold (0.1) is the ghosts' one.
+// Twin: shaders/bright_pass.frag.
+#pragma once
+
+#include "postfx/Kernel.h"
+
+namespace flarekit::postfx {
+
+struct BrightUniforms {
+    float threshold = 1.f, knee = 0.5f;
+    Vec2 invOutSize;
+};
+
+//! Smallest denominators, so black pixels and knee = 0 divide safely.
+inline constexpr float kBrightEpsilon = 1e-5f;
+
+inline F4 softThreshold(F4 color, float threshold, float knee) {
+    const float brightness = std::max(color[0], std::max(color[1], color[2]));
+    float soft = std::clamp(brightness - threshold + knee, 0.f, 2.f * knee);
+    soft = soft * soft / (4.f * knee + kBrightEpsilon);
+    const float weight = std::max(soft, brightness - threshold) / std::max(brightness, kBrightEpsilon);
+    return rgbOnly(color * weight);
+}
+
+inline F4 brightPixel(const BrightUniforms& u, const Tex& input, int x, int y) {
+    return softThreshold(bilinearFinite(input, pixelUv(x, y, u.invOutSize)), u.threshold, u.knee);
+}
+
+}  // namespace flarekit::postfx

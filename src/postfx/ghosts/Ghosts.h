@@ -1,0 +1,73 @@
+// Ghosts: the seed's LensFlarePS (killzone2-post-process-lens-flare.txt), one loop iteration
+// per ghost, plus the falloff and centring that modern engines add. For the output pixel at
+// texture coordinate uv:
+//   mirror = 1 - uv;  n = (mirror * 2 - 1) * scale            (the seed's vNormalizedCoord)
+//   toward = normalize(-n)                                    (vTowardCenter)
+//   dist = blur * samples                                     (fBlurDist)
+//   sample i at n + toward / sourceSize * dist * offset(i), offset(i) = 1 - 2i (seed)
+//   sum += max(0, bloom(p * 0.5 + 0.5) - threshold) * tint, skipping p outside [0, 1]
+//   ghost = sum / samples
+// so a light at normalised l appears at -l / scale. Two of the seed's quiet edge cases:
+// - normalize(0) at the exact screen centre (odd sizes) is NaN in HLSL and GLSL; here the
+//   direction is (0, 0) there, so every sample lands on the pixel's own point.
+// - the blur offsets divide by g_vSourceDimensions, the *bloom buffer's* size: one step is
+//   `dist` bloom texels in the normalised [-1, 1] space, i.e. 2 * blur * samples / size.
+//   `sourceTexel` below is that 1 / size, passed in, never the output's size.
+// The seed's offsets run from +1 to 1 - 2 (samples - 1) steps: nearly all of the blur lies
+// away from the centre. `centered` uses (samples - 1) - 2i instead, the same span about p.
+// Twin: shaders/ghosts.frag.
+#pragma once
+
+#include <vector>
+
+#include "flarekit/PostFx.h"
+#include "postfx/Kernel.h"
+
+namespace flarekit::postfx {
+
+struct GhostsUniforms {
+    Vec2 invOutSize;
+    Vec2 sourceTexel;  //!< 1 / bloom size (g_vSourceDimensions)
+    std::vector<GhostParams> ghosts;
+    float intensity = 1.f;  //!< flareIntensity
+};
+
+//! 1 / sqrt(2): the distance from the centre to a corner in [-1, 1] coordinates is sqrt(2).
+inline constexpr float kInvCornerDistance = 0.70710678f;
+
+//! The modern falloff of a sample at normalised p (John Chapman, "Pseudo Lens Flare", 2013).
+inline float centreFalloff(Vec2 p, float exponent) {
+    if (exponent <= 0.f) return 1.f;
+    const float r = std::sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
+    return std::pow(std::max(0.f, 1.f - r), exponent);
+}
+
+inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, Vec2 uv) {
+    const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale, ((1.f - uv.y) * 2.f - 1.f) * g.scale};
+    const float len = std::sqrt(n.x * n.x + n.y * n.y);
+    const Vec2 toward = len > 0.f ? Vec2{-n.x / len, -n.y / len} : Vec2{0.f, 0.f};
+    const float dist = g.blur * float(g.samples);
+    const Vec2 unit{toward.x * sourceTexel.x * dist, toward.y * sourceTexel.y * dist};
+    const float first = g.centered ? float(g.samples - 1) : 1.f;
+    const F4 tint{g.tint[0], g.tint[1], g.tint[2], 0.f};
+    F4 sum = splat(0.f);
+    for (int i = 0; i < g.samples; ++i) {
+        const float offset = first - 2.f * float(i);
+        const Vec2 p{n.x + unit.x * offset, n.y + unit.y * offset};
+        const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
+        if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
+            const F4 texel = g.linearFilter ? bilinear(bloom, s) : pointSample(bloom, s);
+            sum += max0(texel - g.threshold) * tint * centreFalloff(p, g.falloff);
+        }
+    }
+    return sum / float(g.samples);
+}
+
+inline F4 ghostsPixel(const GhostsUniforms& u, const Tex& bloom, int x, int y) {
+    const Vec2 uv = pixelUv(x, y, u.invOutSize);
+    F4 total = splat(0.f);
+    for (const GhostParams& g : u.ghosts) total += ghostPixel(g, u.sourceTexel, bloom, uv);
+    return rgbOnly(total * u.intensity);
+}
+
+}  // namespace flarekit::postfx

@@ -1,0 +1,45 @@
+// Twin of src/postfx/ghosts/Ghosts.h: the seed's LensFlarePS, one iteration per ghost.
+layout(binding = 0) uniform sampler2D bloom;
+uniform vec2 invOutSize, sourceTexel;
+uniform int ghostCount;
+uniform float intensity;
+uniform vec3 tints[32];
+uniform float scales[32], blurs[32], thresholds[32], falloffs[32];
+uniform int sampleCounts[32], centered[32], useBilinear[32];
+out vec4 result;
+
+const float kInvCornerDistance = 0.70710678;
+
+float centreFalloff(vec2 p, float exponent) {
+    if (exponent <= 0.0) return 1.0;
+    precise float r = sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
+    return pow(max(0.0, 1.0 - r), exponent);
+}
+
+vec4 ghostPixel(int g, vec2 uv) {
+    precise vec2 n = vec2(((1.0 - uv.x) * 2.0 - 1.0) * scales[g], ((1.0 - uv.y) * 2.0 - 1.0) * scales[g]);
+    precise float len = sqrt(n.x * n.x + n.y * n.y);
+    precise vec2 toward = len > 0.0 ? vec2(-n.x / len, -n.y / len) : vec2(0.0);
+    precise float dist = blurs[g] * float(sampleCounts[g]);
+    precise vec2 unit = vec2(toward.x * sourceTexel.x * dist, toward.y * sourceTexel.y * dist);
+    float first = centered[g] != 0 ? float(sampleCounts[g] - 1) : 1.0;
+    vec4 tint = vec4(tints[g], 0.0);
+    precise vec4 sum = vec4(0.0);
+    for (int i = 0; i < sampleCounts[g]; ++i) {
+        precise float offset = first - 2.0 * float(i);
+        precise vec2 p = vec2(n.x + unit.x * offset, n.y + unit.y * offset);
+        precise vec2 s = vec2(p.x * 0.5 + 0.5, p.y * 0.5 + 0.5);
+        if (s.x >= 0.0 && s.x <= 1.0 && s.y >= 0.0 && s.y <= 1.0) {
+            vec4 texel = useBilinear[g] != 0 ? bilinear(bloom, s) : pointSample(bloom, s);
+            sum += max(texel - thresholds[g], vec4(0.0)) * tint * centreFalloff(p, falloffs[g]);
+        }
+    }
+    return sum / float(sampleCounts[g]);
+}
+
+void main() {
+    vec2 uv = pixelUv(invOutSize);
+    precise vec4 total = vec4(0.0);
+    for (int g = 0; g < ghostCount; ++g) total += ghostPixel(g, uv);
+    result = rgbOnly(total * intensity);
+}

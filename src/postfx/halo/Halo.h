@@ -1,0 +1,44 @@
+// Halo: John Chapman's pseudo lens flare halo ("Pseudo Lens Flare", 2013), made aspect-correct.
+// In aspect space (x scaled by width / height, so a circle stays a circle) the pixel's mirrored
+// position m = -q samples the bloom buffer at m - normalize(m) * r for radii r across
+// [radius - thickness/2, radius + thickness/2]. A light at the centre lights the full ring
+// |q| = radius; a light at l lights an arc of radius `radius + |l|` on the far side, which is
+// how real lens halos swing with the light. Samples outside the image are skipped, as the
+// seed's ghosts do. Twin: shaders/halo.frag.
+#pragma once
+
+#include "flarekit/PostFx.h"
+#include "postfx/ghosts/Ghosts.h"
+
+namespace flarekit::postfx {
+
+//! Radial samples across the ring's thickness: enough that a 0.1-thick ring shows no steps
+//! on a blurred bloom buffer.
+inline constexpr int kHaloSamples = 8;
+
+struct HaloUniforms {
+    Vec2 invOutSize;
+    float aspect = 1.f;  //!< width / height
+    HaloParams halo;
+    float intensity = 1.f;  //!< flareIntensity x halo.intensity
+};
+
+inline F4 haloPixel(const HaloUniforms& u, const Tex& bloom, int x, int y) {
+    const Vec2 uv = pixelUv(x, y, u.invOutSize);
+    const Vec2 m{(1.f - 2.f * uv.x) * u.aspect, 1.f - 2.f * uv.y};  // mirrored, aspect space
+    const float len = std::sqrt(m.x * m.x + m.y * m.y);
+    const Vec2 dir = len > 0.f ? Vec2{m.x / len, m.y / len} : Vec2{0.f, 0.f};
+    const F4 tint{u.halo.tint[0], u.halo.tint[1], u.halo.tint[2], 0.f};
+    F4 sum = splat(0.f);
+    for (int i = 0; i < kHaloSamples; ++i) {
+        const float r = u.halo.radius + u.halo.thickness * ((float(i) + 0.5f) / float(kHaloSamples) - 0.5f);
+        const Vec2 p{(m.x - dir.x * r) / u.aspect, m.y - dir.y * r};  // back to [-1, 1]
+        const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
+        if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
+            sum += max0(bilinear(bloom, s) - u.halo.threshold) * centreFalloff(p, u.halo.falloff);
+        }
+    }
+    return rgbOnly(sum * tint * (u.intensity / float(kHaloSamples)));
+}
+
+}  // namespace flarekit::postfx

@@ -1,0 +1,103 @@
+// flarekit postfx: the image-based lens flare (Killzone 2 / Kawase ghosts, bloom, halo,
+// streaks, chromatic aberration, starburst, dirt) on any image, CPU or OpenGL.
+#include <cstdio>
+#include <filesystem>
+
+#include "Common.h"
+#include "flarekit/ImageIO.h"
+#include "flarekit/PostFx.h"
+#include "gl/HeadlessGl.h"
+
+namespace flarekit::cli {
+
+namespace {
+struct PostFxArgs {
+    std::string in, out, preset = "killzone2", backend = "cpu", layersDir, tonemap = "preset";
+    float exposure = -1.f;
+    bool verbose = false;
+};
+
+Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const PostFxParams& params, const PostFxOptions& options) {
+    if (a.backend == "cpu") return postFxCpu(image, params, options);
+    auto context = gl::HeadlessGl::create();
+    if (!context) return context.error();
+    auto chain = GpuPostFx::create();
+    if (!chain) return chain.error();
+    if (a.verbose) std::printf("OpenGL: %s\n", (*context)->renderer().c_str());
+    return chain->run(image, params, options);
+}
+
+Status writeLayers(const std::string& dir, const PostFxResult& r) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) return ioError(dir + ": cannot create the layers directory: " + ec.message());
+    const int w = r.final.width(), h = r.final.height();
+    for (auto [name, layer] : {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
+                               std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}}) {
+        const std::string path = (std::filesystem::path(dir) / (std::string(name) + ".exr")).string();
+        if (Status s = writeImage(path, resizeBilinear(*layer, w, h)); !s) return s;
+    }
+    return writeImage((std::filesystem::path(dir) / "final.exr").string(), r.final);
+}
+
+int runPostFx(const PostFxArgs& a) {
+    if (Status s = checkOutputPath(a.out); !s) return report(s.error());
+    auto params = loadPostFxPreset(a.preset);
+    if (!params) return report(params.error());
+    if (a.tonemap != "preset") params->tone.op = a.tonemap == "aces" ? ToneOperator::Aces : a.tonemap == "filmic" ? ToneOperator::Filmic : ToneOperator::None;
+    if (a.exposure >= 0.f) params->tone.exposure = a.exposure;
+
+    auto loaded = readQuietly(readImage, a.in);
+    if (!loaded) return report(loaded.error());
+    if (loaded->droppedChannels > 0) {
+        return report(invalidInput(a.in + ": " + std::to_string(loaded->fileChannels) +
+                                   " channels; postfx reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off first, "
+                                   "e.g. oiiotool IN --ch R,G,B,A -o rgba.exr"));
+    }
+    if (loaded->nonFinite > 0) warn(a.in + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
+
+    std::vector<PassTime> times;
+    PostFxOptions options;
+    options.keepLayers = !a.layersDir.empty();
+    options.times = a.verbose ? &times : nullptr;
+    auto result = runBackend(a, loaded->image, *params, options);
+    if (!result) return report(result.error());
+    if (a.verbose) {
+        // Wall time (with glFinish around each GL pass): llvmpipe's timer queries are not usable.
+        std::printf("%-10s %9s %9s %9s\n", "pass", "wall ms", "MP/s", a.backend == "gl" ? "GPU ms" : "");
+        for (const PassTime& t : times) {
+            std::printf("%-10s %9.2f %9.1f", t.pass.c_str(), t.wallMilliseconds, t.megapixels / (t.wallMilliseconds * 1e-3));
+            if (a.backend == "gl") std::printf(" %9.3f", t.milliseconds);
+            std::printf("\n");
+        }
+    }
+    if (!a.layersDir.empty()) {
+        if (Status s = writeLayers(a.layersDir, *result); !s) return report(s.error());
+    }
+    WriteOptions write;
+    write.alpha = loaded->hasAlpha;
+    if (Status s = writeImage(a.out, result->final, write); !s) return report(s.error());
+    return kExitOk;
+}
+}  // namespace
+
+void addPostFxCommand(CLI::App& app, int& exitCode) {
+    auto args = std::make_shared<PostFxArgs>();
+    CLI::App* cmd = app.add_subcommand("postfx", "Image-based lens flare (Killzone 2 / Kawase ghosts, bloom, halo, streaks, dirt) on any image");
+    cmd->add_option("input", args->in, "input image (EXR kept linear; 8-bit files are sRGB-decoded; grey and grey+alpha promoted)")->required();
+    cmd->add_option("-o,--output", args->out, "output image; format and bit depth follow the extension")->required();
+    cmd->add_option("--preset", args->preset, "shipped post-process preset (killzone2, modern, anamorphic, subtle) or a JSON file")
+        ->capture_default_str();
+    cmd->add_option("--backend", args->backend, "cpu, or gl (OpenGL 4.5 through headless EGL)")
+        ->check(CLI::IsMember({"cpu", "gl"}))
+        ->capture_default_str();
+    cmd->add_option("--save-layers", args->layersDir, "also write bloom, ghosts, halo, streaks, lens and final (linear EXR) into DIR");
+    cmd->add_option("--tonemap", args->tonemap, "display curve: preset (the preset's), none, aces, filmic")
+        ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
+        ->capture_default_str();
+    cmd->add_option("--exposure", args->exposure, "exposure before the display curve (default: the preset's)")->check(CLI::Range(0.f, 1000.f));
+    cmd->add_flag("-v,--verbose", args->verbose, "print each pass's time");
+    cmd->callback([args, &exitCode] { exitCode = runPostFx(*args); });
+}
+
+}  // namespace flarekit::cli
