@@ -41,7 +41,7 @@ struct GhostParams {
     float blur = 0.f;         //!< fBlurScale: step between samples, in bloom-buffer texels / 2 (seed units) [0, 16]
     int samples = 12;         //!< NumSamples [1, 64]
     float threshold = 0.1f;   //!< fThreshold, subtracted from each bloom sample [0, 1e4]
-    float falloff = 0.f;      //!< 0: none (seed); else weight (1 - |p| / sqrt 2)^falloff of the sample point [0, 64]
+    float falloff = 0.f;      //!< 0: none (seed); else weight (1 - |n| / sqrt 2)^falloff of the unblurred point n [0, 64]
     bool centered = false;    //!< false: the seed's sample offsets (+1, -1, -3, ...); true: symmetric about the point
     bool linearFilter = false;  //!< false: the seed's point sampler; true: bilinear (smoother magnified ghosts)
 };
@@ -52,7 +52,7 @@ struct HaloParams {
     float radius = 0.5f;              //!< in half image heights [0, 4]
     float thickness = 0.1f;           //!< radial spread of the ring, half image heights [0, 2]
     float threshold = 0.1f;           //!< subtracted from each bloom sample [0, 1e4]
-    float falloff = 5.f;              //!< (1 - |p| / sqrt 2)^falloff of the sample point [0, 64]
+    float falloff = 5.f;              //!< (1 - |p| / sqrt 2)^falloff of the mid-radius sample point [0, 64]
     Rgb tint{1.f, 1.f, 1.f};          //!< [0, 100]
 };
 
@@ -140,8 +140,27 @@ struct PostFxOptions {
     std::vector<PassTime>* times = nullptr;  //!< when set, each pass is timed (GL: waits per pass)
 };
 
-//! The CPU chain (oneTBB threads, 4-wide SIMD per pixel).
+//! The CPU chain (oneTBB threads, 4-wide SIMD per pixel), one run with fresh buffers.
 Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params, const PostFxOptions& options = {});
+
+//! The CPU chain keeping its intermediate buffers between runs of the same size (a video, a
+//! benchmark): fresh multi-megabyte buffers cost a page fault per 4 KiB on every run.
+class CpuPostFx {
+public:
+    CpuPostFx();
+    ~CpuPostFx();
+    CpuPostFx(CpuPostFx&&) noexcept;
+    CpuPostFx& operator=(CpuPostFx&&) noexcept;
+
+    //! Writes the composite into `result.final` (reused when it already has the input's size)
+    //! and, with options.keepLayers, the layers.
+    Status run(const Image& input, const PostFxParams& params, PostFxResult& result, const PostFxOptions& options = {});
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> m;
+};
 
 //! The OpenGL chain. A GL 4.5 context must be current; textures are kept between runs of the
 //! same size.

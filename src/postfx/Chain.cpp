@@ -10,7 +10,11 @@ using namespace postfx;
 
 namespace {
 
-Image sized(Size s) { return Image(s.width, s.height); }
+//! `image` at size s, reallocated only when the size changes; contents are left to the pass.
+Image& ensure(Image& image, Size s) {
+    if (image.width() != s.width || image.height() != s.height) image = Image(s.width, s.height);
+    return image;
+}
 
 Image scaled(const Image& image, float k) {
     Image out = image;
@@ -20,89 +24,106 @@ Image scaled(const Image& image, float k) {
 
 }  // namespace
 
-Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params, const PostFxOptions& options) {
+struct CpuPostFx::Impl {
+    std::vector<Image> mips, ups;
+    Image ghosts, halo, streaks, right, ping, lens, dirt;
+    DirtParams dirtKey;
+    bool dirtValid = false;
+};
+
+CpuPostFx::CpuPostFx() : m(std::make_unique<Impl>()) {}
+CpuPostFx::~CpuPostFx() = default;
+CpuPostFx::CpuPostFx(CpuPostFx&&) noexcept = default;
+CpuPostFx& CpuPostFx::operator=(CpuPostFx&&) noexcept = default;
+
+Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResult& result, const PostFxOptions& options) {
     auto planned = planChain(input.width(), input.height(), params);
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
+    Impl& b = *m;
     PassClock clock(options.times);
     const Size work = plan.work();
+    b.mips.resize(plan.levels.size()), b.ups.resize(plan.levels.size());
+    for (std::size_t i = 0; i < plan.levels.size(); ++i) ensure(b.mips[i], plan.levels[i]);
 
     // 1. Bright pass at 1/2, then the 13-tap downsample chain.
-    std::vector<Image> mips;
-    for (const Size& s : plan.levels) mips.push_back(sized(s));
     clock.run("bright", plan.levels[0], [&] {
-        runPass(mips[0], [&, in = Tex(input)](int x, int y) { return brightPixel(plan.bright, in, x, y); });
+        runPass(b.mips[0], [&, in = Tex(input)](int x, int y) { return brightPixel(plan.bright, in, x, y); });
     });
     clock.run("downsample", plan.levels[1], [&] {
         for (std::size_t i = 0; i < plan.down.size(); ++i) {
-            runPass(mips[i + 1], [&, src = Tex(mips[i])](int x, int y) { return downsamplePixel(plan.down[i], src, x, y); });
+            runPass(b.mips[i + 1], [&, src = Tex(b.mips[i])](int x, int y) { return downsamplePixel(plan.down[i], src, x, y); });
         }
     });
 
-    // 2. Blur: the progressive tent upsample back to 1/4, the bloom buffer.
-    std::vector<Image> ups(mips.size());
-    ups.back() = mips.back();
+    // 2. Blur: the progressive tent upsample back to 1/4, the bloom buffer (the coarsest
+    //    level is its own U).
+    const auto up = [&](std::size_t level) -> const Image& { return level + 1 == plan.levels.size() ? b.mips[level] : b.ups[level]; };
     clock.run("upsample", work, [&] {
         for (std::size_t i = plan.up.size(); i-- > 0;) {
-            ups[i + 1] = sized(plan.levels[i + 1]);
-            runPass(ups[i + 1], [&, fine = Tex(mips[i + 1]), coarse = Tex(ups[i + 2])](int x, int y) {
+            runPass(ensure(b.ups[i + 1], plan.levels[i + 1]), [&, fine = Tex(b.mips[i + 1]), coarse = Tex(up(i + 2))](int x, int y) {
                 return upsamplePixel(plan.up[i], fine, coarse, x, y);
             });
         }
     });
-    const Image& bloom = ups[kWorkLevel];
+    const Image& bloom = up(kWorkLevel);
 
     // 3. Ghosts and halo from the bloom buffer; 4. streaks from the 1/4 bright image.
-    Image ghosts = sized(work), halo = sized(work), streaks = sized(work);
+    for (Image* image : {&b.ghosts, &b.halo, &b.streaks}) ensure(*image, work).fill({});
     if (plan.ghostsOn()) {
         clock.run("ghosts", work, [&] {
-            runPass(ghosts, [&, src = Tex(bloom)](int x, int y) { return ghostsPixel(plan.ghosts, src, x, y); });
+            runPass(b.ghosts, [&, src = Tex(bloom)](int x, int y) { return ghostsPixel(plan.ghosts, src, x, y); });
         });
     }
     if (plan.haloOn()) {
-        clock.run("halo", work, [&] { runPass(halo, [&, src = Tex(bloom)](int x, int y) { return haloPixel(plan.halo, src, x, y); }); });
+        clock.run("halo", work, [&] { runPass(b.halo, [&, src = Tex(bloom)](int x, int y) { return haloPixel(plan.halo, src, x, y); }); });
     }
     if (plan.streaksOn()) {
         clock.run("streaks", work, [&] {
-            // Right chain ends in `right`, left chain in `streaks`; `ping` is the other buffer of each.
-            Image ping = sized(work), right = sized(work);
+            // The right chain ends in `right`, the left one in `streaks`; `ping` is the other buffer of each.
+            ensure(b.ping, work), ensure(b.right, work);
             const auto chain = [&](const std::vector<StreakUniforms>& passes, Image& last) {
-                const Image* src = &mips[kWorkLevel];
+                const Image* src = &b.mips[kWorkLevel];
                 for (std::size_t i = 0; i < passes.size(); ++i) {
-                    Image& dst = (passes.size() - i) % 2 == 1 ? last : ping;
-                    runPass(dst, [&, t = Tex(*src), o = Tex(right)](int x, int y) { return streakPixel(passes[i], t, o, x, y); });
+                    Image& dst = (passes.size() - i) % 2 == 1 ? last : b.ping;
+                    runPass(dst, [&, t = Tex(*src), o = Tex(b.right)](int x, int y) { return streakPixel(passes[i], t, o, x, y); });
                     src = &dst;
                 }
             };
-            chain(plan.streaks.right, right);
-            chain(plan.streaks.left, streaks);
+            chain(plan.streaks.right, b.right);
+            chain(plan.streaks.left, b.streaks);
         });
     }
 
     // 5. The lens buffer (chromatic aberration, starburst, dirt) and the full-res composite.
-    const Image dirt = plan.dirtOn() ? makeLensDirt(work.width, work.height, plan.dirt) : sized({1, 1});
-    Image lens = sized(work);
+    if (plan.dirtOn() && !(b.dirtValid && b.dirtKey.seed == plan.dirt.seed && b.dirtKey.spots == plan.dirt.spots &&
+                           b.dirt.width() == work.width && b.dirt.height() == work.height)) {
+        b.dirt = makeLensDirt(work.width, work.height, plan.dirt);
+        b.dirtKey = plan.dirt, b.dirtValid = true;
+    }
+    if (!plan.dirtOn() && b.dirt.empty()) b.dirt = Image(1, 1);
     clock.run("lens", work, [&] {
-        const LensInputs in{Tex(bloom), Tex(ghosts), Tex(halo), Tex(streaks), Tex(dirt)};
-        runPass(lens, [&](int x, int y) { return lensPixel(plan.lens, in, x, y); });
+        const LensInputs in{Tex(bloom), Tex(b.ghosts), Tex(b.halo), Tex(b.streaks), Tex(b.dirt)};
+        runPass(ensure(b.lens, work), [&](int x, int y) { return lensPixel(plan.lens, in, x, y); });
     });
-    PostFxResult result;
-    result.final = sized(plan.input);
     clock.run("composite", plan.input, [&] {
-        runPass(result.final, [&, in = Tex(input), l = Tex(lens)](int x, int y) { return compositePixel(plan.composite, in, l, x, y); });
+        runPass(ensure(result.final, plan.input),
+                [&, in = Tex(input), l = Tex(b.lens)](int x, int y) { return compositePixel(plan.composite, in, l, x, y); });
     });
 
     if (options.keepLayers) {
         result.bloom = scaled(bloom, params.bloom.intensity);
-        result.ghosts = std::move(ghosts), result.halo = std::move(halo), result.streaks = std::move(streaks);
-        result.lens = std::move(lens);
+        result.ghosts = b.ghosts, result.halo = b.halo, result.streaks = b.streaks, result.lens = b.lens;
     }
-    return result;
+    return Ok{};
 }
 
-}  // namespace flarekit
-
-namespace flarekit {
+Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params, const PostFxOptions& options) {
+    PostFxResult result;
+    CpuPostFx chain;
+    if (Status s = chain.run(input, params, result, options); !s) return s.error();
+    return result;
+}
 
 Image resizeBilinear(const Image& image, int width, int height) {
     Image out(std::max(1, width), std::max(1, height));

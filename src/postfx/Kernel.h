@@ -43,9 +43,16 @@ inline F4 fetchClamped(const Tex& t, int x, int y) {
     return t.texel(std::clamp(x, 0, t.width - 1), std::clamp(y, 0, t.height - 1));
 }
 
+//! GLSL floor() for the coordinates kernels use (|s| < 2^31): a truncation and a compare, where
+//! std::floor is a libm call on baseline x86-64 (no SSE4.1 round instruction).
+inline int floorToInt(float s) {
+    const int i = int(s);
+    return i - (float(i) > s ? 1 : 0);
+}
+
 //! postfx_common.glsl pointSample: the seed's PointSampler at normalised (u, v), clamped.
 inline F4 pointSample(const Tex& t, Vec2 uv) {
-    return fetchClamped(t, int(std::floor(uv.x * float(t.width))), int(std::floor(uv.y * float(t.height))));
+    return fetchClamped(t, floorToInt(uv.x * float(t.width)), floorToInt(uv.y * float(t.height)));
 }
 
 //! postfx_common.glsl fetchFinite: fetchClamped with NaN and Inf read as 0, so one bad input
@@ -62,9 +69,8 @@ inline F4 fetchFinite(const Tex& t, int x, int y) {
 template <F4 (*Fetch)(const Tex&, int, int) = fetchClamped>
 inline F4 bilinear(const Tex& t, Vec2 uv) {
     const float sx = uv.x * float(t.width) - 0.5f, sy = uv.y * float(t.height) - 0.5f;
-    const float ix = std::floor(sx), iy = std::floor(sy);
-    const float fx = sx - ix, fy = sy - iy;
-    const int x = int(ix), y = int(iy);
+    const int x = floorToInt(sx), y = floorToInt(sy);
+    const float fx = sx - float(x), fy = sy - float(y);
     const F4 a = Fetch(t, x, y), b = Fetch(t, x + 1, y);
     const F4 c = Fetch(t, x, y + 1), d = Fetch(t, x + 1, y + 1);
     const F4 top = a + (b - a) * fx, bottom = c + (d - c) * fx;

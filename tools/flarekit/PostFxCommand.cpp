@@ -1,5 +1,6 @@
 // flarekit postfx: the image-based lens flare (Killzone 2 / Kawase ghosts, bloom, halo,
 // streaks, chromatic aberration, starburst, dirt) on any image, CPU or OpenGL.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -14,17 +15,45 @@ namespace {
 struct PostFxArgs {
     std::string in, out, preset = "killzone2", backend = "cpu", layersDir, tonemap = "preset";
     float exposure = -1.f;
+    int repeat = 1;
     bool verbose = false;
 };
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+//! Runs the chain `repeat` times (buffers kept, as in a video) and, when repeating, prints the
+//! mean time of the runs after the first: the figure bench/peers/run_blender_peer.sh compares.
 Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const PostFxParams& params, const PostFxOptions& options) {
-    if (a.backend == "cpu") return postFxCpu(image, params, options);
-    auto context = gl::HeadlessGl::create();
-    if (!context) return context.error();
-    auto chain = GpuPostFx::create();
-    if (!chain) return chain.error();
-    if (a.verbose) std::printf("OpenGL: %s\n", (*context)->renderer().c_str());
-    return chain->run(image, params, options);
+    PostFxResult result;
+    double warmSeconds = 0;
+    if (a.backend == "cpu") {
+        CpuPostFx chain;
+        for (int i = 0; i < a.repeat; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            if (Status s = chain.run(image, params, result, options); !s) return s.error();
+            if (i > 0 || a.repeat == 1) warmSeconds += secondsSince(start);
+        }
+    } else {
+        auto context = gl::HeadlessGl::create();
+        if (!context) return context.error();
+        auto chain = GpuPostFx::create();
+        if (!chain) return chain.error();
+        if (a.verbose) std::printf("OpenGL: %s\n", (*context)->renderer().c_str());
+        for (int i = 0; i < a.repeat; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            auto r = chain->run(image, params, options);  // upload, passes, read-back
+            if (!r) return r.error();
+            result = std::move(*r);
+            if (i > 0 || a.repeat == 1) warmSeconds += secondsSince(start);
+        }
+    }
+    if (a.repeat > 1) {
+        std::printf("flarekit-postfx %dx%d %s %s: %.4f s per run (mean of %d after the first)\n", image.width(), image.height(),
+                    a.backend.c_str(), params.name.c_str(), warmSeconds / (a.repeat - 1), a.repeat - 1);
+    }
+    return result;
 }
 
 Status writeLayers(const std::string& dir, const PostFxResult& r) {
@@ -96,7 +125,10 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
         ->capture_default_str();
     cmd->add_option("--exposure", args->exposure, "exposure before the display curve (default: the preset's)")->check(CLI::Range(0.f, 1000.f));
-    cmd->add_flag("-v,--verbose", args->verbose, "print each pass's time");
+    cmd->add_flag("-v,--verbose", args->verbose, "print each pass's time (summed over --repeat runs)");
+    cmd->add_option("--repeat", args->repeat, "run the chain N times and print the mean time of the warm runs (benchmarking)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     cmd->callback([args, &exitCode] { exitCode = runPostFx(*args); });
 }
 

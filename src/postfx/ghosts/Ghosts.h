@@ -35,7 +35,7 @@ struct GhostsUniforms {
 //! 1 / sqrt(2): the distance from the centre to a corner in [-1, 1] coordinates is sqrt(2).
 inline constexpr float kInvCornerDistance = 0.70710678f;
 
-//! The modern falloff of a sample at normalised p (John Chapman, "Pseudo Lens Flare", 2013).
+//! The modern falloff of a ghost at normalised p (John Chapman, "Pseudo Lens Flare", 2013).
 inline float centreFalloff(Vec2 p, float exponent) {
     if (exponent <= 0.f) return 1.f;
     const float r = std::sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
@@ -49,7 +49,10 @@ inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, V
     const float dist = g.blur * float(g.samples);
     const Vec2 unit{toward.x * sourceTexel.x * dist, toward.y * sourceTexel.y * dist};
     const float first = g.centered ? float(g.samples - 1) : 1.f;
-    const F4 tint{g.tint[0], g.tint[1], g.tint[2], 0.f};
+    // The falloff is weighed once, at the unblurred point n: per sample it would cost a pow per
+    // tap for a difference the blur hides.
+    const float weight = centreFalloff(n, g.falloff);
+    const F4 tint{g.tint[0] * weight, g.tint[1] * weight, g.tint[2] * weight, 0.f};
     F4 sum = splat(0.f);
     for (int i = 0; i < g.samples; ++i) {
         const float offset = first - 2.f * float(i);
@@ -57,7 +60,7 @@ inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, V
         const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
         if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
             const F4 texel = g.linearFilter ? bilinear(bloom, s) : pointSample(bloom, s);
-            sum += max0(texel - g.threshold) * tint * centreFalloff(p, g.falloff);
+            sum += max0(texel - g.threshold) * tint;
         }
     }
     return sum / float(g.samples);

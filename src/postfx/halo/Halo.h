@@ -28,14 +28,16 @@ inline F4 haloPixel(const HaloUniforms& u, const Tex& bloom, int x, int y) {
     const Vec2 m{(1.f - 2.f * uv.x) * u.aspect, 1.f - 2.f * uv.y};  // mirrored, aspect space
     const float len = std::sqrt(m.x * m.x + m.y * m.y);
     const Vec2 dir = len > 0.f ? Vec2{m.x / len, m.y / len} : Vec2{0.f, 0.f};
-    const F4 tint{u.halo.tint[0], u.halo.tint[1], u.halo.tint[2], 0.f};
+    // Weighed once, at the mid-radius point (a pow per sample would cost more than the taps).
+    const float weight = centreFalloff({(m.x - dir.x * u.halo.radius) / u.aspect, m.y - dir.y * u.halo.radius}, u.halo.falloff);
+    const F4 tint{u.halo.tint[0] * weight, u.halo.tint[1] * weight, u.halo.tint[2] * weight, 0.f};
     F4 sum = splat(0.f);
     for (int i = 0; i < kHaloSamples; ++i) {
         const float r = u.halo.radius + u.halo.thickness * ((float(i) + 0.5f) / float(kHaloSamples) - 0.5f);
         const Vec2 p{(m.x - dir.x * r) / u.aspect, m.y - dir.y * r};  // back to [-1, 1]
         const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
         if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
-            sum += max0(bilinear(bloom, s) - u.halo.threshold) * centreFalloff(p, u.halo.falloff);
+            sum += max0(bilinear(bloom, s) - u.halo.threshold);
         }
     }
     return rgbOnly(sum * tint * (u.intensity / float(kHaloSamples)));

@@ -23,7 +23,8 @@ vec4 ghostPixel(int g, vec2 uv) {
     precise float dist = blurs[g] * float(sampleCounts[g]);
     precise vec2 unit = vec2(toward.x * sourceTexel.x * dist, toward.y * sourceTexel.y * dist);
     float first = centered[g] != 0 ? float(sampleCounts[g] - 1) : 1.0;
-    vec4 tint = vec4(tints[g], 0.0);
+    float weight = centreFalloff(n, falloffs[g]);
+    vec4 tint = vec4(tints[g] * weight, 0.0);
     precise vec4 sum = vec4(0.0);
     for (int i = 0; i < sampleCounts[g]; ++i) {
         precise float offset = first - 2.0 * float(i);
@@ -31,7 +32,7 @@ vec4 ghostPixel(int g, vec2 uv) {
         precise vec2 s = vec2(p.x * 0.5 + 0.5, p.y * 0.5 + 0.5);
         if (s.x >= 0.0 && s.x <= 1.0 && s.y >= 0.0 && s.y <= 1.0) {
             vec4 texel = useBilinear[g] != 0 ? bilinear(bloom, s) : pointSample(bloom, s);
-            sum += max(texel - thresholds[g], vec4(0.0)) * tint * centreFalloff(p, falloffs[g]);
+            sum += max(texel - thresholds[g], vec4(0.0)) * tint;
         }
     }
     return sum / float(sampleCounts[g]);
