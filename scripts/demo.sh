@@ -2,7 +2,8 @@
 # The main job: the built-in drive (road, trees, buildings, tunnel, turn; 240 frames at
 # 1280x720 with an occlusion-aware sun flare, PNG frames + MP4), then every shipped preset on
 # the sample sunset, the HDR sample, each preset's element sheet, and the drive through the PSP
-# GE emulator (Burnout Dominator's flare, correct and naive side by side), all written to OUT_DIR.
+# GE emulator (Burnout Dominator's flare, correct and naive side by side), and every post-process
+# preset on the HDR sample (CPU and GL) with its layers, all written to OUT_DIR.
 #   usage: scripts/demo.sh FLAREKIT OUT_DIR
 set -euo pipefail
 flarekit="$1"
@@ -19,4 +20,12 @@ done
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.png" --preset sun-wide
 "$flarekit" render "$here/samples/scenes/contract-example.json" -o "$out/contract-example.png"
 "$flarekit" psp demo -o "$out/psp" --frames 48
-echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/, PSP frames in $out/psp/"
+mkdir -p "$out/postfx"
+for preset in $("$flarekit" presets --postfx | awk '{print $1}'); do
+  "$flarekit" postfx "$here/samples/sunset-hdr.exr" -o "$out/postfx/sunset-hdr-$preset.png" --preset "$preset" --tonemap aces \
+    --save-layers "$out/postfx/layers-$preset"
+  "$flarekit" postfx "$here/samples/sunset-hdr.exr" -o "$out/postfx/sunset-hdr-$preset-gl.png" --preset "$preset" --tonemap aces --backend gl
+  "$flarekit" postfx "$here/samples/sunset.png" -o "$out/postfx/sunset-$preset.png" --preset "$preset"
+  echo "demo: $out/postfx/sunset-hdr-$preset.png"
+done
+echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/, PSP frames in $out/psp/, post-process flares in $out/postfx/"
