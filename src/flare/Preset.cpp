@@ -8,6 +8,7 @@
 
 #include "core/JsonText.h"
 #include "flare/ParamTable.h"
+#include "flare/PresetFiles.h"
 #include "flarekit/Flare.h"
 
 #ifndef FLAREKIT_SOURCE_PRESET_DIR
@@ -200,11 +201,11 @@ std::vector<std::string> presetSearchPath() {
     return dirs;
 }
 
-std::vector<std::string> shippedPresetNames() {
+std::vector<std::string> presetNamesIn(const std::string& subdir) {
     std::vector<std::string> names;
     for (const std::string& dir : presetSearchPath()) {
         std::error_code ec;
-        for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        for (const auto& entry : fs::directory_iterator(fs::path(dir) / subdir, ec)) {
             if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
         }
     }
@@ -213,14 +214,14 @@ std::vector<std::string> shippedPresetNames() {
     return names;
 }
 
-Result<Preset> loadPreset(const std::string& nameOrPath) {
-    std::string path = nameOrPath;
+Result<std::string> readPresetText(const std::string& nameOrPath, const std::string& subdir, std::string& path) {
+    path = nameOrPath;
     const bool looksLikePath = nameOrPath.find('/') != std::string::npos ||
                                fs::path(nameOrPath).extension() == ".json";
     if (!looksLikePath) {
         path.clear();
         for (const std::string& dir : presetSearchPath()) {
-            const fs::path candidate = fs::path(dir) / (nameOrPath + ".json");
+            const fs::path candidate = fs::path(dir) / subdir / (nameOrPath + ".json");
             std::error_code ec;
             if (fs::is_regular_file(candidate, ec)) {
                 path = candidate.string();
@@ -229,12 +230,19 @@ Result<Preset> loadPreset(const std::string& nameOrPath) {
         }
         if (path.empty()) {
             std::string names;
-            for (const std::string& n : shippedPresetNames()) names += (names.empty() ? "" : ", ") + n;
-            return invalidInput("preset '" + nameOrPath + "': expected a JSON file or one of: " +
-                                (names.empty() ? "(no shipped presets found)" : names));
+            for (const std::string& n : presetNamesIn(subdir)) names += (names.empty() ? "" : ", ") + n;
+            return invalidInput((subdir.empty() ? "preset '" : subdir + " preset '") + nameOrPath +
+                                "': expected a JSON file or one of: " + (names.empty() ? "(no shipped presets found)" : names));
         }
     }
-    auto text = readTextFile(path);
+    return readTextFile(path);
+}
+
+std::vector<std::string> shippedPresetNames() { return presetNamesIn(""); }
+
+Result<Preset> loadPreset(const std::string& nameOrPath) {
+    std::string path;
+    auto text = readPresetText(nameOrPath, "", path);
     if (!text) return text.error();
     return parsePreset(*text, path);
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/JsonText.h"
+#include "flare/PresetFiles.h"
 #include "flarekit/Flare.h"
 #include "flarekit/PostFx.h"
 
@@ -283,47 +284,11 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
     return p;
 }
 
-namespace {
-std::vector<std::string> postFxDirs() {
-    std::vector<std::string> dirs;
-    for (const std::string& dir : presetSearchPath()) dirs.push_back((fs::path(dir) / "postfx").string());
-    return dirs;
-}
-}  // namespace
-
-std::vector<std::string> shippedPostFxPresetNames() {
-    std::vector<std::string> names;
-    for (const std::string& dir : postFxDirs()) {
-        std::error_code ec;
-        for (const auto& entry : fs::directory_iterator(dir, ec)) {
-            if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-        }
-    }
-    std::sort(names.begin(), names.end());
-    names.erase(std::unique(names.begin(), names.end()), names.end());
-    return names;
-}
+std::vector<std::string> shippedPostFxPresetNames() { return presetNamesIn("postfx"); }
 
 Result<PostFxParams> loadPostFxPreset(const std::string& nameOrPath) {
-    std::string path = nameOrPath;
-    if (nameOrPath.find('/') == std::string::npos && fs::path(nameOrPath).extension() != ".json") {
-        path.clear();
-        for (const std::string& dir : postFxDirs()) {
-            const fs::path candidate = fs::path(dir) / (nameOrPath + ".json");
-            std::error_code ec;
-            if (fs::is_regular_file(candidate, ec)) {
-                path = candidate.string();
-                break;
-            }
-        }
-        if (path.empty()) {
-            std::string names;
-            for (const std::string& n : shippedPostFxPresetNames()) names += (names.empty() ? "" : ", ") + n;
-            return invalidInput("postfx preset '" + nameOrPath + "': expected a JSON file or one of: " +
-                                (names.empty() ? "(no shipped presets found)" : names));
-        }
-    }
-    auto text = readTextFile(path);
+    std::string path;
+    auto text = readPresetText(nameOrPath, "postfx", path);
     if (!text) return text.error();
     return parsePostFxPreset(*text, path);
 }
