@@ -35,24 +35,33 @@ void report(benchmark::State& state, const std::vector<PassTime>& times, bool gl
     }
 }
 
-//! args: preset index, width, height, timed passes (0/1: per-pass glFinish changes the total)
-void BM_PostFxCpu(benchmark::State& state) {
+//! Runs `run(input, params, options)` per iteration after one warm-up run and reports.
+//! args: preset index, width, height, timed passes (0/1: per-pass waits change the total)
+template <typename Run>
+void measure(benchmark::State& state, const Run& run, bool gl, const std::string& label) {
     auto params = loadPostFxPreset(kPresets[state.range(0)]);
     if (!params) return state.SkipWithError(params.error().message.c_str());
     const Image& in = input(int(state.range(1)), int(state.range(2)));
     std::vector<PassTime> times;
     PostFxOptions options;
+    if (Status s = run(in, *params, options); !s) return state.SkipWithError(s.error().message.c_str());  // warm-up
     options.times = state.range(3) ? &times : nullptr;
-    CpuPostFx chain;  // buffers kept between runs, as a video or an engine would
-    PostFxResult result;
-    (void)chain.run(in, *params, result);  // warm-up: first-touch page faults of the buffers
     for (auto _ : state) {
-        if (Status s = chain.run(in, *params, result, options); !s) return state.SkipWithError(s.error().message.c_str());
-        benchmark::DoNotOptimize(result.final.data());
+        if (Status s = run(in, *params, options); !s) return state.SkipWithError(s.error().message.c_str());
     }
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(in.pixelCount()));
-    state.SetLabel(kPresets[state.range(0)]);
-    report(state, times, false);
+    state.SetLabel(std::string(kPresets[state.range(0)]) + label);
+    report(state, times, gl);
+}
+
+void BM_PostFxCpu(benchmark::State& state) {
+    CpuPostFx chain;  // buffers kept between runs, as a video or an engine would
+    PostFxResult result;
+    measure(state, [&](const Image& in, const PostFxParams& p, const PostFxOptions& o) {
+        Status s = chain.run(in, p, result, o);
+        benchmark::DoNotOptimize(result.final.data());
+        return s;
+    }, false, "");
 }
 
 void BM_PostFxGl(benchmark::State& state) {
@@ -60,20 +69,12 @@ void BM_PostFxGl(benchmark::State& state) {
     if (!context) return state.SkipWithError(context.error().message.c_str());
     static auto chain = GpuPostFx::create();
     if (!chain) return state.SkipWithError(chain.error().message.c_str());
-    auto params = loadPostFxPreset(kPresets[state.range(0)]);
-    if (!params) return state.SkipWithError(params.error().message.c_str());
-    const Image& in = input(int(state.range(1)), int(state.range(2)));
-    std::vector<PassTime> times;
-    PostFxOptions options;
-    options.times = state.range(3) ? &times : nullptr;
-    (void)chain->run(in, *params);  // warm-up: allocation of this size's targets
-    for (auto _ : state) {
-        auto r = chain->run(in, *params, options);  // upload, every pass, read-back
-        benchmark::DoNotOptimize(r);
-    }
-    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(in.pixelCount()));
-    state.SetLabel(std::string(kPresets[state.range(0)]) + " on " + (*context)->renderer());
-    report(state, times, true);
+    measure(state, [&](const Image& in, const PostFxParams& p, const PostFxOptions& o) -> Status {
+        auto r = chain->run(in, p, o);  // upload, every pass, read-back
+        if (!r) return r.error();
+        benchmark::DoNotOptimize(r->final.data());
+        return Ok{};
+    }, true, " on " + (*context)->renderer());
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
