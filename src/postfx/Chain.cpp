@@ -3,6 +3,7 @@
 // wiring with GL draws.
 #include "flarekit/PostFx.h"
 #include "postfx/ChainPlan.h"
+#include "postfx/dirt/LensDirtCache.h"
 
 namespace flarekit {
 
@@ -16,19 +17,12 @@ Image& ensure(Image& image, Size s) {
     return image;
 }
 
-Image scaled(const Image& image, float k) {
-    Image out = image;
-    for (std::size_t i = 0; i < out.pixelCount() * 4; ++i) out.data()[i] *= k;
-    return out;
-}
-
 }  // namespace
 
 struct CpuPostFx::Impl {
     std::vector<Image> mips, ups;
-    Image ghosts, halo, streaks, right, ping, lens, dirt;
-    DirtParams dirtKey;
-    bool dirtValid = false;
+    Image ghosts, halo, streaks, right, ping, lens;
+    LensDirtCache dirt;
 };
 
 CpuPostFx::CpuPostFx() : m(std::make_unique<Impl>()) {}
@@ -69,7 +63,11 @@ Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResu
     const Image& bloom = up(kWorkLevel);
 
     // 3. Ghosts and halo from the bloom buffer; 4. streaks from the 1/4 bright image.
-    for (Image* image : {&b.ghosts, &b.halo, &b.streaks}) ensure(*image, work).fill({});
+    // A pass that is off leaves its buffer black for the lens pass.
+    for (auto [image, on] : {std::pair{&b.ghosts, plan.ghostsOn()}, std::pair{&b.halo, plan.haloOn()}, std::pair{&b.streaks, plan.streaksOn()}}) {
+        ensure(*image, work);
+        if (!on) image->fill({});
+    }
     if (plan.ghostsOn()) {
         clock.run("ghosts", work, [&] {
             runPass(b.ghosts, [&, src = Tex(bloom)](int x, int y) { return ghostsPixel(plan.ghosts, src, x, y); });
@@ -96,14 +94,9 @@ Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResu
     }
 
     // 5. The lens buffer (chromatic aberration, starburst, dirt) and the full-res composite.
-    if (plan.dirtOn() && !(b.dirtValid && b.dirtKey.seed == plan.dirt.seed && b.dirtKey.spots == plan.dirt.spots &&
-                           b.dirt.width() == work.width && b.dirt.height() == work.height)) {
-        b.dirt = makeLensDirt(work.width, work.height, plan.dirt);
-        b.dirtKey = plan.dirt, b.dirtValid = true;
-    }
-    if (!plan.dirtOn() && b.dirt.empty()) b.dirt = Image(1, 1);
+    if (plan.dirtOn()) b.dirt.update(work.width, work.height, plan.dirt);  // read only when on
     clock.run("lens", work, [&] {
-        const LensInputs in{Tex(bloom), Tex(b.ghosts), Tex(b.halo), Tex(b.streaks), Tex(b.dirt)};
+        const LensInputs in{Tex(bloom), Tex(b.ghosts), Tex(b.halo), Tex(b.streaks), Tex(b.dirt.image())};
         runPass(ensure(b.lens, work), [&](int x, int y) { return lensPixel(plan.lens, in, x, y); });
     });
     clock.run("composite", plan.input, [&] {
@@ -112,7 +105,8 @@ Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResu
     });
 
     if (options.keepLayers) {
-        result.bloom = scaled(bloom, params.bloom.intensity);
+        result.bloom = bloom;
+        scaleInPlace(result.bloom, params.bloom.intensity);
         result.ghosts = b.ghosts, result.halo = b.halo, result.streaks = b.streaks, result.lens = b.lens;
     }
     return Ok{};

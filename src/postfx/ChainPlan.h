@@ -46,6 +46,11 @@ struct ChainPlan {
     bool streaksOn() const { return !streaks.left.empty(); }
 };
 
+//! Multiplies every value (the bloom layer is the bloom buffer x bloom.intensity).
+inline void scaleInPlace(Image& image, float k) {
+    for (std::size_t i = 0; i < image.pixelCount() * 4; ++i) image.data()[i] *= k;
+}
+
 //! Checks what JSON validation would (for params built in code) and plans the chain.
 Result<ChainPlan> planChain(int width, int height, const PostFxParams& params);
 

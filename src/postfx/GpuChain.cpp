@@ -8,6 +8,7 @@
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "postfx/ChainPlan.h"
+#include "postfx/dirt/LensDirtCache.h"
 
 namespace flarekit {
 
@@ -52,8 +53,7 @@ struct GpuPostFx::Impl {
     gl::Texture source;
     Target final, ghostsT, haloT, streaksT, rightT, pingT, lensT, dirtT;
     std::vector<Target> mips, ups;
-    DirtParams dirtKey;
-    bool dirtValid = false;
+    LensDirtCache dirt;
 
     Status allocate(const ChainPlan& plan);
     void draw(const Target& target, GLuint program, std::initializer_list<GLuint> textures) const;
@@ -117,7 +117,8 @@ Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
     for (Target* t : {&ghostsT, &haloT, &streaksT, &rightT, &pingT, &lensT, &dirtT}) {
         if (Status s = make(plan.work(), *t); !s) return s;
     }
-    input = plan.input, levelCount = plan.levels.size(), dirtValid = false;
+    input = plan.input, levelCount = plan.levels.size();
+    dirt.invalidate();
     return gl::checkError("allocating the post-process targets");
 }
 
@@ -173,10 +174,8 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
     glBindVertexArray(g.vao.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTextureSubImage2D(g.source.get(), 0, 0, 0, input.width(), input.height(), GL_RGBA, GL_FLOAT, input.data());
-    if (plan.dirtOn() && !(g.dirtValid && g.dirtKey.seed == plan.dirt.seed && g.dirtKey.spots == plan.dirt.spots)) {
-        const Image dirt = makeLensDirt(work.width, work.height, plan.dirt);
-        glTextureSubImage2D(g.dirtT.texture.get(), 0, 0, 0, work.width, work.height, GL_RGBA, GL_FLOAT, dirt.data());
-        g.dirtKey = plan.dirt, g.dirtValid = true;
+    if (plan.dirtOn() && g.dirt.update(work.width, work.height, plan.dirt)) {
+        glTextureSubImage2D(g.dirtT.texture.get(), 0, 0, 0, work.width, work.height, GL_RGBA, GL_FLOAT, g.dirt.image().data());
     }
     GlClock clock(options.times);
 
@@ -297,7 +296,7 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
         auto b = gl::readTextureRgba(bloom, work.width, work.height, false);
         if (!b) return b.error();
         result.bloom = std::move(*b);
-        for (std::size_t i = 0; i < result.bloom.pixelCount() * 4; ++i) result.bloom.data()[i] *= params.bloom.intensity;
+        scaleInPlace(result.bloom, params.bloom.intensity);
     }
     return result;
 }
