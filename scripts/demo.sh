@@ -25,7 +25,7 @@ for preset in $("$flarekit" presets --postfx | awk '{print $1}'); do
   "$flarekit" postfx "$here/samples/sunset-hdr.exr" -o "$out/postfx/sunset-hdr-$preset.png" --preset "$preset" --tonemap aces \
     --save-layers "$out/postfx/layers-$preset"
   "$flarekit" postfx "$here/samples/sunset-hdr.exr" -o "$out/postfx/sunset-hdr-$preset-gl.png" --preset "$preset" --tonemap aces --backend gl
-  "$flarekit" postfx "$here/samples/sunset.png" -o "$out/postfx/sunset-$preset.png" --preset "$preset"
+  "$flarekit" postfx "$here/samples/sunset.png" -o "$out/postfx/sunset-$preset.png" --preset "$preset" --threshold 0.9 --knee 0.1
   echo "demo: $out/postfx/sunset-hdr-$preset.png"
 done
 echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/, PSP frames in $out/psp/, post-process flares in $out/postfx/"

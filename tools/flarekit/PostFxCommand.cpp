@@ -14,7 +14,7 @@ namespace flarekit::cli {
 namespace {
 struct PostFxArgs {
     std::string in, out, preset = "killzone2", backend = "cpu", layersDir, tonemap = "preset";
-    float exposure = -1.f;
+    float exposure = -1.f, threshold = -1.f, knee = -1.f;
     int repeat = 1;
     bool verbose = false;
 };
@@ -75,6 +75,8 @@ int runPostFx(const PostFxArgs& a) {
     if (!params) return report(params.error());
     if (a.tonemap != "preset") params->tone.op = a.tonemap == "aces" ? ToneOperator::Aces : a.tonemap == "filmic" ? ToneOperator::Filmic : ToneOperator::None;
     if (a.exposure >= 0.f) params->tone.exposure = a.exposure;
+    if (a.threshold >= 0.f) params->bright.threshold = a.threshold;
+    if (a.knee >= 0.f) params->bright.knee = a.knee;
 
     auto loaded = readQuietly(readImage, a.in);
     if (!loaded) return report(loaded.error());
@@ -125,6 +127,10 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
         ->capture_default_str();
     cmd->add_option("--exposure", args->exposure, "exposure before the display curve (default: the preset's)")->check(CLI::Range(0.f, 1000.f));
+    cmd->add_option("--threshold", args->threshold,
+                    "bright-pass threshold (default: the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9)")
+        ->check(CLI::Range(0.f, 1e4f));
+    cmd->add_option("--knee", args->knee, "bright-pass soft knee half width (default: the preset's)")->check(CLI::Range(0.f, 1e4f));
     cmd->add_flag("-v,--verbose", args->verbose, "print each pass's time (summed over --repeat runs)");
     cmd->add_option("--repeat", args->repeat, "run the chain N times and print the mean time of the warm runs (benchmarking)")
         ->check(CLI::Range(1, 1000))
