@@ -1,5 +1,5 @@
 // Seed-002 blending throughput. Megapixels/s per mode; for the saturating add, the three
-// implementations against memcpy over the same buffers in the same run (issue 3: SIMD add
+// implementations against memcpy over the same buffers in the same run (the SIMD add
 // >= 70% of memcpy's GB/s). bytes_per_second counts the buffer size once for every kernel
 // (the add reads two buffers and writes one: 1.5x memcpy's memory traffic).
 #include <benchmark/benchmark.h>

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "core/Parallel.h"
-#include "flare/ParamTable.h"
+#include "flarekit/Elements.h"
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
 

@@ -1,4 +1,4 @@
-// The seed's experiment, and past it (issue 5). GPG2's texture-masking article measured 27.8
+// The seed's experiment, and past it. GPG2's texture-masking article measured 27.8
 // frames/s with the "lock" (synchronous depth read-back) against 53.5 with texture masking at
 // 600x500, and explained the gap: the lock makes the CPU wait for the GPU to finish the frame,
 // so game work on the CPU and rendering on the GPU take turns instead of overlapping. Its demo

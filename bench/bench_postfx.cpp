@@ -1,4 +1,4 @@
-// The post-process lens flare chain (issue 6) at 1920x1080 and 3840x2160, CPU (both cores,
+// The post-process lens flare chain at 1920x1080 and 3840x2160, CPU (both cores,
 // 4-wide SIMD per pixel) and OpenGL (llvmpipe here; the GPU where one is lent).
 //   items/s      megapixels of input per second for the whole chain (SetItemsProcessed)
 //   <pass>_ms    time of one pass per run (CPU: wall; GL: GPU timer query and wall with glFinish)

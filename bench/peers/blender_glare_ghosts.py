@@ -1,4 +1,4 @@
-# Peer benchmark for flarekit postfx (issue 6): the same image through Blender's compositor
+# Peer benchmark for flarekit postfx: the same image through Blender's compositor
 # Glare node, type Ghosts, headless. Run by run_blender_peer.sh:
 #   blender -b --factory-startup -noaudio --python blender_glare_ghosts.py -- IN.exr OUT.exr RUNS
 # Prints one line per run: "blender-glare-ghosts <width>x<height> run <i> <seconds> s".

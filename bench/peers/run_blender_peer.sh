@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Peer benchmark for issue 6: flarekit postfx (CPU chain) against Blender's compositor Glare
+# Peer benchmark: flarekit postfx (CPU chain) against Blender's compositor Glare
 # node (type Ghosts), headless, on the same HDR image at 1920x1080 and 3840x2160, same machine.
 #   usage: bench/peers/run_blender_peer.sh [FLAREKIT] [OUT_DIR]
 # Installs Blender with apt-get when it is missing (Debian 12: Blender 3.4). Prints each run and

@@ -1,8 +1,9 @@
 // Blending. The 8-bit modes are the integer formulas of Tanczos, "The Art of Modeling Lens
-// Flares" (1999, seed 002), bit for bit; the float modes composite linear-light HDR images.
+// Flares" (Tanczos, 1999), bit for bit; the float modes composite linear-light HDR images.
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -12,7 +13,7 @@
 
 namespace flarekit {
 
-// ---- 8-bit, exact (seed 002) ------------------------------------------------------------
+// ---- 8-bit, exact (Tanczos 1999) ------------------------------------------------------------
 
 enum class Blend8Mode { Alpha, AlphaShift, Premultiplied, Add };
 std::optional<Blend8Mode> parseBlend8Mode(std::string_view name);  //!< "alpha", "alpha-shift", ...
@@ -81,7 +82,9 @@ enum class BlendMode {
     Screen,  //!< dst = 1 - (1-dst)(1-src) per channel: the display-referred soft add
     Over,    //!< dst = src + dst*(1 - src.a): src premultiplied, Porter-Duff over
 };
-std::optional<BlendMode> parseBlendMode(std::string_view name);  //!< "add", "screen", "over"
+//! The modes' names, index = BlendMode value (presets, docs, messages).
+inline constexpr std::array<std::string_view, 3> kBlendModeNames = {"add", "screen", "over"};
+std::optional<BlendMode> parseBlendMode(std::string_view name);
 std::string_view blendModeName(BlendMode mode);
 
 //! Composites `n` premultiplied RGBA pixels of src onto dst in place. Alpha: Add keeps dst's,

@@ -8,6 +8,7 @@
 
 #include "flarekit/Flare.h"
 #include "flarekit/Image.h"
+#include "flarekit/Render.h"
 #include "flarekit/Scene.h"
 #include "flarekit/Temporal.h"
 
@@ -30,6 +31,13 @@ struct DemoSettings {
     //! (glBeginConditionalRender), so the GPU skips them when the sun is hidden.
     bool conditionalRender = false;
     TemporalParams temporal;
+};
+inline constexpr Param<DemoSettings> kDemoParams[] = {
+    param<&DemoSettings::frames>("frames", 1, 100000, "", "frames over the 8 s drive (240 = 30 fps)"),
+    param<&DemoSettings::raycastSamplesPerSide>("samples", 1, 4096, "per side", "raycast: strata per side (N^2 rays a frame)"),
+    oneOf<&DemoSettings::msaaSamples>("msaa", kMsaaSampleCounts, "samples", "samples per pixel for the scene pass"),
+    param<&DemoSettings::width>("width", 16, 16384, "pixels", "frame width"),
+    param<&DemoSettings::height>("height", 16, 16384, "pixels", "frame height"),
 };
 
 //! Range checks of every setting (no GL needed); errors name the setting.

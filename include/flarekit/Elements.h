@@ -1,4 +1,4 @@
-// Procedural flare elements (Tanczos 1999, seed 002 "Parts of a Flare", plus the polygonal
+// Procedural flare elements (Tanczos, "The Art of Modeling Lens Flares", 1999: "Parts of a Flare", plus the polygonal
 // iris ghost of modern engines). Each element is a pure function of its parameters: the same
 // parameters always give the same pixels.
 #pragma once
@@ -10,10 +10,9 @@
 
 #include "flarekit/Blend.h"
 #include "flarekit/Image.h"
+#include "flarekit/Param.h"
 
 namespace flarekit {
-
-using Rgb = std::array<float, 3>;  //!< linear-light RGB
 
 enum class ElementType {
     Glow,     //!< main flare glow: the seed's exp falloff, bright centre to darker edge
@@ -27,8 +26,8 @@ inline constexpr int kElementTypeCount = 6;
 std::optional<ElementType> parseElementType(std::string_view name);
 std::string_view elementTypeName(ElementType type);
 
-//! One element of a flare. Lengths are fractions of the element radius unless stated; the
-//! table in src/flare/ParamTable.cpp gives every field's JSON key, range and documentation.
+//! One element of a flare. Lengths are fractions of the element radius unless stated;
+//! kElementParams below gives every field's JSON key, range and documentation.
 struct ElementParams {
     ElementType type = ElementType::Glow;
     float t = 1.f;              //!< position on the flare vector: 1 at the light, 0 screen centre, -1 mirrored
@@ -48,6 +47,52 @@ struct ElementParams {
     std::uint32_t seed = 1;     //!< rays: random seed (same seed, same rays, on every platform)
     BlendMode blend = BlendMode::Add;  //!< how the element composites onto the image
 };
+
+//! Bit of an element type in Param::appliesTo.
+inline constexpr std::uint32_t typeBit(ElementType t) { return 1u << unsigned(t); }
+inline constexpr std::uint32_t kAllElementTypes = (1u << kElementTypeCount) - 1;
+
+namespace element_bits {
+inline constexpr std::uint32_t kGlow = typeBit(ElementType::Glow), kRing = typeBit(ElementType::Ring),
+                               kStreaks = typeBit(ElementType::Streaks), kRays = typeBit(ElementType::Rays),
+                               kDisc = typeBit(ElementType::Disc), kPolygon = typeBit(ElementType::Polygon),
+                               kSpikes = kStreaks | kRays;
+}  // namespace element_bits
+
+//! Every element parameter. Ranges are what still gives a sensible image; they exist to catch
+//! typos ("size": 40). size [0, 4]: 4 image heights covers the widest anamorphic streak.
+//! Colour components [0, 64]: HDR colours above display white, up to a sun-like 64.
+inline constexpr Param<ElementParams> kElementParams[] = {
+    param<&ElementParams::t>("t", -8, 8, "",
+        "position on the flare vector: 1 at the light, 0 at the screen centre, -1 mirrored through it"),
+    param<&ElementParams::size>("size", 0, 4, "image heights", "radius"),
+    param<&ElementParams::color>("color", 0, 64, "linear RGB",
+        "colour; the rim colour where the element has a gradient"),
+    param<&ElementParams::innerColor>("inner_color", 0, 64, "linear RGB",
+        "colour at the centre (ring: at its inner edge), blending linearly to `color`; default `color`",
+        element_bits::kGlow | element_bits::kRing | element_bits::kDisc | element_bits::kPolygon | element_bits::kSpikes),
+    param<&ElementParams::intensity>("intensity", 0, 1000, "", "multiplies the colour"),
+    param<&ElementParams::aspect>("aspect", 0.05, 20, "", "horizontal stretch (2: twice as wide as tall)"),
+    param<&ElementParams::rotationDeg>("rotation", -360, 360, "degrees", "rotation, clockwise on screen"),
+    param<&ElementParams::width>("width", 0.001, 1, "radius", "ring width", element_bits::kRing),
+    param<&ElementParams::softness>("softness", 0, 1, "radius", "edge blur width (0: one-pixel antialiasing only)",
+        element_bits::kRing | element_bits::kDisc | element_bits::kPolygon),
+    param<&ElementParams::count>("count", 1, 4096, "", "number of streaks or rays", element_bits::kSpikes),
+    param<&ElementParams::thickness>("thickness", 0.0005, 0.5, "radius", "width of each streak or ray",
+        element_bits::kSpikes),
+    param<&ElementParams::falloff>("falloff", 0, 16, "", "brightness along a spike: (1 - distance/length)^falloff",
+        element_bits::kSpikes),
+    param<&ElementParams::minLength>("min_length", 0, 1, "radius", "shortest ray; lengths are uniform in [min_length, 1]",
+        element_bits::kRays),
+    param<&ElementParams::blades>("blades", 3, 32, "", "aperture blades (polygon sides)", element_bits::kPolygon),
+    param<&ElementParams::seed>("seed", 0, 4294967295.0, "", "random seed of the rays (same seed, same rays everywhere)",
+        element_bits::kRays),
+    choice<&ElementParams::blend>("blend", kBlendModeNames,
+        "`add` (light adds, HDR-correct), `screen` (soft add for display images), `over` (alpha over)"),
+};
+
+//! Per-type defaults: ElementParams{} with the fields a type needs set to what looks right.
+ElementParams defaultElement(ElementType type);
 
 //! Renders one element centred in an image of 2*ceil(half extent) pixels a side: premultiplied
 //! linear RGBA, alpha = coverage. With aspect 1, zero at distances >= radiusPx + 1 pixel from

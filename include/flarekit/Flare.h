@@ -1,4 +1,4 @@
-// Sprite lens flares (Tanczos 1999, seed 002): a preset's elements placed along the flare
+// Sprite lens flares (Michael Tanczos, "The Art of Modeling Lens Flares", 1999): a preset's elements placed along the flare
 // vector from the screen centre through the light, composited onto a linear-light image.
 #pragma once
 
@@ -17,6 +17,17 @@ struct Preset {
     float intensity = 1.f;  //!< multiplies every element
     std::vector<ElementParams> elements;
 };
+
+inline constexpr Param<Preset> kPresetParams[] = {
+    param<&Preset::intensity>("intensity", 0, 1000, "", "multiplies every element"),
+};
+
+//! Most elements a preset may hold: far more than any real flare, small enough to bound work.
+inline constexpr std::size_t kMaxPresetElements = 256;
+
+//! Every field of a preset against kPresetParams and kElementParams: the check JSON presets
+//! and presets built in code both go through ("element[3].size: expected ...").
+Status validatePreset(const Preset& preset);
 
 //! Parses and validates a preset. `source` names the file in error messages, e.g.
 //! "my.json: element[3].size: expected a number in [0, 4], got \"big\"".
@@ -60,9 +71,15 @@ struct LightSearchOptions {
     //! light source in an 8-bit photo is near 255, while the brightest pixel of an overcast or
     //! indoor frame without a light is usually well below.
     float minLuminance = 0.5f;
-    //! A light's pixels are those >= nearPeak * peak ("the pixels near the maximum", issue 3);
+    //! A light's pixels are those >= nearPeak * peak ("the pixels near the maximum");
     //! 0.9 keeps a clipped sun's disc and its hottest halo, not the whole sky.
     float nearPeak = 0.9f;
+};
+inline constexpr Param<LightSearchOptions> kLightSearchParams[] = {
+    param<&LightSearchOptions::minLuminance>("light-threshold", 0, 1e6, "linear",
+        "--light auto: smallest peak linear luminance that counts as a light"),
+    param<&LightSearchOptions::nearPeak>("near-peak", 0, 1, "of the peak",
+        "--light auto: a light's pixels are those at least this fraction of the peak"),
 };
 
 struct FoundLight {

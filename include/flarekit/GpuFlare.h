@@ -1,4 +1,4 @@
-// The flare's GPU half (issue 5): the temporal filter, the sprite flare and the tone map run
+// The flare's GPU half: the temporal filter, the sprite flare and the tone map run
 // on the GPU and read the sun's coverage from the 1x1 texture a GpuVisibility method leaves,
 // so a frame loop never waits for the GPU to learn how bright the flare is (GPG2 texture
 // masking: "no CPU read-back"). Each reads the same as its CPU twin (TemporalFilter,

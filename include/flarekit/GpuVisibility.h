@@ -1,4 +1,4 @@
-// GPU sun visibility, one interface for every method of the seeds (issue 5): after the scene
+// GPU sun visibility, one interface for every method of the seed articles: after the scene
 // pass, measure() starts the method on that frame; its newest result sits in a 1x1 R32F
 // texture on the GPU (what flare shaders read: no CPU read-back in the frame loop), and
 // latestCoverage() fetches it for reporting. A GL context must be current.

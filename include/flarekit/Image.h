@@ -39,7 +39,7 @@ private:
 
 static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba must alias four packed floats");
 
-//! Largest accepted width or height, in pixels (issue 3: "> 32768-pixel image" is rejected).
+//! Largest accepted width or height, in pixels (a "> 32768-pixel image" is rejected as bad input).
 inline constexpr int kMaxImageSide = 32768;
 //! Largest accepted pixel count: 2^28 pixels is 4 GiB of float RGBA, a sixth of a 24 GiB machine.
 inline constexpr std::size_t kMaxImagePixels = std::size_t(1) << 28;

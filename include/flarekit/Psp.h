@@ -1,4 +1,4 @@
-// The Burnout Dominator lens flare run on an emulated PSP Graphics Engine (issue 7,
+// The Burnout Dominator lens flare run on an emulated PSP Graphics Engine (
 // burnout-dominator-psp-lens-flare.md): the game's frame as a GE display list (scene, 14x14
 // visibility mask, bilinear chain to one coverage byte, render into the flare texture's CLUT
 // through a 565 alias with a write mask and a striped depth buffer, flare draw), executed by a

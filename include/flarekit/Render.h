@@ -20,6 +20,11 @@ struct RenderOptions {
     bool shadows = true;
     double shadowRange = 160;
 };
+//! The sample counts every GL 4.5 implementation supports for RGBA8/depth targets.
+inline constexpr int kMsaaSampleCounts[] = {1, 2, 4, 8};
+inline constexpr Param<RenderOptions> kRenderParams[] = {
+    oneOf<&RenderOptions::msaaSamples>("msaa", kMsaaSampleCounts, "samples", "samples per pixel of the scene pass"),
+};
 
 //! A GL scene renderer that keeps its programs, targets and the scene's mesh between frames,
 //! so an animation pays only for drawing. A GL context must be current while it lives; it

@@ -7,44 +7,36 @@
 #pragma once
 
 #include "flarekit/Flare.h"
+#include "flarekit/Param.h"
 #include "flarekit/Result.h"
 
 namespace flarekit {
 
-//! One tunable: described once, read by validation, the CLI's help and range checks.
-struct TemporalParamSpec {
-    const char* name;  //!< CLI option, e.g. "attack"
-    double defaultValue, min, max;
-    const char* help;
-};
-
 //! Attack 0.04 s: about one frame at 30 fps, so a sun stepping out from behind a tree lights up
 //! at once. Release 0.12 s: three frames, long enough to swallow a single frame of raycast or
 //! 8-bit mask noise, short enough that the flare still dies with the sun behind a pole.
-inline constexpr TemporalParamSpec kAttackSpec{"attack", 0.04, 0.0, 10.0,
-                                               "coverage rise time constant, seconds (sun appearing)"};
-inline constexpr TemporalParamSpec kReleaseSpec{"release", 0.12, 0.0, 10.0,
-                                                "coverage fall time constant, seconds (sun hidden)"};
 //! Guard band 0.08 of the shorter side: the flare is full strength 58 px inside a 720p frame's
 //! edge and gone at the edge, where on-screen methods lose the disc anyway.
-inline constexpr TemporalParamSpec kGuardBandSpec{"guard-band", 0.08, 0.0, 0.5,
-                                                  "edge fade width, fraction of the shorter image side"};
 //! Adaptation strength 0.6: staring at the fully visible sun dims exposure to 1 / 1.6.
-inline constexpr TemporalParamSpec kAdaptStrengthSpec{
-    "adapt-strength", 0.6, 0.0, 10.0, "exposure dimming when staring at the visible sun (0 = off)"};
 //! The eye closes down faster than it opens up (roughly 0.3 s vs 1.5 s for a pupil).
-inline constexpr TemporalParamSpec kAdaptDarkenSpec{"adapt-darken", 0.3, 0.0, 30.0,
-                                                    "exposure darkening time constant, seconds"};
-inline constexpr TemporalParamSpec kAdaptBrightenSpec{"adapt-brighten", 1.5, 0.0, 30.0,
-                                                      "exposure recovery time constant, seconds"};
-
 struct TemporalParams {
-    double attackSeconds = kAttackSpec.defaultValue;
-    double releaseSeconds = kReleaseSpec.defaultValue;
-    double guardBand = kGuardBandSpec.defaultValue;
-    double adaptStrength = kAdaptStrengthSpec.defaultValue;
-    double adaptDarkenSeconds = kAdaptDarkenSpec.defaultValue;
-    double adaptBrightenSeconds = kAdaptBrightenSpec.defaultValue;
+    double attackSeconds = 0.04;
+    double releaseSeconds = 0.12;
+    double guardBand = 0.08;
+    double adaptStrength = 0.6;
+    double adaptDarkenSeconds = 0.3;
+    double adaptBrightenSeconds = 1.5;
+};
+
+//! The keys are also the CLI flags (--attack, --guard-band, ...).
+inline constexpr Param<TemporalParams> kTemporalParams[] = {
+    param<&TemporalParams::attackSeconds>("attack", 0, 10, "s", "coverage rise time constant (sun appearing)"),
+    param<&TemporalParams::releaseSeconds>("release", 0, 10, "s", "coverage fall time constant (sun hidden)"),
+    param<&TemporalParams::guardBand>("guard-band", 0, 0.5, "shorter side", "edge fade width"),
+    param<&TemporalParams::adaptStrength>("adapt-strength", 0, 10, "",
+        "exposure dimming when staring at the visible sun (0 = off)"),
+    param<&TemporalParams::adaptDarkenSeconds>("adapt-darken", 0, 30, "s", "exposure darkening time constant"),
+    param<&TemporalParams::adaptBrightenSeconds>("adapt-brighten", 0, 30, "s", "exposure recovery time constant"),
 };
 
 //! Range check of every field; the error names the field ("guard-band: expected ...").

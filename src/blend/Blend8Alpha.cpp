@@ -1,4 +1,4 @@
-// Span loops for the alpha modes of seed 002. Each pixel goes through the inline formula in
+// Span loops for the alpha modes of Tanczos 1999. Each pixel goes through the inline formula in
 // Blend.h, so the exhaustive tests of the formulas cover these loops too.
 #include "flarekit/Blend.h"
 

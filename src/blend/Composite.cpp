@@ -5,18 +5,14 @@
 
 namespace flarekit {
 
-namespace {
-constexpr std::array<std::string_view, 3> kBlendNames = {"add", "screen", "over"};
-}
-
 std::optional<BlendMode> parseBlendMode(std::string_view name) {
-    for (std::size_t i = 0; i < kBlendNames.size(); ++i) {
-        if (kBlendNames[i] == name) return BlendMode(i);
+    for (std::size_t i = 0; i < kBlendModeNames.size(); ++i) {
+        if (kBlendModeNames[i] == name) return BlendMode(i);
     }
     return std::nullopt;
 }
 
-std::string_view blendModeName(BlendMode mode) { return kBlendNames[std::size_t(mode)]; }
+std::string_view blendModeName(BlendMode mode) { return kBlendModeNames[std::size_t(mode)]; }
 
 void compositeSpan(BlendMode mode, const float* src, float* dst, std::size_t n) {
     switch (mode) {

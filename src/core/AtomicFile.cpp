@@ -10,15 +10,6 @@ namespace flarekit {
 
 namespace fs = std::filesystem;
 
-std::string firstLine(const std::string& text) {
-    std::size_t begin = text.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) return {};
-    std::size_t end = text.find_first_of("\r\n", begin);
-    std::string line = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.pop_back();
-    return line;
-}
-
 Status writeAtomically(const std::string& path, const std::function<Status(const std::string&)>& write) {
     static std::atomic<int> counter{0};
     const fs::path target(path);

@@ -13,7 +13,4 @@ namespace flarekit {
 //! otherwise. The temporary name keeps path's extension so format detection still works.
 Status writeAtomically(const std::string& path, const std::function<Status(const std::string&)>& write);
 
-//! The first line of a (possibly multi-line) library message, trimmed.
-std::string firstLine(const std::string& text);
-
 }  // namespace flarekit

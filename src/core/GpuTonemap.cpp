@@ -17,7 +17,9 @@ struct GpuTonemap::Impl {
 Result<GpuTonemap> GpuTonemap::create(int width, int height) {
     if (width < 1 || height < 1) return invalidInput("tonemap: empty frame");
     auto program = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                    {GL_FRAGMENT_SHADER, "tonemap_aces.frag", shaders::tonemap_aces_frag}});
+                                    {GL_FRAGMENT_SHADER, "tonemap_aces.frag",
+                                     std::string("#version 450 core\n") + shaders::tone_curves_glsl +
+                                         shaders::tonemap_aces_frag}});
     if (!program) return program.error();
     auto m = std::make_unique<Impl>();
     m->width = width, m->height = height;
@@ -40,7 +42,7 @@ Status GpuTonemap::apply(const SceneRenderer& source, unsigned exposureTexture, 
         return invalidInput("tonemap: frame size differs from the display target's");
     }
     const GLuint p = m->program.get();
-    glProgramUniform1i(p, glGetUniformLocation(p, "exposureChannel"), exposureTexture ? channel : -1);
+    glProgramUniform1i(p, gl::uniformLocation(p, "exposureChannel"), exposureTexture ? channel : -1);
     glBindFramebuffer(GL_FRAMEBUFFER, m->target.get());
     glViewport(0, 0, m->width, m->height);
     glDisable(GL_BLEND);

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "core/AtomicFile.h"
+#include "core/FirstLine.h"
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
 

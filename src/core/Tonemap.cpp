@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/Parallel.h"
+#include "core/ToneCurves.h"
 
 namespace flarekit {
 
@@ -13,7 +14,7 @@ void tonemapAcesFitted(Image& image, float exposure) {
             for (int i = 0; i < image.width() * 4; ++i) {
                 if (i % 4 == 3) continue;  // alpha untouched
                 const float x = std::max(0.f, p[i] * exposure);
-                p[i] = std::clamp(x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f), 0.f, 1.f);
+                p[i] = acesFitted(x);
             }
         }
     });

@@ -64,23 +64,17 @@ int DemoAnimation::frameCount() const { return m->settings.frames; }
 std::size_t DemoAnimation::primitiveCount() const { return m->caster.primitiveCount(); }
 
 Status validateDemoSettings(const DemoSettings& settings) {
-    if (settings.frames < 1 || settings.frames > 100000) {
-        return invalidInput("frames: expected an integer in [1, 100000], got " + std::to_string(settings.frames));
-    }
     if (settings.width < 16 || settings.height < 16 || settings.width > 16384 || settings.height > 16384) {
         return invalidInput("size: expected each side in [16, 16384], got " + std::to_string(settings.width) + "x" +
                             std::to_string(settings.height));
     }
+    if (Status s = validateParams<DemoSettings>(settings, kDemoParams, ""); !s) return s;
     if (settings.method != "raycast" && !isGpuVisibilityMethod(settings.method)) {
         return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" + settings.method + "'");
     }
     if (settings.conditionalRender && settings.method != "query") {
         return invalidInput("conditional-render: needs --method query (the only method with an occlusion query), got '" +
                             settings.method + "'");
-    }
-    if (settings.raycastSamplesPerSide < 1 || settings.raycastSamplesPerSide > 4096) {
-        return invalidInput("samples: expected an integer in [1, 4096], got " +
-                            std::to_string(settings.raycastSamplesPerSide));
     }
     return validateTemporalParams(settings.temporal);
 }

@@ -1,4 +1,4 @@
-// Secondary disc (seed 002, Figure 11): "a ring of any color, smoothly transition to another
+// Secondary disc (Tanczos 1999, Figure 11): "a ring of any color, smoothly transition to another
 // color using smaller and smaller rings until your final ring has a radius of 0", blurred.
 // The colour runs linearly from innerColor at the centre to color at the rim; the edge is
 // box-filtered over max(pixel, softness) (the seed's blur), kept inside the rim.

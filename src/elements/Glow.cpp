@@ -1,4 +1,4 @@
-// Glow: the main flare's soft core. Falloff from seed 002 ("Parts of a Flare"):
+// Glow: the main flare's soft core. Falloff from Tanczos 1999 ("Parts of a Flare"):
 //     Intensity = exp(-i*i*0.006)*0.50 + exp(-i*0.03)*(1-0.50)
 // with i in pixels of a sprite of about 128 pixels' radius. To keep that shape at any size,
 // i is the distance scaled so the rim (d = 1) is i = 128, and the curve is shifted and

@@ -1,4 +1,4 @@
-// Streaks and rays (seed 002): thin antialiased spikes radiating from the centre. Streaks are
+// Streaks and rays (Tanczos 1999): thin antialiased spikes radiating from the centre. Streaks are
 // "evenly spaced" (4 streaks are 90 degrees apart) and full length; rays are "lines of random
 // length". A spike is the half-strip along its angle, `thickness` wide, whose brightness fades
 // as (1 - along/length)^falloff; across it, coverage is box-filtered over one pixel.

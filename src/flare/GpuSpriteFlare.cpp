@@ -97,10 +97,10 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     if (!result.sunInFront || !std::isfinite(result.sunPixel.x) || !std::isfinite(result.sunPixel.y)) return result;
     const GLuint p = m->program.get();
     const int w = target.width(), h = target.height();
-    glProgramUniform1i(p, glGetUniformLocation(p, "weightChannel"), channel);
-    glProgramUniform1f(p, glGetUniformLocation(p, "brightnessScale"), result.flareIntensity);
-    glProgramUniform2f(p, glGetUniformLocation(p, "frameSize"), float(w), float(h));
-    const GLint centreAt = glGetUniformLocation(p, "centre"), halfAt = glGetUniformLocation(p, "halfSize");
+    glProgramUniform1i(p, gl::uniformLocation(p, "weightChannel"), channel);
+    glProgramUniform1f(p, gl::uniformLocation(p, "brightnessScale"), result.flareIntensity);
+    glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(w), float(h));
+    const GLint centreAt = gl::uniformLocation(p, "centre"), halfAt = gl::uniformLocation(p, "halfSize");
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
     glViewport(0, 0, w, h);

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/JsonText.h"
-#include "flare/ParamTable.h"
+#include "core/ParamJson.h"
 #include "flare/PresetFiles.h"
 #include "flarekit/Flare.h"
 
@@ -25,165 +25,79 @@ using json = nlohmann::json;
 
 namespace {
 
-//! Most elements a preset may hold: far more than any real flare, small enough to bound work.
-constexpr std::size_t kMaxElements = 256;
-
-std::string formatRange(double lo, double hi) {
-    std::ostringstream os;
-    os << "[" << lo << ", " << hi << "]";
-    return os.str();
+std::string elementTypeList() {
+    std::string names;
+    for (int i = 0; i < kElementTypeCount; ++i) {
+        names += std::string(i ? ", " : "") + "\"" + std::string(elementTypeName(ElementType(i))) + "\"";
+    }
+    return names;
 }
 
-std::string got(const json& value) { return jsonExcerpt(value); }
-
-class Validator {
-public:
-    explicit Validator(std::string source) : m_source(std::move(source)) {}
-
-    Error fail(const std::string& field, const std::string& what) const {
-        return invalidInput(m_source + ": " + field + ": " + what);
+Result<ElementParams> readElement(const json& e, const JsonPlace& at) {
+    if (!e.is_object()) return at.fail("expected an object, got " + jsonExcerpt(e));
+    const auto typeIt = e.find("type");
+    if (typeIt == e.end()) return (at / "type").fail("missing; expected one of " + elementTypeList());
+    auto type = typeIt->is_string() ? parseElementType(typeIt->get<std::string>()) : std::nullopt;
+    if (!type) return (at / "type").fail("expected one of " + elementTypeList() + ", got " + jsonExcerpt(*typeIt));
+    ElementParams p = defaultElement(*type);
+    if (auto err = readParams<ElementParams>(e, kElementParams, p, at, {"type"}, typeBit(*type),
+                                             elementTypeName(*type))) {
+        return *err;
     }
-
-    std::optional<Error> number(const json& v, const std::string& field, double lo, double hi, double& out) const {
-        if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo || v.get<double>() > hi) {
-            return fail(field, "expected a number in " + formatRange(lo, hi) + ", got " + got(v));
-        }
-        out = v.get<double>();
-        return std::nullopt;
-    }
-
-    std::optional<Error> integer(const json& v, const std::string& field, double lo, double hi, double& out) const {
-        const bool isInt = v.is_number_integer() ||
-                           (v.is_number_float() && std::isfinite(v.get<double>()) && v.get<double>() == std::floor(v.get<double>()));
-        if (!isInt || v.get<double>() < lo || v.get<double>() > hi) {
-            return fail(field, "expected an integer in " + formatRange(lo, hi) + ", got " + got(v));
-        }
-        out = v.get<double>();
-        return std::nullopt;
-    }
-
-    std::optional<Error> color(const json& v, const std::string& field, double lo, double hi, Rgb& out) const {
-        const auto bad = [&] {
-            return fail(field, "expected an array of 3 numbers in " + formatRange(lo, hi) + ", got " + got(v));
-        };
-        if (!v.is_array() || v.size() != 3) return bad();
-        for (std::size_t c = 0; c < 3; ++c) {
-            if (!v[c].is_number() || !std::isfinite(v[c].get<double>()) || v[c].get<double>() < lo ||
-                v[c].get<double>() > hi) {
-                return bad();
-            }
-            out[c] = v[c].get<float>();
-        }
-        return std::nullopt;
-    }
-
-    std::optional<Error> field(const FieldSpec& spec, const json& v, const std::string& path, ElementParams& p) const {
-        switch (spec.kind) {
-            case FieldKind::Number: {
-                double x = 0;
-                if (auto e = number(v, path, spec.min, spec.max, x)) return e;
-                p.*std::get<float ElementParams::*>(spec.member) = float(x);
-                return std::nullopt;
-            }
-            case FieldKind::Integer: {
-                double x = 0;
-                if (auto e = integer(v, path, spec.min, spec.max, x)) return e;
-                p.*std::get<int ElementParams::*>(spec.member) = int(x);
-                return std::nullopt;
-            }
-            case FieldKind::Seed: {
-                double x = 0;
-                if (auto e = integer(v, path, spec.min, spec.max, x)) return e;
-                p.*std::get<std::uint32_t ElementParams::*>(spec.member) = std::uint32_t(x);
-                return std::nullopt;
-            }
-            case FieldKind::Color:
-                return color(v, path, spec.min, spec.max, p.*std::get<Rgb ElementParams::*>(spec.member));
-            case FieldKind::OptionalColor: {
-                Rgb c{};
-                if (auto e = color(v, path, spec.min, spec.max, c)) return e;
-                p.*std::get<std::optional<Rgb> ElementParams::*>(spec.member) = c;
-                return std::nullopt;
-            }
-            case FieldKind::Blend: {
-                auto mode = v.is_string() ? parseBlendMode(v.get<std::string>()) : std::nullopt;
-                if (!mode) return fail(path, "expected one of \"add\", \"screen\", \"over\", got " + got(v));
-                p.*std::get<BlendMode ElementParams::*>(spec.member) = *mode;
-                return std::nullopt;
-            }
-        }
-        return std::nullopt;
-    }
-
-    Result<ElementParams> element(const json& e, std::size_t index) const {
-        const std::string at = "element[" + std::to_string(index) + "]";
-        if (!e.is_object()) return fail(at, "expected an object, got " + got(e));
-        std::string typeNames;
-        for (int i = 0; i < kElementTypeCount; ++i) {
-            typeNames += std::string(i ? ", " : "") + "\"" + std::string(elementTypeName(ElementType(i))) + "\"";
-        }
-        const auto typeIt = e.find("type");
-        if (typeIt == e.end()) return fail(at + ".type", "missing; expected one of " + typeNames);
-        auto type = typeIt->is_string() ? parseElementType(typeIt->get<std::string>()) : std::nullopt;
-        if (!type) return fail(at + ".type", "expected one of " + typeNames + ", got " + got(*typeIt));
-
-        ElementParams p = defaultElement(*type);
-        for (const auto& [key, value] : e.items()) {
-            if (key == "type") continue;
-            const auto fields = elementFields();
-            const auto spec = std::find_if(fields.begin(), fields.end(), [&](const FieldSpec& f) {
-                return f.key == key && (f.types & typeBit(*type));
-            });
-            if (spec == fields.end()) {
-                std::string known = "type";
-                for (const FieldSpec& f : fields) {
-                    if (f.types & typeBit(*type)) known += ", " + std::string(f.key);
-                }
-                return fail(at + "." + key, "unknown key for a " + std::string(elementTypeName(*type)) +
-                                                " (expected one of: " + known + ")");
-            }
-            if (auto err = field(*spec, value, at + "." + key, p)) return *err;
-        }
-        return p;
-    }
-
-private:
-    std::string m_source;
-};
+    return p;
+}
 
 }  // namespace
+
+Status validatePreset(const Preset& preset) {
+    if (Status s = validateParams<Preset>(preset, kPresetParams, ""); !s) return s;
+    if (preset.elements.empty() || preset.elements.size() > kMaxPresetElements) {
+        return invalidInput("elements: expected 1 to " + std::to_string(kMaxPresetElements) + " elements, got " +
+                            std::to_string(preset.elements.size()));
+    }
+    for (std::size_t i = 0; i < preset.elements.size(); ++i) {
+        const ElementParams& e = preset.elements[i];
+        const std::string at = "element[" + std::to_string(i) + "].";
+        if (int(e.type) < 0 || int(e.type) >= kElementTypeCount) {
+            return invalidInput(at + "type: expected one of " + elementTypeList());
+        }
+        if (Status s = validateParams<ElementParams>(e, kElementParams, at, typeBit(e.type)); !s) return s;
+    }
+    return Ok{};
+}
 
 Result<Preset> parsePreset(const std::string& jsonText, const std::string& source) {
     auto parsed = parseJsonText(jsonText, source);
     if (!parsed) return parsed.error();
     const json& doc = *parsed;
-    Validator check(source);
-    if (!doc.is_object()) return check.fail("(top level)", "expected an object, got " + got(doc));
+    const JsonPlace top(source);
+    if (!doc.is_object()) return top.fail("expected an object, got " + jsonExcerpt(doc));
     Preset preset;
     preset.name = fs::path(source).stem().string();
     for (const auto& [key, value] : doc.items()) {
         if (key == "name" || key == "description") {
-            if (!value.is_string()) return check.fail(key, "expected a string, got " + got(value));
+            if (!value.is_string()) return (top / key).fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? preset.name : preset.description) = value.get<std::string>();
-        } else if (key == "intensity") {
-            double x = 0;
-            if (auto e = check.number(value, key, 0, 1000, x)) return *e;
-            preset.intensity = float(x);
         } else if (key == "elements") {
-            if (!value.is_array() || value.empty() || value.size() > kMaxElements) {
-                return check.fail(key, "expected an array of 1 to " + std::to_string(kMaxElements) +
-                                           " elements, got " + got(value));
+            if (!value.is_array() || value.empty() || value.size() > kMaxPresetElements) {
+                return (top / key).fail("expected an array of 1 to " + std::to_string(kMaxPresetElements) +
+                                        " elements, got " + jsonExcerpt(value));
             }
             for (std::size_t i = 0; i < value.size(); ++i) {
-                auto element = check.element(value[i], i);
+                auto element = readElement(value[i], JsonPlace(source, "element").index(i));
                 if (!element) return element.error();
                 preset.elements.push_back(element.value());
             }
+        } else if (const Param<Preset>* p = findParam<Preset>(kPresetParams, key)) {
+            auto v = readParamValue(*p, value, top / key);
+            if (!v) return v.error();
+            p->set(preset, *v);
         } else {
-            return check.fail(key, "unknown key (expected one of: name, description, intensity, elements)");
+            return (top / key).fail("unknown key (expected one of: name, description, intensity, elements)");
         }
     }
-    if (preset.elements.empty()) return check.fail("elements", "missing; expected an array of elements");
+    if (preset.elements.empty()) return (top / "elements").fail("missing; expected an array of elements");
+    if (Status s = validatePreset(preset); !s) return invalidInput(source + ": " + s.error().message);
     return preset;
 }
 
@@ -250,24 +164,20 @@ Result<Preset> loadPreset(const std::string& nameOrPath) {
 std::string presetParameterReference() {
     std::ostringstream os;
     os << "| key | applies to | range | unit | meaning |\n|---|---|---|---|---|\n";
-    os << "| `type` | all | " ;
+    os << "| `type` | all | ";
     for (int i = 0; i < kElementTypeCount; ++i) os << (i ? ", " : "") << "`" << elementTypeName(ElementType(i)) << "`";
     os << " | | element kind (required) |\n";
-    for (const FieldSpec& f : elementFields()) {
+    const auto none = [](const Param<ElementParams>&) { return std::string(); };
+    os << markdownRows<ElementParams>(kElementParams, nullptr, none, [](const Param<ElementParams>& f) {
+        if ((f.appliesTo & kAllElementTypes) == kAllElementTypes) return std::string("all | ");
         std::string types;
-        if (f.types == kAllTypes) {
-            types = "all";
-        } else {
-            for (int i = 0; i < kElementTypeCount; ++i) {
-                if (f.types & (1u << unsigned(i))) types += (types.empty() ? "" : ", ") + std::string(elementTypeName(ElementType(i)));
+        for (int i = 0; i < kElementTypeCount; ++i) {
+            if (f.appliesTo & typeBit(ElementType(i))) {
+                types += (types.empty() ? "" : ", ") + std::string(elementTypeName(ElementType(i)));
             }
         }
-        std::string range = f.kind == FieldKind::Blend ? "`add`, `screen`, `over`"
-                            : f.kind == FieldKind::Color || f.kind == FieldKind::OptionalColor
-                                ? "3 x " + formatRange(f.min, f.max)
-                                : formatRange(f.min, f.max);
-        os << "| `" << f.key << "` | " << types << " | " << range << " | " << f.unit << " | " << f.doc << " |\n";
-    }
+        return types + " | ";
+    });
     os << "\nDefaults per type:\n\n| type | size | color | inner_color | intensity | type-specific |\n|---|---|---|---|---|---|\n";
     for (int i = 0; i < kElementTypeCount; ++i) {
         const ElementParams p = defaultElement(ElementType(i));

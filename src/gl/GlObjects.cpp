@@ -4,7 +4,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/AtomicFile.h"
+#include <cctype>
+#include <cstdlib>
+#include <string>
+#include <utility>
+
+#include "core/FirstLine.h"
 
 namespace flarekit::gl {
 
@@ -38,7 +43,59 @@ Result<Framebuffer> makeFramebuffer(GLuint color, GLuint depth) {
     return fb;
 }
 
+namespace {
+
+//! The first misspelt uniform since the last checkError() on this thread.
+thread_local std::string t_missingUniform;
+
+bool strictUniforms() {
+#ifndef NDEBUG
+    return true;
+#else
+    static const bool strict = [] {
+        const char* env = std::getenv("FLAREKIT_STRICT_GL");
+        return env && std::string(env) == "1";
+    }();
+    return strict;
+#endif
+}
+
+//! Whether `identifier` appears as a whole word in the text of a shader attached to `program`.
+bool sourcesMention(GLuint program, const std::string& identifier) {
+    GLint count = 0;
+    glGetProgramiv(program, GL_ATTACHED_SHADERS, &count);
+    std::vector<GLuint> attached(std::size_t(std::max(count, 0)));
+    if (count > 0) glGetAttachedShaders(program, count, nullptr, attached.data());
+    for (GLuint shader : attached) {
+        GLint length = 0;
+        glGetShaderiv(shader, GL_SHADER_SOURCE_LENGTH, &length);
+        std::string text(std::size_t(std::max(length, 1)), '\0');
+        glGetShaderSource(shader, length, nullptr, text.data());
+        const auto isWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+        for (std::size_t at = text.find(identifier); at != std::string::npos; at = text.find(identifier, at + 1)) {
+            const std::size_t end = at + identifier.size();
+            if ((at == 0 || !isWord(text[at - 1])) && (end >= text.size() || !isWord(text[end]))) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+GLint uniformLocation(GLuint program, const char* name) {
+    const GLint location = glGetUniformLocation(program, name);
+    if (location >= 0 || !strictUniforms() || !t_missingUniform.empty()) return location;
+    std::string identifier(name);
+    identifier = identifier.substr(0, identifier.find_first_of("[."));  // "tints[3]" -> "tints"
+    if (!sourcesMention(program, identifier)) t_missingUniform = name;
+    return location;
+}
+
 Status checkError(const std::string& what) {
+    if (!t_missingUniform.empty()) {
+        const std::string name = std::exchange(t_missingUniform, {});
+        return internalError("OpenGL: " + what + ": the program has no uniform '" + name + "'");
+    }
     if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
         return internalError("OpenGL: " + what + " failed (error " + hex(err) + ")");
     }

@@ -84,9 +84,15 @@ Status checkError(const std::string& what);
 //! Waits for the GPU. Read in bands, so frames past 2 GiB need no GLsizei > 2^31.
 Result<Image> readTextureRgba(GLuint texture, int width, int height, bool flipRows = true);
 
+//! glGetUniformLocation, with a check: a name the program's shader text does not contain (a
+//! misspelt uniform, which GL would silently ignore as location -1) is an error that the next
+//! checkError() reports, in debug builds and wherever FLAREKIT_STRICT_GL=1 (every GL test).
+//! A declared uniform the compiler optimised away stays -1 without an error.
+GLint uniformLocation(GLuint program, const char* name);
+
 //! glProgramUniform3f of a (double) Vec3 by uniform name.
 inline void setUniform(GLuint program, const char* name, Vec3 v) {
-    glProgramUniform3f(program, glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
+    glProgramUniform3f(program, uniformLocation(program, name), float(v.x), float(v.y), float(v.z));
 }
 
 struct ShaderSource {

@@ -58,8 +58,8 @@ void FrameDepthProgram::bindDepth(const SceneRenderer& renderer) const {
     const GLuint program = forFrame(renderer);
     const std::vector<float>& positions = samplePositions(samples);
     const int n = std::min(samples, 16);
-    glProgramUniform1i(program, glGetUniformLocation(program, "frameSampleCount"), n);
-    glProgramUniform2fv(program, glGetUniformLocation(program, "frameSamplePositions"), n, positions.data());
+    glProgramUniform1i(program, gl::uniformLocation(program, "frameSampleCount"), n);
+    glProgramUniform2fv(program, gl::uniformLocation(program, "frameSamplePositions"), n, positions.data());
     glBindTextureUnit(0, renderer.multisampleDepthTexture());
 }
 

@@ -17,9 +17,43 @@ Result<std::unique_ptr<GpuVisibility>> makeTextureMaskScreenMethod();
 Result<std::unique_ptr<GpuVisibility>> makeBurnoutMethod();
 }  // namespace occlusion
 
+namespace {
+
+using MakeMethod = Result<std::unique_ptr<GpuVisibility>> (*)(const Scene& world, const GpuVisibilityOptions& options);
+
+//! The one registry of GPU methods: the contract name and its factory. The name list, --help,
+//! validation and createGpuVisibility all read it.
+struct MethodEntry {
+    const char* name;
+    MakeMethod make;
+};
+
+Result<std::unique_ptr<GpuVisibility>> makePbo(const Scene&, const GpuVisibilityOptions& options) {
+    if (options.pboRing < 1 || options.pboRing > 16) {
+        return invalidInput("pbo ring: expected 1 to 16 buffers, got " + std::to_string(options.pboRing));
+    }
+    return occlusion::makePboMethod(options.pboRing);
+}
+
+const MethodEntry kMethods[] = {
+    {"readback", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeReadbackMethod(); }},
+    {"pbo", makePbo},
+    {"query", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeQueryMethod(); }},
+    {"texture-mask",
+     [](const Scene& world, const GpuVisibilityOptions& o) { return occlusion::makeTextureMaskMethod(world, o.textureMaskVariant); }},
+    {"texture-mask-screen", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeTextureMaskScreenMethod(); }},
+    {"burnout", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeBurnoutMethod(); }},
+    {"compute", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeComputeMethod(); }},
+};
+
+}  // namespace
+
 const std::vector<std::string>& gpuVisibilityMethods() {
-    static const std::vector<std::string> names = {"readback",           "pbo",     "query",  "texture-mask",
-                                                   "texture-mask-screen", "burnout", "compute"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (const MethodEntry& m : kMethods) out.emplace_back(m.name);
+        return out;
+    }();
     return names;
 }
 
@@ -52,19 +86,9 @@ std::string visibilityMethodList() {
 
 Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,
                                                            const GpuVisibilityOptions& options) {
-    using namespace occlusion;
-    if (method == "readback") return makeReadbackMethod();
-    if (method == "pbo") {
-        if (options.pboRing < 1 || options.pboRing > 16) {
-            return invalidInput("pbo ring: expected 1 to 16 buffers, got " + std::to_string(options.pboRing));
-        }
-        return makePboMethod(options.pboRing);
+    for (const MethodEntry& m : kMethods) {
+        if (method == m.name) return m.make(world, options);
     }
-    if (method == "query") return makeQueryMethod();
-    if (method == "compute") return makeComputeMethod();
-    if (method == "texture-mask") return makeTextureMaskMethod(world, options.textureMaskVariant);
-    if (method == "texture-mask-screen") return makeTextureMaskScreenMethod();
-    if (method == "burnout") return makeBurnoutMethod();
     std::string list;
     for (const std::string& n : gpuVisibilityMethods()) list += (list.empty() ? "" : " ") + n;
     return invalidInput("method: '" + method + "' is not a GPU visibility method; expected one of: " + list);

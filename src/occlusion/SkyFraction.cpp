@@ -27,7 +27,7 @@ Result<GLuint> SkyFraction::update(const SunDiscView& v, const SceneRenderer& re
     }
     const bool multisampled = renderer.msaaSamples() > 1;
     const GLuint p = multisampled ? m_multisample.get() : m_single.get();
-    if (multisampled) glProgramUniform1i(p, glGetUniformLocation(p, "sampleCount"), renderer.msaaSamples());
+    if (multisampled) glProgramUniform1i(p, gl::uniformLocation(p, "sampleCount"), renderer.msaaSamples());
     glBindFramebuffer(GL_FRAMEBUFFER, m_target.get());
     glViewport(0, 0, m_width, m_height);
     glEnable(GL_SCISSOR_TEST);

@@ -83,9 +83,9 @@ void setSunDiscUniforms(GLuint p, const SunDiscView& v) {
     gl::setUniform(p, "camUp", v.up);
     gl::setUniform(p, "camForward", v.forward);
     gl::setUniform(p, "sunDir", v.sun);
-    glProgramUniform2f(p, glGetUniformLocation(p, "tanHalfFov"), float(v.tanHalfX), float(v.tanHalfY));
-    glProgramUniform2f(p, glGetUniformLocation(p, "frameSize"), float(v.width), float(v.height));
-    glProgramUniform1f(p, glGetUniformLocation(p, "sunChord2"), float(v.chord2));
+    glProgramUniform2f(p, gl::uniformLocation(p, "tanHalfFov"), float(v.tanHalfX), float(v.tanHalfY));
+    glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(v.width), float(v.height));
+    glProgramUniform1f(p, gl::uniformLocation(p, "sunChord2"), float(v.chord2));
 }
 
 }  // namespace flarekit::occlusion

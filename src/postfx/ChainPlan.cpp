@@ -4,32 +4,10 @@
 
 namespace flarekit::postfx {
 
-namespace {
-bool finite(float x) { return std::isfinite(x); }
-
-Status checkParams(const PostFxParams& p) {
-    if (p.ghosts.size() > std::size_t(kMaxGhosts)) return invalidInput("postfx: at most 32 ghosts, got " + std::to_string(p.ghosts.size()));
-    for (const GhostParams& g : p.ghosts) {
-        if (g.samples < 1 || g.samples > 64) return invalidInput("postfx: ghost samples: expected 1..64, got " + std::to_string(g.samples));
-        if (!finite(g.scale) || std::abs(g.scale) < 0.05f || !finite(g.blur) || !finite(g.threshold) || !finite(g.falloff)) {
-            return invalidInput("postfx: ghost: expected finite values and |scale| >= 0.05");
-        }
-    }
-    if (p.bloom.levels < 2 || p.bloom.levels > 12) return invalidInput("postfx: bloom.levels: expected 2..12, got " + std::to_string(p.bloom.levels));
-    if (p.starburst.spokes < 2 || p.starburst.spokes > kMaxSpokes) return invalidInput("postfx: starburst.spokes: expected 2..64");
-    if (!(p.starburst.width > 0.f)) return invalidInput("postfx: starburst.width: expected > 0");
-    for (float x : {p.bright.threshold, p.bright.knee, p.bloom.intensity, p.bloom.spread, p.halo.intensity, p.halo.radius,
-                    p.halo.thickness, p.streaks.intensity, p.streaks.length, p.chromatic.amount, p.dirt.intensity,
-                    p.tone.exposure, p.flareIntensity}) {
-        if (!finite(x) || x < 0.f) return invalidInput("postfx: parameters must be finite and non-negative");
-    }
-    return Ok{};
-}
-}  // namespace
 
 Result<ChainPlan> planChain(int width, int height, const PostFxParams& p) {
     if (width < 1 || height < 1) return invalidInput("postfx: empty image");
-    if (Status s = checkParams(p); !s) return s.error();
+    if (Status s = validatePostFxParams(p); !s) return invalidInput("postfx: " + s.error().message);
     ChainPlan plan;
     plan.input = {width, height};
     Size s{halfSize(width), halfSize(height)};

@@ -30,14 +30,21 @@ Result<Target> makeTarget(Size size) {
     return t;
 }
 
+//! The sizes C++ and GLSL share, defined once in C++ and handed to every pass shader.
+std::string sharedSizeDefines() {
+    return "#define FK_MAX_GHOSTS " + std::to_string(kMaxGhosts) + "\n#define FK_MAX_SPOKES " +
+           std::to_string(kMaxSpokes) + "\n#define FK_HALO_SAMPLES " + std::to_string(kHaloSamples) +
+           "\n#define FK_STREAK_TAPS " + std::to_string(kStreakTaps) + "\n";
+}
+
 Result<gl::Program> linkPass(const char* name, std::initializer_list<const char*> parts) {
-    std::string text = "#version 450 core\n";
+    std::string text = "#version 450 core\n" + sharedSizeDefines();
     text += shaders::postfx_common_glsl;
     for (const char* part : parts) text += part;
     return gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert}, {GL_FRAGMENT_SHADER, name, text}});
 }
 
-GLint at(GLuint p, const char* name) { return glGetUniformLocation(p, name); }
+GLint at(GLuint p, const char* name) { return gl::uniformLocation(p, name); }
 void set(GLuint p, const char* name, float v) { glProgramUniform1f(p, at(p, name), v); }
 void set(GLuint p, const char* name, int v) { glProgramUniform1i(p, at(p, name), v); }
 void set(GLuint p, const char* name, Vec2 v) { glProgramUniform2f(p, at(p, name), v.x, v.y); }
@@ -74,7 +81,7 @@ Result<GpuPostFx> GpuPostFx::create() {
         {&m->halo, "halo.frag", {shaders::halo_frag}},
         {&m->streaks, "streaks.frag", {shaders::streaks_frag}},
         {&m->lens, "lens.frag", {shaders::chromatic_glsl, shaders::starburst_glsl, shaders::lens_frag}},
-        {&m->composite, "composite.frag", {shaders::tone_curves_glsl, shaders::composite_frag}},
+        {&m->composite, "composite.frag", {shaders::tone_curves_glsl, shaders::tone_map_glsl, shaders::composite_frag}},
     };
     for (const Pass& pass : passes) {
         auto program = linkPass(pass.name, pass.parts);

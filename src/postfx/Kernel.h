@@ -98,6 +98,16 @@ void runPass(Image& out, const Kernel& kernel) {
     });
 }
 
+//! 1 / sqrt(2): the distance from the centre to a corner in [-1, 1] coordinates is sqrt(2).
+inline constexpr float kInvCornerDistance = 0.70710678f;
+
+//! The modern falloff of a ghost at normalised p (John Chapman, "Pseudo Lens Flare", 2013).
+inline float centreFalloff(Vec2 p, float exponent) {
+    if (exponent <= 0.f) return 1.f;
+    const float r = std::sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
+    return std::pow(std::max(0.f, 1.f - r), exponent);
+}
+
 //! Half the size, rounded up, never below 1: each level of the chain.
 inline int halfSize(int n) { return std::max(1, (n + 1) / 2); }
 

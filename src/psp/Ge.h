@@ -1,4 +1,4 @@
-// A software PSP Graphics Engine, the subset the Burnout Dominator lens flare needs (issue 7):
+// A software PSP Graphics Engine, the subset the Burnout Dominator lens flare needs:
 // display lists of GE commands executed in order; throughmode sprites and triangles with flat
 // or gouraud colour and texture coordinates; 565/5551/4444/8888 framebuffers with a stride;
 // a 16-bit depth buffer; 8888/565 and indexed T4/T8 textures through a CLUT loaded from memory

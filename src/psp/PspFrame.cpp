@@ -1,4 +1,4 @@
-// The game frames as display lists (issue 7, steps 1-6) and the harness that runs them, takes
+// The game frames as display lists (steps 1-6 of the trick as Rydgård's "The lens flare in Burnout" describes it) and the harness that runs them, takes
 // the dumps at the lists' SIGNAL markers and reads the results out of emulated memory.
 #include <algorithm>
 #include <cmath>

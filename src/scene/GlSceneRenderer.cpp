@@ -180,7 +180,7 @@ std::array<float, 16> SceneRenderer::Impl::drawShadowMap(const Scene& scene) {
         orthographicMatrix(m.shadowRange, m.shadowRange, 0.0, 2 * kShadowEyeDistance), lookAtMatrix(sunCamera));
     const GLuint p = m.shadowPass.get();
     const auto vp = toFloat(sunViewProjection);
-    glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, vp.data());
+    glProgramUniformMatrix4fv(p, gl::uniformLocation(p, "viewProjection"), 1, GL_FALSE, vp.data());
     glBindFramebuffer(GL_FRAMEBUFFER, m.shadowTarget.get());
     glViewport(0, 0, kShadowMapSize, kShadowMapSize);
     glEnable(GL_DEPTH_TEST);
@@ -220,14 +220,14 @@ Status SceneRenderer::draw(const Scene& scene) {
     glClear(GL_DEPTH_BUFFER_BIT);
 
     const GLuint s = m->sky.get();
-    glProgramUniformMatrix4fv(s, glGetUniformLocation(s, "inverseViewProjection"), 1, GL_FALSE, inv.data());
-    glProgramUniform2f(s, glGetUniformLocation(s, "viewportSize"), float(w), float(h));
+    glProgramUniformMatrix4fv(s, gl::uniformLocation(s, "inverseViewProjection"), 1, GL_FALSE, inv.data());
+    glProgramUniform2f(s, gl::uniformLocation(s, "viewportSize"), float(w), float(h));
     gl::setUniform(s, "sunDirection", scene.sun.direction);
     gl::setUniform(s, "sunRadiance", sunRadiance);
-    glProgramUniform1f(s, glGetUniformLocation(s, "cosSunRadius"),
+    glProgramUniform1f(s, gl::uniformLocation(s, "cosSunRadius"),
                        float(std::cos(scene.sun.angularRadiusDeg * std::numbers::pi / 180.0)));
-    glProgramUniform3fv(s, glGetUniformLocation(s, "horizonColor"), 1, kHorizon);
-    glProgramUniform3fv(s, glGetUniformLocation(s, "zenithColor"), 1, kZenith);
+    glProgramUniform3fv(s, gl::uniformLocation(s, "horizonColor"), 1, kHorizon);
+    glProgramUniform3fv(s, gl::uniformLocation(s, "zenithColor"), 1, kZenith);
     glBindVertexArray(m->vao.get());
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -236,25 +236,25 @@ Status SceneRenderer::draw(const Scene& scene) {
 
     if (m->vertexCount > 0) {
         const GLuint o = m->objects.get();
-        glProgramUniform1i(o, glGetUniformLocation(o, "shadowsEnabled"), m->shadows ? 1 : 0);
+        glProgramUniform1i(o, gl::uniformLocation(o, "shadowsEnabled"), m->shadows ? 1 : 0);
         if (m->shadows) {
             const auto shadow = m->drawShadowMap(scene);
-            glProgramUniformMatrix4fv(o, glGetUniformLocation(o, "shadowMatrix"), 1, GL_FALSE, shadow.data());
-            glProgramUniform1f(o, glGetUniformLocation(o, "shadowTexel"), float(2 * m->shadowRange / kShadowMapSize));
-            glProgramUniform1i(o, glGetUniformLocation(o, "sunShadow"), 0);
+            glProgramUniformMatrix4fv(o, gl::uniformLocation(o, "shadowMatrix"), 1, GL_FALSE, shadow.data());
+            glProgramUniform1f(o, gl::uniformLocation(o, "shadowTexel"), float(2 * m->shadowRange / kShadowMapSize));
+            glProgramUniform1i(o, gl::uniformLocation(o, "sunShadow"), 0);
             glBindTextureUnit(0, m->shadowMap.get());
             glBindFramebuffer(GL_FRAMEBUFFER, m->samples > 1 ? m->msTarget.get() : m->target.get());
             glViewport(0, 0, w, h);
             glBindVertexArray(m->vao.get());
         }
-        glProgramUniformMatrix4fv(o, glGetUniformLocation(o, "viewProjection"), 1, GL_FALSE, vp.data());
+        glProgramUniformMatrix4fv(o, gl::uniformLocation(o, "viewProjection"), 1, GL_FALSE, vp.data());
         gl::setUniform(o, "sunDirection", scene.sun.direction);
         gl::setUniform(o, "cameraPosition", scene.camera.position);
         gl::setUniform(o, "sunRadiance", sunRadiance);
         const float ambient[3] = {kAmbientShare * 0.5f * (kHorizon[0] + kZenith[0]),
                                   kAmbientShare * 0.5f * (kHorizon[1] + kZenith[1]),
                                   kAmbientShare * 0.5f * (kHorizon[2] + kZenith[2])};
-        glProgramUniform3fv(o, glGetUniformLocation(o, "ambient"), 1, ambient);
+        glProgramUniform3fv(o, gl::uniformLocation(o, "ambient"), 1, ambient);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);

@@ -54,8 +54,8 @@ Status GpuTemporalFilter::update(unsigned rawCoverageTexture, Point sunPixel, bo
                                  double dtSeconds) {
     const GLuint p = m->program.get();
     const TemporalParams& t = m->params;
-    auto set = [p](const char* name, double v) { glProgramUniform1f(p, glGetUniformLocation(p, name), float(v)); };
-    glProgramUniform1i(p, glGetUniformLocation(p, "started"), m->started ? 1 : 0);
+    auto set = [p](const char* name, double v) { glProgramUniform1f(p, gl::uniformLocation(p, name), float(v)); };
+    glProgramUniform1i(p, gl::uniformLocation(p, "started"), m->started ? 1 : 0);
     set("dtSeconds", dtSeconds);
     set("attackSeconds", t.attackSeconds);
     set("releaseSeconds", t.releaseSeconds);
@@ -63,8 +63,8 @@ Status GpuTemporalFilter::update(unsigned rawCoverageTexture, Point sunPixel, bo
     set("adaptDarkenSeconds", t.adaptDarkenSeconds);
     set("adaptBrightenSeconds", t.adaptBrightenSeconds);
     set("edgeFadeNow", sunInFront ? edgeFade(sunPixel, width, height, t.guardBand) : 0.0);
-    glProgramUniform2f(p, glGetUniformLocation(p, "sunPixel"), sunPixel.x, sunPixel.y);
-    glProgramUniform2f(p, glGetUniformLocation(p, "frameSize"), float(width), float(height));
+    glProgramUniform2f(p, gl::uniformLocation(p, "sunPixel"), sunPixel.x, sunPixel.y);
+    glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(width), float(height));
 
     const int next = 1 - m->newest;
     glBindFramebuffer(GL_FRAMEBUFFER, m->targets[std::size_t(next)].get());

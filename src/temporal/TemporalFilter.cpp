@@ -6,12 +6,6 @@
 namespace flarekit {
 
 namespace {
-Status checkRange(const TemporalParamSpec& spec, double value) {
-    if (std::isfinite(value) && value >= spec.min && value <= spec.max) return Ok{};
-    return invalidInput(std::string(spec.name) + ": expected a number in [" + std::to_string(spec.min) + ", " +
-                        std::to_string(spec.max) + "], got " + std::to_string(value));
-}
-
 double smoothstep01(double x) {
     x = std::clamp(x, 0.0, 1.0);
     return x * x * (3 - 2 * x);
@@ -19,13 +13,7 @@ double smoothstep01(double x) {
 }  // namespace
 
 Status validateTemporalParams(const TemporalParams& p) {
-    for (auto [spec, value] : {std::pair{&kAttackSpec, p.attackSeconds}, std::pair{&kReleaseSpec, p.releaseSeconds},
-                               std::pair{&kGuardBandSpec, p.guardBand}, std::pair{&kAdaptStrengthSpec, p.adaptStrength},
-                               std::pair{&kAdaptDarkenSpec, p.adaptDarkenSeconds},
-                               std::pair{&kAdaptBrightenSpec, p.adaptBrightenSeconds}}) {
-        if (Status s = checkRange(*spec, value); !s) return s;
-    }
-    return Ok{};
+    return validateParams<TemporalParams>(p, kTemporalParams, "");
 }
 
 double smoothingStep(double dtSeconds, double tauSeconds) {

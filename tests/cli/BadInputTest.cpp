@@ -1,4 +1,4 @@
-// Bad input (issue 3): a one-line error naming the file, exit code 2, and no output left behind.
+// Bad input: a one-line error naming the file, exit code 2, and no output left behind.
 #include <gtest/gtest.h>
 
 #include <filesystem>

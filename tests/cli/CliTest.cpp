@@ -168,8 +168,34 @@ TEST(CliPresets, ListsChecksAndDocuments) {
     // docs/presets.md carries this reference verbatim: regenerate it when the table changes.
     EXPECT_NE(slurp(std::string(FLAREKIT_DOCS) + "/presets.md").find(r.out), std::string::npos)
         << "docs/presets.md is out of date: flarekit presets --params";
+    r = runCli({"presets", "--postfx", "--params"});
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("| bloom | `levels` | 6 | [2, 12] |"), std::string::npos) << r.out;
+    EXPECT_NE(slurp(std::string(FLAREKIT_DOCS) + "/postfx.md").find(r.out), std::string::npos)
+        << "docs/postfx.md is out of date: scripts/update-docs.sh";
     r = runCli({"presets", "--check", "subtle"});
     EXPECT_EQ(r.exitCode, 0);
+}
+
+TEST(CliParams, NumericFlagsTakeRangeAndHelpFromTheParameterTables) {
+    CliResult r = runCli({"demo", "--help"});
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("[1, 100000]"), std::string::npos) << r.out;  // --frames
+    EXPECT_NE(r.out.find("edge fade width (shorter side)"), std::string::npos) << r.out;  // --guard-band
+    TempDir dir;
+    r = runCli({"demo", "-o", dir.file("d"), "--samples", "0"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--samples: expected an integer in [1, 4096], got 0"), std::string::npos) << r.err;
+    r = runCli({"visibility", "no-scene.json", "--msaa", "3"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--msaa: expected one of 1, 2, 4, 8, got 3"), std::string::npos) << r.err;
+    r = runCli({"postfx", "in.png", "-o", dir.file("o.png"), "--threshold", "-1"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--threshold: expected a number in [0, 10000], got -1"), std::string::npos) << r.err;
+    r = runCli({"demo", "-o", dir.file("d"), "--frames", "2.5"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("expected an integer"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("d")));
 }
 
 TEST(CliHelp, EverySubcommandHasHelp) {

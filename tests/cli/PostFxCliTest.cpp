@@ -1,4 +1,4 @@
-// flarekit postfx as a user runs it (issue 6): both backends, every preset, layers, and bad
+// flarekit postfx as a user runs it: both backends, every preset, layers, and bad
 // input (grey and 2-channel inputs promoted, more than 4 channels refused in one line).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// flarekit psp as a user runs it (issue 7): JSON, dumps, the naive mode, the demo, bad input.
+// flarekit psp as a user runs it: JSON, dumps, the naive mode, the demo, bad input.
 #include <gtest/gtest.h>
 
 #include <filesystem>

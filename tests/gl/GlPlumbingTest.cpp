@@ -84,3 +84,26 @@ TEST(GlPlumbing, NamesAreMoveOnlyOwners) {
     b.reset();
     EXPECT_FALSE(glIsTexture(name));
 }
+
+TEST(GlPlumbing, AMisspeltUniformIsAnErrorButAnOptimisedOutOneIsNot) {
+    context();  // the GL tests run with FLAREKIT_STRICT_GL=1 (tests/CMakeLists.txt)
+    auto program = linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", kFullscreenVs},
+                                {GL_FRAGMENT_SHADER, "u.frag", R"(#version 450 core
+uniform float used;
+uniform float unusedButDeclared;
+uniform float weights[4];
+out vec4 color;
+void main() { color = vec4(used + weights[2]); })"}});
+    ASSERT_TRUE(program.ok()) << program.error().message;
+    EXPECT_TRUE(checkError("before").ok());
+    EXPECT_GE(uniformLocation(program->get(), "used"), 0);
+    EXPECT_GE(uniformLocation(program->get(), "weights[2]"), 0);
+    EXPECT_EQ(uniformLocation(program->get(), "unusedButDeclared"), -1);  // compiled away: fine
+    EXPECT_TRUE(checkError("declared names").ok());
+    EXPECT_EQ(uniformLocation(program->get(), "uesd"), -1);
+    EXPECT_EQ(uniformLocation(program->get(), "use"), -1);  // a prefix of a real name is not it
+    const Status s = checkError("setting uniforms");
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().message, "OpenGL: setting uniforms: the program has no uniform 'uesd'");
+    EXPECT_TRUE(checkError("after").ok());  // reported once
+}

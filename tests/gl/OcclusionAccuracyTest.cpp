@@ -1,6 +1,6 @@
 // Every GPU visibility method against the ray-cast truth (256^2 rays) on the generated scenes
 // (tests/support/OcclusionScenes.h). Scenes are judged where the disc is fully in frame and at
-// least 100 px in area. Bounds: 0.05 for every method (issue 5), 0.02 for `compute` reading the
+// least 100 px in area. Bounds: 0.05 for every method, 0.02 for `compute` reading the
 // MSAA samples; on the thin-pole scenes the single-sample methods get the documented bounds of
 // docs/occlusion.md (one depth sample per pixel or texel puts the pole's edges up to half a
 // sample off, which on a 16 px disc is 0.04 per edge).

@@ -25,7 +25,7 @@ inline Result<double> measureGpuCoverage(const std::string& method, const Scene&
     return measureStillFrame(**m, *renderer, scene, 8);
 }
 
-//! Judged: the disc is fully in frame and at least 100 px in area (issue 5).
+//! Judged: the disc is fully in frame and at least 100 px in area (a smaller disc is a handful of pixels: no method can be judged on it).
 inline bool judgedScene(const Scene& s) {
     const double radiusPx =
         s.sun.angularRadiusDeg * M_PI / 180 * (s.height / 2.0) / std::tan(s.camera.fovYDeg * M_PI / 360);

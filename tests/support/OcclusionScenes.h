@@ -1,5 +1,5 @@
 // The generated scenes that GPU visibility methods are judged on against the ray-cast truth
-// (issue 5): sun fully visible, fully hidden, half behind a box edge, behind foliage of many
+// : sun fully visible, fully hidden, half behind a box edge, behind foliage of many
 // small spheres, behind a thin pole, near the frame edge, small and large angular radii, and
 // off screen. 640x360, deterministic.
 #pragma once

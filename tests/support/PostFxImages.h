@@ -1,4 +1,4 @@
-// The post-process test images of issue 6: a single bright dot, several lights, an HDR sky
+// The post-process test images: a single bright dot, several lights, an HDR sky
 // with a sun of value 50, and noise. Built in code, so the tests carry no binary fixtures.
 #pragma once
 

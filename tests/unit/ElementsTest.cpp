@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "elements/ElementKernel.h"
-#include "flare/ParamTable.h"
+#include "flarekit/Elements.h"
 #include "flarekit/Elements.h"
 
 using namespace flarekit;
@@ -92,7 +92,7 @@ TEST(Elements, StreaksAndPolygonsHaveTheirSymmetry) {
 }
 
 TEST(Elements, GlowEnergyMatchesTheSeedFalloffIntegral) {
-    // g(d) = (f(128 d) - f(128)) / (1 - f(128)), f(i) = exp(-0.006 i^2)/2 + exp(-0.03 i)/2 (seed 002).
+    // g(d) = (f(128 d) - f(128)) / (1 - f(128)), f(i) = exp(-0.006 i^2)/2 + exp(-0.03 i)/2 (Tanczos 1999).
     auto f = [](double i) { return std::exp(-i * i * 0.006) * 0.5 + std::exp(-i * 0.03) * 0.5; };
     double integral = 0;  // 2*pi * int_0^1 g(d) d dd, midpoint rule
     const int steps = 200000;

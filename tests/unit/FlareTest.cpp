@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "core/Parallel.h"
-#include "flare/ParamTable.h"
+#include "flarekit/Elements.h"
 #include "flarekit/Flare.h"
 
 using namespace flarekit;
@@ -51,7 +51,7 @@ TEST(FlareVector, PlacesElementsOnTheLineThroughTheCentre) {
     EXPECT_FLOAT_EQ(at1.y, 100.f);
     EXPECT_FLOAT_EQ(at0.x, 320.f);
     EXPECT_FLOAT_EQ(at0.y, 180.f);
-    EXPECT_FLOAT_EQ(mirrored.x, 140.f);  // seed 002: (-h, -k)
+    EXPECT_FLOAT_EQ(mirrored.x, 140.f);  // Tanczos 1999: (-h, -k)
     EXPECT_FLOAT_EQ(mirrored.y, 260.f);
     EXPECT_FLOAT_EQ(half.x, 320.f - 90.f);  // (-h/2, -k/2)
     EXPECT_FLOAT_EQ(half.y, 180.f + 40.f);

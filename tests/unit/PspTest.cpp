@@ -1,4 +1,4 @@
-// The PSP GE emulation of the Burnout Dominator flare (issue 7). Expected bytes come from the
+// The PSP GE emulation of the Burnout Dominator flare. Expected bytes come from the
 // seed's description and the documented filter precision (docs/psp-burnout.md), computed here
 // by a separate model of the chain, not by the emulator's code.
 #include <gtest/gtest.h>

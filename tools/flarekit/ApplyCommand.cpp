@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "Common.h"
+#include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
 
 namespace flarekit::cli {
@@ -10,8 +11,11 @@ namespace {
 struct ApplyArgs {
     std::string in, out, preset = "tanczos-classic", light = "auto", depth = "auto";
     float intensity = 1.f;
-    float minLuminance = LightSearchOptions{}.minLuminance;
+    LightSearchOptions lightSearch;
     bool verbose = false;
+};
+inline constexpr Param<ApplyArgs> kApplyArgParams[] = {
+    param<&ApplyArgs::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
 };
 
 std::optional<SampleFormat> parseDepth(const std::string& s) {
@@ -43,8 +47,7 @@ int runApply(const ApplyArgs& a) {
     if (fixed) {
         light = *fixed;
     } else {
-        LightSearchOptions options;
-        options.minLuminance = a.minLuminance;
+        const LightSearchOptions& options = a.lightSearch;
         const FoundLight found = findLight(image, options);
         if (!found.found) {
             warn(a.in + ": no light found (peak luminance " + std::to_string(found.peak) + " < " +
@@ -82,13 +85,8 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "light position X,Y in pixels from the top-left (may be outside the frame), or 'auto' for the "
                     "brightest region")
         ->capture_default_str();
-    cmd->add_option("--intensity", args->intensity, "flare brightness multiplier")
-        ->check(CLI::Range(0.f, 1000.f))
-        ->capture_default_str();
-    cmd->add_option("--light-threshold", args->minLuminance,
-                    "--light auto: smallest peak linear luminance that counts as a light")
-        ->check(CLI::Range(0.f, 1e6f))
-        ->capture_default_str();
+    addParamOptions<ApplyArgs>(cmd, kApplyArgParams, *args);
+    addParamOptions<LightSearchOptions>(cmd, kLightSearchParams, args->lightSearch);
     cmd->add_option("--depth", args->depth, "output samples: auto (from the extension), 8, 16, half, float")
         ->check(CLI::IsMember({"auto", "8", "16", "half", "float"}))
         ->capture_default_str();

@@ -1,4 +1,4 @@
-// flarekit blend: seed 002's 8-bit blend formulas on whole images, bit-exact.
+// flarekit blend: Tanczos 1999's 8-bit blend formulas on whole images, bit-exact.
 #include "Common.h"
 #include "flarekit/Blend.h"
 #include "flarekit/ImageIO.h"
@@ -27,7 +27,7 @@ int runBlend(const BlendArgs& a) {
 void addBlendCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<BlendArgs>();
     CLI::App* cmd = app.add_subcommand(
-        "blend", "Blend two 8-bit images with the exact integer formulas of Tanczos 1999 (seed 002); RGB out");
+        "blend", "Blend two 8-bit images with the exact integer formulas of Tanczos 1999; RGB out");
     cmd->add_option("--mode", args->mode,
                     "alpha: (s*a + d*(255-a))/255; alpha-shift: ... >> 8; premultiplied: s*a/255 + ((d*(255-a)) >> 8); "
                     "add: min(s + d, 255) (SIMD)")

@@ -9,10 +9,12 @@
 #include <thread>
 
 #include "Common.h"
+#include "ParamOptions.h"
 #include "Progress.h"
 #include "Video.h"
 #include "core/AtomicFile.h"
 #include "flarekit/Demo.h"
+#include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
 #include "gl/HeadlessGl.h"
 
@@ -204,12 +206,6 @@ int runDemo(DemoArgs& a) {
     return kExitOk;
 }
 
-void addTemporalOption(CLI::App* cmd, const TemporalParamSpec& spec, double& value) {
-    cmd->add_option("--" + std::string(spec.name), value, spec.help)
-        ->check(CLI::Range(spec.min, spec.max))
-        ->capture_default_str();
-}
-
 }  // namespace
 
 void addDemoCommand(CLI::App& app, int& exitCode) {
@@ -217,27 +213,16 @@ void addDemoCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand(
         "demo", "Render the built-in drive (trees, buildings, tunnel, turn) with an occlusion-aware sun flare");
     cmd->add_option("-o,--output", args->outDir, "output directory (created if missing)")->required();
-    cmd->add_option("--frames", args->settings.frames, "frames over the 8 s drive (240 = 30 fps)")
-        ->check(CLI::Range(1, 100000))
-        ->capture_default_str();
+    addParamOption<DemoSettings>(cmd, kDemoParams, "frames", args->settings);
     cmd->add_option("--size", args->size, "frame size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--method", args->settings.method, "visibility method: raycast (CPU flare) or a GPU method (readback pbo query texture-mask texture-mask-screen burnout compute: flare, smoothing and tone map on the GPU)")
+    cmd->add_option("--method", args->settings.method, "visibility method, one of " + visibilityMethodList() + " (raycast: CPU flare; the others: flare, smoothing and tone map on the GPU)")
         ->capture_default_str();
     cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
     cmd->add_flag("--conditional-render", args->settings.conditionalRender,
                   "with --method query: draw the flare under glBeginConditionalRender on the sun's query");
-    cmd->add_option("--samples", args->settings.raycastSamplesPerSide, "raycast: strata per side (N^2 rays a frame)")
-        ->check(CLI::Range(1, 4096))
-        ->capture_default_str();
-    cmd->add_option("--msaa", args->settings.msaaSamples, "samples per pixel for the scene pass (1, 2, 4, 8)")
-        ->check(CLI::IsMember({1, 2, 4, 8}))
-        ->capture_default_str();
-    addTemporalOption(cmd, kAttackSpec, args->settings.temporal.attackSeconds);
-    addTemporalOption(cmd, kReleaseSpec, args->settings.temporal.releaseSeconds);
-    addTemporalOption(cmd, kGuardBandSpec, args->settings.temporal.guardBand);
-    addTemporalOption(cmd, kAdaptStrengthSpec, args->settings.temporal.adaptStrength);
-    addTemporalOption(cmd, kAdaptDarkenSpec, args->settings.temporal.adaptDarkenSeconds);
-    addTemporalOption(cmd, kAdaptBrightenSpec, args->settings.temporal.adaptBrightenSeconds);
+    addParamOption<DemoSettings>(cmd, kDemoParams, "samples", args->settings);
+    addParamOption<DemoSettings>(cmd, kDemoParams, "msaa", args->settings);
+    addParamOptions<TemporalParams>(cmd, kTemporalParams, args->settings.temporal);
     cmd->add_flag("--no-video", args->noVideo, "skip the MP4 even when ffmpeg is installed");
     cmd->callback([args, &exitCode] { exitCode = runDemo(*args); });
 }

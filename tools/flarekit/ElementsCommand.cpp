@@ -1,5 +1,6 @@
 // flarekit elements: a labelled contact sheet of a preset's elements.
 #include "Common.h"
+#include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
 
 namespace flarekit::cli {
@@ -8,6 +9,10 @@ namespace {
 struct ElementsArgs {
     std::string preset = "tanczos-classic", out;
     int cell = 256;
+};
+//! 32 px is the smallest cell a label fits in; 4096 bounds the sheet at 4096 x (elements) cells.
+inline constexpr Param<ElementsArgs> kElementsArgParams[] = {
+    param<&ElementsArgs::cell>("cell", 32, 4096, "pixels", "cell size"),
 };
 
 int runElements(const ElementsArgs& a) {
@@ -27,7 +32,7 @@ void addElementsCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand("elements", "Render a preset's elements as a labelled contact sheet");
     cmd->add_option("--preset", args->preset, "shipped preset name or a JSON file")->capture_default_str();
     cmd->add_option("-o,--output", args->out, "output image")->required();
-    cmd->add_option("--cell", args->cell, "cell size in pixels")->check(CLI::Range(32, 4096))->capture_default_str();
+    addParamOptions<ElementsArgs>(cmd, kElementsArgParams, *args);
     cmd->callback([args, &exitCode] { exitCode = runElements(*args); });
 }
 

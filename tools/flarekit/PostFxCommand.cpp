@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "Common.h"
+#include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFx.h"
 #include "gl/HeadlessGl.h"
@@ -14,9 +15,13 @@ namespace flarekit::cli {
 namespace {
 struct PostFxArgs {
     std::string in, out, preset = "killzone2", backend = "cpu", layersDir, tonemap = "preset";
-    float exposure = -1.f, threshold = -1.f, knee = -1.f;
+    std::optional<float> exposure, threshold, knee;
     int repeat = 1;
     bool verbose = false;
+};
+inline constexpr Param<PostFxArgs> kPostFxArgParams[] = {
+    param<&PostFxArgs::repeat>("repeat", 1, 1000, "runs",
+        "run the chain N times and print the mean time of the warm runs (benchmarking)"),
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -74,9 +79,9 @@ int runPostFx(const PostFxArgs& a) {
     auto params = loadPostFxPreset(a.preset);
     if (!params) return report(params.error());
     if (a.tonemap != "preset") params->tone.op = a.tonemap == "aces" ? ToneOperator::Aces : a.tonemap == "filmic" ? ToneOperator::Filmic : ToneOperator::None;
-    if (a.exposure >= 0.f) params->tone.exposure = a.exposure;
-    if (a.threshold >= 0.f) params->bright.threshold = a.threshold;
-    if (a.knee >= 0.f) params->bright.knee = a.knee;
+    if (a.exposure) params->tone.exposure = *a.exposure;
+    if (a.threshold) params->bright.threshold = *a.threshold;
+    if (a.knee) params->bright.knee = *a.knee;
 
     auto loaded = readQuietly(readImage, a.in);
     if (!loaded) return report(loaded.error());
@@ -126,15 +131,12 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--tonemap", args->tonemap, "display curve: preset (the preset's), none, aces, filmic")
         ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
         ->capture_default_str();
-    cmd->add_option("--exposure", args->exposure, "exposure before the display curve (default: the preset's)")->check(CLI::Range(0.f, 1000.f));
-    cmd->add_option("--threshold", args->threshold,
-                    "bright-pass threshold (default: the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9)")
-        ->check(CLI::Range(0.f, 1e4f));
-    cmd->add_option("--knee", args->knee, "bright-pass soft knee half width (default: the preset's)")->check(CLI::Range(0.f, 1e4f));
+    addParamOverride(cmd, "--exposure", *findParam<ToneParams>(kToneParams, "exposure"), args->exposure, "the preset's");
+    addParamOverride(cmd, "--threshold", *findParam<BrightParams>(kBrightParams, "threshold"), args->threshold,
+                     "the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9");
+    addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee, "the preset's");
     cmd->add_flag("-v,--verbose", args->verbose, "print each pass's time (summed over --repeat runs)");
-    cmd->add_option("--repeat", args->repeat, "run the chain N times and print the mean time of the warm runs (benchmarking)")
-        ->check(CLI::Range(1, 1000))
-        ->capture_default_str();
+    addParamOptions<PostFxArgs>(cmd, kPostFxArgParams, *args);
     cmd->callback([args, &exitCode] { exitCode = runPostFx(*args); });
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "Common.h"
+#include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Psp.h"
 
@@ -20,6 +21,10 @@ struct PspArgs {
 struct PspDemoArgs {
     std::string outDir;
     int frames = 48;
+};
+//! 48 frames show the drive's sun blinking; 2000 bounds the run (each frame is two full GE frames).
+inline constexpr Param<PspDemoArgs> kPspDemoParams[] = {
+    param<&PspDemoArgs::frames>("frames", 1, 2000, "", "frames over the drive"),
 };
 
 Status makeDirectory(const std::string& dir) {
@@ -146,7 +151,7 @@ void addPspCommand(CLI::App& app, int& exitCode) {
     auto demo = std::make_shared<PspDemoArgs>();
     CLI::App* cmd = psp->add_subcommand("demo", "the demo drive through the emulator, correct and naive side by side");
     cmd->add_option("-o,--output", demo->outDir, "output directory (frames + coverage.csv)")->required();
-    cmd->add_option("--frames", demo->frames, "frames over the drive")->check(CLI::Range(1, 2000))->capture_default_str();
+    addParamOptions<PspDemoArgs>(cmd, kPspDemoParams, *demo);
     cmd->callback([demo, &exitCode] { exitCode = runPspDemo(*demo); });
 }
 

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "Common.h"
+#include "ParamOptions.h"
+#include "flarekit/PostFxParams.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
@@ -17,8 +19,8 @@ namespace flarekit::cli {
 namespace {
 struct RenderArgs {
     std::string scene, out, preset = "tanczos-classic", method = "raycast", variant = "circle";
-    float exposure = 1.f;
-    int msaa = 1;
+    ToneParams tone;  //!< only the exposure: 8/16-bit outputs get the ACES fit
+    RenderOptions render;
     bool noFlare = false, noShadows = false, verbose = false;
 };
 
@@ -76,8 +78,7 @@ int runRender(const RenderArgs& a) {
     if (!preset) return report(preset.error());
     auto gl = gl::HeadlessGl::create();
     if (!gl) return report(gl.error());
-    RenderOptions options;
-    options.msaaSamples = a.msaa;
+    RenderOptions options = a.render;
     options.shadows = !a.noShadows;
     auto frame = onGpu ? renderWithGpuMethod(*scene, *preset, options, a)
                        : renderWithRaycast(*scene, *preset, options, !a.noFlare);
@@ -89,7 +90,7 @@ int runRender(const RenderArgs& a) {
                     frame->inFrame, double(flare.sunPixel.x), double(flare.sunPixel.y),
                     flare.sunInFront ? "" : " (behind the camera)", double(flare.flareIntensity));
     }
-    if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.exposure);
+    if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.tone.exposure);
     if (Status s = writeImage(a.out, frame->image); !s) return report(s.error());
     return kExitOk;
 }
@@ -103,18 +104,14 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->required();
     cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
     cmd->add_option("--method", args->method,
-                    "visibility method: raycast (flare drawn on the CPU) or a GPU method (readback pbo query "
-                    "texture-mask texture-mask-screen burnout compute: the flare reads its coverage on the GPU)")
+                    "visibility method, one of " + visibilityMethodList() +
+                        " (raycast: flare drawn on the CPU; the others: the flare reads its coverage on the GPU)")
         ->capture_default_str();
     cmd->add_option("--variant", args->variant, "texture-mask sampling: square (16x16, 256 points), circle, bilinear")
         ->check(CLI::IsMember({"square", "circle", "bilinear"}))
         ->capture_default_str();
-    cmd->add_option("--exposure", args->exposure, "exposure before tone mapping (8/16-bit outputs)")
-        ->check(CLI::Range(0.f, 1000.f))
-        ->capture_default_str();
-    cmd->add_option("--msaa", args->msaa, "samples per pixel (1, 2, 4, 8)")
-        ->check(CLI::IsMember({1, 2, 4, 8}))
-        ->capture_default_str();
+    addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);
+    addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
     cmd->add_flag("--no-shadows", args->noShadows, "light every surface (no sun shadow map)");
     cmd->add_flag("--no-flare", args->noFlare, "the frame only");
     cmd->add_flag("-v,--verbose", args->verbose, "print the renderer, coverage and sun position");

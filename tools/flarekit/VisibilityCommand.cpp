@@ -1,9 +1,10 @@
 // flarekit visibility: how much of the sun a scene's camera sees, by the CPU ground truth
-// (`raycast`) or any GPU method of issue 5 on the headless GL backend.
+// (`raycast`) or any GPU method of the seed articles on the headless GL backend.
 #include <chrono>
 #include <cstdio>
 
 #include "Common.h"
+#include "ParamOptions.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Render.h"
 #include "flarekit/Visibility.h"
@@ -14,8 +15,8 @@ namespace flarekit::cli {
 namespace {
 struct VisibilityArgs {
     std::string scene, method = "raycast", variant = "circle";
-    int samplesPerSide = RaycastOptions{}.samplesPerSide;
-    int msaa = 1;
+    RaycastOptions raycast;
+    RenderOptions render;
     bool json = false;
 };
 
@@ -24,8 +25,7 @@ struct VisibilityArgs {
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
     auto gl = gl::HeadlessGl::create();
     if (!gl) return gl.error();
-    RenderOptions render;
-    render.msaaSamples = a.msaa;
+    RenderOptions render = a.render;
     render.shadows = false;  // visibility reads depth only
     auto renderer = SceneRenderer::create(scene, render);
     if (!renderer) return renderer.error();
@@ -50,9 +50,7 @@ int runVisibility(const VisibilityArgs& a) {
     int latency = 0;
     Result<VisibilityResult> r = internalError("unreached");
     if (a.method == "raycast") {
-        RaycastOptions options;
-        options.samplesPerSide = a.samplesPerSide;
-        r = raycastVisibility(*scene, options);
+        r = raycastVisibility(*scene, a.raycast);
     } else {
         r = runGpu(a, *scene, latency);
     }
@@ -76,21 +74,16 @@ void addVisibilityCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<VisibilityArgs>();
     CLI::App* cmd = app.add_subcommand("visibility", "Fraction of the sun's disc visible from a scene's camera");
     cmd->add_option("scene", args->scene, "scene JSON (see architecture.md)")->required();
-    cmd->add_option("--method", args->method,
-                    "raycast (CPU ground truth) or a GPU method: readback pbo query texture-mask "
-                    "texture-mask-screen burnout compute")
-        ->check(CLI::IsMember({"raycast", "readback", "pbo", "query", "texture-mask", "texture-mask-screen", "burnout",
-                               "compute"}))
+    std::vector<std::string> methods = {"raycast"};
+    for (const std::string& m : gpuVisibilityMethods()) methods.push_back(m);
+    cmd->add_option("--method", args->method, "one of " + visibilityMethodList() + " (raycast: the CPU ground truth; the others run on the GPU)")
+        ->check(CLI::IsMember(methods))
         ->capture_default_str();
     cmd->add_option("--variant", args->variant, "texture-mask sampling: square (16x16, 256 points), circle, bilinear (64 points)")
         ->check(CLI::IsMember({"square", "circle", "bilinear"}))
         ->capture_default_str();
-    cmd->add_option("--samples", args->samplesPerSide, "raycast: strata per side (N^2 rays)")
-        ->check(CLI::Range(1, 4096))
-        ->capture_default_str();
-    cmd->add_option("--msaa", args->msaa, "GPU methods: samples per pixel of the scene pass")
-        ->check(CLI::IsMember({1, 2, 4, 8}))
-        ->capture_default_str();
+    addParamOptions<RaycastOptions>(cmd, kRaycastParams, args->raycast);
+    addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
     cmd->add_flag("--json", args->json,
                   "print one JSON object: method, coverage, in_frame, samples, latency_frames, cpu_ms");
     cmd->callback([args, &exitCode] { exitCode = runVisibility(*args); });

@@ -72,8 +72,8 @@ public:
         std::array<float, kGrid> compensation{};
         for (int k = 0; k < kGrid; ++k) compensation[std::size_t(k)] = float(lightest / weights[std::size_t(k)]);
         const GLuint c = m->m_combine.get();
-        glProgramUniform1fv(c, glGetUniformLocation(c, "compensation"), kGrid, compensation.data());
-        glProgramUniform1i(c, glGetUniformLocation(c, "subCells"), kSubCells);
+        glProgramUniform1fv(c, gl::uniformLocation(c, "compensation"), kGrid, compensation.data());
+        glProgramUniform1i(c, gl::uniformLocation(c, "subCells"), kSubCells);
         m->m_down = std::move(*down), m->m_resolve = std::move(*resolve);
         if (Status s = m->makeTargets(); !s) return s.error();
         return std::unique_ptr<GpuVisibility>(std::move(m));
@@ -93,12 +93,12 @@ public:
         const float originX = float(cx - side / 2), originY = float(cy - side / 2);
         const GLuint w = m_white.forFrame(renderer);
         setSunDiscUniforms(w, v);
-        glProgramUniform2f(w, glGetUniformLocation(w, "regionOrigin"), originX, originY);
-        glProgramUniform1f(w, glGetUniformLocation(w, "subCellSize"), float(side / (kGrid * kSubCells)));
+        glProgramUniform2f(w, gl::uniformLocation(w, "regionOrigin"), originX, originY);
+        glProgramUniform1f(w, gl::uniformLocation(w, "subCellSize"), float(side / (kGrid * kSubCells)));
         const GLuint c = m_combine.get();
         setSunDiscUniforms(c, v);
-        glProgramUniform2f(c, glGetUniformLocation(c, "regionOrigin"), originX, originY);
-        glProgramUniform1f(c, glGetUniformLocation(c, "cellSize"), float(side / kGrid));
+        glProgramUniform2f(c, gl::uniformLocation(c, "regionOrigin"), originX, originY);
+        glProgramUniform1f(c, gl::uniformLocation(c, "cellSize"), float(side / kGrid));
 
         glBindVertexArray(m_vao.get());
         glDisable(GL_BLEND);
@@ -130,7 +130,7 @@ public:
             const int n = m_levels[i].size;
             glBindFramebuffer(GL_FRAMEBUFFER, m_levels[i].target.get());
             glViewport(0, 0, n, n);
-            glProgramUniform2f(d, glGetUniformLocation(d, "destinationSize"), float(n), float(n));
+            glProgramUniform2f(d, gl::uniformLocation(d, "destinationSize"), float(n), float(n));
             glBindTextureUnit(0, m_levels[i - 1].texture.get());
             glUseProgram(d);
             glDrawArrays(GL_TRIANGLES, 0, 3);

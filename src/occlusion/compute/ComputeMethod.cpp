@@ -42,10 +42,10 @@ public:
         const bool multisample = renderer.msaaSamples() > 1;
         const GLuint r = multisample ? m_reduceMs.get() : m_reduce.get(), f = m_finish.get();
         setSunDiscUniforms(r, v);
-        if (multisample) glProgramUniform1i(r, glGetUniformLocation(r, "sampleCount"), renderer.msaaSamples());
-        glProgramUniform2i(r, glGetUniformLocation(r, "boxOrigin"), v.x0, v.y0);
-        glProgramUniform2i(r, glGetUniformLocation(r, "boxSize"), w, h);
-        glProgramUniform1i(f, glGetUniformLocation(f, "partialCount"), GLint(groupsX * groupsY));
+        if (multisample) glProgramUniform1i(r, gl::uniformLocation(r, "sampleCount"), renderer.msaaSamples());
+        glProgramUniform2i(r, gl::uniformLocation(r, "boxOrigin"), v.x0, v.y0);
+        glProgramUniform2i(r, gl::uniformLocation(r, "boxSize"), w, h);
+        glProgramUniform1i(f, gl::uniformLocation(f, "partialCount"), GLint(groupsX * groupsY));
         glBindTextureUnit(0, multisample ? renderer.multisampleDepthTexture() : renderer.depthTexture());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, m_partials.get());
         glUseProgram(r);

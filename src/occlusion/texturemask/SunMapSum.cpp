@@ -99,8 +99,8 @@ Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
     auto resolve = linkFullscreen("resolve_ratio.frag", shaders::resolve_ratio_frag);
     if (!resolve) return resolve.error();
     s.m_resolve = std::move(*resolve);
-    glProgramUniform1f(s.m_sum.get(), glGetUniformLocation(s.m_sum.get(), "unit"), s.m_layout.unit);
-    glProgramUniform1i(s.m_sum.get(), glGetUniformLocation(s.m_sum.get(), "sunMap"), 0);
+    glProgramUniform1f(s.m_sum.get(), gl::uniformLocation(s.m_sum.get(), "unit"), s.m_layout.unit);
+    glProgramUniform1i(s.m_sum.get(), gl::uniformLocation(s.m_sum.get(), "sunMap"), 0);
     return s;
 }
 

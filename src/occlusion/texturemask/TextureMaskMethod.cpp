@@ -57,7 +57,7 @@ public:
         if (!m_firsts.empty()) {
             const Mat4 vp = multiply(perspectiveMatrix(camera, 1.0), lookAtMatrix(camera));
             const auto vpf = toFloat(vp);
-            glProgramUniformMatrix4fv(m_black.get(), glGetUniformLocation(m_black.get(), "viewProjection"), 1, GL_FALSE,
+            glProgramUniformMatrix4fv(m_black.get(), gl::uniformLocation(m_black.get(), "viewProjection"), 1, GL_FALSE,
                                       vpf.data());
             glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);  // occluders blacken R only
             glBindVertexArray(renderer.meshVertexArray());

@@ -38,9 +38,9 @@ public:
         gl::setUniform(p, "mapRight", map.right);
         gl::setUniform(p, "mapUp", map.up);
         gl::setUniform(p, "mapForward", map.forward);
-        glProgramUniform1f(p, glGetUniformLocation(p, "mapTanHalf"),
+        glProgramUniform1f(p, gl::uniformLocation(p, "mapTanHalf"),
                            float(std::tan(view.sun.angularRadiusDeg * std::numbers::pi / 180.0)));
-        glProgramUniform1f(p, glGetUniformLocation(p, "mapSize"), float(n));
+        glProgramUniform1f(p, gl::uniformLocation(p, "mapSize"), float(n));
         glBindFramebuffer(GL_FRAMEBUFFER, m_sum.sunMapFramebuffer());
         glViewport(0, 0, n, n);
         glDisable(GL_DEPTH_TEST);

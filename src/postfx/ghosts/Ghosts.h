@@ -32,16 +32,6 @@ struct GhostsUniforms {
     float intensity = 1.f;  //!< flareIntensity
 };
 
-//! 1 / sqrt(2): the distance from the centre to a corner in [-1, 1] coordinates is sqrt(2).
-inline constexpr float kInvCornerDistance = 0.70710678f;
-
-//! The modern falloff of a ghost at normalised p (John Chapman, "Pseudo Lens Flare", 2013).
-inline float centreFalloff(Vec2 p, float exponent) {
-    if (exponent <= 0.f) return 1.f;
-    const float r = std::sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
-    return std::pow(std::max(0.f, 1.f - r), exponent);
-}
-
 inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, Vec2 uv) {
     const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale, ((1.f - uv.y) * 2.f - 1.f) * g.scale};
     const float len = std::sqrt(n.x * n.x + n.y * n.y);

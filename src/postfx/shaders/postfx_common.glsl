@@ -37,3 +37,12 @@ vec4 bilinearFinite(sampler2D t, vec2 uv) { BILINEAR_BODY(fetchFinite) }
 
 vec2 pixelUv(vec2 invSize) { precise vec2 uv = gl_FragCoord.xy * invSize; return uv; }
 vec4 rgbOnly(vec4 v) { return vec4(v.rgb, 0.0); }
+
+// 1 / sqrt(2): the centre-to-corner distance in [-1, 1] coordinates is sqrt(2).
+const float kInvCornerDistance = 0.70710678;
+
+float centreFalloff(vec2 p, float exponent) {
+    if (exponent <= 0.0) return 1.0;
+    precise float r = sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
+    return pow(max(0.0, 1.0 - r), exponent);
+}

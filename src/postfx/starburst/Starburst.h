@@ -16,8 +16,6 @@
 
 namespace flarekit::postfx {
 
-inline constexpr int kMaxSpokes = 64;
-
 struct StarburstUniforms {
     float intensity = 0.f, width = 0.15f;
     int spokes = 12;

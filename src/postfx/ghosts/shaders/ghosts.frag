@@ -3,18 +3,10 @@ layout(binding = 0) uniform sampler2D bloom;
 uniform vec2 invOutSize, sourceTexel;
 uniform int ghostCount;
 uniform float intensity;
-uniform vec3 tints[32];
-uniform float scales[32], blurs[32], thresholds[32], falloffs[32];
-uniform int sampleCounts[32], centered[32], useBilinear[32];
+uniform vec3 tints[FK_MAX_GHOSTS];
+uniform float scales[FK_MAX_GHOSTS], blurs[FK_MAX_GHOSTS], thresholds[FK_MAX_GHOSTS], falloffs[FK_MAX_GHOSTS];
+uniform int sampleCounts[FK_MAX_GHOSTS], centered[FK_MAX_GHOSTS], useBilinear[FK_MAX_GHOSTS];
 out vec4 result;
-
-const float kInvCornerDistance = 0.70710678;
-
-float centreFalloff(vec2 p, float exponent) {
-    if (exponent <= 0.0) return 1.0;
-    precise float r = sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
-    return pow(max(0.0, 1.0 - r), exponent);
-}
 
 vec4 ghostPixel(int g, vec2 uv) {
     precise vec2 n = vec2(((1.0 - uv.x) * 2.0 - 1.0) * scales[g], ((1.0 - uv.y) * 2.0 - 1.0) * scales[g]);

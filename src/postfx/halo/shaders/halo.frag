@@ -5,15 +5,7 @@ uniform float aspect, radius, thickness, threshold, falloff, intensity;
 uniform vec3 tint;
 out vec4 result;
 
-const int kHaloSamples = 8;
-const float kInvCornerDistance = 0.70710678;
-
-float centreFalloff(vec2 p, float exponent) {
-    if (exponent <= 0.0) return 1.0;
-    precise float r = sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
-    return pow(max(0.0, 1.0 - r), exponent);
-}
-
+const int kHaloSamples = FK_HALO_SAMPLES;
 void main() {
     vec2 uv = pixelUv(invOutSize);
     precise vec2 m = vec2((1.0 - 2.0 * uv.x) * aspect, 1.0 - 2.0 * uv.y);

@@ -1,7 +1,7 @@
 // Twin of src/postfx/starburst/Starburst.h: modulation by angle about the centre.
 uniform float starIntensity, starWidth;
 uniform int starSpokes;
-uniform float starRays[64];
+uniform float starRays[FK_MAX_SPOKES];
 
 float rayProfile(float d, float width) {
     precise float t = max(0.0, 1.0 - (d / width) * (d / width));

@@ -2,7 +2,7 @@
 layout(binding = 0) uniform sampler2D source;
 layout(binding = 1) uniform sampler2D other;
 uniform int step, addOther;
-uniform float weights[4];
+uniform float weights[FK_STREAK_TAPS];
 uniform float threshold;
 uniform vec4 outScale;
 out vec4 result;
@@ -11,7 +11,7 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     int width = textureSize(source, 0).x;
     precise vec4 sum = vec4(0.0);
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < FK_STREAK_TAPS; ++k) {
         int sx = p.x + k * step;
         if (sx >= 0 && sx < width) sum += max(texelFetch(source, ivec2(sx, p.y), 0) - threshold, vec4(0.0)) * weights[k];
     }

@@ -1,4 +1,4 @@
-// Twin of src/postfx/tonemap/ToneCurves.h: ACES fit and Hable filmic. op: 0 none, 1 aces, 2 filmic.
+// Twin of src/core/ToneCurves.h: Narkowicz's ACES fit and Hable's filmic curve.
 float acesFitted(float x) {
     precise float y = x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14);
     return clamp(y, 0.0, 1.0);
@@ -13,14 +13,4 @@ float hablePartial(float x) {
 float hableFilmic(float x) {
     const float kWhite = 11.2, kExposureBias = 2.0;
     return clamp(hablePartial(x * kExposureBias) / hablePartial(kWhite), 0.0, 1.0);
-}
-
-vec4 toneMap(vec4 c, int op, float exposure) {
-    if (op == 0) return c;
-    vec4 outColor = c;
-    for (int i = 0; i < 3; ++i) {
-        float x = max(0.0, c[i] * exposure);
-        outColor[i] = op == 1 ? acesFitted(x) : hableFilmic(x);
-    }
-    return outColor;
 }

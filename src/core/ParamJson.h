@@ -1,0 +1,113 @@
+// The one JSON reader of parameter tables (flarekit/Param.h): converts each key of a JSON
+// object through its description, reports unknown keys with the list of known ones, and words
+// every error "source: field: expected ..., got <excerpt>".
+#pragma once
+
+#include <cmath>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/JsonText.h"
+#include "flarekit/Param.h"
+
+namespace flarekit {
+
+//! Where a reader is: the file (for messages) and the field path so far ("element[3]").
+class JsonPlace {
+public:
+    JsonPlace(std::string source, std::string at = {}) : m_source(std::move(source)), m_at(std::move(at)) {}
+    JsonPlace operator/(std::string_view key) const {
+        return {m_source, m_at.empty() ? std::string(key) : m_at + "." + std::string(key)};
+    }
+    JsonPlace index(std::size_t i) const { return {m_source, m_at + "[" + std::to_string(i) + "]"}; }
+    const std::string& at() const { return m_at; }
+    const std::string& source() const { return m_source; }
+    Error fail(const std::string& what) const {
+        return invalidInput(m_source + ": " + (m_at.empty() ? "(top level)" : m_at) + ": " + what);
+    }
+
+private:
+    std::string m_source, m_at;
+};
+
+//! A JSON value converted through a parameter's description, or the error naming `place`.
+template <class Owner>
+Result<ParamValue> readParamValue(const Param<Owner>& p, const nlohmann::json& v,
+                                  const JsonPlace& place) {
+    const auto bad = [&] { return place.fail("expected " + expectedText(p) + ", got " + jsonExcerpt(v)); };
+    const auto number = [&](const nlohmann::json& x) -> std::optional<double> {
+        if (!x.is_number()) return std::nullopt;
+        const double d = x.get<double>();
+        if (!numberFits(p, d)) return std::nullopt;
+        return d;
+    };
+    ParamValue out;
+    switch (p.type) {
+        case ParamType::Number:
+        case ParamType::Integer:
+        case ParamType::Seed: {
+            const auto d = number(v);
+            if (!d) return bad();
+            out.number = *d;
+            return out;
+        }
+        case ParamType::Color:
+        case ParamType::OptionalColor:
+            if (!v.is_array() || v.size() != 3) return bad();
+            for (std::size_t c = 0; c < 3; ++c) {
+                const auto d = number(v[c]);
+                if (!d) return bad();
+                out.color[c] = float(*d);
+            }
+            return out;
+        case ParamType::Bool:
+            if (!v.is_boolean()) return bad();
+            out.number = v.get<bool>() ? 1 : 0;
+            return out;
+        case ParamType::Choice:
+            if (v.is_string()) {
+                for (std::size_t i = 0; i < p.choices.size(); ++i) {
+                    if (v.get<std::string>() == p.choices[i]) {
+                        out.number = double(i);
+                        return out;
+                    }
+                }
+            }
+            return bad();
+    }
+    return bad();
+}
+
+//! Every key of the object `v` into `owner` through `table`. Keys in `skip` are left to the
+//! caller (listed among the known ones); keys whose parameter does not apply (`mask`) are
+//! unknown. `what`, when given, words the unknown-key error "unknown key for a <what>".
+template <class Owner>
+std::optional<Error> readParams(const nlohmann::json& v, std::span<const Param<Owner>> table,
+                                Owner& owner, const JsonPlace& place,
+                                std::initializer_list<std::string_view> skip = {},
+                                std::uint32_t mask = ~0u, std::string_view what = {}) {
+    if (!v.is_object()) return place.fail("expected an object, got " + jsonExcerpt(v));
+    for (const auto& [key, value] : v.items()) {
+        bool skipped = false;
+        for (std::string_view s : skip) skipped = skipped || s == key;
+        if (skipped) continue;
+        const Param<Owner>* p = findParam(table, key);
+        if (!p || !(p->appliesTo & mask)) {
+            std::string known;
+            for (std::string_view s : skip) known += (known.empty() ? "" : ", ") + std::string(s);
+            for (const Param<Owner>& q : table) {
+                if (q.appliesTo & mask) known += (known.empty() ? "" : ", ") + std::string(q.key);
+            }
+            const std::string forWhat = what.empty() ? "" : " for a " + std::string(what);
+            return (place / key).fail("unknown key" + forWhat + " (expected one of: " + known + ")");
+        }
+        auto read = readParamValue(*p, value, place / key);
+        if (!read) return read.error();
+        p->set(owner, *read);
+    }
+    return std::nullopt;
+}
+
+}  // namespace flarekit

@@ -1,0 +1,54 @@
+// Golden images of the CPU paths: every shipped sprite preset (the `apply` path: light found,
+// flare added in linear light) and every shipped postfx preset on the sample sunset, at
+// 320x180. Both paths are deterministic float code, so the tolerance is one 8-bit level
+// (rounding at an encode boundary) with a mean far below one.
+#include "GoldenImage.h"
+
+#include "flarekit/Flare.h"
+#include "flarekit/PostFx.h"
+#include "flarekit/Tonemap.h"
+
+using namespace flarekit;
+
+namespace {
+
+//! The shipped HDR sunset at 320x180 (bilinear, the library's own resize: deterministic).
+const Image& sunset() {
+    static const Image image = [] {
+        auto loaded = readImage(std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr");
+        if (!loaded) return Image(320, 180);
+        return resizeBilinear(loaded->image, 320, 180);
+    }();
+    return image;
+}
+
+}  // namespace
+
+TEST(Golden, EverySpritePresetOnTheHdrSunset) {
+    ASSERT_GT(sunset().at(0, 0).r + sunset().at(160, 60).r, 0.f) << "samples/sunset-hdr.exr did not load";
+    const std::vector<std::string> names = shippedPresetNames();
+    ASSERT_GE(names.size(), 6u);
+    for (const std::string& name : names) {
+        auto preset = loadPreset(name);
+        ASSERT_TRUE(preset.ok()) << name;
+        Image image = sunset();
+        const FoundLight light = findLight(image);
+        ASSERT_TRUE(light.found) << name;
+        renderFlare(image, *preset, light.position, light.flareScale);
+        tonemapAcesFitted(image, 1.f);  // HDR to display range so the 8-bit reference keeps the flare
+        golden::expectMatches("sprite-" + name, image);
+    }
+}
+
+TEST(Golden, EveryPostFxPresetOnTheHdrSunset) {
+    const std::vector<std::string> names = shippedPostFxPresetNames();
+    ASSERT_GE(names.size(), 4u);
+    for (const std::string& name : names) {
+        auto params = loadPostFxPreset(name);
+        ASSERT_TRUE(params.ok()) << name;
+        params->tone.op = ToneOperator::Aces;
+        auto result = postFxCpu(sunset(), *params);
+        ASSERT_TRUE(result.ok()) << name << ": " << result.error().message;
+        golden::expectMatches("postfx-" + name, result->final);
+    }
+}

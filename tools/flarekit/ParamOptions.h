@@ -1,0 +1,81 @@
+// The one CLI binder of parameter tables (flarekit/Param.h): a numeric flag gets its name,
+// help, default and range check from the parameter's description, so a range typed in a
+// table is the range the CLI enforces.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "flarekit/Param.h"
+
+namespace flarekit::cli {
+
+//! "expected an integer in [1, 4096], got 0" for a text that does not fit the parameter.
+template <class Owner>
+CLI::Validator paramValidator(const Param<Owner>& p) {
+    return CLI::Validator(
+        [p](std::string& text) -> std::string {
+            double x = 0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, x);
+            if (ec == std::errc() && ptr == end && numberFits(p, x)) return {};
+            return "expected " + expectedText(p) + ", got " + text;
+        },
+        rangeText(p));
+}
+
+template <class Owner>
+std::string paramHelp(const Param<Owner>& p) {
+    return std::string(p.help) + (p.unit.empty() ? "" : " (" + std::string(p.unit) + ")");
+}
+
+//! --<key> writing into `target` through the description (numeric parameters).
+template <class Owner>
+CLI::Option* addParamOption(CLI::App* cmd, const Param<Owner>& p, Owner& target) {
+    auto* option = cmd->add_option_function<double>(
+        "--" + std::string(p.key),
+        [p, &target](double x) {
+            ParamValue v;
+            v.number = x;
+            p.set(target, v);
+        },
+        paramHelp(p));
+    option->check(paramValidator(p));
+    option->default_str(valueText(p, p.get(target)));
+    return option;
+}
+
+//! The parameter `key` of `table` as --key (a key missing from the table is a programming error).
+template <class Owner>
+CLI::Option* addParamOption(CLI::App* cmd, std::span<const Param<Owner>> table, std::string_view key,
+                            Owner& target) {
+    const Param<Owner>* p = findParam(table, key);
+    if (!p) throw std::logic_error("no parameter '" + std::string(key) + "'");
+    return addParamOption(cmd, *p, target);
+}
+
+//! Every numeric parameter of a table as a flag.
+template <class Owner>
+void addParamOptions(CLI::App* cmd, std::span<const Param<Owner>> table, Owner& target) {
+    for (const Param<Owner>& p : table) {
+        if (p.isNumeric()) addParamOption(cmd, p, target);
+    }
+}
+
+//! An override flag: `flag` (e.g. "--threshold") checked against `p`, stored in `out` only when
+//! given; the help says the default comes from elsewhere (a preset).
+template <class Owner, class T>
+CLI::Option* addParamOverride(CLI::App* cmd, const std::string& flag, const Param<Owner>& p,
+                              std::optional<T>& out, const std::string& defaultFrom) {
+    auto* option = cmd->add_option_function<double>(
+        flag, [&out](double x) { out = T(x); },
+        paramHelp(p) + " (default: " + defaultFrom + ")");
+    option->check(paramValidator(p));
+    return option;
+}
+
+}  // namespace flarekit::cli
