@@ -35,7 +35,7 @@
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
 #include "gl/GlObjects.h"
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 #include "scene/CameraMath.h"
 
 using namespace flarekit;
@@ -154,9 +154,9 @@ void BM_FrameLoop(benchmark::State& state, const std::string& name) {
         (void)(*method)->measure(view, *renderer);
         timers[slot].end();
         measureMs += msSince(t);
-        (void)filter->update((*method)->coverageTexture(), sun, inFront, kWidth, kHeight, frame ? dt : 0.0);
-        (void)flare->draw(*renderer, view, filter->stateTexture(), int(GpuStateChannel::FlareWeight));
-        (void)tonemap->apply(*renderer, filter->stateTexture(), int(GpuStateChannel::Exposure));
+        (void)filter->update((*method)->coverage(), sun, inFront, kWidth, kHeight, frame ? dt : 0.0);
+        (void)flare->draw(*renderer, view, filter->state(GpuStateChannel::FlareWeight));
+        (void)tonemap->apply(*renderer, filter->state(GpuStateChannel::Exposure));
         fences[slot] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         glFlush();
         glMs += msSince(frameStart);

@@ -10,7 +10,7 @@
 
 #include "PostFxImages.h"
 #include "flarekit/PostFx.h"
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 
 using namespace flarekit;
 

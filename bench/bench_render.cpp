@@ -9,7 +9,7 @@
 #include "flarekit/Demo.h"
 #include "flarekit/Render.h"
 #include "gl/GlObjects.h"
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 
 using namespace flarekit;
 

@@ -11,7 +11,7 @@
 #include "OcclusionScenes.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 
 using namespace flarekit;
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "flarekit/Flare.h"
+#include "flarekit/FramePipeline.h"
 #include "flarekit/Image.h"
 #include "flarekit/Render.h"
 #include "flarekit/Scene.h"
@@ -43,16 +44,9 @@ inline constexpr Param<DemoSettings> kDemoParams[] = {
 //! Range checks of every setting (no GL needed); errors name the setting.
 Status validateDemoSettings(const DemoSettings& settings);
 
-struct DemoFrame {
-    Image image;  //!< tone-mapped (ACES fitted) linear [0, 1]: write as PNG for sRGB
-    double time = 0;          //!< seconds into the drive
-    double rawCoverage = 0;   //!< the method's coverage this frame
-    double inFrame = 0;       //!< fraction of the disc inside the frame
-    TemporalState temporal;   //!< smoothed coverage, edge fade, exposure
-    bool sunInFront = false;
-    Point sunPixel;
-    float flareIntensity = 0;
-    double renderMs = 0, visibilityMs = 0, flareMs = 0;
+//! A frame of the drive: the pipeline's frame and when in the drive it is.
+struct DemoFrame : PipelineFrame {
+    double time = 0;  //!< seconds into the drive
 };
 
 //! Renders the demo frame by frame (in order: the temporal filter carries state). A GL

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "flarekit/Flare.h"
+#include "flarekit/GpuChannel.h"
 #include "flarekit/Image.h"
 #include "flarekit/Render.h"
 #include "flarekit/Result.h"
@@ -27,12 +28,11 @@ public:
     GpuTemporalFilter(GpuTemporalFilter&&) noexcept;
     GpuTemporalFilter& operator=(GpuTemporalFilter&&) noexcept;
 
-    //! One frame, as TemporalFilter::update, with the raw coverage in the red channel of
-    //! `rawCoverageTexture` (a GpuVisibility's coverageTexture()). Nothing is read back.
-    Status update(unsigned rawCoverageTexture, Point sunPixel, bool sunInFront, int width, int height,
-                  double dtSeconds);
-    //! The newest state: RGBA32F 1x1, channels as GpuStateChannel.
-    unsigned stateTexture() const;
+    //! One frame, as TemporalFilter::update, with the raw coverage in `rawCoverage` (a
+    //! GpuVisibility's coverage()). Nothing is read back.
+    Status update(GpuChannel rawCoverage, Point sunPixel, bool sunInFront, int width, int height, double dtSeconds);
+    //! One value of the newest state (an RGBA32F 1x1 texture, channels as GpuStateChannel).
+    GpuChannel state(GpuStateChannel channel) const;
     //! Reads the state back (waits for the GPU): for reports and tests only.
     Result<TemporalState> readState() const;
     //! Reads back the raw coverage the last update consumed (NaN/Inf as 0, clamped to [0, 1]):
@@ -58,13 +58,13 @@ public:
     GpuSpriteFlare& operator=(GpuSpriteFlare&&) noexcept;
 
     //! Adds the flare for `view`'s sun to `target`'s colour: every element scaled by
-    //! flareScaleForBrightness(sun) x the `channel` of 1x1 `weightTexture` (a coverage texture,
-    //! channel 0, or the temporal state's FlareWeight, channel 3). Returns where the sun projects
+    //! flareScaleForBrightness(sun) x `weight` (a method's coverage, or the temporal state's
+    //! FlareWeight). Returns where the sun projects
     //! and the brightness scale (flareIntensity = that scale; the weight stays on the GPU).
     //! With `conditionQuery` (GpuVisibility::conditionalRenderQuery()) the draws are made
     //! conditional on it (glBeginConditionalRender, GL_QUERY_NO_WAIT: the GPU skips them when
     //! no sample of the sun passed, and never makes the CPU wait).
-    Result<FlaredFrame> draw(const SceneRenderer& target, const Scene& view, unsigned weightTexture, int channel,
+    Result<FlaredFrame> draw(const SceneRenderer& target, const Scene& view, GpuChannel weight,
                              unsigned conditionQuery = 0) const;
     std::size_t elementCount() const;  //!< elements with a texture (radius >= half a pixel)
 
@@ -74,8 +74,8 @@ private:
     std::unique_ptr<Impl> m;
 };
 
-//! tonemapAcesFitted on the GPU: `target`'s HDR colour x the exposure in `channel` of 1x1
-//! `exposureTexture` (0 = use exposure 1), ACES fitted, into a display target read back as
+//! tonemapAcesFitted on the GPU: `target`'s HDR colour x `exposure` (none: exposure 1), ACES
+//! fitted, into a display target read back as
 //! linear [0, 1] RGBA (the read waits for the GPU: it is the frame's output).
 class GpuTonemap {
 public:
@@ -84,7 +84,7 @@ public:
     GpuTonemap(GpuTonemap&&) noexcept;
     GpuTonemap& operator=(GpuTonemap&&) noexcept;
 
-    Status apply(const SceneRenderer& source, unsigned exposureTexture, int channel);
+    Status apply(const SceneRenderer& source, GpuChannel exposure = {});
     //! The last apply() result, top row first.
     Result<Image> read() const;
 

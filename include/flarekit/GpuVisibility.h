@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "flarekit/GpuChannel.h"
 #include "flarekit/Render.h"
 #include "flarekit/Result.h"
 #include "flarekit/Scene.h"
@@ -29,8 +30,8 @@ public:
     virtual std::string name() const = 0;
     //! Starts measuring the frame `renderer` has just drawn for `view` (camera and sun).
     virtual Status measure(const Scene& view, const SceneRenderer& renderer) = 0;
-    //! GL name of the 1x1 R32F texture with the newest available coverage (0 until the first).
-    virtual unsigned coverageTexture() const = 0;
+    //! The newest available coverage: red of a 1x1 R32F texture (texture 0 until the first).
+    virtual GpuChannel coverage() const = 0;
     //! Collects finished work without waiting (pbo, query) and returns the newest coverage, or
     //! nullopt if none has arrived yet. Reading it may wait for the GPU (one texel).
     virtual std::optional<double> latestCoverage() = 0;
@@ -48,12 +49,6 @@ public:
 //! at most maxFrames times. `frames` receives the frames it took minus one (the latency seen).
 Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer, const Scene& view,
                                  int maxFrames = 16, int* frames = nullptr);
-
-//! The contract's GPU method names: readback pbo query texture-mask texture-mask-screen burnout compute.
-const std::vector<std::string>& gpuVisibilityMethods();
-bool isGpuVisibilityMethod(const std::string& name);
-//! "raycast readback pbo ...": every method name, for error messages.
-std::string visibilityMethodList();
 
 //! A method over the objects `renderer` has uploaded (texture-mask re-draws them from the sun's
 //! own camera, so it needs `world` for culling).

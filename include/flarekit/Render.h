@@ -7,6 +7,7 @@
 #include "flarekit/Flare.h"
 #include "flarekit/Image.h"
 #include "flarekit/Scene.h"
+#include "flarekit/SunFlare.h"
 #include "flarekit/Visibility.h"
 
 namespace flarekit {
@@ -70,18 +71,5 @@ private:
 //! One frame with a throwaway SceneRenderer: linear HDR RGBA with the sky gradient, the sun
 //! disc at infinity (colour x intensity) and lit objects, from RGBA16F + 32-bit float depth.
 Result<Image> renderScene(const Scene& scene, const RenderOptions& options = {});
-
-struct FlaredFrame {
-    bool sunInFront = false;  //!< false when the sun is behind the camera: no flare
-    Point sunPixel;           //!< where the sun projects (may be outside the frame)
-    float flareIntensity = 0; //!< coverage x the sun's brightness scale
-};
-
-//! The flare's brightness for a fully visible sun: flareScaleForBrightness of the luminance of
-//! colour x intensity.
-float sunFlareScale(const SceneSun& sun);
-
-//! Adds the preset's flare for the scene's sun, scaled by `coverage` (0..1), to `frame`.
-FlaredFrame addSunFlare(Image& frame, const Scene& scene, const Preset& preset, double coverage);
 
 }  // namespace flarekit

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "flarekit/Param.h"
 #include "flarekit/Result.h"
@@ -31,6 +32,13 @@ struct RaycastOptions {
 inline constexpr Param<RaycastOptions> kRaycastParams[] = {
     param<&RaycastOptions::samplesPerSide>("samples", 1, 4096, "per side", "raycast: strata per side (N^2 rays)"),
 };
+
+//! The contract's GPU method names (readback pbo query texture-mask texture-mask-screen burnout
+//! compute), known to every build; creating one needs the GL library (flarekit/GpuVisibility.h).
+const std::vector<std::string>& gpuVisibilityMethods();
+bool isGpuVisibilityMethod(const std::string& name);
+//! "raycast readback pbo ...": every method name, for error messages.
+std::string visibilityMethodList();
 
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options = {});
 

@@ -87,17 +87,19 @@ GpuSpriteFlare& GpuSpriteFlare::operator=(GpuSpriteFlare&&) noexcept = default;
 
 std::size_t GpuSpriteFlare::elementCount() const { return m->sprites.size(); }
 
-Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scene& view, unsigned weightTexture,
-                                         int channel, unsigned conditionQuery) const {
+Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scene& view, GpuChannel weight,
+                                         unsigned conditionQuery) const {
     if (target.height() != m->height) return invalidInput("sprite flare: made for another frame height");
-    if (channel < 0 || channel > 3) return invalidInput("sprite flare: weight channel must be 0..3");
+    if (!weight || weight.channel < 0 || weight.channel > 3) {
+        return invalidInput("sprite flare: expected a weight texture and a channel 0..3");
+    }
     FlaredFrame result;
     result.sunInFront = projectDirection(view, view.sun.direction, result.sunPixel);
     result.flareIntensity = sunFlareScale(view.sun);
     if (!result.sunInFront || !std::isfinite(result.sunPixel.x) || !std::isfinite(result.sunPixel.y)) return result;
     const GLuint p = m->program.get();
     const int w = target.width(), h = target.height();
-    glProgramUniform1i(p, gl::uniformLocation(p, "weightChannel"), channel);
+    glProgramUniform1i(p, gl::uniformLocation(p, "weightChannel"), weight.channel);
     glProgramUniform1f(p, gl::uniformLocation(p, "brightnessScale"), result.flareIntensity);
     glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(w), float(h));
     const GLint centreAt = gl::uniformLocation(p, "centre"), halfAt = gl::uniformLocation(p, "halfSize");
@@ -106,7 +108,7 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
-    glBindTextureUnit(1, weightTexture);
+    glBindTextureUnit(1, weight.texture);
     glBindVertexArray(m->vao.get());
     glUseProgram(p);
     if (conditionQuery) glBeginConditionalRender(conditionQuery, GL_QUERY_NO_WAIT);

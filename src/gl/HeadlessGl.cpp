@@ -1,4 +1,4 @@
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>

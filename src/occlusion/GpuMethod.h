@@ -15,7 +15,7 @@ namespace flarekit::occlusion {
 class GpuMethod : public GpuVisibility {
 public:
     GpuMethod();
-    unsigned coverageTexture() const override { return m_coverage.get(); }
+    GpuChannel coverage() const override { return {m_coverage.get(), 0}; }
     std::optional<double> latestCoverage() override;
 
 protected:

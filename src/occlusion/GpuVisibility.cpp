@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "occlusion/GpuMethod.h"
+#include "occlusion/MethodRegistry.h"
 
 namespace flarekit {
 
@@ -20,42 +21,35 @@ Result<std::unique_ptr<GpuVisibility>> makeBurnoutMethod();
 namespace {
 
 using MakeMethod = Result<std::unique_ptr<GpuVisibility>> (*)(const Scene& world, const GpuVisibilityOptions& options);
+using namespace occlusion;
 
-//! The one registry of GPU methods: the contract name and its factory. The name list, --help,
-//! validation and createGpuVisibility all read it.
-struct MethodEntry {
-    const char* name;
-    MakeMethod make;
-};
-
+// Adapters from the registry's one factory signature to each method's own.
+Result<std::unique_ptr<GpuVisibility>> makeReadback(const Scene&, const GpuVisibilityOptions&) { return makeReadbackMethod(); }
 Result<std::unique_ptr<GpuVisibility>> makePbo(const Scene&, const GpuVisibilityOptions& options) {
     if (options.pboRing < 1 || options.pboRing > 16) {
         return invalidInput("pbo ring: expected 1 to 16 buffers, got " + std::to_string(options.pboRing));
     }
-    return occlusion::makePboMethod(options.pboRing);
+    return makePboMethod(options.pboRing);
 }
+Result<std::unique_ptr<GpuVisibility>> makeQuery(const Scene&, const GpuVisibilityOptions&) { return makeQueryMethod(); }
+Result<std::unique_ptr<GpuVisibility>> makeTextureMask(const Scene& world, const GpuVisibilityOptions& options) {
+    return makeTextureMaskMethod(world, options.textureMaskVariant);
+}
+Result<std::unique_ptr<GpuVisibility>> makeTextureMaskScreen(const Scene&, const GpuVisibilityOptions&) {
+    return makeTextureMaskScreenMethod();
+}
+Result<std::unique_ptr<GpuVisibility>> makeBurnout(const Scene&, const GpuVisibilityOptions&) { return makeBurnoutMethod(); }
+Result<std::unique_ptr<GpuVisibility>> makeCompute(const Scene&, const GpuVisibilityOptions&) { return makeComputeMethod(); }
 
-const MethodEntry kMethods[] = {
-    {"readback", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeReadbackMethod(); }},
-    {"pbo", makePbo},
-    {"query", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeQueryMethod(); }},
-    {"texture-mask",
-     [](const Scene& world, const GpuVisibilityOptions& o) { return occlusion::makeTextureMaskMethod(world, o.textureMaskVariant); }},
-    {"texture-mask-screen", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeTextureMaskScreenMethod(); }},
-    {"burnout", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeBurnoutMethod(); }},
-    {"compute", [](const Scene&, const GpuVisibilityOptions&) { return occlusion::makeComputeMethod(); }},
+struct MethodEntry {
+    const char* name;
+    MakeMethod make;
 };
+#define FLAREKIT_METHOD_ENTRY(name, factory) {name, factory},
+const MethodEntry kMethods[] = {FLAREKIT_GPU_METHODS(FLAREKIT_METHOD_ENTRY)};
+#undef FLAREKIT_METHOD_ENTRY
 
 }  // namespace
-
-const std::vector<std::string>& gpuVisibilityMethods() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> out;
-        for (const MethodEntry& m : kMethods) out.emplace_back(m.name);
-        return out;
-    }();
-    return names;
-}
 
 Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer, const Scene& view, int maxFrames,
                                  int* frames) {
@@ -71,17 +65,6 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
         }
     }
     return internalError(method.name() + ": no result after " + std::to_string(maxFrames) + " frames");
-}
-
-bool isGpuVisibilityMethod(const std::string& name) {
-    const auto& names = gpuVisibilityMethods();
-    return std::find(names.begin(), names.end(), name) != names.end();
-}
-
-std::string visibilityMethodList() {
-    std::string list = "raycast";
-    for (const std::string& n : gpuVisibilityMethods()) list += " " + n;
-    return list;
 }
 
 Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,

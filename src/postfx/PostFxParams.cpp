@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/ParamJson.h"
-#include "flare/PresetFiles.h"
+#include "core/PresetFiles.h"
 #include "flarekit/PostFxParams.h"
 
 namespace flarekit {

@@ -280,18 +280,4 @@ Result<Image> renderScene(const Scene& scene, const RenderOptions& options) {
     return renderer->readColor();
 }
 
-float sunFlareScale(const SceneSun& sun) {
-    const Vec3 radiance = sun.color * sun.intensity;
-    return flareScaleForBrightness(luminance(float(radiance.x), float(radiance.y), float(radiance.z)));
-}
-
-FlaredFrame addSunFlare(Image& frame, const Scene& scene, const Preset& preset, double coverage) {
-    FlaredFrame result;
-    result.sunInFront = projectDirection(scene, scene.sun.direction, result.sunPixel);
-    if (!result.sunInFront || coverage <= 0) return result;
-    result.flareIntensity = float(coverage) * sunFlareScale(scene.sun);
-    renderFlare(frame, preset, result.sunPixel, result.flareIntensity);
-    return result;
-}
-
 }  // namespace flarekit

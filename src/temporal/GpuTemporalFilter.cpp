@@ -48,11 +48,15 @@ GpuTemporalFilter::~GpuTemporalFilter() = default;
 GpuTemporalFilter::GpuTemporalFilter(GpuTemporalFilter&&) noexcept = default;
 GpuTemporalFilter& GpuTemporalFilter::operator=(GpuTemporalFilter&&) noexcept = default;
 
-unsigned GpuTemporalFilter::stateTexture() const { return m->states[std::size_t(m->newest)].get(); }
+GpuChannel GpuTemporalFilter::state(GpuStateChannel channel) const {
+    return {m->states[std::size_t(m->newest)].get(), int(channel)};
+}
 
-Status GpuTemporalFilter::update(unsigned rawCoverageTexture, Point sunPixel, bool sunInFront, int width, int height,
+Status GpuTemporalFilter::update(GpuChannel rawCoverage, Point sunPixel, bool sunInFront, int width, int height,
                                  double dtSeconds) {
+    if (rawCoverage.channel < 0 || rawCoverage.channel > 3) return invalidInput("temporal filter: channel must be 0..3");
     const GLuint p = m->program.get();
+    glProgramUniform1i(p, gl::uniformLocation(p, "rawChannel"), rawCoverage.channel);
     const TemporalParams& t = m->params;
     auto set = [p](const char* name, double v) { glProgramUniform1f(p, gl::uniformLocation(p, name), float(v)); };
     glProgramUniform1i(p, gl::uniformLocation(p, "started"), m->started ? 1 : 0);
@@ -72,7 +76,7 @@ Status GpuTemporalFilter::update(unsigned rawCoverageTexture, Point sunPixel, bo
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     glBindTextureUnit(0, m->states[std::size_t(m->newest)].get());
-    glBindTextureUnit(1, rawCoverageTexture);
+    glBindTextureUnit(1, rawCoverage.texture);
     glBindVertexArray(m->vao.get());
     glUseProgram(p);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -84,7 +88,7 @@ Status GpuTemporalFilter::update(unsigned rawCoverageTexture, Point sunPixel, bo
 
 Result<TemporalState> GpuTemporalFilter::readState() const {
     float v[4] = {};
-    glGetTextureImage(stateTexture(), 0, GL_RGBA, GL_FLOAT, sizeof v, v);
+    glGetTextureImage(state(GpuStateChannel::Coverage).texture, 0, GL_RGBA, GL_FLOAT, sizeof v, v);
     TemporalState s;
     s.coverage = v[int(GpuStateChannel::Coverage)];
     s.edgeFade = v[int(GpuStateChannel::EdgeFade)];

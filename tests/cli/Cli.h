@@ -11,6 +11,14 @@
 
 #include "TempDir.h"
 
+// A CLI test of an OpenGL path. In a build without OpenGL (FLAREKIT_GL=OFF) it is compiled but
+// is no test; NoGlCliTest.cpp checks instead that every GL path refuses with one line.
+#if FLAREKIT_HAS_GL
+#define FLAREKIT_GL_TEST(suite, name) TEST(suite, name)
+#else
+#define FLAREKIT_GL_TEST(suite, name) [[maybe_unused]] static void suite##_##name##_needsGl()
+#endif
+
 namespace flarekit::test {
 
 struct CliResult {

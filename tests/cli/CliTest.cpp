@@ -245,7 +245,7 @@ TEST(CliVisibility, BadSceneAndBadMethodExitTwo) {
     EXPECT_EQ(r.exitCode, 2);
 }
 
-TEST(CliVisibility, EveryGpuMethodPrintsOneJsonObject) {
+FLAREKIT_GL_TEST(CliVisibility, EveryGpuMethodPrintsOneJsonObject) {
     const std::string scene = std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json";
     for (const char* method : {"readback", "pbo", "query", "texture-mask", "texture-mask-screen", "burnout", "compute"}) {
         const CliResult r = runCli({"visibility", scene, "--method", method, "--json"});
@@ -255,7 +255,7 @@ TEST(CliVisibility, EveryGpuMethodPrintsOneJsonObject) {
     }
 }
 
-TEST(CliRender, RendersTheContractSceneWithAFlare) {
+FLAREKIT_GL_TEST(CliRender, RendersTheContractSceneWithAFlare) {
     TempDir dir;
     const std::string scene = std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json";
     CliResult r = runCli({"render", scene, "-o", dir.file("f.png"), "-v"});
@@ -275,7 +275,7 @@ TEST(CliRender, RendersTheContractSceneWithAFlare) {
     EXPECT_EQ(lineCount(r.err), 1);
 }
 
-TEST(CliRender, GpuMethodsDrawTheFlareTheRaycastPathDraws) {
+FLAREKIT_GL_TEST(CliRender, GpuMethodsDrawTheFlareTheRaycastPathDraws) {
     TempDir dir;
     const std::string scene = std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json";
     CliResult r = runCli({"render", scene, "-o", dir.file("raycast.exr")});
@@ -306,7 +306,7 @@ TEST(CliRender, GpuMethodsDrawTheFlareTheRaycastPathDraws) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
 }
 
-TEST(CliDemo, GpuMethodRunsFlareFilterAndToneMapOnTheGpu) {
+FLAREKIT_GL_TEST(CliDemo, GpuMethodRunsFlareFilterAndToneMapOnTheGpu) {
     TempDir dir;
     const std::string out = dir.file("demo");
     CliResult r = runCli({"demo", "-o", out, "--frames", "24", "--size", "160x90", "--method", "compute", "--no-video"});
@@ -328,7 +328,7 @@ TEST(CliDemo, GpuMethodRunsFlareFilterAndToneMapOnTheGpu) {
     EXPECT_GE(clear, 3);
 }
 
-TEST(CliDemo, WritesFramesLogStripAndVideo) {
+FLAREKIT_GL_TEST(CliDemo, WritesFramesLogStripAndVideo) {
     TempDir dir;
     const std::string out = dir.file("demo");  // created by the command
     CliResult r = runCli({"demo", "-o", out, "--frames", "6", "--size", "160x90"});

@@ -38,7 +38,7 @@ int channelsOf(const std::string& path) {
 
 }  // namespace
 
-TEST(PostFxCli, EveryPresetOnBothBackendsAgreesWithinOneLevel) {
+FLAREKIT_GL_TEST(PostFxCli, EveryPresetOnBothBackendsAgreesWithinOneLevel) {
     TempDir dir;
     for (const char* preset : {"killzone2", "modern", "anamorphic", "subtle"}) {
         const std::string cpu = dir.file(std::string(preset) + "-cpu.png"), gl = dir.file(std::string(preset) + "-gl.png");

@@ -6,7 +6,7 @@
 
 #include "gl/GlObjects.h"
 #include "GlTestContext.h"
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 
 using namespace flarekit;
 using namespace flarekit::gl;

@@ -6,7 +6,7 @@
 
 #include <cstdlib>
 
-#include "gl/HeadlessGl.h"
+#include "flarekit/HeadlessGl.h"
 
 namespace flarekit::test {
 

@@ -56,7 +56,7 @@ FlarePair drawBoth(const Preset& preset, const Scene& scene, float weight) {
     auto flare = GpuSpriteFlare::create(preset, scene.height);
     EXPECT_TRUE(flare.ok()) << flare.error().message;
     const gl::Texture w = weightTexture(weight);
-    auto drawn = flare->draw(*renderer, scene, w.get(), 0);
+    auto drawn = flare->draw(*renderer, scene, {w.get(), 0});
     EXPECT_TRUE(drawn.ok()) << drawn.error().message;
     auto gpu = renderer->readColor();
     EXPECT_TRUE(gpu.ok());
@@ -186,7 +186,7 @@ TEST(GpuTemporalFilter, FollowsTheCpuFilterFrameByFrame) {
         const Point sun{320.f + 25.f * float(i), 180.f - 4.f * float(i)};
         const bool inFront = i < 14;
         const double dt = i == 0 ? 0.0 : 1.0 / (20 + 5 * (i % 3));
-        ASSERT_TRUE(gpu->update(raw.get(), sun, inFront, 640, 360, dt).ok());
+        ASSERT_TRUE(gpu->update({raw.get(), 0}, sun, inFront, 640, 360, dt).ok());
         const TemporalState want = cpu.update(inputs[i], sun, inFront, 640, 360, dt);
         auto got = gpu->readState();
         ASSERT_TRUE(got.ok());
@@ -209,7 +209,7 @@ TEST(GpuTonemap, EqualsTheCpuToneMapWithTheExposureFromATexture) {
     ASSERT_TRUE(tonemap.ok());
     const gl::Texture exposure = weightTexture(0, 0, 0.37f, 0);
     for (float e : {1.f, 0.37f}) {
-        ASSERT_TRUE(tonemap->apply(*renderer, e == 1.f ? 0u : exposure.get(), 2).ok());
+        ASSERT_TRUE(tonemap->apply(*renderer, e == 1.f ? GpuChannel{} : GpuChannel{exposure.get(), 2}).ok());
         auto gpu = tonemap->read();
         ASSERT_TRUE(gpu.ok());
         Image cpu = *renderer->readColor();
@@ -218,7 +218,7 @@ TEST(GpuTonemap, EqualsTheCpuToneMapWithTheExposureFromATexture) {
     }
     Scene small;
     small.width = 160, small.height = 90;
-    EXPECT_FALSE(tonemap->apply(*SceneRenderer::create(small), 0, 0).ok());  // size mismatch
+    EXPECT_FALSE(tonemap->apply(*SceneRenderer::create(small)).ok());  // size mismatch
 }
 
 TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
@@ -242,7 +242,7 @@ TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
         ASSERT_TRUE(flare.ok());
         // A weight of 1 regardless: only the conditional render can keep the flare away.
         const gl::Texture one = weightTexture(1.f);
-        ASSERT_TRUE(flare->draw(*renderer, scene, one.get(), 0, (*query)->conditionalRenderQuery()).ok());
+        ASSERT_TRUE(flare->draw(*renderer, scene, {one.get(), 0}, (*query)->conditionalRenderQuery()).ok());
         const double after = energy(*renderer->readColor());
         if (hidden) {
             EXPECT_EQ(after, base);

@@ -59,6 +59,11 @@ std::optional<Point> parsePoint(const std::string& text) {
     return Point{*x, *y};
 }
 
+Error builtWithoutGl(const std::string& what) {
+    return invalidInput(what + ": this flarekit was built without OpenGL (FLAREKIT_GL=OFF); rebuild with "
+                               "-DFLAREKIT_GL=ON for the GPU paths");
+}
+
 Status writeText(const std::string& path, const std::string& text) {
     return writeAtomically(path, [&](const std::string& temp) -> Status {
         std::FILE* f = std::fopen(temp.c_str(), "wb");

@@ -45,6 +45,9 @@ auto readQuietly(Reader reader, const std::string& path) {
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);
 
+//! The one-line error of an OpenGL feature in a build without OpenGL (FLAREKIT_GL=OFF).
+Error builtWithoutGl(const std::string& what);
+
 //! Writes a text file atomically (temporary file, then rename).
 Status writeText(const std::string& path, const std::string& text);
 

@@ -16,7 +16,9 @@
 #include "flarekit/Demo.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
-#include "gl/HeadlessGl.h"
+#if FLAREKIT_HAS_GL
+#include "flarekit/HeadlessGl.h"
+#endif
 
 namespace flarekit::cli {
 
@@ -121,6 +123,7 @@ private:
     Image m_image;
 };
 
+#if FLAREKIT_HAS_GL
 int runDemo(DemoArgs& a) {
     int w = 0, h = 0;
     char tail = 0;
@@ -206,6 +209,9 @@ int runDemo(DemoArgs& a) {
     return kExitOk;
 }
 
+#else
+int runDemo(DemoArgs&) { return report(builtWithoutGl("demo")); }
+#endif
 }  // namespace
 
 void addDemoCommand(CLI::App& app, int& exitCode) {

@@ -8,7 +8,9 @@
 #include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFx.h"
-#include "gl/HeadlessGl.h"
+#if FLAREKIT_HAS_GL
+#include "flarekit/HeadlessGl.h"
+#endif
 
 namespace flarekit::cli {
 
@@ -41,6 +43,7 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
             if (i > 0 || a.repeat == 1) warmSeconds += secondsSince(start);
         }
     } else {
+#if FLAREKIT_HAS_GL
         auto context = gl::HeadlessGl::create();
         if (!context) return context.error();
         auto chain = GpuPostFx::create();
@@ -53,6 +56,9 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
             result = std::move(*r);
             if (i > 0 || a.repeat == 1) warmSeconds += secondsSince(start);
         }
+#else
+        return builtWithoutGl("postfx --backend gl");
+#endif
     }
     if (a.repeat > 1) {
         std::printf("flarekit-postfx %dx%d %s %s: %.4f s per run (mean of %d after the first)\n", image.width(), image.height(),

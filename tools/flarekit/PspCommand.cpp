@@ -7,6 +7,7 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
+#include "Progress.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Psp.h"
 
@@ -103,6 +104,7 @@ int runPspDemo(const PspDemoArgs& a) {
     if (Status s = makeDirectory(a.outDir); !s) return report(s.error());
     const std::string dir = std::filesystem::path(a.outDir).string() + "/";
     std::string csv = "frame,t,sun_x,sun_y,sun_in_frame,visible_pixels,coverage_byte,clut_alpha_correct,clut_alpha_naive\n";
+    Progress progress("psp demo", a.frames);
     for (int i = 0; i < a.frames; ++i) {
         const double t = a.frames > 1 ? double(i) / (a.frames - 1) : 0.0;
         auto in = psp::pspDemoInput(t);
@@ -119,9 +121,9 @@ int runPspDemo(const PspDemoArgs& a) {
         std::snprintf(row, sizeof row, "%d,%.4f,%d,%d,%d,%d,%d,%d,%d\n", i + 1, t, in->sunX, in->sunY, correct->sunInFrame ? 1 : 0,
                       correct->visiblePixels, correct->coverageByte, correct->clutAlpha, naive->clutAlpha);
         csv += row;
-        std::fprintf(stderr, "\rpsp demo: frame %d/%d", i + 1, a.frames);
+        progress.update(i + 1);
     }
-    std::fprintf(stderr, "\n");
+    progress.finish();
     if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
     std::printf("psp demo: %d frames (correct left, naive right) in %s, log %scoverage.csv\n", a.frames, dir.c_str(), dir.c_str());
     return kExitOk;

@@ -7,12 +7,13 @@
 #include "Common.h"
 #include "ParamOptions.h"
 #include "flarekit/PostFxParams.h"
-#include "flarekit/GpuFlare.h"
-#include "flarekit/GpuVisibility.h"
+#include "flarekit/FramePipeline.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Render.h"
 #include "flarekit/Tonemap.h"
-#include "gl/HeadlessGl.h"
+#if FLAREKIT_HAS_GL
+#include "flarekit/HeadlessGl.h"
+#endif
 
 namespace flarekit::cli {
 
@@ -24,52 +25,10 @@ struct RenderArgs {
     bool noFlare = false, noShadows = false, verbose = false;
 };
 
-struct RenderedFrame {
-    Image image;
-    FlaredFrame flare;
-    double coverage = 0, inFrame = 0;
-};
-
-Result<RenderedFrame> renderWithRaycast(const Scene& scene, const Preset& preset, const RenderOptions& options, bool flare) {
-    auto frame = renderScene(scene, options);
-    if (!frame) return frame.error();
-    auto visibility = raycastVisibility(scene);
-    if (!visibility) return visibility.error();
-    RenderedFrame r{std::move(*frame), {}, visibility->coverage, visibility->inFrame};
-    r.flare = flare ? addSunFlare(r.image, scene, preset, visibility->coverage) : FlaredFrame{};
-    return r;
-}
-
-Result<RenderedFrame> renderWithGpuMethod(const Scene& scene, const Preset& preset, const RenderOptions& options,
-                                          const RenderArgs& a) {
-    auto renderer = SceneRenderer::create(scene, options);
-    if (!renderer) return renderer.error();
-    GpuVisibilityOptions methodOptions;
-    methodOptions.textureMaskVariant = a.variant;
-    auto method = createGpuVisibility(a.method, scene, methodOptions);
-    if (!method) return method.error();
-    // A still frame: late methods (pbo, query) need the frame drawn until their result is in.
-    auto coverage = measureStillFrame(**method, *renderer, scene);
-    if (!coverage) return coverage.error();
-    RenderedFrame r{{}, {}, *coverage, sunInFrameFraction(scene)};
-    if (!a.noFlare) {
-        auto flare = GpuSpriteFlare::create(preset, scene.height);
-        if (!flare) return flare.error();
-        auto drawn = flare->draw(*renderer, scene, (*method)->coverageTexture(), 0);
-        if (!drawn) return drawn.error();
-        r.flare = *drawn;
-        r.flare.flareIntensity *= float(*coverage);  // for the report; the GPU read it itself
-    }
-    auto image = renderer->readColor();
-    if (!image) return image.error();
-    r.image = std::move(*image);
-    return r;
-}
-
+#if FLAREKIT_HAS_GL
 int runRender(const RenderArgs& a) {
     if (Status s = checkOutputPath(a.out); !s) return report(s.error());
-    const bool onGpu = isGpuVisibilityMethod(a.method);
-    if (a.method != "raycast" && !onGpu) {
+    if (a.method != "raycast" && !isGpuVisibilityMethod(a.method)) {
         return report(invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" + a.method + "'"));
     }
     auto scene = loadScene(a.scene);
@@ -78,22 +37,34 @@ int runRender(const RenderArgs& a) {
     if (!preset) return report(preset.error());
     auto gl = gl::HeadlessGl::create();
     if (!gl) return report(gl.error());
-    RenderOptions options = a.render;
-    options.shadows = !a.noShadows;
-    auto frame = onGpu ? renderWithGpuMethod(*scene, *preset, options, a)
-                       : renderWithRaycast(*scene, *preset, options, !a.noFlare);
+    // A still through the frame pipeline: no temporal filter, linear HDR out (tone-mapped
+    // below for 8/16-bit files), raycast at its ground-truth sample count.
+    FramePipelineSettings settings;
+    settings.method = a.method;
+    settings.raycastSamplesPerSide = RaycastOptions{}.samplesPerSide;
+    settings.render = a.render;
+    settings.render.shadows = !a.noShadows;
+    settings.methodOptions.textureMaskVariant = a.variant;
+    settings.temporal = false;
+    settings.flare = !a.noFlare;
+    settings.toneMap = false;
+    auto pipeline = FramePipeline::create(*scene, *preset, settings);
+    if (!pipeline) return report(pipeline.error());
+    auto frame = pipeline->run(*scene, 0.0);
     if (!frame) return report(frame.error());
     if (a.verbose) {
-        const FlaredFrame& flare = frame->flare;
         std::printf("%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare intensity %.3f\n",
-                    (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->coverage, a.method.c_str(),
-                    frame->inFrame, double(flare.sunPixel.x), double(flare.sunPixel.y),
-                    flare.sunInFront ? "" : " (behind the camera)", double(flare.flareIntensity));
+                    (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->rawCoverage, a.method.c_str(),
+                    frame->inFrame, double(frame->sunPixel.x), double(frame->sunPixel.y),
+                    frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
     }
     if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.tone.exposure);
     if (Status s = writeImage(a.out, frame->image); !s) return report(s.error());
     return kExitOk;
 }
+#else
+int runRender(const RenderArgs&) { return report(builtWithoutGl("render")); }
+#endif
 }  // namespace
 
 void addRenderCommand(CLI::App& app, int& exitCode) {

@@ -5,10 +5,12 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/Render.h"
 #include "flarekit/Visibility.h"
-#include "gl/HeadlessGl.h"
+#if FLAREKIT_HAS_GL
+#include "flarekit/GpuVisibility.h"
+#include "flarekit/HeadlessGl.h"
+#endif
 
 namespace flarekit::cli {
 
@@ -20,6 +22,7 @@ struct VisibilityArgs {
     bool json = false;
 };
 
+#if FLAREKIT_HAS_GL
 //! Draws the frame and runs the method until its result arrives; `latency` says how many
 //! extra frames a late method (pbo, query) took.
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
@@ -43,6 +46,12 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
+
+#else
+Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene&, int&) {
+    return builtWithoutGl("visibility --method " + a.method);
+}
+#endif
 
 int runVisibility(const VisibilityArgs& a) {
     auto scene = loadScene(a.scene);

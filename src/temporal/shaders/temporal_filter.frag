@@ -5,6 +5,7 @@
 // only where the sun projects, which the CPU knows from the camera.
 layout(binding = 0) uniform sampler2D previousState;
 layout(binding = 1) uniform sampler2D rawCoverage;
+uniform int rawChannel;  // the channel of rawCoverage holding the value
 uniform bool started;         // false on the first frame: start from this frame's values
 uniform float dtSeconds;
 uniform float attackSeconds, releaseSeconds;
@@ -26,7 +27,7 @@ float smoothstep01(float x) {
 }
 
 void main() {
-    float raw = texelFetch(rawCoverage, ivec2(0), 0).r;
+    float raw = texelFetch(rawCoverage, ivec2(0), 0)[rawChannel];
     float target = (isnan(raw) || isinf(raw)) ? 0.0 : clamp(raw, 0.0, 1.0);
     vec4 s = texelFetch(previousState, ivec2(0), 0);  // coverage, edge fade, exposure, weight
     float coverage = s.r, exposure = s.b;

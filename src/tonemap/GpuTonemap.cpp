@@ -37,18 +37,18 @@ GpuTonemap::~GpuTonemap() = default;
 GpuTonemap::GpuTonemap(GpuTonemap&&) noexcept = default;
 GpuTonemap& GpuTonemap::operator=(GpuTonemap&&) noexcept = default;
 
-Status GpuTonemap::apply(const SceneRenderer& source, unsigned exposureTexture, int channel) {
+Status GpuTonemap::apply(const SceneRenderer& source, GpuChannel exposure) {
     if (source.width() != m->width || source.height() != m->height) {
         return invalidInput("tonemap: frame size differs from the display target's");
     }
     const GLuint p = m->program.get();
-    glProgramUniform1i(p, gl::uniformLocation(p, "exposureChannel"), exposureTexture ? channel : -1);
+    glProgramUniform1i(p, gl::uniformLocation(p, "exposureChannel"), exposure ? exposure.channel : -1);
     glBindFramebuffer(GL_FRAMEBUFFER, m->target.get());
     glViewport(0, 0, m->width, m->height);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     glBindTextureUnit(0, source.colorTexture());
-    glBindTextureUnit(1, exposureTexture);
+    glBindTextureUnit(1, exposure.texture);
     glBindVertexArray(m->vao.get());
     glUseProgram(p);
     glDrawArrays(GL_TRIANGLES, 0, 3);
