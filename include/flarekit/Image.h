@@ -30,6 +30,7 @@ public:
     const float* data() const { return m_data.data(); }
 
     void fill(Rgba value);
+    void scale(float k);  //!< every channel (alpha too) x k
 
 private:
     int m_width = 0;

@@ -11,6 +11,10 @@ Image::Image(int width, int height) : m_width(width), m_height(height) {
     m_data.assign(std::size_t(width) * std::size_t(height) * 4, 0.f);
 }
 
+void Image::scale(float k) {
+    for (float& v : m_data) v *= k;
+}
+
 void Image::fill(Rgba value) {
     auto* px = reinterpret_cast<Rgba*>(m_data.data());
     std::fill(px, px + pixelCount(), value);

@@ -1,8 +1,9 @@
-// The CPU post-process chain: one function wiring the passes (style.md habit 4). Each pass is
-// a per-pixel kernel from its folder run over an image by runPass; GpuChain.cpp is the same
-// wiring with GL draws.
+// The CPU executor of the post-process chain: every step of the plan is its pass's pixel
+// kernel run over the output image in parallel (runPass). The wiring is ChainPlan.cpp's
+// wireChain; GpuChain.cpp executes the same steps with GL draws.
 #include "flarekit/PostFx.h"
 #include "postfx/ChainPlan.h"
+#include "postfx/PassClock.h"
 #include "postfx/dirt/LensDirtCache.h"
 
 namespace flarekit {
@@ -23,6 +24,47 @@ struct CpuPostFx::Impl {
     std::vector<Image> mips, ups;
     Image ghosts, halo, streaks, right, ping, lens;
     LensDirtCache dirt;
+    const Image* input = nullptr;
+    Image* final = nullptr;
+
+    const Image& read(BufferId id) {
+        if (id.kind == BufferKind::Input) return *input;
+        if (id.kind == BufferKind::Dirt) return dirt.image();
+        return write(id);
+    }
+    //! A buffer a step writes (never the input or the dirt texture).
+    Image& write(BufferId id) {
+        switch (id.kind) {
+            case BufferKind::Mip: return mips[id.level];
+            case BufferKind::Up: return ups[id.level];
+            case BufferKind::Ghosts: return ghosts;
+            case BufferKind::Halo: return halo;
+            case BufferKind::Streaks: return streaks;
+            case BufferKind::Right: return right;
+            case BufferKind::Ping: return ping;
+            case BufferKind::Lens: return lens;
+            case BufferKind::Final: return *final;
+            case BufferKind::Input:
+            case BufferKind::Dirt: break;
+        }
+        return lens;
+    }
+
+    //! One step: its pass's kernel over every output pixel, reading its inputs as textures.
+    void execute(const ChainPlan& plan, const Step& step) {
+        Image& out = ensure(write(step.output), plan.sizeOf(step.output));
+        std::vector<Tex> in;
+        for (BufferId id : step.inputs) in.emplace_back(read(id));
+        std::visit(
+            [&](const auto& u) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(u)>, ClearStep>) {
+                    out.fill({});
+                } else {
+                    runPass(out, [&](int x, int y) { return passPixel(u, in.data(), x, y); });
+                }
+            },
+            step.uniforms);
+    }
 };
 
 CpuPostFx::CpuPostFx() : m(std::make_unique<Impl>()) {}
@@ -35,78 +77,19 @@ Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResu
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
     Impl& b = *m;
-    PassClock clock(options.times);
-    const Size work = plan.work();
+    b.input = &input, b.final = &result.final;
     b.mips.resize(plan.levels.size()), b.ups.resize(plan.levels.size());
-    for (std::size_t i = 0; i < plan.levels.size(); ++i) ensure(b.mips[i], plan.levels[i]);
-
-    // 1. Bright pass at 1/2, then the 13-tap downsample chain.
-    clock.run("bright", plan.levels[0], [&] {
-        runPass(b.mips[0], [&, in = Tex(input)](int x, int y) { return brightPixel(plan.bright, in, x, y); });
+    if (plan.dirtOn) b.dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on
+    PassClock clock(options.times);
+    forEachGroup(plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
+        const auto group = [&] {
+            for (std::size_t i = first; i < last; ++i) b.execute(plan, plan.steps[i]);
+        };
+        off ? group() : clock.run(label, written, group);
     });
-    clock.run("downsample", plan.levels[1], [&] {
-        for (std::size_t i = 0; i < plan.down.size(); ++i) {
-            runPass(b.mips[i + 1], [&, src = Tex(b.mips[i])](int x, int y) { return downsamplePixel(plan.down[i], src, x, y); });
-        }
-    });
-
-    // 2. Blur: the progressive tent upsample back to 1/4, the bloom buffer (the coarsest
-    //    level is its own U).
-    const auto up = [&](std::size_t level) -> const Image& { return level + 1 == plan.levels.size() ? b.mips[level] : b.ups[level]; };
-    clock.run("upsample", work, [&] {
-        for (std::size_t i = plan.up.size(); i-- > 0;) {
-            runPass(ensure(b.ups[i + 1], plan.levels[i + 1]), [&, fine = Tex(b.mips[i + 1]), coarse = Tex(up(i + 2))](int x, int y) {
-                return upsamplePixel(plan.up[i], fine, coarse, x, y);
-            });
-        }
-    });
-    const Image& bloom = up(kWorkLevel);
-
-    // 3. Ghosts and halo from the bloom buffer; 4. streaks from the 1/4 bright image.
-    // A pass that is off leaves its buffer black for the lens pass.
-    for (auto [image, on] : {std::pair{&b.ghosts, plan.ghostsOn()}, std::pair{&b.halo, plan.haloOn()}, std::pair{&b.streaks, plan.streaksOn()}}) {
-        ensure(*image, work);
-        if (!on) image->fill({});
-    }
-    if (plan.ghostsOn()) {
-        clock.run("ghosts", work, [&] {
-            runPass(b.ghosts, [&, src = Tex(bloom)](int x, int y) { return ghostsPixel(plan.ghosts, src, x, y); });
-        });
-    }
-    if (plan.haloOn()) {
-        clock.run("halo", work, [&] { runPass(b.halo, [&, src = Tex(bloom)](int x, int y) { return haloPixel(plan.halo, src, x, y); }); });
-    }
-    if (plan.streaksOn()) {
-        clock.run("streaks", work, [&] {
-            // The right chain ends in `right`, the left one in `streaks`; `ping` is the other buffer of each.
-            ensure(b.ping, work), ensure(b.right, work);
-            const auto chain = [&](const std::vector<StreakUniforms>& passes, Image& last) {
-                const Image* src = &b.mips[kWorkLevel];
-                for (std::size_t i = 0; i < passes.size(); ++i) {
-                    Image& dst = (passes.size() - i) % 2 == 1 ? last : b.ping;
-                    runPass(dst, [&, t = Tex(*src), o = Tex(b.right)](int x, int y) { return streakPixel(passes[i], t, o, x, y); });
-                    src = &dst;
-                }
-            };
-            chain(plan.streaks.right, b.right);
-            chain(plan.streaks.left, b.streaks);
-        });
-    }
-
-    // 5. The lens buffer (chromatic aberration, starburst, dirt) and the full-res composite.
-    if (plan.dirtOn()) b.dirt.update(work.width, work.height, plan.dirt);  // read only when on
-    clock.run("lens", work, [&] {
-        const LensInputs in{Tex(bloom), Tex(b.ghosts), Tex(b.halo), Tex(b.streaks), Tex(b.dirt.image())};
-        runPass(ensure(b.lens, work), [&](int x, int y) { return lensPixel(plan.lens, in, x, y); });
-    });
-    clock.run("composite", plan.input, [&] {
-        runPass(ensure(result.final, plan.input),
-                [&, in = Tex(input), l = Tex(b.lens)](int x, int y) { return compositePixel(plan.composite, in, l, x, y); });
-    });
-
     if (options.keepLayers) {
-        result.bloom = bloom;
-        scaleInPlace(result.bloom, params.bloom.intensity);
+        result.bloom = b.read(plan.bloom);
+        result.bloom.scale(params.bloom.intensity);
         result.ghosts = b.ghosts, result.halo = b.halo, result.streaks = b.streaks, result.lens = b.lens;
     }
     return Ok{};

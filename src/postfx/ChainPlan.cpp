@@ -4,6 +4,105 @@
 
 namespace flarekit::postfx {
 
+namespace {
+
+BufferId mip(std::size_t level) { return {BufferKind::Mip, level}; }
+BufferId named(BufferKind kind) { return {kind, 0}; }
+
+//! The upsample result at `level`: the coarsest level is its own (nothing coarser to add).
+BufferId upAt(const ChainPlan& plan, std::size_t level) {
+    return level + 1 == plan.levels.size() ? mip(level) : BufferId{BufferKind::Up, level};
+}
+
+//! The one wiring of the chain (style.md habit 4):
+//!   input -> bright (1/2) -> downsample chain -> tent upsample -> bloom (1/4)
+//!   bloom -> ghosts, halo;  bright 1/4 -> streaks;  all -> lens (chromatic, starburst, dirt)
+//!   input + lens -> composite (+ tone curve)
+//! A pass that is off clears its buffer instead, so the lens pass reads black.
+void wireChain(ChainPlan& plan, const PostFxParams& p) {
+    const auto add = [&](const char* label, PassUniforms u, std::vector<BufferId> in, BufferId out) {
+        plan.steps.push_back({label, std::move(u), std::move(in), out});
+    };
+    const Size work = plan.work();
+    const Vec2 invWork = inverseSize(work.width, work.height);
+    const float aspect = float(plan.input.width) / float(plan.input.height);
+
+    // 1. Bright pass at 1/2, then the 13-tap downsample chain.
+    add("bright", BrightUniforms{p.bright.threshold, p.bright.knee, inverseSize(plan.levels[0].width, plan.levels[0].height)},
+        {named(BufferKind::Input)}, mip(0));
+    for (std::size_t i = 0; i + 1 < plan.levels.size(); ++i) {
+        const Size src = plan.levels[i], dst = plan.levels[i + 1];
+        add("downsample", DownsampleUniforms{inverseSize(dst.width, dst.height), inverseSize(src.width, src.height)},
+            {mip(i)}, mip(i + 1));
+    }
+
+    // 2. Blur: U(k) = (D(k) + spread U(k+1)) x scale, from the coarsest up to the working level;
+    //    the last step divides by 1 + spread + spread^2 + ... so a flat field stays flat.
+    double norm = 0, weight = 1;
+    for (std::size_t i = kWorkLevel; i < plan.levels.size(); ++i, weight *= p.bloom.spread) norm += weight;
+    for (std::size_t i = plan.levels.size() - 2; i-- > 0;) {
+        const Size dst = plan.levels[i + 1], coarse = plan.levels[i + 2];
+        add("upsample",
+            UpsampleUniforms{inverseSize(dst.width, dst.height), inverseSize(coarse.width, coarse.height), p.bloom.spread,
+                             i == 0 ? float(1.0 / norm) : 1.f},
+            {mip(i + 1), upAt(plan, i + 2)}, BufferId{BufferKind::Up, i + 1});
+    }
+    plan.bloom = upAt(plan, kWorkLevel);
+
+    // 3. Ghosts and halo from the bloom buffer.
+    GhostsUniforms ghosts{invWork, invWork, p.ghosts, p.flareIntensity};
+    if (!ghosts.ghosts.empty() && ghosts.intensity > 0.f) {
+        add("ghosts", std::move(ghosts), {plan.bloom}, named(BufferKind::Ghosts));
+    } else {
+        add("ghosts", ClearStep{}, {}, named(BufferKind::Ghosts));
+    }
+    const HaloUniforms halo{invWork, aspect, p.halo, p.flareIntensity * p.halo.intensity};
+    add("halo", halo.intensity > 0.f ? PassUniforms(halo) : PassUniforms(ClearStep{}), {plan.bloom},
+        named(BufferKind::Halo));
+
+    // 4. Streaks from the 1/4 bright image: the right chain ends in Right, the left one in
+    //    Streaks (its last pass adds Right); Ping is the other buffer of each.
+    StreakPlan streaks;
+    if (p.streaks.intensity > 0.f && p.flareIntensity > 0.f) {
+        streaks = streakPasses(p.streaks, work.width, p.flareIntensity * p.streaks.intensity);
+    }
+    if (!streaks.left.empty()) {
+        for (auto [passes, last] : {std::pair{&streaks.right, BufferKind::Right}, std::pair{&streaks.left, BufferKind::Streaks}}) {
+            BufferId src = mip(kWorkLevel);
+            for (std::size_t i = 0; i < passes->size(); ++i) {
+                const StreakUniforms& u = (*passes)[i];
+                const BufferId dst = named((passes->size() - i) % 2 == 1 ? last : BufferKind::Ping);
+                std::vector<BufferId> in{src};
+                if (u.addOther) in.push_back(named(BufferKind::Right));
+                add("streaks", u, std::move(in), dst);
+                src = dst;
+            }
+        }
+    } else {
+        add("streaks", ClearStep{}, {}, named(BufferKind::Streaks));
+    }
+
+    // 5. The lens buffer (chromatic aberration, starburst, dirt) and the full-res composite.
+    add("lens", LensUniforms{invWork, aspect, p.bloom.intensity, p.chromatic.amount, p.dirt.intensity, starburstUniforms(p.starburst)},
+        {plan.bloom, named(BufferKind::Ghosts), named(BufferKind::Halo), named(BufferKind::Streaks), named(BufferKind::Dirt)},
+        named(BufferKind::Lens));
+    add("composite", CompositeUniforms{inverseSize(plan.input.width, plan.input.height), int(p.tone.op), p.tone.exposure},
+        {named(BufferKind::Input), named(BufferKind::Lens)}, named(BufferKind::Final));
+    plan.dirt = p.dirt;
+    plan.dirtOn = p.dirt.intensity > 0.f;
+}
+
+}  // namespace
+
+Size ChainPlan::sizeOf(BufferId id) const {
+    switch (id.kind) {
+        case BufferKind::Input:
+        case BufferKind::Final: return input;
+        case BufferKind::Mip:
+        case BufferKind::Up: return levels[id.level];
+        default: return work();
+    }
+}
 
 Result<ChainPlan> planChain(int width, int height, const PostFxParams& p) {
     if (width < 1 || height < 1) return invalidInput("postfx: empty image");
@@ -15,31 +114,7 @@ Result<ChainPlan> planChain(int width, int height, const PostFxParams& p) {
         plan.levels.push_back(s);
         s = {halfSize(s.width), halfSize(s.height)};
     }
-    plan.bright = {p.bright.threshold, p.bright.knee, inverseSize(plan.levels[0].width, plan.levels[0].height)};
-    for (std::size_t i = 0; i + 1 < plan.levels.size(); ++i) {
-        const Size src = plan.levels[i], dst = plan.levels[i + 1];
-        plan.down.push_back({inverseSize(dst.width, dst.height), inverseSize(src.width, src.height)});
-    }
-    // U(k) = (D(k) + spread U(k+1)) x scale, from the coarsest up to the working level; the last
-    // step divides by 1 + spread + spread^2 + ... so a flat field stays flat.
-    double norm = 0, weight = 1;
-    for (std::size_t i = kWorkLevel; i < plan.levels.size(); ++i, weight *= p.bloom.spread) norm += weight;
-    for (std::size_t i = 0; i + 2 < plan.levels.size(); ++i) {
-        const Size dst = plan.levels[i + 1], coarse = plan.levels[i + 2];
-        plan.up.push_back({inverseSize(dst.width, dst.height), inverseSize(coarse.width, coarse.height), p.bloom.spread,
-                           i == 0 ? float(1.0 / norm) : 1.f});
-    }
-    const Size work = plan.work();
-    const Vec2 invWork = inverseSize(work.width, work.height);
-    const float aspect = float(width) / float(height);
-    plan.ghosts = {invWork, invWork, p.ghosts, p.flareIntensity};
-    plan.halo = {invWork, aspect, p.halo, p.flareIntensity * p.halo.intensity};
-    if (p.streaks.intensity > 0.f && p.flareIntensity > 0.f) {
-        plan.streaks = streakPasses(p.streaks, work.width, p.flareIntensity * p.streaks.intensity);
-    }
-    plan.lens = {invWork, aspect, p.bloom.intensity, p.chromatic.amount, p.dirt.intensity, starburstUniforms(p.starburst)};
-    plan.composite = {inverseSize(width, height), int(p.tone.op), p.tone.exposure};
-    plan.dirt = p.dirt;
+    wireChain(plan, p);
     return plan;
 }
 

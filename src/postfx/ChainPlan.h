@@ -1,20 +1,13 @@
-// The chain's sizes and every pass's uniforms, computed once from the params and the input
-// size, and shared by the CPU chain (Chain.cpp) and the GL chain (GpuChain.cpp): the two differ
-// only in who runs the kernels.
+// The chain for one input size and one set of params: the buffers' sizes and the list of steps
+// (pass, uniforms, inputs, output), computed once and run by either executor, CPU (Chain.cpp)
+// or GL (GpuChain.cpp). The two differ only in who runs each step.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "flarekit/PostFx.h"
-#include "postfx/blur/Upsample.h"
-#include "postfx/brightpass/BrightPass.h"
-#include "postfx/composite/Composite.h"
-#include "postfx/composite/Lens.h"
-#include "postfx/downsample/Downsample.h"
-#include "postfx/ghosts/Ghosts.h"
-#include "postfx/halo/Halo.h"
-#include "postfx/streaks/Streaks.h"
+#include "postfx/PassList.h"
 
 namespace flarekit::postfx {
 
@@ -26,67 +19,55 @@ struct Size {
 //! Index of the working resolution in ChainPlan::levels: level 1 is 1/4 of the input.
 inline constexpr std::size_t kWorkLevel = 1;
 
+//! The chain's images. Mip i: the bright image downsampled (levels[i]); Up i: the tent upsample
+//! written at level i (the coarsest level is its own); the work-size layers; Dirt: the lens
+//! dirt texture, filled by the executor; Input and Final: the caller's images.
+enum class BufferKind { Input, Mip, Up, Ghosts, Halo, Streaks, Right, Ping, Lens, Dirt, Final };
+
+struct BufferId {
+    BufferKind kind = BufferKind::Input;
+    std::size_t level = 0;  //!< Mip and Up only
+    bool operator==(const BufferId&) const = default;
+};
+
+//! One step of the chain: `uniforms` says which pass (and with what), reading `inputs` in the
+//! order its kernel takes them, writing `output`. Consecutive steps of one `label` are timed
+//! together (`postfx -v`).
+struct Step {
+    const char* label;
+    PassUniforms uniforms;
+    std::vector<BufferId> inputs;
+    BufferId output;
+};
+
 struct ChainPlan {
     Size input;
     std::vector<Size> levels;  //!< levels[0] = 1/2 (bright pass) ... levels.back() the coarsest
-    BrightUniforms bright;
-    std::vector<DownsampleUniforms> down;  //!< down[i] writes levels[i + 1] from levels[i]
-    std::vector<UpsampleUniforms> up;      //!< up[i] writes levels[i + 1] from levels[i + 2]; empty when levels.size() == 2
-    GhostsUniforms ghosts;
-    HaloUniforms halo;
-    StreakPlan streaks;
-    LensUniforms lens;
-    CompositeUniforms composite;
+    std::vector<Step> steps;   //!< the chain, in order
+    BufferId bloom;            //!< the bloom buffer: the upsample written at the working level
     DirtParams dirt;
+    bool dirtOn = false;
 
     Size work() const { return levels[kWorkLevel]; }
-    bool haloOn() const { return halo.intensity > 0.f; }
-    bool ghostsOn() const { return !ghosts.ghosts.empty() && ghosts.intensity > 0.f; }
-    bool dirtOn() const { return lens.dirtIntensity > 0.f; }
-    bool streaksOn() const { return !streaks.left.empty(); }
+    Size sizeOf(BufferId id) const;
 };
 
-//! Multiplies every value (the bloom layer is the bloom buffer x bloom.intensity).
-inline void scaleInPlace(Image& image, float k) {
-    for (std::size_t i = 0; i < image.pixelCount() * 4; ++i) image.data()[i] *= k;
+//! The steps in timing groups (consecutive steps of one label), in order:
+//! f(label, pixels written (the group's largest output), first, last, off) with the group's
+//! steps [first, last); `off` is a pass that is off (a clear, not timed).
+template <class F>
+void forEachGroup(const ChainPlan& plan, F&& f) {
+    for (std::size_t first = 0, last = 0; first < plan.steps.size(); first = last) {
+        Size written;
+        for (last = first; last < plan.steps.size() && plan.steps[last].label == plan.steps[first].label; ++last) {
+            const Size s = plan.sizeOf(plan.steps[last].output);
+            if (s.megapixels() > written.megapixels()) written = s;
+        }
+        f(plan.steps[first].label, written, first, last, std::holds_alternative<ClearStep>(plan.steps[first].uniforms));
+    }
 }
 
-//! Checks what JSON validation would (for params built in code) and plans the chain.
+//! Validates the params (validatePostFxParams: JSON and code-built params alike) and plans the chain.
 Result<ChainPlan> planChain(int width, int height, const PostFxParams& params);
 
-//! Times each pass when asked (CPU: wall clock).
-class PassClock {
-public:
-    explicit PassClock(std::vector<PassTime>* times) : m_times(times) {}
-    template <typename Work>
-    void run(const char* pass, Size written, const Work& work);
-    //! Adds a measurement (the GL chain times its passes itself).
-    void add(const char* pass, Size written, double ms, double wallMs);
-
-private:
-    std::vector<PassTime>* m_times;
-};
-
 }  // namespace flarekit::postfx
-
-#include <chrono>
-
-template <typename Work>
-void flarekit::postfx::PassClock::run(const char* pass, Size written, const Work& work) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    if (!m_times) return;
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    add(pass, written, ms, ms);
-}
-
-inline void flarekit::postfx::PassClock::add(const char* pass, Size written, double ms, double wallMs) {
-    if (!m_times) return;
-    for (PassTime& t : *m_times) {
-        if (t.pass == pass) {
-            t.milliseconds += ms, t.wallMilliseconds += wallMs, t.megapixels += written.megapixels();
-            return;
-        }
-    }
-    m_times->push_back({pass, ms, wallMs, written.megapixels()});
-}

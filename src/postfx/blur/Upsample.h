@@ -28,4 +28,12 @@ inline F4 upsamplePixel(const UpsampleUniforms& u, const Tex& fine, const Tex& c
     return (fine.texel(x, y) + tent * u.spread) * u.scale;
 }
 
+//! The pass unit: its pixel over (the level's downsample, the coarser upsample) and its
+//! uniforms by upsample.frag's names.
+inline F4 passPixel(const UpsampleUniforms& u, const Tex* in, int x, int y) { return upsamplePixel(u, in[0], in[1], x, y); }
+template <class Sink>
+void bindUniforms(const UpsampleUniforms& u, Sink& s) {
+    s.set("invOutSize", u.invOutSize), s.set("coarseTexel", u.coarseTexel), s.set("spread", u.spread), s.set("scale", u.scale);
+}
+
 }  // namespace flarekit::postfx

@@ -31,4 +31,12 @@ inline F4 brightPixel(const BrightUniforms& u, const Tex& input, int x, int y) {
     return softThreshold(bilinearFinite(input, pixelUv(x, y, u.invOutSize)), u.threshold, u.knee);
 }
 
+//! The pass unit: its pixel over the chain's inputs (the input image) and its uniforms by the
+//! names bright_pass.frag declares.
+inline F4 passPixel(const BrightUniforms& u, const Tex* in, int x, int y) { return brightPixel(u, in[0], x, y); }
+template <class Sink>
+void bindUniforms(const BrightUniforms& u, Sink& s) {
+    s.set("threshold", u.threshold), s.set("knee", u.knee), s.set("invOutSize", u.invOutSize);
+}
+
 }  // namespace flarekit::postfx

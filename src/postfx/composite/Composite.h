@@ -19,4 +19,11 @@ inline F4 compositePixel(const CompositeUniforms& u, const Tex& input, const Tex
     return toneMap(color, u.toneOperator, u.exposure);
 }
 
+//! The pass unit: its pixel over (input, lens buffer) and its uniforms by composite.frag's names.
+inline F4 passPixel(const CompositeUniforms& u, const Tex* in, int x, int y) { return compositePixel(u, in[0], in[1], x, y); }
+template <class Sink>
+void bindUniforms(const CompositeUniforms& u, Sink& s) {
+    s.set("invOutSize", u.invOutSize), s.set("toneOperator", u.toneOperator), s.set("exposure", u.exposure);
+}
+
 }  // namespace flarekit::postfx

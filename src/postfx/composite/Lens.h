@@ -5,6 +5,8 @@
 // chromatic is the identity when they are off. Twin: shaders/lens.frag.
 #pragma once
 
+#include <span>
+#include <string>
 #include "postfx/Kernel.h"
 #include "postfx/chromatic/Chromatic.h"
 #include "postfx/starburst/Starburst.h"
@@ -31,6 +33,19 @@ inline F4 lensPixel(const LensUniforms& u, const LensInputs& in, int x, int y) {
     F4 lens = in.bloom.texel(x, y) * u.bloomIntensity + flare;
     if (u.dirtIntensity > 0.f) lens = lens * (1.f + u.dirtIntensity * in.dirt.texel(x, y)[0]);
     return rgbOnly(lens);
+}
+
+//! The pass unit: its pixel over (bloom, ghosts, halo, streaks, dirt) and its uniforms by
+//! lens.frag's (and starburst.glsl's) names.
+inline F4 passPixel(const LensUniforms& u, const Tex* in, int x, int y) {
+    return lensPixel(u, LensInputs{in[0], in[1], in[2], in[3], in[4]}, x, y);
+}
+template <class Sink>
+void bindUniforms(const LensUniforms& u, Sink& s) {
+    s.set("invOutSize", u.invOutSize), s.set("aspect", u.aspect), s.set("bloomIntensity", u.bloomIntensity);
+    s.set("chromatic", u.chromatic), s.set("dirtIntensity", u.dirtIntensity);
+    s.set("starIntensity", u.star.intensity), s.set("starWidth", u.star.width), s.set("starSpokes", u.star.spokes);
+    s.set("starRays", std::span<const float>(u.star.rays));
 }
 
 }  // namespace flarekit::postfx

@@ -24,4 +24,11 @@ inline F4 downsamplePixel(const DownsampleUniforms& u, const Tex& src, int x, in
     return e * 0.125f + (a + c + g + i) * 0.03125f + (b + d + f + h) * 0.0625f + (j + k + l + m) * 0.125f;
 }
 
+//! The pass unit: its pixel over the finer level and its uniforms by downsample.frag's names.
+inline F4 passPixel(const DownsampleUniforms& u, const Tex* in, int x, int y) { return downsamplePixel(u, in[0], x, y); }
+template <class Sink>
+void bindUniforms(const DownsampleUniforms& u, Sink& s) {
+    s.set("invOutSize", u.invOutSize), s.set("srcTexel", u.srcTexel);
+}
+
 }  // namespace flarekit::postfx

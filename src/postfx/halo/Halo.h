@@ -43,4 +43,13 @@ inline F4 haloPixel(const HaloUniforms& u, const Tex& bloom, int x, int y) {
     return rgbOnly(sum * tint * (u.intensity / float(kHaloSamples)));
 }
 
+//! The pass unit: its pixel over the bloom buffer and its uniforms by halo.frag's names.
+inline F4 passPixel(const HaloUniforms& u, const Tex* in, int x, int y) { return haloPixel(u, in[0], x, y); }
+template <class Sink>
+void bindUniforms(const HaloUniforms& u, Sink& s) {
+    s.set("invOutSize", u.invOutSize), s.set("aspect", u.aspect), s.set("radius", u.halo.radius);
+    s.set("thickness", u.halo.thickness), s.set("threshold", u.halo.threshold), s.set("falloff", u.halo.falloff);
+    s.set("intensity", u.intensity), s.set("tint", u.halo.tint);
+}
+
 }  // namespace flarekit::postfx

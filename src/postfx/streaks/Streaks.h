@@ -12,6 +12,8 @@
 // streak's brightness is set by `intensity`. Twin: shaders/streaks.frag.
 #pragma once
 
+#include <span>
+#include <string>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -71,6 +73,17 @@ inline F4 streakPixel(const StreakUniforms& u, const Tex& src, const Tex& other,
     }
     if (u.addOther) sum += other.texel(x, y);
     return rgbOnly(sum * u.outScale);
+}
+
+//! The pass unit: its pixel over (the previous pass, and with addOther the right chain's
+//! result) and its uniforms by streaks.frag's names.
+inline F4 passPixel(const StreakUniforms& u, const Tex* in, int x, int y) {
+    return streakPixel(u, in[0], u.addOther ? in[1] : in[0], x, y);
+}
+template <class Sink>
+void bindUniforms(const StreakUniforms& u, Sink& s) {
+    s.set("step", u.step), s.set("threshold", u.threshold), s.set("addOther", int(u.addOther));
+    s.set("weights", std::span<const float>(u.weights)), s.set("outScale", u.outScale);
 }
 
 }  // namespace flarekit::postfx
