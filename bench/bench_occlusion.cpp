@@ -34,7 +34,9 @@
 #include "flarekit/GpuFlare.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
-#include "gl/GlObjects.h"
+#include <epoxy/gl.h>
+
+#include "flarekit/GpuTimer.h"
 #include "flarekit/HeadlessGl.h"
 #include "scene/CameraMath.h"
 
@@ -128,7 +130,7 @@ void BM_FrameLoop(benchmark::State& state, const std::string& name) {
     const std::vector<Scene> views = driveViews(kViews);
 
     std::array<GLsync, kFramesInFlight> fences{};
-    std::array<gl::TimerQuery, kFramesInFlight> timers;
+    std::array<GpuTimer, kFramesInFlight> timers;
     double measureMs = 0, glMs = 0, throttleMs = 0, gpuMs = 0;
     long frame = 0, timed = 0;
     const double dt = kDemoDurationSeconds / kViews;

@@ -8,7 +8,9 @@
 
 #include "flarekit/Demo.h"
 #include "flarekit/Render.h"
-#include "gl/GlObjects.h"
+#include <epoxy/gl.h>
+
+#include "flarekit/GpuTimer.h"
 #include "flarekit/HeadlessGl.h"
 
 using namespace flarekit;
@@ -43,7 +45,7 @@ void BM_RenderDemoScene(benchmark::State& state) {
         v.spheres.clear(), v.boxes.clear(), v.triangles.clear();
         views.push_back(std::move(v));
     }
-    gl::TimerQuery timer;
+    GpuTimer timer;
     double gpuMs = 0;
     std::size_t frame = 0;
     for (auto _ : state) {

@@ -27,6 +27,8 @@ inline constexpr Param<RenderOptions> kRenderParams[] = {
     oneOf<&RenderOptions::msaaSamples>("msaa", kMsaaSampleCounts, "samples", "samples per pixel of the scene pass"),
 };
 
+struct SceneTargets;
+
 //! A GL scene renderer that keeps its programs, targets and the scene's mesh between frames,
 //! so an animation pays only for drawing. A GL context must be current while it lives; it
 //! is move-only.
@@ -48,23 +50,13 @@ public:
 
     int width() const;
     int height() const;
-    //! The last frame's single-sample targets (GL names): RGBA16F colour, DEPTH_COMPONENT32F.
-    unsigned colorTexture() const;
-    unsigned depthTexture() const;
-    //! Samples per pixel, and with MSAA the multisampled depth (GL_TEXTURE_2D_MULTISAMPLE)
-    //! before its one-sample resolve; 0 without MSAA.
+    //! Samples per pixel of the scene pass.
     int msaaSamples() const;
-    unsigned multisampleDepthTexture() const;
-    //! The framebuffer holding those two textures.
-    unsigned framebuffer() const;
-    //! The uploaded mesh (positions, normals, colours at attributes 0-2), for passes that
-    //! re-draw the objects from another camera (texture masking's sun map).
-    unsigned meshVertexArray() const;
-    int meshVertexCount() const;
 
 private:
     struct Impl;
     explicit SceneRenderer(std::unique_ptr<Impl> impl);
+    friend SceneTargets sceneTargets(const SceneRenderer& renderer);  // the GL passes' view (src/scene)
     std::unique_ptr<Impl> m;
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "scene/SceneTargets.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
@@ -104,7 +105,7 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(w), float(h));
     const GLint centreAt = gl::uniformLocation(p, "centre"), halfAt = gl::uniformLocation(p, "halfSize");
 
-    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneTargets(target).framebuffer);
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);

@@ -149,16 +149,28 @@ Result<Program> linkProgram(std::initializer_list<ShaderSource> sources) {
     return program;
 }
 
-TimerQuery::TimerQuery() {
-    GLuint name = 0;
-    glCreateQueries(GL_TIME_ELAPSED, 1, &name);
-    m_query = Query(name);
-}
+}  // namespace flarekit::gl
 
-double TimerQuery::milliseconds() const {
+namespace flarekit {
+
+GpuTimer::GpuTimer() { glCreateQueries(GL_TIME_ELAPSED, 1, &m_query); }
+GpuTimer::~GpuTimer() {
+    if (m_query) glDeleteQueries(1, &m_query);
+}
+GpuTimer& GpuTimer::operator=(GpuTimer&& other) noexcept {
+    if (this != &other) {
+        if (m_query) glDeleteQueries(1, &m_query);
+        m_query = other.m_query;
+        other.m_query = 0;
+    }
+    return *this;
+}
+void GpuTimer::begin() const { glBeginQuery(GL_TIME_ELAPSED, m_query); }
+void GpuTimer::end() const { glEndQuery(GL_TIME_ELAPSED); }
+double GpuTimer::milliseconds() const {
     GLuint64 ns = 0;
-    glGetQueryObjectui64v(m_query.get(), GL_QUERY_RESULT, &ns);
+    glGetQueryObjectui64v(m_query, GL_QUERY_RESULT, &ns);
     return double(ns) * 1e-6;
 }
 
-}  // namespace flarekit::gl
+}  // namespace flarekit

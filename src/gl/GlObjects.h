@@ -4,6 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include "flarekit/GpuTimer.h"
+
 #include <string>
 #include <utility>
 
@@ -105,15 +107,6 @@ Result<Program> linkProgram(std::initializer_list<ShaderSource> sources);
 
 //! GPU time of the commands between begin() and end(), from GL_TIME_ELAPSED. Reading waits
 //! for the GPU to finish them.
-class TimerQuery {
-public:
-    TimerQuery();
-    void begin() const { glBeginQuery(GL_TIME_ELAPSED, m_query.get()); }
-    void end() const { glEndQuery(GL_TIME_ELAPSED); }
-    double milliseconds() const;
-
-private:
-    Query m_query;
-};
+using TimerQuery = GpuTimer;
 
 }  // namespace flarekit::gl

@@ -1,3 +1,4 @@
+#include "scene/SceneTargets.h"
 #include "occlusion/FrameDepth.h"
 
 #include <algorithm>
@@ -52,7 +53,7 @@ Result<FrameDepthProgram> FrameDepthProgram::link(std::initializer_list<gl::Shad
 void FrameDepthProgram::bindDepth(const SceneRenderer& renderer) const {
     const int samples = renderer.msaaSamples();
     if (samples <= 1) {
-        glBindTextureUnit(0, renderer.depthTexture());
+        glBindTextureUnit(0, sceneTargets(renderer).depth);
         return;
     }
     const GLuint program = forFrame(renderer);
@@ -60,7 +61,7 @@ void FrameDepthProgram::bindDepth(const SceneRenderer& renderer) const {
     const int n = std::min(samples, 16);
     glProgramUniform1i(program, gl::uniformLocation(program, "frameSampleCount"), n);
     glProgramUniform2fv(program, gl::uniformLocation(program, "frameSamplePositions"), n, positions.data());
-    glBindTextureUnit(0, renderer.multisampleDepthTexture());
+    glBindTextureUnit(0, sceneTargets(renderer).multisampleDepth);
 }
 
 }  // namespace flarekit::occlusion

@@ -24,7 +24,6 @@ protected:
     //! Binds the coverage texture as image unit 0 / a draw target for GPU-side results.
     GLuint coverageName() const { return m_coverage.get(); }
     void markPublished() { m_hasResult = true; }
-    bool hasResult() const { return m_hasResult; }
 
 private:
     gl::Texture m_coverage;

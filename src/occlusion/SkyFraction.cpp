@@ -1,3 +1,4 @@
+#include "scene/SceneTargets.h"
 #include "occlusion/SkyFraction.h"
 
 #include "flarekit_shaders.h"
@@ -34,7 +35,7 @@ Result<GLuint> SkyFraction::update(const SunDiscView& v, const SceneRenderer& re
     glScissor(v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glBindTextureUnit(0, multisampled ? renderer.multisampleDepthTexture() : renderer.depthTexture());
+    glBindTextureUnit(0, multisampled ? sceneTargets(renderer).multisampleDepth : sceneTargets(renderer).depth);
     glBindVertexArray(m_vao.get());
     glUseProgram(p);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -14,6 +14,7 @@
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
 #include "scene/SceneMesh.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit {
 
@@ -65,13 +66,12 @@ SceneRenderer& SceneRenderer::operator=(SceneRenderer&&) noexcept = default;
 
 int SceneRenderer::width() const { return m->width; }
 int SceneRenderer::height() const { return m->height; }
-unsigned SceneRenderer::colorTexture() const { return m->color.get(); }
-unsigned SceneRenderer::depthTexture() const { return m->depth.get(); }
-unsigned SceneRenderer::framebuffer() const { return m->target.get(); }
 int SceneRenderer::msaaSamples() const { return m->samples; }
-unsigned SceneRenderer::multisampleDepthTexture() const { return m->msDepth.get(); }
-unsigned SceneRenderer::meshVertexArray() const { return m->vao.get(); }
-int SceneRenderer::meshVertexCount() const { return m->vertexCount; }
+
+SceneTargets sceneTargets(const SceneRenderer& r) {
+    const SceneRenderer::Impl& m = *r.m;
+    return {m.color.get(), m.depth.get(), m.target.get(), m.msDepth.get(), m.vao.get(), m.samples};
+}
 
 Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOptions& options) {
     const int samples = options.msaaSamples;

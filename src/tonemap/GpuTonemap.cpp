@@ -1,5 +1,6 @@
 // GpuTonemap: shaders/tonemap_aces.frag from the renderer's HDR colour into an RGBA16F
 // display target (linear [0, 1], like tonemapAcesFitted's output).
+#include "scene/SceneTargets.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
@@ -47,7 +48,7 @@ Status GpuTonemap::apply(const SceneRenderer& source, GpuChannel exposure) {
     glViewport(0, 0, m->width, m->height);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(0, source.colorTexture());
+    glBindTextureUnit(0, sceneTargets(source).color);
     glBindTextureUnit(1, exposure.texture);
     glBindVertexArray(m->vao.get());
     glUseProgram(p);

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "GlTestContext.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Tonemap.h"
-#include "gl/GlObjects.h"
+#include <epoxy/gl.h>
+
 #include "scene/CameraMath.h"
 
 using namespace flarekit;
@@ -34,11 +36,24 @@ Scene sceneWithSunAt(double px, double py) {
     return s;
 }
 
-//! A 1x1 texture holding `values` (RGBA32F): a stand-in for a method's or the filter's result.
-gl::Texture weightTexture(float r, float g = 0, float b = 0, float a = 0) {
-    gl::Texture t = gl::makeTexture2D(GL_RGBA32F, 1, 1);
+//! A 1x1 RGBA32F texture the test owns (plain GL: the library's wrappers are internal).
+class TestTexture {
+public:
+    TestTexture() { glCreateTextures(GL_TEXTURE_2D, 1, &m_name), glTextureStorage2D(m_name, 1, GL_RGBA32F, 1, 1); }
+    ~TestTexture() { glDeleteTextures(1, &m_name); }
+    TestTexture(const TestTexture&) = delete;
+    TestTexture& operator=(const TestTexture&) = delete;
+    GLuint get() const { return m_name; }
+
+private:
+    GLuint m_name = 0;
+};
+
+//! A 1x1 texture holding `values`: a stand-in for a method's or the filter's result.
+std::unique_ptr<TestTexture> weightTexture(float r, float g = 0, float b = 0, float a = 0) {
+    auto t = std::make_unique<TestTexture>();
     const float v[4] = {r, g, b, a};
-    glTextureSubImage2D(t.get(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, v);
+    glTextureSubImage2D(t->get(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, v);
     return t;
 }
 
@@ -55,8 +70,8 @@ FlarePair drawBoth(const Preset& preset, const Scene& scene, float weight) {
     EXPECT_TRUE(base.ok());
     auto flare = GpuSpriteFlare::create(preset, scene.height);
     EXPECT_TRUE(flare.ok()) << flare.error().message;
-    const gl::Texture w = weightTexture(weight);
-    auto drawn = flare->draw(*renderer, scene, {w.get(), 0});
+    const auto w = weightTexture(weight);
+    auto drawn = flare->draw(*renderer, scene, {w->get(), 0});
     EXPECT_TRUE(drawn.ok()) << drawn.error().message;
     auto gpu = renderer->readColor();
     EXPECT_TRUE(gpu.ok());
@@ -177,16 +192,16 @@ TEST(GpuTemporalFilter, FollowsTheCpuFilterFrameByFrame) {
     auto gpu = GpuTemporalFilter::create(params);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message;
     TemporalFilter cpu(params);
-    const gl::Texture raw = weightTexture(0);
+    const auto raw = weightTexture(0);
     const double inputs[] = {0.3, 1.0, 1.0, 0.0, 0.0, 0.5, NAN, INFINITY, 1.7, -0.4, 0.8, 0.8, 0.1, 0.9, 1.0, 0.0};
     for (int i = 0; i < 16; ++i) {
         const float v = float(inputs[i]);
-        glTextureSubImage2D(raw.get(), 0, 0, 0, 1, 1, GL_RED, GL_FLOAT, &v);
+        glTextureSubImage2D(raw->get(), 0, 0, 0, 1, 1, GL_RED, GL_FLOAT, &v);
         // The sun walks from the centre off the right edge and ends behind the camera.
         const Point sun{320.f + 25.f * float(i), 180.f - 4.f * float(i)};
         const bool inFront = i < 14;
         const double dt = i == 0 ? 0.0 : 1.0 / (20 + 5 * (i % 3));
-        ASSERT_TRUE(gpu->update({raw.get(), 0}, sun, inFront, 640, 360, dt).ok());
+        ASSERT_TRUE(gpu->update({raw->get(), 0}, sun, inFront, 640, 360, dt).ok());
         const TemporalState want = cpu.update(inputs[i], sun, inFront, 640, 360, dt);
         auto got = gpu->readState();
         ASSERT_TRUE(got.ok());
@@ -207,9 +222,9 @@ TEST(GpuTonemap, EqualsTheCpuToneMapWithTheExposureFromATexture) {
     ASSERT_TRUE(renderer->draw(scene).ok());
     auto tonemap = GpuTonemap::create(scene.width, scene.height);
     ASSERT_TRUE(tonemap.ok());
-    const gl::Texture exposure = weightTexture(0, 0, 0.37f, 0);
+    const auto exposure = weightTexture(0, 0, 0.37f, 0);
     for (float e : {1.f, 0.37f}) {
-        ASSERT_TRUE(tonemap->apply(*renderer, e == 1.f ? GpuChannel{} : GpuChannel{exposure.get(), 2}).ok());
+        ASSERT_TRUE(tonemap->apply(*renderer, e == 1.f ? GpuChannel{} : GpuChannel{exposure->get(), 2}).ok());
         auto gpu = tonemap->read();
         ASSERT_TRUE(gpu.ok());
         Image cpu = *renderer->readColor();
@@ -241,8 +256,8 @@ TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
         auto flare = GpuSpriteFlare::create(*preset, scene.height);
         ASSERT_TRUE(flare.ok());
         // A weight of 1 regardless: only the conditional render can keep the flare away.
-        const gl::Texture one = weightTexture(1.f);
-        ASSERT_TRUE(flare->draw(*renderer, scene, {one.get(), 0}, (*query)->conditionalRenderQuery()).ok());
+        const auto one = weightTexture(1.f);
+        ASSERT_TRUE(flare->draw(*renderer, scene, {one->get(), 0}, (*query)->conditionalRenderQuery()).ok());
         const double after = energy(*renderer->readColor());
         if (hidden) {
             EXPECT_EQ(after, base);

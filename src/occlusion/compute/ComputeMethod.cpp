@@ -3,6 +3,7 @@
 // sky pixels' weights and all weights per 16x16 work group in shared memory, and a second
 // one-group dispatch reduces the partials and writes the ratio into the 1x1 coverage texture.
 // With an MSAA scene pass it reads every depth sample instead, for sub-pixel occluders.
+#include "scene/SceneTargets.h"
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
 
@@ -46,7 +47,7 @@ public:
         glProgramUniform2i(r, gl::uniformLocation(r, "boxOrigin"), v.x0, v.y0);
         glProgramUniform2i(r, gl::uniformLocation(r, "boxSize"), w, h);
         glProgramUniform1i(f, gl::uniformLocation(f, "partialCount"), GLint(groupsX * groupsY));
-        glBindTextureUnit(0, multisample ? renderer.multisampleDepthTexture() : renderer.depthTexture());
+        glBindTextureUnit(0, multisample ? sceneTargets(renderer).multisampleDepth : sceneTargets(renderer).depth);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, m_partials.get());
         glUseProgram(r);
         glDispatchCompute(groupsX, groupsY, 1);

@@ -5,6 +5,7 @@
 // multisampled frame the copy is of the per-pixel sky fraction (SkyFraction), as in readback.
 #include <vector>
 
+#include "scene/SceneTargets.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/SkyFraction.h"
 #include "occlusion/readback/DepthCoverage.h"
@@ -55,7 +56,7 @@ public:
             slot.capacity = bytes;
         }
         slot.skyFraction = renderer.msaaSamples() > 1;
-        GLuint source = renderer.framebuffer();
+        GLuint source = sceneTargets(renderer).framebuffer;
         if (slot.skyFraction) {
             auto sky = m_sky.update(slot.view, renderer);
             if (!sky) return sky.error();

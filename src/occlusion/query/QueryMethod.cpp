@@ -7,6 +7,7 @@
 // counts samples, so a pixel half covered by an occluder counts half.
 #include <vector>
 
+#include "scene/SceneTargets.h"
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
 
@@ -101,7 +102,7 @@ private:
     }
     //! The frame's framebuffer, or with MSAA one holding its multisampled depth (no colour).
     GLuint targetFor(const SceneRenderer& renderer) {
-        if (renderer.msaaSamples() <= 1) return renderer.framebuffer();
+        if (renderer.msaaSamples() <= 1) return sceneTargets(renderer).framebuffer;
         if (!m_msaaTarget) {
             GLuint fb = 0;
             glCreateFramebuffers(1, &fb);
@@ -109,8 +110,8 @@ private:
             glNamedFramebufferDrawBuffer(fb, GL_NONE);
             glNamedFramebufferReadBuffer(fb, GL_NONE);
         }
-        if (m_msaaDepth != renderer.multisampleDepthTexture()) {
-            m_msaaDepth = renderer.multisampleDepthTexture();
+        if (m_msaaDepth != sceneTargets(renderer).multisampleDepth) {
+            m_msaaDepth = sceneTargets(renderer).multisampleDepth;
             glNamedFramebufferTexture(m_msaaTarget.get(), GL_DEPTH_ATTACHMENT, m_msaaDepth, 0);
         }
         return m_msaaTarget.get();

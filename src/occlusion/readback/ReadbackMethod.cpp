@@ -5,6 +5,7 @@
 // more small pass), so occluder edges count to the sample.
 #include <vector>
 
+#include "scene/SceneTargets.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/SkyFraction.h"
 #include "occlusion/readback/DepthCoverage.h"
@@ -30,7 +31,7 @@ public:
         const int w = v.x1 - v.x0, h = v.y1 - v.y0;
         m_depth.resize(std::size_t(w) * std::size_t(h));
         const bool multisampled = renderer.msaaSamples() > 1;
-        GLuint source = renderer.framebuffer();
+        GLuint source = sceneTargets(renderer).framebuffer;
         if (multisampled) {
             auto sky = m_sky.update(v, renderer);
             if (!sky) return sky.error();

@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "scene/SceneTargets.h"
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/texturemask/SunMapSum.h"
@@ -60,7 +61,7 @@ public:
             glProgramUniformMatrix4fv(m_black.get(), gl::uniformLocation(m_black.get(), "viewProjection"), 1, GL_FALSE,
                                       vpf.data());
             glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);  // occluders blacken R only
-            glBindVertexArray(renderer.meshVertexArray());
+            glBindVertexArray(sceneTargets(renderer).meshVertexArray);
             glUseProgram(m_black.get());
             glMultiDrawArrays(GL_TRIANGLES, m_firsts.data(), m_counts.data(), GLsizei(m_firsts.size()));
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
