@@ -97,6 +97,20 @@ TEST(PostFxCli, MoreThanFourChannelsIsAClearError) {
     EXPECT_EQ(dir.entries(), before);
 }
 
+TEST(PostFxCli, ApplyTreatsMoreThanFourChannelsThePostFxWay) {
+    // One behaviour for one situation: apply used to drop channels 5+ with a warning (the
+    // output then silently lost them); now both subcommands refuse in the same one line.
+    TempDir dir;
+    const std::string in = dir.file("six.exr");
+    writeChannels(in, 6, true);
+    const std::size_t before = dir.entries();
+    auto apply = runCli({"apply", in, "-o", dir.file("out.exr")});
+    auto postfx = runCli({"postfx", in, "-o", dir.file("out.exr")});
+    EXPECT_EQ(apply.exitCode, 2);
+    EXPECT_EQ(apply.err, postfx.err);
+    EXPECT_EQ(dir.entries(), before);
+}
+
 TEST(PostFxCli, BadInputExitsTwoWithOneLineAndWritesNothing) {
     TempDir dir;
     const std::string corrupt = dir.file("corrupt.png");

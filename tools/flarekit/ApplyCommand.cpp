@@ -9,7 +9,7 @@ namespace flarekit::cli {
 
 namespace {
 struct ApplyArgs {
-    std::string in, out, preset = "tanczos-classic", light = "auto", depth = "auto";
+    std::string in, out, preset = kDefaultSpritePreset, light = "auto", depth = "auto";
     float intensity = 1.f;
     LightSearchOptions lightSearch;
     bool verbose = false;
@@ -27,31 +27,25 @@ std::optional<SampleFormat> parseDepth(const std::string& s) {
     return std::nullopt;
 }
 
-int runApply(const ApplyArgs& a) {
-    if (Status s = checkOutputPath(a.out); !s) return report(s.error());
+Result<ImageOutput> applyFlare(const ApplyArgs& a) {
     const bool autoLight = a.light == "auto";
     const std::optional<Point> fixed = autoLight ? std::nullopt : parsePoint(a.light);
-    if (!autoLight && !fixed) return report(invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'"));
+    if (!autoLight && !fixed) return invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'");
     auto preset = loadPreset(a.preset);
-    if (!preset) return report(preset.error());
-    auto loaded = readQuietly(readImage, a.in);
-    if (!loaded) return report(loaded.error());
-    if (loaded->nonFinite > 0) warn(a.in + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
-    if (loaded->droppedChannels > 0) {
-        warn(a.in + ": " + std::to_string(loaded->droppedChannels) + " channel(s) past RGBA are not written to the output");
-    }
-
+    if (!preset) return preset.error();
+    auto loaded = readInputImage(a.in);
+    if (!loaded) return loaded.error();
     Image& image = loaded->image;
     Point light{};
     float intensity = a.intensity;
     if (fixed) {
         light = *fixed;
     } else {
-        const LightSearchOptions& options = a.lightSearch;
-        const FoundLight found = findLight(image, options);
+        const FoundLight found = findLight(image, a.lightSearch);
         if (!found.found) {
             warn(a.in + ": no light found (peak luminance " + std::to_string(found.peak) + " < " +
-                 std::to_string(options.minLuminance) + "); image written unchanged");
+                 std::to_string(a.lightSearch.minLuminance) + "); image written unchanged");
+            intensity = 0.f;
         } else {
             light = found.position;
             intensity *= found.flareScale;
@@ -60,17 +54,19 @@ int runApply(const ApplyArgs& a) {
                             double(light.y), found.pixels, double(found.brightness), double(found.flareScale));
             }
         }
-        if (!found.found) intensity = 0.f;
     }
     if (intensity > 0.f) {
         const FlareStats stats = renderFlare(image, *preset, light, intensity);
         if (a.verbose) std::printf("%zu elements, %zu pixels shaded\n", stats.elementsDrawn, stats.pixelsShaded);
     }
-    WriteOptions options;
-    options.alpha = loaded->hasAlpha;
-    options.format = *parseDepth(a.depth);
-    if (Status s = writeImage(a.out, image, options); !s) return report(s.error());
-    return kExitOk;
+    ImageOutput out{std::move(image), {}};
+    out.options.alpha = loaded->hasAlpha;
+    out.options.format = *parseDepth(a.depth);
+    return out;
+}
+
+int runApply(const ApplyArgs& a) {
+    return runImageJob(a.out, [&] { return applyFlare(a); });
 }
 }  // namespace
 

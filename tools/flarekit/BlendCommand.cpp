@@ -11,16 +11,16 @@ struct BlendArgs {
 };
 
 int runBlend(const BlendArgs& a) {
-    if (Status s = checkOutputPath(a.out); !s) return report(s.error());
-    const Blend8Mode mode = *parseBlend8Mode(a.mode);  // CLI11 checked membership
-    auto src = readQuietly(readImage8, a.src);
-    if (!src) return report(src.error());
-    auto dst = readQuietly(readImage8, a.dst);
-    if (!dst) return report(dst.error());
-    auto blended = blendImages8(mode, *src, *dst);
-    if (!blended) return report({blended.error().code, a.src + " onto " + a.dst + ": " + blended.error().message});
-    if (Status s = writeImage8(a.out, *blended); !s) return report(s.error());
-    return kExitOk;
+    return runImage8Job(a.out, [&]() -> Result<Image8> {
+        const Blend8Mode mode = *parseBlend8Mode(a.mode);  // CLI11 checked membership
+        auto src = readQuietly(readImage8, a.src);
+        if (!src) return src.error();
+        auto dst = readQuietly(readImage8, a.dst);
+        if (!dst) return dst.error();
+        auto blended = blendImages8(mode, *src, *dst);
+        if (!blended) return Error{blended.error().code, a.src + " onto " + a.dst + ": " + blended.error().message};
+        return blended;
+    });
 }
 }  // namespace
 

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 namespace flarekit::cli {
 
@@ -57,6 +58,57 @@ std::optional<Point> parsePoint(const std::string& text) {
     auto x = number(text.substr(0, comma)), y = number(text.substr(comma + 1));
     if (!x || !y) return std::nullopt;
     return Point{*x, *y};
+}
+
+std::optional<std::pair<int, int>> parseSize(const std::string& text) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) return std::nullopt;
+    auto number = [](const char* begin, const char* end) -> std::optional<int> {
+        int v = 0;
+        auto [ptr, ec] = std::from_chars(begin, end, v);
+        if (ec != std::errc() || ptr != end || begin == end) return std::nullopt;
+        return v;
+    };
+    auto w = number(text.data(), text.data() + x), h = number(text.data() + x + 1, text.data() + text.size());
+    if (!w || !h) return std::nullopt;
+    return std::pair{*w, *h};
+}
+
+Result<LoadedImage> readInputImage(const std::string& path) {
+    auto loaded = readQuietly(readImage, path);
+    if (!loaded) return loaded.error();
+    if (loaded->droppedChannels > 0) {
+        return invalidInput(path + ": " + std::to_string(loaded->fileChannels) +
+                            " channels; flarekit reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off "
+                            "first, e.g. oiiotool IN --ch R,G,B,A -o rgba.exr");
+    }
+    if (loaded->nonFinite > 0) warn(path + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
+    return loaded;
+}
+
+Status makeOutputDirectory(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir)) {
+        return invalidInput(dir + ": cannot create the output directory" + (ec ? ": " + ec.message() : ""));
+    }
+    return Ok{};
+}
+
+int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {
+    if (Status s = checkOutputPath(out); !s) return report(s.error());
+    auto result = work();
+    if (!result) return report(result.error());
+    if (Status s = writeImage(out, result->image, result->options); !s) return report(s.error());
+    return kExitOk;
+}
+
+int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work) {
+    if (Status s = checkOutputPath(out); !s) return report(s.error());
+    auto result = work();
+    if (!result) return report(result.error());
+    if (Status s = writeImage8(out, *result); !s) return report(s.error());
+    return kExitOk;
 }
 
 Error builtWithoutGl(const std::string& what) {

@@ -5,10 +5,12 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "flarekit/Flare.h"
+#include "flarekit/ImageIO.h"
 #include "flarekit/Result.h"
 
 namespace flarekit::cli {
@@ -42,8 +44,31 @@ auto readQuietly(Reader reader, const std::string& path) {
     return reader(path);
 }
 
+//! The presets a subcommand uses when --preset is not given.
+inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
+inline constexpr const char* kDefaultPostFxPreset = "killzone2";
+
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);
+//! "WIDTHxHEIGHT" (two integers); nullopt when malformed.
+std::optional<std::pair<int, int>> parseSize(const std::string& text);
+
+//! A float image read for a subcommand: decoded as readImage does, noise filtered, NaN/Inf
+//! replaced with a warning, and (the same in every subcommand) more than 4 channels refused:
+//! flarekit writes RGBA, so the others would be lost from the output.
+Result<LoadedImage> readInputImage(const std::string& path);
+
+//! Creates `dir` (and its parents) for a subcommand's outputs; a one-line error if it cannot.
+Status makeOutputDirectory(const std::string& dir);
+
+//! The tail of every image-writing subcommand: `out` checked before any work (a bad path costs
+//! nothing), the work, one atomic write, the result as an exit code (errors as one line).
+struct ImageOutput {
+    Image image;
+    WriteOptions options;
+};
+int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work);
+int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work);
 
 //! The one-line error of an OpenGL feature in a build without OpenGL (FLAREKIT_GL=OFF).
 Error builtWithoutGl(const std::string& what);

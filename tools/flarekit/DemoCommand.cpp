@@ -25,7 +25,7 @@ namespace flarekit::cli {
 namespace {
 
 struct DemoArgs {
-    std::string outDir, size = "1280x720", preset = "tanczos-classic";
+    std::string outDir, size = "1280x720", preset = kDefaultSpritePreset;
     DemoSettings settings;
     bool noVideo = false;
 };
@@ -125,21 +125,15 @@ private:
 
 #if FLAREKIT_HAS_GL
 int runDemo(DemoArgs& a) {
-    int w = 0, h = 0;
-    char tail = 0;
-    if (std::sscanf(a.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2) {
-        return report(invalidInput("--size: expected WIDTHxHEIGHT, e.g. 1280x720, got '" + a.size + "'"));
-    }
+    const auto size = parseSize(a.size);
+    if (!size) return report(invalidInput("--size: expected WIDTHxHEIGHT, e.g. 1280x720, got '" + a.size + "'"));
+    const auto [w, h] = *size;
     a.settings.width = w;
     a.settings.height = h;
     if (Status s = validateDemoSettings(a.settings); !s) return report(s.error());
     auto preset = loadPreset(a.preset);
     if (!preset) return report(preset.error());
-    std::error_code ec;
-    std::filesystem::create_directories(a.outDir, ec);
-    if (ec || !std::filesystem::is_directory(a.outDir)) {
-        return report(invalidInput(a.outDir + ": cannot create the output directory" + (ec ? ": " + ec.message() : "")));
-    }
+    if (Status s = makeOutputDirectory(a.outDir); !s) return report(s.error());
     auto gl = gl::HeadlessGl::create();
     if (!gl) return report(gl.error());
     auto demo = DemoAnimation::create(a.settings, *preset);
@@ -204,6 +198,7 @@ int runDemo(DemoArgs& a) {
     if (Status s = encodeVideo(ffmpeg, dir + pattern, fps, dir + "demo.mp4", dir + "ffmpeg.log"); !s) {
         return report(s.error());
     }
+    std::error_code ec;
     std::filesystem::remove(dir + "ffmpeg.log", ec);  // empty on success; kept only on failure
     std::printf("demo: video %sdemo.mp4 (%.3g fps)\n", dir.c_str(), fps);
     return kExitOk;

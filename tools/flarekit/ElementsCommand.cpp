@@ -7,7 +7,7 @@ namespace flarekit::cli {
 
 namespace {
 struct ElementsArgs {
-    std::string preset = "tanczos-classic", out;
+    std::string preset = kDefaultSpritePreset, out;
     int cell = 256;
 };
 //! 32 px is the smallest cell a label fits in; 4096 bounds the sheet at 4096 x (elements) cells.
@@ -16,14 +16,14 @@ inline constexpr Param<ElementsArgs> kElementsArgParams[] = {
 };
 
 int runElements(const ElementsArgs& a) {
-    if (Status s = checkOutputPath(a.out); !s) return report(s.error());
-    auto preset = loadPreset(a.preset);
-    if (!preset) return report(preset.error());
-    auto sheet = renderContactSheet(*preset, a.cell);
-    if (!sheet) return report(sheet.error());
-    if (!sheet->labelled) warn("no font found for the labels (install fonts-dejavu-core); sheet written without them");
-    if (Status s = writeImage(a.out, sheet->image); !s) return report(s.error());
-    return kExitOk;
+    return runImageJob(a.out, [&]() -> Result<ImageOutput> {
+        auto preset = loadPreset(a.preset);
+        if (!preset) return preset.error();
+        auto sheet = renderContactSheet(*preset, a.cell);
+        if (!sheet) return sheet.error();
+        if (!sheet->labelled) warn("no font found for the labels (install fonts-dejavu-core); sheet written without them");
+        return ImageOutput{std::move(sheet->image), {}};
+    });
 }
 }  // namespace
 

@@ -16,7 +16,7 @@ namespace flarekit::cli {
 
 namespace {
 struct PostFxArgs {
-    std::string in, out, preset = "killzone2", backend = "cpu", layersDir, tonemap = "preset";
+    std::string in, out, preset = kDefaultPostFxPreset, backend = "cpu", layersDir, tonemap = "preset";
     std::optional<float> exposure, threshold, knee;
     int repeat = 1;
     bool verbose = false;
@@ -68,9 +68,7 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
 }
 
 Status writeLayers(const std::string& dir, const PostFxResult& r) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) return ioError(dir + ": cannot create the layers directory: " + ec.message());
+    if (Status s = makeOutputDirectory(dir); !s) return s;
     const int w = r.final.width(), h = r.final.height();
     for (auto [name, layer] : {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
                                std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}}) {
@@ -80,30 +78,22 @@ Status writeLayers(const std::string& dir, const PostFxResult& r) {
     return writeImage((std::filesystem::path(dir) / "final.exr").string(), r.final);
 }
 
-int runPostFx(const PostFxArgs& a) {
-    if (Status s = checkOutputPath(a.out); !s) return report(s.error());
+Result<ImageOutput> runChain(const PostFxArgs& a) {
     auto params = loadPostFxPreset(a.preset);
-    if (!params) return report(params.error());
+    if (!params) return params.error();
     if (a.tonemap != "preset") params->tone.op = a.tonemap == "aces" ? ToneOperator::Aces : a.tonemap == "filmic" ? ToneOperator::Filmic : ToneOperator::None;
     if (a.exposure) params->tone.exposure = *a.exposure;
     if (a.threshold) params->bright.threshold = *a.threshold;
     if (a.knee) params->bright.knee = *a.knee;
-
-    auto loaded = readQuietly(readImage, a.in);
-    if (!loaded) return report(loaded.error());
-    if (loaded->droppedChannels > 0) {
-        return report(invalidInput(a.in + ": " + std::to_string(loaded->fileChannels) +
-                                   " channels; postfx reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off first, "
-                                   "e.g. oiiotool IN --ch R,G,B,A -o rgba.exr"));
-    }
-    if (loaded->nonFinite > 0) warn(a.in + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
+    auto loaded = readInputImage(a.in);
+    if (!loaded) return loaded.error();
 
     std::vector<PassTime> times;
     PostFxOptions options;
     options.keepLayers = !a.layersDir.empty();
     options.times = a.verbose ? &times : nullptr;
     auto result = runBackend(a, loaded->image, *params, options);
-    if (!result) return report(result.error());
+    if (!result) return result.error();
     if (a.verbose) {
         // Wall time (with glFinish around each GL pass): llvmpipe's timer queries are not usable.
         std::printf("%-10s %9s %9s %9s\n", "pass", "wall ms", "MP/s", a.backend == "gl" ? "GPU ms" : "");
@@ -114,12 +104,15 @@ int runPostFx(const PostFxArgs& a) {
         }
     }
     if (!a.layersDir.empty()) {
-        if (Status s = writeLayers(a.layersDir, *result); !s) return report(s.error());
+        if (Status s = writeLayers(a.layersDir, *result); !s) return s.error();
     }
-    WriteOptions write;
-    write.alpha = loaded->hasAlpha;
-    if (Status s = writeImage(a.out, result->final, write); !s) return report(s.error());
-    return kExitOk;
+    ImageOutput out{std::move(result->final), {}};
+    out.options.alpha = loaded->hasAlpha;
+    return out;
+}
+
+int runPostFx(const PostFxArgs& a) {
+    return runImageJob(a.out, [&] { return runChain(a); });
 }
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "Common.h"
+#include "JsonLine.h"
 #include "ParamOptions.h"
 #include "Progress.h"
 #include "flarekit/ImageIO.h"
@@ -28,24 +29,15 @@ inline constexpr Param<PspDemoArgs> kPspDemoParams[] = {
     param<&PspDemoArgs::frames>("frames", 1, 2000, "", "frames over the drive"),
 };
 
-Status makeDirectory(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
-        return invalidInput(dir + ": cannot create the output directory" + (ec ? ": " + ec.message() : ""));
-    return Ok{};
-}
-
 std::string jsonLine(psp::PspTrick trick, bool naive, const psp::PspFrameResult& r) {
-    char text[512];
     const bool burnout = trick == psp::PspTrick::Burnout;
-    std::snprintf(text, sizeof text,
-                  "{\"trick\": \"%s\", \"mode\": \"%s\", \"sun_in_frame\": %s, \"coverage_byte\": %d, \"clut_alpha\": %s, "
-                  "\"visible_pixels\": %d, \"mask_pixels\": %d, \"region_restored\": %s}",
-                  burnout ? "burnout" : "ridge-racer", naive ? "naive" : "correct", r.sunInFrame ? "true" : "false",
-                  r.coverageByte, burnout ? std::to_string(r.clutAlpha).c_str() : "null", r.visiblePixels, r.maskPixels,
-                  r.sunInFrame ? (r.regionRestored ? "true" : "false") : "null");
-    return text;
+    JsonLine j;
+    j.text("trick", burnout ? "burnout" : "ridge-racer").text("mode", naive ? "naive" : "correct");
+    j.boolean("sun_in_frame", r.sunInFrame).integer("coverage_byte", r.coverageByte);
+    burnout ? j.integer("clut_alpha", r.clutAlpha) : j.null("clut_alpha");
+    j.integer("visible_pixels", r.visiblePixels).integer("mask_pixels", r.maskPixels);
+    r.sunInFrame ? j.boolean("region_restored", r.regionRestored) : j.null("region_restored");
+    return j.str();
 }
 
 int runPsp(psp::PspTrick trick, const PspArgs& a) {
@@ -56,7 +48,7 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     auto occluders = psp::occludersFromMask(*mask, a.occluders);
     if (!occluders) return report(occluders.error());
     if (!a.dumpDir.empty())
-        if (Status s = makeDirectory(a.dumpDir); !s) return report(s.error());
+        if (Status s = makeOutputDirectory(a.dumpDir); !s) return report(s.error());
     psp::PspFrameInput in;
     in.occluders = std::move(*occluders);
     // Clamped before the conversion to int; the library rejects anything past +-8192.
@@ -101,7 +93,7 @@ Image8 sideBySide(const Image8& left, const Image8& right) {
 }
 
 int runPspDemo(const PspDemoArgs& a) {
-    if (Status s = makeDirectory(a.outDir); !s) return report(s.error());
+    if (Status s = makeOutputDirectory(a.outDir); !s) return report(s.error());
     const std::string dir = std::filesystem::path(a.outDir).string() + "/";
     std::string csv = "frame,t,sun_x,sun_y,sun_in_frame,visible_pixels,coverage_byte,clut_alpha_correct,clut_alpha_naive\n";
     Progress progress("psp demo", a.frames);

@@ -19,24 +19,23 @@ namespace flarekit::cli {
 
 namespace {
 struct RenderArgs {
-    std::string scene, out, preset = "tanczos-classic", method = "raycast", variant = "circle";
+    std::string scene, out, preset = kDefaultSpritePreset, method = "raycast", variant = "circle";
     ToneParams tone;  //!< only the exposure: 8/16-bit outputs get the ACES fit
     RenderOptions render;
     bool noFlare = false, noShadows = false, verbose = false;
 };
 
 #if FLAREKIT_HAS_GL
-int runRender(const RenderArgs& a) {
-    if (Status s = checkOutputPath(a.out); !s) return report(s.error());
+Result<ImageOutput> renderStill(const RenderArgs& a) {
     if (a.method != "raycast" && !isGpuVisibilityMethod(a.method)) {
-        return report(invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" + a.method + "'"));
+        return invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" + a.method + "'");
     }
     auto scene = loadScene(a.scene);
-    if (!scene) return report(scene.error());
+    if (!scene) return scene.error();
     auto preset = loadPreset(a.preset);
-    if (!preset) return report(preset.error());
+    if (!preset) return preset.error();
     auto gl = gl::HeadlessGl::create();
-    if (!gl) return report(gl.error());
+    if (!gl) return gl.error();
     // A still through the frame pipeline: no temporal filter, linear HDR out (tone-mapped
     // below for 8/16-bit files), raycast at its ground-truth sample count.
     FramePipelineSettings settings;
@@ -49,9 +48,9 @@ int runRender(const RenderArgs& a) {
     settings.flare = !a.noFlare;
     settings.toneMap = false;
     auto pipeline = FramePipeline::create(*scene, *preset, settings);
-    if (!pipeline) return report(pipeline.error());
+    if (!pipeline) return pipeline.error();
     auto frame = pipeline->run(*scene, 0.0);
-    if (!frame) return report(frame.error());
+    if (!frame) return frame.error();
     if (a.verbose) {
         std::printf("%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare intensity %.3f\n",
                     (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->rawCoverage, a.method.c_str(),
@@ -59,8 +58,11 @@ int runRender(const RenderArgs& a) {
                     frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
     }
     if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.tone.exposure);
-    if (Status s = writeImage(a.out, frame->image); !s) return report(s.error());
-    return kExitOk;
+    return ImageOutput{std::move(frame->image), {}};
+}
+
+int runRender(const RenderArgs& a) {
+    return runImageJob(a.out, [&] { return renderStill(a); });
 }
 #else
 int runRender(const RenderArgs&) { return report(builtWithoutGl("render")); }

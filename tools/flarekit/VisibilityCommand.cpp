@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "Common.h"
+#include "JsonLine.h"
 #include "ParamOptions.h"
 #include "flarekit/Render.h"
 #include "flarekit/Visibility.h"
@@ -65,9 +66,10 @@ int runVisibility(const VisibilityArgs& a) {
     }
     if (!r) return report(r.error());
     if (a.json) {
-        std::printf("{\"method\": \"%s\", \"coverage\": %.6f, \"in_frame\": %.6f, \"samples\": %zu, "
-                    "\"latency_frames\": %d, \"cpu_ms\": %.3f}\n",
-                    r->method.c_str(), r->coverage, r->inFrame, r->samples, latency, r->milliseconds);
+        JsonLine j;
+        j.text("method", r->method).number("coverage", r->coverage, 6).number("in_frame", r->inFrame, 6);
+        j.integer("samples", (long long)r->samples).integer("latency_frames", latency).number("cpu_ms", r->milliseconds, 3);
+        std::printf("%s\n", j.str().c_str());
     } else {
         std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame", r->method.c_str(),
                     r->coverage, 100 * r->coverage, 100 * r->inFrame);
