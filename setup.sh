@@ -3,7 +3,9 @@
 # (Release), then runs one job.
 #   ./setup.sh demo   renders the demo drive (out/drive: frames + MP4) and every shipped preset on
 #                     the sample images into out/
-#   ./setup.sh test   runs the whole test suite (CI runs this; with CI=true warnings are errors)
+#   ./setup.sh test   checks the formatting, runs the whole test suite, then builds the
+#                     FLAREKIT_GL=OFF variant (core + CLI, no OpenGL) and runs its tests
+#                     (CI runs this; with CI=true warnings are errors)
 set -euo pipefail
 cd "$(dirname "$0")"
 job="${1:-}"
@@ -21,5 +23,12 @@ cmake --build build -j"$(nproc)"
 
 case "$job" in
   demo) ./scripts/demo.sh build/flarekit out ;;
-  test) ctest --test-dir build -j"$(nproc)" --output-on-failure ;;
+  test)
+    ./scripts/check-format.sh
+    ctest --test-dir build -j"$(nproc)" --output-on-failure
+    cmake -S . -B build-nogl -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_BENCH=OFF \
+      -DFLAREKIT_WERROR="$werror"
+    cmake --build build-nogl -j"$(nproc)"
+    ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure
+    ;;
 esac

@@ -23,7 +23,8 @@ std::vector<std::uint8_t> randomBytes(std::size_t n, unsigned seed) {
 
 void setRates(benchmark::State& state, std::size_t bytes, std::size_t pixels) {
     state.SetBytesProcessed(std::int64_t(state.iterations()) * std::int64_t(bytes));
-    state.counters["MP/s"] = benchmark::Counter(double(pixels) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["MP/s"] =
+        benchmark::Counter(double(pixels) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // range(0): bytes per buffer. 1920x1080 RGBA = 8,294,400 (past L2); 256 KiB stays in cache.
@@ -67,10 +68,16 @@ void BM_AddInPlace(benchmark::State& state) {
 constexpr std::int64_t kFrame = 1920 * 1080 * 4;
 constexpr std::int64_t kCached = 256 * 1024;
 BENCHMARK(BM_Memcpy)->Arg(kFrame)->Arg(kCached);
-BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanScalar16)->Name("BM_AddScalar16")->Arg(kFrame)->Arg(kCached);
+BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanScalar16)
+    ->Name("BM_AddScalar16")
+    ->Arg(kFrame)
+    ->Arg(kCached);
 BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanLut)->Name("BM_AddLut")->Arg(kFrame)->Arg(kCached);
 BENCHMARK_TEMPLATE(BM_Add, blend8::addSpanSimd)->Name("BM_AddSimd")->Arg(kFrame)->Arg(kCached);
-BENCHMARK_TEMPLATE(BM_AddInPlace, blend8::addSpanSimd)->Name("BM_AddSimdInPlace")->Arg(kFrame)->Arg(kCached);
+BENCHMARK_TEMPLATE(BM_AddInPlace, blend8::addSpanSimd)
+    ->Name("BM_AddSimdInPlace")
+    ->Arg(kFrame)
+    ->Arg(kCached);
 
 // Alpha modes over a 1920x1080 frame: src RGBA, dst RGB.
 template <int Mode>
@@ -104,7 +111,10 @@ void BM_CompositeFloat(benchmark::State& state) {
     setRates(state, pixels * 16, pixels);
     state.SetLabel(std::string(blendModeName(mode)));
 }
-BENCHMARK(BM_CompositeFloat)->Arg(int(BlendMode::Add))->Arg(int(BlendMode::Screen))->Arg(int(BlendMode::Over));
+BENCHMARK(BM_CompositeFloat)
+    ->Arg(int(BlendMode::Add))
+    ->Arg(int(BlendMode::Screen))
+    ->Arg(int(BlendMode::Over));
 
 }  // namespace
 

@@ -16,7 +16,8 @@ using namespace flarekit;
 namespace {
 
 void megapixels(benchmark::State& state, double pixels) {
-    state.counters["MP/s"] = benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["MP/s"] =
+        benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // A sky gradient with a small sun at (0.7 W, 0.3 H): what `apply --light auto` typically gets.
@@ -46,7 +47,9 @@ void BM_ElementGeneration(benchmark::State& state) {
     megapixels(state, double(pixels));
     state.SetLabel(std::string(elementTypeName(p.type)));
 }
-BENCHMARK(BM_ElementGeneration)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {256}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ElementGeneration)
+    ->ArgsProduct({{0, 1, 2, 3, 4, 5}, {256}})
+    ->Unit(benchmark::kMillisecond);
 
 // args: height (1080 or 2160), threads
 void BM_ApplyInMemory(benchmark::State& state) {
@@ -70,7 +73,10 @@ void BM_ApplyInMemory(benchmark::State& state) {
     megapixels(state, double(w) * double(h));
     state.counters["shaded_MP"] = double(shaded) * 1e-6;
 }
-BENCHMARK(BM_ApplyInMemory)->ArgsProduct({{1080, 2160}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ApplyInMemory)
+    ->ArgsProduct({{1080, 2160}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The flare alone (no light search), per preset, 1080p, 2 threads: cost follows coverage.
 void BM_RenderFlare(benchmark::State& state, const char* name) {
@@ -83,12 +89,17 @@ void BM_RenderFlare(benchmark::State& state, const char* name) {
     }
     std::size_t shaded = 0;
     for (auto _ : state) shaded = renderFlare(img, *preset, {1344.f, 324.f}, 1.f).pixelsShaded;
-    state.counters["shaded_MP/s"] = benchmark::Counter(double(shaded) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["shaded_MP/s"] =
+        benchmark::Counter(double(shaded) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["shaded_MP"] = double(shaded) * 1e-6;
 }
 BENCHMARK_CAPTURE(BM_RenderFlare, subtle, "subtle")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_RenderFlare, tanczos_classic, "tanczos-classic")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_RenderFlare, sun_wide, "sun-wide")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_RenderFlare, tanczos_classic, "tanczos-classic")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_RenderFlare, sun_wide, "sun-wide")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // End to end as the CLI runs it: read PNG, find the light, flare, write PNG (2 threads).
 void BM_ApplyFile(benchmark::State& state) {

@@ -30,11 +30,11 @@
 #include <cmath>
 #include <map>
 
+#include <epoxy/gl.h>
 #include "flarekit/Demo.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
-#include <epoxy/gl.h>
 
 #include "flarekit/GpuTimer.h"
 #include "flarekit/HeadlessGl.h"
@@ -50,7 +50,9 @@ constexpr int kViews = 240;
 constexpr int kFramesInFlight = 2;
 
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 gl::HeadlessGl* context() {
     static auto gl = gl::HeadlessGl::create();
@@ -70,7 +72,8 @@ std::vector<Scene> driveViews(int count) {
     std::vector<Scene> views;
     for (int i = 0; i < count; ++i) {
         Scene v = demoScene(kWidth, kHeight, double(i) / count);
-        v.spheres.clear(), v.boxes.clear(), v.triangles.clear();  // draw() reads only camera and sun
+        v.spheres.clear(), v.boxes.clear(),
+            v.triangles.clear();  // draw() reads only camera and sun
         views.push_back(std::move(v));
     }
     return views;
@@ -148,7 +151,8 @@ void BM_FrameLoop(benchmark::State& state, const std::string& name) {
         spinFor(workMs);  // the game's update for this frame
         const Scene& view = views[std::size_t(frame % kViews)];
         Point sun;
-        const bool inFront = projectDirection(view, view.sun.direction, sun);  // camera maths, no GPU
+        const bool inFront =
+            projectDirection(view, view.sun.direction, sun);  // camera maths, no GPU
         const auto frameStart = Clock::now();
         (void)renderer->draw(view);
         const auto t = Clock::now();
@@ -156,7 +160,8 @@ void BM_FrameLoop(benchmark::State& state, const std::string& name) {
         (void)(*method)->measure(view, *renderer);
         timers[slot].end();
         measureMs += msSince(t);
-        (void)filter->update((*method)->coverage(), sun, inFront, kWidth, kHeight, frame ? dt : 0.0);
+        (void)filter->update((*method)->coverage(), sun, inFront, kWidth, kHeight,
+                             frame ? dt : 0.0);
         (void)flare->draw(*renderer, view, filter->state(GpuStateChannel::FlareWeight));
         (void)tonemap->apply(*renderer, filter->state(GpuStateChannel::Exposure));
         fences[slot] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
@@ -183,8 +188,9 @@ void BM_FrameLoop(benchmark::State& state, const std::string& name) {
 
 int main(int argc, char** argv) {
     for (const std::string& name : gpuVisibilityMethods()) {
-        auto* b = benchmark::RegisterBenchmark(("BM_FrameLoop/" + name).c_str(),
-                                               [name](benchmark::State& s) { BM_FrameLoop(s, name); });
+        auto* b =
+            benchmark::RegisterBenchmark(("BM_FrameLoop/" + name).c_str(),
+                                         [name](benchmark::State& s) { BM_FrameLoop(s, name); });
         b->ArgName("cpu_work_ms")->Arg(0)->Arg(10)->Arg(20)->Arg(40);
         b->Iterations(90)->Unit(benchmark::kMillisecond)->UseRealTime();
     }

@@ -9,8 +9,8 @@
 #include <map>
 
 #include "PostFxImages.h"
-#include "flarekit/PostFx.h"
 #include "flarekit/HeadlessGl.h"
+#include "flarekit/PostFx.h"
 
 using namespace flarekit;
 
@@ -44,10 +44,12 @@ void measure(benchmark::State& state, const Run& run, bool gl, const std::string
     const Image& in = input(int(state.range(1)), int(state.range(2)));
     std::vector<PassTime> times;
     PostFxOptions options;
-    if (Status s = run(in, *params, options); !s) return state.SkipWithError(s.error().message.c_str());  // warm-up
+    if (Status s = run(in, *params, options); !s)
+        return state.SkipWithError(s.error().message.c_str());  // warm-up
     options.times = state.range(3) ? &times : nullptr;
     for (auto _ : state) {
-        if (Status s = run(in, *params, options); !s) return state.SkipWithError(s.error().message.c_str());
+        if (Status s = run(in, *params, options); !s)
+            return state.SkipWithError(s.error().message.c_str());
     }
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(in.pixelCount()));
     state.SetLabel(std::string(kPresets[state.range(0)]) + label);
@@ -57,11 +59,14 @@ void measure(benchmark::State& state, const Run& run, bool gl, const std::string
 void BM_PostFxCpu(benchmark::State& state) {
     CpuPostFx chain;  // buffers kept between runs, as a video or an engine would
     PostFxResult result;
-    measure(state, [&](const Image& in, const PostFxParams& p, const PostFxOptions& o) {
-        Status s = chain.run(in, p, result, o);
-        benchmark::DoNotOptimize(result.final.data());
-        return s;
-    }, false, "");
+    measure(
+        state,
+        [&](const Image& in, const PostFxParams& p, const PostFxOptions& o) {
+            Status s = chain.run(in, p, result, o);
+            benchmark::DoNotOptimize(result.final.data());
+            return s;
+        },
+        false, "");
 }
 
 void BM_PostFxGl(benchmark::State& state) {
@@ -69,12 +74,15 @@ void BM_PostFxGl(benchmark::State& state) {
     if (!context) return state.SkipWithError(context.error().message.c_str());
     static auto chain = GpuPostFx::create();
     if (!chain) return state.SkipWithError(chain.error().message.c_str());
-    measure(state, [&](const Image& in, const PostFxParams& p, const PostFxOptions& o) -> Status {
-        auto r = chain->run(in, p, o);  // upload, every pass, read-back
-        if (!r) return r.error();
-        benchmark::DoNotOptimize(r->final.data());
-        return Ok{};
-    }, true, " on " + (*context)->renderer());
+    measure(
+        state,
+        [&](const Image& in, const PostFxParams& p, const PostFxOptions& o) -> Status {
+            auto r = chain->run(in, p, o);  // upload, every pass, read-back
+            if (!r) return r.error();
+            benchmark::DoNotOptimize(r->final.data());
+            return Ok{};
+        },
+        true, " on " + (*context)->renderer());
 }
 
 void sizes(benchmark::internal::Benchmark* b) {

@@ -13,7 +13,8 @@ PspFrameInput benchInput(bool naive) {
     in.occluders.assign(std::size_t(kScreenWidth * kScreenHeight), 0);
     for (int y = 0; y < kScreenHeight; ++y)
         for (int x = 0; x < kScreenWidth; ++x)
-            if (y > 180 - (x * 37 % 23) || (x >= 236 && x < 240)) in.occluders[std::size_t(y * kScreenWidth + x)] = 1;
+            if (y > 180 - (x * 37 % 23) || (x >= 236 && x < 240))
+                in.occluders[std::size_t(y * kScreenWidth + x)] = 1;
     in.sunX = 240, in.sunY = 100;
     in.naive = naive;
     return in;
@@ -31,15 +32,19 @@ void BM_PspFrame(benchmark::State& state, PspTrick trick, bool naive) {
         coverage = r->coverageByte;
         benchmark::DoNotOptimize(r->frame.pixels.data());
     }
-    state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["fps"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["screen_Mpx_per_s"] =
-        benchmark::Counter(double(state.iterations()) * kScreenWidth * kScreenHeight / 1e6, benchmark::Counter::kIsRate);
+        benchmark::Counter(double(state.iterations()) * kScreenWidth * kScreenHeight / 1e6,
+                           benchmark::Counter::kIsRate);
     state.counters["coverage_byte"] = coverage;
 }
 }  // namespace
 
 BENCHMARK_CAPTURE(BM_PspFrame, burnout, PspTrick::Burnout, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_PspFrame, burnout_naive, PspTrick::Burnout, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_PspFrame, ridge_racer, PspTrick::RidgeRacer, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PspFrame, burnout_naive, PspTrick::Burnout, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PspFrame, ridge_racer, PspTrick::RidgeRacer, false)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -26,11 +26,14 @@ Scene foliage() {
         s.boxes.push_back({{side - 0.2, 0, z - 0.2}, {side + 0.2, 4, z + 0.2}, {}});
         for (int leaf = 0; leaf < 400; ++leaf) {
             const Vec3 c{side + 2.5 * u(rng), 6 + 2.5 * u(rng), z + 2.5 * u(rng)};
-            s.triangles.push_back({c, c + Vec3{0.4 * u(rng), 0.4 * u(rng), 0.4 * u(rng)},
-                                   c + Vec3{0.4 * u(rng), 0.4 * u(rng), 0.4 * u(rng)}, {}});
+            s.triangles.push_back({c,
+                                   c + Vec3{0.4 * u(rng), 0.4 * u(rng), 0.4 * u(rng)},
+                                   c + Vec3{0.4 * u(rng), 0.4 * u(rng), 0.4 * u(rng)},
+                                   {}});
         }
     }
-    for (int b = 0; b < 8; ++b) s.boxes.push_back({{-30.0 + 8 * b, 0, -120}, {-25.0 + 8 * b, 15.0 + b, -110}, {}});
+    for (int b = 0; b < 8; ++b)
+        s.boxes.push_back({{-30.0 + 8 * b, 0, -120}, {-25.0 + 8 * b, 15.0 + b, -110}, {}});
     return s;
 }
 
@@ -45,7 +48,8 @@ void BM_Raycast(benchmark::State& state) {
         rays = r->samples;
         coverage = r->coverage;
     }
-    state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["rays/s"] =
+        benchmark::Counter(double(rays), benchmark::Counter::kIsIterationInvariantRate);
     state.counters["coverage"] = coverage;
     state.counters["triangles"] = double(scene.triangles.size());
 }

@@ -6,9 +6,9 @@
 
 #include <epoxy/gl.h>
 
+#include <epoxy/gl.h>
 #include "flarekit/Demo.h"
 #include "flarekit/Render.h"
-#include <epoxy/gl.h>
 
 #include "flarekit/GpuTimer.h"
 #include "flarekit/HeadlessGl.h"

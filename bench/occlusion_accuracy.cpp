@@ -10,8 +10,8 @@
 #include "GpuMeasure.h"
 #include "OcclusionScenes.h"
 #include "flarekit/GpuVisibility.h"
-#include "flarekit/Visibility.h"
 #include "flarekit/HeadlessGl.h"
+#include "flarekit/Visibility.h"
 
 using namespace flarekit;
 
@@ -30,13 +30,15 @@ std::vector<std::pair<std::string, GpuVisibilityOptions>> methods() {
         }
     }
     const std::size_t singleSample = m.size();
-    for (std::size_t i = 0; i < singleSample; ++i) m.emplace_back(m[i].first + ":msaa4", m[i].second);
+    for (std::size_t i = 0; i < singleSample; ++i)
+        m.emplace_back(m[i].first + ":msaa4", m[i].second);
     return m;
 }
 
 double measure(const std::string& label, const GpuVisibilityOptions& options, const Scene& scene) {
-    auto coverage = test::measureGpuCoverage(label.substr(0, label.find(':')), scene, label.ends_with(":msaa4") ? 4 : 1,
-                                             options.textureMaskVariant);
+    auto coverage =
+        test::measureGpuCoverage(label.substr(0, label.find(':')), scene,
+                                 label.ends_with(":msaa4") ? 4 : 1, options.textureMaskVariant);
     return coverage ? *coverage : NAN;
 }
 }  // namespace
@@ -67,7 +69,8 @@ int main(int argc, char** argv) {
         const double radiusPx = c.scene.sun.angularRadiusDeg * M_PI / 180 * (c.scene.height / 2.0) /
                                 std::tan(c.scene.camera.fovYDeg * M_PI / 360);
         const double area = M_PI * radiusPx * radiusPx;  // for the table's "disc px" column
-        const bool judged = test::judgedScene(c.scene) && c.name.find("not judged") == std::string::npos;
+        const bool judged =
+            test::judgedScene(c.scene) && c.name.find("not judged") == std::string::npos;
         if (rows) std::printf("| %s | %.0f | %.4f |", c.name.c_str(), area, truth);
         for (const auto& m : ms) {
             const double v = measure(m.first, m.second, c.scene);
@@ -81,11 +84,12 @@ int main(int argc, char** argv) {
         if (rows) std::printf("\n");
         counted += judged;
     }
-    std::printf("\n%d of %zu scenes judged (disc fully in frame, >= 100 px). %s via %s\n\n", counted, cases.size(),
-                (*gl)->renderer().c_str(), (*gl)->platform().c_str());
+    std::printf("\n%d of %zu scenes judged (disc fully in frame, >= 100 px). %s via %s\n\n",
+                counted, cases.size(), (*gl)->renderer().c_str(), (*gl)->platform().c_str());
     std::printf("| method | max abs error | mean abs error |\n|---|---|---|\n");
     for (const auto& m : ms) {
-        std::printf("| %s | %.4f | %.4f |\n", m.first.c_str(), maxErr[m.first], sumErr[m.first] / std::max(1, counted));
+        std::printf("| %s | %.4f | %.4f |\n", m.first.c_str(), maxErr[m.first],
+                    sumErr[m.first] / std::max(1, counted));
     }
     return 0;
 }

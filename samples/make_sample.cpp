@@ -21,13 +21,15 @@ float smooth(float e0, float e1, float x) {
 }
 
 float hill(float x) {  // silhouette height in pixels from the bottom
-    return 150.f + 40.f * std::sin(x * 0.004f + 1.f) + 22.f * std::sin(x * 0.011f + 0.3f) + 8.f * std::sin(x * 0.037f);
+    return 150.f + 40.f * std::sin(x * 0.004f + 1.f) + 22.f * std::sin(x * 0.011f + 0.3f) +
+           8.f * std::sin(x * 0.037f);
 }
 
 // Conifer silhouettes: a narrow triangle per tree, positions from a fixed list.
 bool inTree(float x, float y) {
-    const float trees[][3] = {{120, 90, 20}, {175, 130, 26}, {240, 70, 16}, {560, 110, 22}, {610, 80, 17},
-                              {1010, 150, 28}, {1060, 95, 20}, {1110, 125, 24}, {1200, 85, 18}};
+    const float trees[][3] = {{120, 90, 20},  {175, 130, 26},  {240, 70, 16},
+                              {560, 110, 22}, {610, 80, 17},   {1010, 150, 28},
+                              {1060, 95, 20}, {1110, 125, 24}, {1200, 85, 18}};
     for (const auto& t : trees) {
         const float base = float(kHeight) - hill(t[0]) + 6.f, top = base - t[1];
         if (y < top || y > base) continue;
@@ -45,10 +47,12 @@ Image render(float sunValue) {
             float r = 0, g = 0, b = 0;
             for (int sy = 0; sy < 4; ++sy) {
                 for (int sx = 0; sx < 4; ++sx) {
-                    const float px = float(x) + (float(sx) + 0.5f) / 4.f, py = float(y) + (float(sy) + 0.5f) / 4.f;
+                    const float px = float(x) + (float(sx) + 0.5f) / 4.f,
+                                py = float(y) + (float(sy) + 0.5f) / 4.f;
                     const float h = py / float(kHeight);
                     // Sky: deep blue overhead to orange at the horizon, brighter toward the sun.
-                    float cr = 0.05f + 0.9f * smooth(0.1f, 0.8f, h), cg = 0.07f + 0.35f * smooth(0.2f, 0.85f, h),
+                    float cr = 0.05f + 0.9f * smooth(0.1f, 0.8f, h),
+                          cg = 0.07f + 0.35f * smooth(0.2f, 0.85f, h),
                           cb = 0.25f - 0.15f * smooth(0.3f, 0.9f, h);
                     const float ds = std::hypot(px - kSunX, py - kSunY);
                     const float halo = 0.5f * std::exp(-ds / 90.f);
@@ -66,7 +70,8 @@ Image render(float sunValue) {
                     b += cb;
                 }
             }
-            img.at(x, y) = {std::min(r / 16.f, 64.f), std::min(g / 16.f, 64.f), std::min(b / 16.f, 64.f), 1.f};
+            img.at(x, y) = {std::min(r / 16.f, 64.f), std::min(g / 16.f, 64.f),
+                            std::min(b / 16.f, 64.f), 1.f};
         }
     }
     return img;

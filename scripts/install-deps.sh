@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  # the formatting check of ./setup.sh test (.clang-format)
+  clang-format
   # image I/O (EXR, PNG, JPEG, TIFF) and its command-line tools
   libopenimageio-dev openimageio-tools
   # JSON presets and scenes, CLI parsing, threads

@@ -21,11 +21,13 @@ inline bool writeRaw(const std::string& path, int w, int h, int channels, OIIO::
     return out->open(path, spec) && out->write_image(type, data) && out->close();
 }
 
-inline bool writeRawFloat(const std::string& path, int w, int h, int channels, const std::vector<float>& data) {
+inline bool writeRawFloat(const std::string& path, int w, int h, int channels,
+                          const std::vector<float>& data) {
     return writeRaw(path, w, h, channels, OIIO::TypeDesc::FLOAT, data.data());
 }
 
-inline bool writeRawBytes(const std::string& path, int w, int h, int channels, const std::vector<unsigned char>& data) {
+inline bool writeRawBytes(const std::string& path, int w, int h, int channels,
+                          const std::vector<unsigned char>& data) {
     return writeRaw(path, w, h, channels, OIIO::TypeDesc::UINT8, data.data());
 }
 

@@ -10,7 +10,7 @@
 namespace flarekit::test {
 
 class TempDir {
-public:
+  public:
     TempDir() {
         static std::atomic<int> counter{0};
         m_path = std::filesystem::temp_directory_path() /
@@ -33,7 +33,7 @@ public:
         return n;
     }
 
-private:
+  private:
     std::filesystem::path m_path;
 };
 

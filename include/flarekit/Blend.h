@@ -2,8 +2,8 @@
 // Flares" (Tanczos, 1999), bit for bit; the float modes composite linear-light HDR images.
 #pragma once
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -32,14 +32,17 @@ inline std::uint8_t alphaShift(std::uint8_t s, std::uint8_t d, std::uint8_t a) {
 }
 
 //! Figure 5: the source stored premultiplied, s' = s*a/255 (integer division).
-inline std::uint8_t premultiply(std::uint8_t s, std::uint8_t a) { return std::uint8_t(s * a / 255); }
+inline std::uint8_t premultiply(std::uint8_t s, std::uint8_t a) {
+    return std::uint8_t(s * a / 255);
+}
 
 //! Figure 6 with the stored inverse alpha ia = 255 - a: d = s' + ((d*ia) >> 8).
 //! As printed, "source1_r + (source2_r * alpha) >> 8" parses in C as (s + d*ia) >> 8 because
 //! + binds tighter than >>; the article's text (Figure 5's distributed sum) intends the shift
 //! to apply to the destination term only, which is what this computes. The sum never exceeds
 //! 255: s' <= a and (d*ia) >> 8 <= 255 - a.
-inline std::uint8_t premultiplied(std::uint8_t sPremultiplied, std::uint8_t d, std::uint8_t inverseAlpha) {
+inline std::uint8_t premultiplied(std::uint8_t sPremultiplied, std::uint8_t d,
+                                  std::uint8_t inverseAlpha) {
     return std::uint8_t(sPremultiplied + ((d * inverseAlpha) >> 8));
 }
 
@@ -54,7 +57,8 @@ const std::uint8_t* addLut();
 
 // Saturating add over byte spans, out[i] = min(a[i] + b[i], 255); out may alias a or b.
 // Three implementations that agree bit for bit; the SIMD one is what the tool uses.
-void addSpanScalar16(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out, std::size_t n);
+void addSpanScalar16(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out,
+                     std::size_t n);
 void addSpanLut(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out, std::size_t n);
 void addSpanSimd(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out, std::size_t n);
 //! "avx2", "sse2" or "scalar": the instruction set addSpanSimd picked on this CPU.
@@ -63,11 +67,13 @@ std::string_view addSimdIsa();
 // Alpha modes over spans of pixels: src RGBA (straight alpha), dst with dstChannels (3 or 4)
 // whose first three channels are blended in place; dst alpha is left as it is.
 void alphaSpan(const std::uint8_t* srcRgba, std::uint8_t* dst, int dstChannels, std::size_t pixels);
-void alphaShiftSpan(const std::uint8_t* srcRgba, std::uint8_t* dst, int dstChannels, std::size_t pixels);
+void alphaShiftSpan(const std::uint8_t* srcRgba, std::uint8_t* dst, int dstChannels,
+                    std::size_t pixels);
 //! Converts straight RGBA to the Figure 5-6 storage: premultiplied RGB, inverse alpha in A.
 void toPremultipliedInverse(const std::uint8_t* srcRgba, std::uint8_t* out, std::size_t pixels);
 //! src is in the Figure 5-6 storage (see toPremultipliedInverse).
-void premultipliedSpan(const std::uint8_t* srcPremulInverse, std::uint8_t* dst, int dstChannels, std::size_t pixels);
+void premultipliedSpan(const std::uint8_t* srcPremulInverse, std::uint8_t* dst, int dstChannels,
+                       std::size_t pixels);
 
 }  // namespace blend8
 

@@ -13,6 +13,8 @@ float srgb8ToLinear(std::uint8_t code);
 //! Encode, clamp to [0, 1] and round to the nearest 8-bit code.
 std::uint8_t linearToSrgb8(float linear);
 //! Rec. 709 luminance of linear RGB.
-inline float luminance(float r, float g, float b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
+inline float luminance(float r, float g, float b) {
+    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
+}
 
 }  // namespace flarekit

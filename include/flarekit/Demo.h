@@ -34,9 +34,12 @@ struct DemoSettings {
     TemporalParams temporal;
 };
 inline constexpr Param<DemoSettings> kDemoParams[] = {
-    param<&DemoSettings::frames>("frames", 1, 100000, "", "frames over the 8 s drive (240 = 30 fps)"),
-    param<&DemoSettings::raycastSamplesPerSide>("samples", 1, 4096, "per side", "raycast: strata per side (N^2 rays a frame)"),
-    oneOf<&DemoSettings::msaaSamples>("msaa", kMsaaSampleCounts, "samples", "samples per pixel for the scene pass"),
+    param<&DemoSettings::frames>("frames", 1, 100000, "",
+                                 "frames over the 8 s drive (240 = 30 fps)"),
+    param<&DemoSettings::raycastSamplesPerSide>("samples", 1, 4096, "per side",
+                                                "raycast: strata per side (N^2 rays a frame)"),
+    oneOf<&DemoSettings::msaaSamples>("msaa", kMsaaSampleCounts, "samples",
+                                      "samples per pixel for the scene pass"),
     param<&DemoSettings::width>("width", 16, 16384, "pixels", "frame width"),
     param<&DemoSettings::height>("height", 16, 16384, "pixels", "frame height"),
 };
@@ -52,7 +55,7 @@ struct DemoFrame : PipelineFrame {
 //! Renders the demo frame by frame (in order: the temporal filter carries state). A GL
 //! context must be current on the calling thread while it lives.
 class DemoAnimation {
-public:
+  public:
     static Result<DemoAnimation> create(const DemoSettings& settings, const Preset& preset);
     ~DemoAnimation();
     DemoAnimation(DemoAnimation&&) noexcept;
@@ -63,7 +66,7 @@ public:
     //! The next frame (0, 1, 2, ...); an error past the last.
     Result<DemoFrame> next();
 
-private:
+  private:
     struct Impl;
     explicit DemoAnimation(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;

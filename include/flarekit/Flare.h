@@ -1,5 +1,6 @@
-// Sprite lens flares (Michael Tanczos, "The Art of Modeling Lens Flares", 1999): a preset's elements placed along the flare
-// vector from the screen centre through the light, composited onto a linear-light image.
+// Sprite lens flares (Michael Tanczos, "The Art of Modeling Lens Flares", 1999): a preset's
+// elements placed along the flare vector from the screen centre through the light, composited onto
+// a linear-light image.
 #pragma once
 
 #include <string>
@@ -76,19 +77,22 @@ struct LightSearchOptions {
     float nearPeak = 0.9f;
 };
 inline constexpr Param<LightSearchOptions> kLightSearchParams[] = {
-    param<&LightSearchOptions::minLuminance>("light-threshold", 0, 1e6, "linear",
+    param<&LightSearchOptions::minLuminance>(
+        "light-threshold", 0, 1e6, "linear",
         "--light auto: smallest peak linear luminance that counts as a light"),
-    param<&LightSearchOptions::nearPeak>("near-peak", 0, 1, "of the peak",
+    param<&LightSearchOptions::nearPeak>(
+        "near-peak", 0, 1, "of the peak",
         "--light auto: a light's pixels are those at least this fraction of the peak"),
 };
 
 struct FoundLight {
     bool found = false;
-    Point position;           //!< luminance-weighted centroid of the light's pixels
-    float peak = 0.f;         //!< peak linear luminance in the image
-    float brightness = 0.f;   //!< mean linear luminance of the light's pixels
-    std::size_t pixels = 0;   //!< size of the light's connected region
-    float flareScale = 0.f;   //!< intensity for the flare: brightness up to 1, 1 + ln(brightness) above
+    Point position;          //!< luminance-weighted centroid of the light's pixels
+    float peak = 0.f;        //!< peak linear luminance in the image
+    float brightness = 0.f;  //!< mean linear luminance of the light's pixels
+    std::size_t pixels = 0;  //!< size of the light's connected region
+    float flareScale =
+        0.f;  //!< intensity for the flare: brightness up to 1, 1 + ln(brightness) above
 };
 
 //! The flare intensity for a light of this linear luminance: linear up to display white, then

@@ -35,10 +35,10 @@ struct FramePipelineSettings {
 };
 
 struct PipelineFrame {
-    Image image;              //!< tone-mapped linear [0, 1], or linear HDR without toneMap
-    double rawCoverage = 0;   //!< the method's coverage this frame
-    double inFrame = 0;       //!< fraction of the disc inside the frame
-    TemporalState temporal;   //!< smoothed coverage, edge fade, exposure (a still: raw, 1, 1)
+    Image image;             //!< tone-mapped linear [0, 1], or linear HDR without toneMap
+    double rawCoverage = 0;  //!< the method's coverage this frame
+    double inFrame = 0;      //!< fraction of the disc inside the frame
+    TemporalState temporal;  //!< smoothed coverage, edge fade, exposure (a still: raw, 1, 1)
     bool sunInFront = false;
     Point sunPixel;
     float flareIntensity = 0;  //!< the flare's weight x the sun's brightness scale
@@ -46,9 +46,10 @@ struct PipelineFrame {
 };
 
 class FramePipeline {
-public:
+  public:
     //! Uploads `world`'s objects once; every frame reuses them.
-    static Result<FramePipeline> create(const Scene& world, const Preset& preset, const FramePipelineSettings& settings);
+    static Result<FramePipeline> create(const Scene& world, const Preset& preset,
+                                        const FramePipelineSettings& settings);
     ~FramePipeline();
     FramePipeline(FramePipeline&&) noexcept;
     FramePipeline& operator=(FramePipeline&&) noexcept;
@@ -58,7 +59,7 @@ public:
     Result<PipelineFrame> run(const Scene& view, double dt, std::uint64_t raySeed = 1);
     std::size_t primitiveCount() const;  //!< objects uploaded (triangles, spheres, boxes)
 
-private:
+  private:
     struct Impl;
     explicit FramePipeline(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;

@@ -6,8 +6,9 @@
 namespace flarekit {
 
 struct GpuChannel {
-    unsigned texture = 0;  //!< GL texture name; 0: no value (readers use their default, e.g. exposure 1)
-    int channel = 0;       //!< 0..3: red, green, blue, alpha
+    unsigned texture =
+        0;            //!< GL texture name; 0: no value (readers use their default, e.g. exposure 1)
+    int channel = 0;  //!< 0..3: red, green, blue, alpha
     explicit operator bool() const { return texture != 0; }
 };
 

@@ -22,7 +22,7 @@ enum class GpuStateChannel { Coverage = 0, EdgeFade = 1, Exposure = 2, FlareWeig
 //! TemporalFilter on the GPU: a fragment pass over ping-pong 1x1 RGBA32F textures reads the
 //! previous state and the method's raw coverage texture and writes the new state.
 class GpuTemporalFilter {
-public:
+  public:
     static Result<GpuTemporalFilter> create(const TemporalParams& params = {});
     ~GpuTemporalFilter();
     GpuTemporalFilter(GpuTemporalFilter&&) noexcept;
@@ -30,7 +30,8 @@ public:
 
     //! One frame, as TemporalFilter::update, with the raw coverage in `rawCoverage` (a
     //! GpuVisibility's coverage()). Nothing is read back.
-    Status update(GpuChannel rawCoverage, Point sunPixel, bool sunInFront, int width, int height, double dtSeconds);
+    Status update(GpuChannel rawCoverage, Point sunPixel, bool sunInFront, int width, int height,
+                  double dtSeconds);
     //! One value of the newest state (an RGBA32F 1x1 texture, channels as GpuStateChannel).
     GpuChannel state(GpuStateChannel channel) const;
     //! Reads the state back (waits for the GPU): for reports and tests only.
@@ -39,7 +40,7 @@ public:
     //! with a late method (pbo, query) an earlier frame's result. For reports and tests only.
     Result<double> readConsumedCoverage() const;
 
-private:
+  private:
     struct Impl;
     explicit GpuTemporalFilter(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;
@@ -50,7 +51,7 @@ private:
 //! the flare vector like renderFlare and composited with the element's blend mode. The vertex
 //! shader takes the flare's weight from a 1x1 texture, so the CPU never learns it.
 class GpuSpriteFlare {
-public:
+  public:
     //! Element textures for frames `height` pixels tall (sizes are fractions of the height).
     static Result<GpuSpriteFlare> create(const Preset& preset, int height);
     ~GpuSpriteFlare();
@@ -68,7 +69,7 @@ public:
                              unsigned conditionQuery = 0) const;
     std::size_t elementCount() const;  //!< elements with a texture (radius >= half a pixel)
 
-private:
+  private:
     struct Impl;
     explicit GpuSpriteFlare(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;
@@ -78,7 +79,7 @@ private:
 //! fitted, into a display target read back as
 //! linear [0, 1] RGBA (the read waits for the GPU: it is the frame's output).
 class GpuTonemap {
-public:
+  public:
     static Result<GpuTonemap> create(int width, int height);
     ~GpuTonemap();
     GpuTonemap(GpuTonemap&&) noexcept;
@@ -88,7 +89,7 @@ public:
     //! The last apply() result, top row first.
     Result<Image> read() const;
 
-private:
+  private:
     struct Impl;
     explicit GpuTonemap(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;

@@ -5,7 +5,7 @@
 namespace flarekit {
 
 class GpuTimer {
-public:
+  public:
     GpuTimer();
     ~GpuTimer();
     GpuTimer(GpuTimer&& other) noexcept : m_query(other.m_query) { other.m_query = 0; }
@@ -18,7 +18,7 @@ public:
     //! The time between begin() and end(); waits for the GPU to finish those commands.
     double milliseconds() const;
 
-private:
+  private:
     unsigned m_query = 0;
 };
 

@@ -25,7 +25,7 @@ struct GpuVisibilityOptions {
 };
 
 class GpuVisibility {
-public:
+  public:
     virtual ~GpuVisibility() = default;
     virtual std::string name() const = 0;
     //! Starts measuring the frame `renderer` has just drawn for `view` (camera and sun).
@@ -52,7 +52,7 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
 
 //! A method over the objects `renderer` has uploaded (texture-mask re-draws them from the sun's
 //! own camera, so it needs `world` for culling).
-Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method, const Scene& world,
-                                                           const GpuVisibilityOptions& options = {});
+Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(
+    const std::string& method, const Scene& world, const GpuVisibilityOptions& options = {});
 
 }  // namespace flarekit

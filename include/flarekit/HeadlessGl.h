@@ -11,7 +11,7 @@
 namespace flarekit::gl {
 
 class HeadlessGl {
-public:
+  public:
     //! Creates a context and makes it current on the calling thread. FLAREKIT_EGL_PLATFORM
     //! (device | surfaceless) forces one platform; by default devices are tried first.
     static Result<std::unique_ptr<HeadlessGl>> create();
@@ -23,7 +23,7 @@ public:
     std::string version() const;   //!< GL_VERSION
     const std::string& platform() const { return m_platform; }  //!< "device" or "surfaceless"
 
-private:
+  private:
     HeadlessGl() = default;
     void* m_display = nullptr;
     void* m_context = nullptr;

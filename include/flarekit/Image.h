@@ -13,7 +13,7 @@ struct Rgba {
 };
 
 class Image {
-public:
+  public:
     Image() = default;
     Image(int width, int height);  //!< zero-filled (transparent black)
 
@@ -23,7 +23,9 @@ public:
     bool empty() const { return m_width == 0 || m_height == 0; }
 
     float* row(int y) { return m_data.data() + std::size_t(y) * std::size_t(m_width) * 4; }
-    const float* row(int y) const { return m_data.data() + std::size_t(y) * std::size_t(m_width) * 4; }
+    const float* row(int y) const {
+        return m_data.data() + std::size_t(y) * std::size_t(m_width) * 4;
+    }
     Rgba& at(int x, int y) { return reinterpret_cast<Rgba*>(row(y))[x]; }
     const Rgba& at(int x, int y) const { return reinterpret_cast<const Rgba*>(row(y))[x]; }
     float* data() { return m_data.data(); }
@@ -32,7 +34,7 @@ public:
     void fill(Rgba value);
     void scale(float k);  //!< every channel (alpha too) x k
 
-private:
+  private:
     int m_width = 0;
     int m_height = 0;
     std::vector<float> m_data;

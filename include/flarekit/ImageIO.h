@@ -9,12 +9,12 @@
 namespace flarekit {
 
 struct LoadedImage {
-    Image image;                 //!< linear float RGBA
-    int fileChannels = 0;        //!< channels in the file (1 grey, 2 grey+alpha, 3, 4, ...)
-    bool hasAlpha = false;       //!< the file had an alpha channel
-    bool wasFloat = false;       //!< half/float file, kept linear; integer files are sRGB-decoded
-    std::size_t nonFinite = 0;   //!< NaN/Inf values replaced by 0
-    int droppedChannels = 0;     //!< channels past the 4th, not kept
+    Image image;                //!< linear float RGBA
+    int fileChannels = 0;       //!< channels in the file (1 grey, 2 grey+alpha, 3, 4, ...)
+    bool hasAlpha = false;      //!< the file had an alpha channel
+    bool wasFloat = false;      //!< half/float file, kept linear; integer files are sRGB-decoded
+    std::size_t nonFinite = 0;  //!< NaN/Inf values replaced by 0
+    int droppedChannels = 0;    //!< channels past the 4th, not kept
 };
 
 //! Reads any OIIO-supported file. Sizes are checked before pixels are allocated.
@@ -23,13 +23,17 @@ Result<LoadedImage> readImage(const std::string& path);
 enum class SampleFormat { Auto, U8, U16, Half, Float };
 
 struct WriteOptions {
-    SampleFormat format = SampleFormat::Auto;  //!< Auto: .exr half, .hdr/.pfm float, .tif 16-bit, else 8-bit
-    bool alpha = false;                        //!< write RGBA (ignored by formats without alpha)
+    SampleFormat format =
+        SampleFormat::Auto;  //!< Auto: .exr half, .hdr/.pfm float, .tif 16-bit, else 8-bit
+    bool alpha = false;      //!< write RGBA (ignored by formats without alpha)
 };
 
 //! The sample format writeImage will use for `path` (Auto resolved from the extension).
-SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested = SampleFormat::Auto);
-inline bool isFloatFormat(SampleFormat f) { return f == SampleFormat::Half || f == SampleFormat::Float; }
+SampleFormat outputSampleFormat(const std::string& path,
+                                SampleFormat requested = SampleFormat::Auto);
+inline bool isFloatFormat(SampleFormat f) {
+    return f == SampleFormat::Half || f == SampleFormat::Float;
+}
 
 //! Writes atomically: to a temporary file beside `path`, renamed over it on success.
 //! Integer formats are sRGB-encoded; float formats are written linear.

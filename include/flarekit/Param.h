@@ -77,12 +77,18 @@ using FieldOf = typename MemberOf<decltype(M)>::Type;
 
 template <class T>
 constexpr ParamType typeOf() {
-    if constexpr (std::is_same_v<T, bool>) return ParamType::Bool;
-    else if constexpr (std::is_floating_point_v<T>) return ParamType::Number;
-    else if constexpr (std::is_same_v<T, std::uint32_t>) return ParamType::Seed;
-    else if constexpr (std::is_integral_v<T>) return ParamType::Integer;
-    else if constexpr (std::is_same_v<T, Rgb>) return ParamType::Color;
-    else if constexpr (std::is_same_v<T, std::optional<Rgb>>) return ParamType::OptionalColor;
+    if constexpr (std::is_same_v<T, bool>)
+        return ParamType::Bool;
+    else if constexpr (std::is_floating_point_v<T>)
+        return ParamType::Number;
+    else if constexpr (std::is_same_v<T, std::uint32_t>)
+        return ParamType::Seed;
+    else if constexpr (std::is_integral_v<T>)
+        return ParamType::Integer;
+    else if constexpr (std::is_same_v<T, Rgb>)
+        return ParamType::Color;
+    else if constexpr (std::is_same_v<T, std::optional<Rgb>>)
+        return ParamType::OptionalColor;
     else {
         static_assert(std::is_enum_v<T>, "a parameter is a number, bool, colour or enum");
         return ParamType::Choice;
@@ -93,21 +99,28 @@ template <auto M>
 ParamValue get(const OwnerOf<M>& owner) {
     using T = FieldOf<M>;
     const T& v = owner.*M;
-    if constexpr (std::is_same_v<T, Rgb>) return {0, v, true};
-    else if constexpr (std::is_same_v<T, std::optional<Rgb>>) return {0, v.value_or(Rgb{}), v.has_value()};
-    else return {double(v), {}, true};
+    if constexpr (std::is_same_v<T, Rgb>)
+        return {0, v, true};
+    else if constexpr (std::is_same_v<T, std::optional<Rgb>>)
+        return {0, v.value_or(Rgb{}), v.has_value()};
+    else
+        return {double(v), {}, true};
 }
 
 template <auto M>
 void set(OwnerOf<M>& owner, const ParamValue& value) {
     using T = FieldOf<M>;
     T& v = owner.*M;
-    if constexpr (std::is_same_v<T, Rgb>) v = value.color;
+    if constexpr (std::is_same_v<T, Rgb>)
+        v = value.color;
     else if constexpr (std::is_same_v<T, std::optional<Rgb>>) {
         v = value.hasColor ? std::optional<Rgb>(value.color) : std::nullopt;
-    } else if constexpr (std::is_same_v<T, bool>) v = value.number != 0;
-    else if constexpr (std::is_enum_v<T>) v = T(int(value.number));
-    else v = T(value.number);
+    } else if constexpr (std::is_same_v<T, bool>)
+        v = value.number != 0;
+    else if constexpr (std::is_enum_v<T>)
+        v = T(int(value.number));
+    else
+        v = T(value.number);
 }
 
 }  // namespace param_detail
@@ -120,10 +133,20 @@ constexpr Param<param_detail::OwnerOf<Member>> param(std::string_view key, doubl
                                                      std::uint32_t appliesTo = ~0u) {
     using T = param_detail::FieldOf<Member>;
     static_assert(!std::is_enum_v<T>, "an enum member is a choice<>()");
-    constexpr bool single = std::is_same_v<T, float> || std::is_same_v<T, Rgb> ||
-                            std::is_same_v<T, std::optional<Rgb>>;
-    return {key,       param_detail::typeOf<T>(),  min,   max, unit, help, {}, {},
-            appliesTo, single, &param_detail::get<Member>, &param_detail::set<Member>};
+    constexpr bool single =
+        std::is_same_v<T, float> || std::is_same_v<T, Rgb> || std::is_same_v<T, std::optional<Rgb>>;
+    return {key,
+            param_detail::typeOf<T>(),
+            min,
+            max,
+            unit,
+            help,
+            {},
+            {},
+            appliesTo,
+            single,
+            &param_detail::get<Member>,
+            &param_detail::set<Member>};
 }
 
 //! An enum (or bool) member picked by name; names[i] is the value i.
@@ -132,8 +155,18 @@ constexpr Param<param_detail::OwnerOf<Member>> choice(std::string_view key,
                                                       std::span<const std::string_view> names,
                                                       std::string_view help,
                                                       std::uint32_t appliesTo = ~0u) {
-    return {key,       ParamType::Choice, 0, double(names.size()) - 1, {}, help, names, {},
-            appliesTo, false, &param_detail::get<Member>, &param_detail::set<Member>};
+    return {key,
+            ParamType::Choice,
+            0,
+            double(names.size()) - 1,
+            {},
+            help,
+            names,
+            {},
+            appliesTo,
+            false,
+            &param_detail::get<Member>,
+            &param_detail::set<Member>};
 }
 
 //! An integer member that takes only the listed values (MSAA sample counts).
@@ -182,7 +215,8 @@ std::string expectedText(const Param<Owner>& p) {
     const std::string range = formatParamRange(p.min, p.max);
     auto quoted = [&](std::size_t i) { return joinText("\"", p.choices[i], "\""); };
     switch (p.type) {
-        case ParamType::Number: return joinText("a number in ", range);
+        case ParamType::Number:
+            return joinText("a number in ", range);
         case ParamType::Integer:
         case ParamType::Seed:
             if (!p.only.empty()) {
@@ -193,9 +227,11 @@ std::string expectedText(const Param<Owner>& p) {
                 return joinText("one of ", list);
             }
             return joinText("an integer in ", range);
-        case ParamType::Bool: return "true or false";
+        case ParamType::Bool:
+            return "true or false";
         case ParamType::Color:
-        case ParamType::OptionalColor: return joinText("an array of 3 numbers in ", range);
+        case ParamType::OptionalColor:
+            return joinText("an array of 3 numbers in ", range);
         case ParamType::Choice: {
             if (p.choices.size() == 2) return joinText(quoted(0), " or ", quoted(1));
             std::string list = "one of ";
@@ -249,12 +285,14 @@ std::string valueText(const Param<Owner>& p, const ParamValue& v) {
             if (!v.hasColor) return "";
             return joinText("[", formatParamNumber(v.color[0]), ", ", formatParamNumber(v.color[1]),
                             ", ", formatParamNumber(v.color[2]), "]");
-        case ParamType::Bool: return v.number != 0 ? "true" : "false";
+        case ParamType::Bool:
+            return v.number != 0 ? "true" : "false";
         case ParamType::Choice: {
             const auto i = std::size_t(v.number);
             return i < p.choices.size() ? joinText("`", p.choices[i], "`") : "?";
         }
-        default: return formatParamNumber(v.number);
+        default:
+            return formatParamNumber(v.number);
     }
 }
 
@@ -263,8 +301,10 @@ template <class Owner>
 std::string rangeText(const Param<Owner>& p) {
     switch (p.type) {
         case ParamType::Color:
-        case ParamType::OptionalColor: return joinText("3 x ", formatParamRange(p.min, p.max));
-        case ParamType::Bool: return "true, false";
+        case ParamType::OptionalColor:
+            return joinText("3 x ", formatParamRange(p.min, p.max));
+        case ParamType::Bool:
+            return "true, false";
         case ParamType::Choice: {
             std::string list;
             for (std::size_t i = 0; i < p.choices.size(); ++i) {

@@ -34,24 +34,27 @@ struct PostFxResult {
 };
 
 struct PassTime {
-    std::string pass;         //!< "bright", "downsample", "upsample", "ghosts", "halo", "streaks", "lens", "composite"
+    std::string pass;  //!< "bright", "downsample", "upsample", "ghosts", "halo", "streaks", "lens",
+                       //!< "composite"
     double milliseconds = 0;  //!< CPU: wall time; GL: GPU time from a timer query
-    double wallMilliseconds = 0;  //!< wall time (GL: glFinish before and after; llvmpipe's timer queries are unreliable)
-    double megapixels = 0;    //!< pixels the pass wrote, in millions
+    double wallMilliseconds =
+        0;  //!< wall time (GL: glFinish before and after; llvmpipe's timer queries are unreliable)
+    double megapixels = 0;  //!< pixels the pass wrote, in millions
 };
 
 struct PostFxOptions {
-    bool keepLayers = false;             //!< fill bloom/ghosts/halo/streaks/lens
+    bool keepLayers = false;                 //!< fill bloom/ghosts/halo/streaks/lens
     std::vector<PassTime>* times = nullptr;  //!< when set, each pass is timed (GL: waits per pass)
 };
 
 //! The CPU chain (oneTBB threads, 4-wide SIMD per pixel), one run with fresh buffers.
-Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params, const PostFxOptions& options = {});
+Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params,
+                               const PostFxOptions& options = {});
 
 //! The CPU chain keeping its intermediate buffers between runs of the same size (a video, a
 //! benchmark): fresh multi-megabyte buffers cost a page fault per 4 KiB on every run.
 class CpuPostFx {
-public:
+  public:
     CpuPostFx();
     ~CpuPostFx();
     CpuPostFx(CpuPostFx&&) noexcept;
@@ -59,29 +62,31 @@ public:
 
     //! Writes the composite into `result.final` (reused when it already has the input's size)
     //! and, with options.keepLayers, the layers.
-    Status run(const Image& input, const PostFxParams& params, PostFxResult& result, const PostFxOptions& options = {});
+    Status run(const Image& input, const PostFxParams& params, PostFxResult& result,
+               const PostFxOptions& options = {});
 
     struct Impl;
 
-private:
+  private:
     std::unique_ptr<Impl> m;
 };
 
 //! The OpenGL chain. A GL 4.5 context must be current; textures are kept between runs of the
 //! same size.
 class GpuPostFx {
-public:
+  public:
     static Result<GpuPostFx> create();
     ~GpuPostFx();
     GpuPostFx(GpuPostFx&&) noexcept;
     GpuPostFx& operator=(GpuPostFx&&) noexcept;
 
     //! Uploads, runs every pass and reads the result back.
-    Result<PostFxResult> run(const Image& input, const PostFxParams& params, const PostFxOptions& options = {});
+    Result<PostFxResult> run(const Image& input, const PostFxParams& params,
+                             const PostFxOptions& options = {});
 
     struct Impl;
 
-private:
+  private:
     explicit GpuPostFx(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;
 };

@@ -28,8 +28,10 @@ struct BrightParams {
     float knee = 0.5f;       //!< width of the quadratic ease-in below the threshold
 };
 inline constexpr Param<BrightParams> kBrightParams[] = {
-    param<&BrightParams::threshold>("threshold", 0, kPostFxBig, "linear", "bright-pass threshold: where the flare starts"),
-    param<&BrightParams::knee>("knee", 0, kPostFxBig, "linear",
+    param<&BrightParams::threshold>("threshold", 0, kPostFxBig, "linear",
+                                    "bright-pass threshold: where the flare starts"),
+    param<&BrightParams::knee>(
+        "knee", 0, kPostFxBig, "linear",
         "soft knee half width: quadratic ease-in over [threshold - knee, threshold + knee]"),
 };
 
@@ -40,9 +42,12 @@ struct BloomParams {
     float spread = 1.0f;      //!< weight of each coarser level when upsampling
 };
 inline constexpr Param<BloomParams> kBloomParams[] = {
-    param<&BloomParams::intensity>("intensity", 0, 100, "", "bloom added to the image (0: ghosts only)"),
-    param<&BloomParams::levels>("levels", 2, 12, "mips", "downsample levels, 1/2 .. 1/2^levels: the bloom's reach"),
-    param<&BloomParams::spread>("spread", 0, 1, "", "weight of each coarser level in the upsample (1: mean of all levels)"),
+    param<&BloomParams::intensity>("intensity", 0, 100, "",
+                                   "bloom added to the image (0: ghosts only)"),
+    param<&BloomParams::levels>("levels", 2, 12, "mips",
+                                "downsample levels, 1/2 .. 1/2^levels: the bloom's reach"),
+    param<&BloomParams::spread>(
+        "spread", 0, 1, "", "weight of each coarser level in the upsample (1: mean of all levels)"),
 };
 
 inline constexpr std::string_view kGhostFilterNames[] = {"point", "bilinear"};
@@ -50,61 +55,74 @@ inline constexpr std::string_view kGhostFilterNames[] = {"point", "bilinear"};
 //! One ghost: the seed's LensFlarePS with its uniforms, plus the modern falloff.
 struct GhostParams {
     Rgb tint{1.f, 1.f, 1.f};  //!< vTint of the seed
-    float scale = 1.f;        //!< fTexScale: the ghost of a light at l appears at -l/scale, |scale| >= 0.05
-    float blur = 0.f;         //!< fBlurScale: step between samples, in bloom-buffer texels / 2 (seed units)
-    int samples = 12;         //!< NumSamples
-    float threshold = 0.1f;   //!< fThreshold, subtracted from each bloom sample
-    float falloff = 0.f;      //!< 0: none (seed); else weight (1 - |n| / sqrt 2)^falloff of the unblurred point n
-    bool centered = false;    //!< false: the seed's sample offsets (+1, -1, -3, ...); true: symmetric about the point
-    bool linearFilter = false;  //!< false: the seed's point sampler; true: bilinear (smoother magnified ghosts)
+    float scale =
+        1.f;  //!< fTexScale: the ghost of a light at l appears at -l/scale, |scale| >= 0.05
+    float blur =
+        0.f;  //!< fBlurScale: step between samples, in bloom-buffer texels / 2 (seed units)
+    int samples = 12;        //!< NumSamples
+    float threshold = 0.1f;  //!< fThreshold, subtracted from each bloom sample
+    float falloff =
+        0.f;  //!< 0: none (seed); else weight (1 - |n| / sqrt 2)^falloff of the unblurred point n
+    bool centered = false;  //!< false: the seed's sample offsets (+1, -1, -3, ...); true: symmetric
+                            //!< about the point
+    bool linearFilter =
+        false;  //!< false: the seed's point sampler; true: bilinear (smoother magnified ghosts)
 };
 //! Below |scale| 0.05 a ghost magnifies one bloom texel over the frame.
 inline constexpr double kMinGhostScale = 0.05;
 inline constexpr Param<GhostParams> kGhostParams[] = {
     param<&GhostParams::tint>("tint", 0, 100, "linear RGB", "the seed's vTint"),
-    param<&GhostParams::scale>("scale", -16, 16, "",
+    param<&GhostParams::scale>(
+        "scale", -16, 16, "",
         "the seed's fTexScale: a light at l gives a ghost at -l / scale (|scale| >= 0.05)"),
-    param<&GhostParams::blur>("blur", 0, 16, "bloom texels",
+    param<&GhostParams::blur>(
+        "blur", 0, 16, "bloom texels",
         "the seed's fBlurScale: sample step along the ray is blur x samples bloom texels"),
     param<&GhostParams::samples>("samples", 1, 64, "", "the seed's NumSamples"),
     param<&GhostParams::threshold>("threshold", 0, kPostFxBig, "linear",
-        "the seed's fThreshold, subtracted from every bloom sample"),
-    param<&GhostParams::falloff>("falloff", 0, 64, "",
+                                   "the seed's fThreshold, subtracted from every bloom sample"),
+    param<&GhostParams::falloff>(
+        "falloff", 0, 64, "",
         "0: none (seed); else (1 - |n|/sqrt 2)^falloff of the unblurred point n (Chapman)"),
-    param<&GhostParams::centered>("centered", 0, 1, "",
+    param<&GhostParams::centered>(
+        "centered", 0, 1, "",
         "false: the seed's sample offsets 1, -1, -3, ...; true: symmetric about the point"),
     choice<&GhostParams::linearFilter>("filter", kGhostFilterNames,
-        "\"point\" (the seed's PointSampler) or \"bilinear\""),
+                                       "\"point\" (the seed's PointSampler) or \"bilinear\""),
 };
 
 //! `ghost_series`: `count` ghosts of scale start - i x spacing sharing the ghost keys.
 struct GhostSeriesParams {
-    int count = 0;        //!< ghosts in the series (a required key)
+    int count = 0;  //!< ghosts in the series (a required key)
     float spacing = 0.25f;
     float start = 1.f;
 };
 inline constexpr Param<GhostSeriesParams> kGhostSeriesParams[] = {
     param<&GhostSeriesParams::count>("count", 0, kMaxGhosts, "", "ghosts in the series (required)"),
-    param<&GhostSeriesParams::spacing>("spacing", -16, 16, "",
-        "ghost i has scale start - i x spacing (Chapman's ghost spacing)"),
-    param<&GhostSeriesParams::start>("start", -16, 16, "", "scale of ghost 0 (default 1: the plain mirror image)"),
+    param<&GhostSeriesParams::spacing>(
+        "spacing", -16, 16, "", "ghost i has scale start - i x spacing (Chapman's ghost spacing)"),
+    param<&GhostSeriesParams::start>("start", -16, 16, "",
+                                     "scale of ghost 0 (default 1: the plain mirror image)"),
 };
 
 //! A ring around the screen centre (John Chapman's pseudo lens flare halo), aspect-correct.
 struct HaloParams {
-    float intensity = 0.f;    //!< 0 switches it off
-    float radius = 0.5f;      //!< in half image heights
-    float thickness = 0.1f;   //!< radial spread of the ring, half image heights
-    float threshold = 0.1f;   //!< subtracted from each bloom sample
-    float falloff = 5.f;      //!< (1 - |p| / sqrt 2)^falloff of the mid-radius sample point
+    float intensity = 0.f;   //!< 0 switches it off
+    float radius = 0.5f;     //!< in half image heights
+    float thickness = 0.1f;  //!< radial spread of the ring, half image heights
+    float threshold = 0.1f;  //!< subtracted from each bloom sample
+    float falloff = 5.f;     //!< (1 - |p| / sqrt 2)^falloff of the mid-radius sample point
     Rgb tint{1.f, 1.f, 1.f};
 };
 inline constexpr Param<HaloParams> kHaloParams[] = {
     param<&HaloParams::intensity>("intensity", 0, 100, "", "0 switches the halo off"),
-    param<&HaloParams::radius>("radius", 0, 4, "half heights", "ring radius about the centre (aspect-correct)"),
+    param<&HaloParams::radius>("radius", 0, 4, "half heights",
+                               "ring radius about the centre (aspect-correct)"),
     param<&HaloParams::thickness>("thickness", 0, 2, "half heights", "radial spread of the ring"),
-    param<&HaloParams::threshold>("threshold", 0, kPostFxBig, "linear", "subtracted from every bloom sample"),
-    param<&HaloParams::falloff>("falloff", 0, 64, "",
+    param<&HaloParams::threshold>("threshold", 0, kPostFxBig, "linear",
+                                  "subtracted from every bloom sample"),
+    param<&HaloParams::falloff>(
+        "falloff", 0, 64, "",
         "(1 - |p|/sqrt 2)^falloff of the ring's mid-radius sample point (Chapman uses 5)"),
     param<&HaloParams::tint>("tint", 0, 100, "linear RGB", "ring colour"),
 };
@@ -118,11 +136,15 @@ struct StreakParams {
     Rgb tint{0.45f, 0.6f, 1.f};  //!< anamorphic lenses streak blue
 };
 inline constexpr Param<StreakParams> kStreakParams[] = {
-    param<&StreakParams::intensity>("intensity", 0, 100, "", "0 switches the anamorphic streaks off"),
+    param<&StreakParams::intensity>("intensity", 0, 100, "",
+                                    "0 switches the anamorphic streaks off"),
     param<&StreakParams::length>("length", 0, 2, "image widths", "half length of a streak"),
-    param<&StreakParams::falloff>("falloff", 0, 64, "", "e^(-falloff t) along the streak, t = distance / length"),
-    param<&StreakParams::threshold>("threshold", 0, kPostFxBig, "linear", "subtracted from the bright image first"),
-    param<&StreakParams::tint>("tint", 0, 100, "linear RGB", "streak colour (anamorphic lenses: blue)"),
+    param<&StreakParams::falloff>("falloff", 0, 64, "",
+                                  "e^(-falloff t) along the streak, t = distance / length"),
+    param<&StreakParams::threshold>("threshold", 0, kPostFxBig, "linear",
+                                    "subtracted from the bright image first"),
+    param<&StreakParams::tint>("tint", 0, 100, "linear RGB",
+                               "streak colour (anamorphic lenses: blue)"),
 };
 
 //! Lateral chromatic aberration of the ghosts and halo: red and blue sampled radially apart.
@@ -130,7 +152,8 @@ struct ChromaticParams {
     float amount = 0.f;  //!< red at scale (1 + amount), blue at (1 - amount) about the centre
 };
 inline constexpr Param<ChromaticParams> kChromaticParams[] = {
-    param<&ChromaticParams::amount>("amount", 0, 0.5, "",
+    param<&ChromaticParams::amount>(
+        "amount", 0, 0.5, "",
         "red at (1 + amount), blue at (1 - amount) times the distance from the centre"),
 };
 
@@ -142,7 +165,8 @@ struct StarburstParams {
     std::uint32_t seed = 1;  //!< per-ray random brightness
 };
 inline constexpr Param<StarburstParams> kStarburstParams[] = {
-    param<&StarburstParams::intensity>("intensity", 0, 1, "", "0 off, 1 full modulation of ghosts and halo"),
+    param<&StarburstParams::intensity>("intensity", 0, 1, "",
+                                       "0 off, 1 full modulation of ghosts and halo"),
     param<&StarburstParams::spokes>("spokes", 2, kMaxSpokes, "", "number of rays"),
     param<&StarburstParams::width>("width", 0.01, 1, "spoke spacings", "ray half width"),
     param<&StarburstParams::seed>("seed", 0, kPostFxSeedMax, "", "per-ray random brightness"),
@@ -150,12 +174,13 @@ inline constexpr Param<StarburstParams> kStarburstParams[] = {
 
 //! Procedural lens dirt: soft random specks and smudges that multiply bloom and flare.
 struct DirtParams {
-    float intensity = 0.f;   //!< 0 off; lens x (1 + intensity x dirt)
-    int spots = 80;          //!< specks
+    float intensity = 0.f;  //!< 0 off; lens x (1 + intensity x dirt)
+    int spots = 80;         //!< specks
     std::uint32_t seed = 7;
 };
 inline constexpr Param<DirtParams> kDirtParams[] = {
-    param<&DirtParams::intensity>("intensity", 0, 100, "", "0 off; bloom and flare x (1 + intensity x dirt)"),
+    param<&DirtParams::intensity>("intensity", 0, 100, "",
+                                  "0 off; bloom and flare x (1 + intensity x dirt)"),
     param<&DirtParams::spots>("spots", 0, 4096, "", "dust specks (plus one smudge per ten)"),
     param<&DirtParams::seed>("seed", 0, kPostFxSeedMax, "", "placement of the specks"),
 };
@@ -164,12 +189,13 @@ enum class ToneOperator { None, Aces, Filmic };
 inline constexpr std::string_view kToneOperatorNames[] = {"none", "aces", "filmic"};
 
 struct ToneParams {
-    ToneOperator op = ToneOperator::None;  //!< none (linear, clipped on 8-bit), aces (Narkowicz fit), filmic (Hable)
+    ToneOperator op = ToneOperator::None;  //!< none (linear, clipped on 8-bit), aces (Narkowicz
+                                           //!< fit), filmic (Hable)
     float exposure = 1.f;                  //!< multiplies the image before the curve
 };
 inline constexpr Param<ToneParams> kToneParams[] = {
     choice<&ToneParams::op>("operator", kToneOperatorNames,
-        "\"none\", \"aces\" (Narkowicz fit) or \"filmic\" (Hable)"),
+                            "\"none\", \"aces\" (Narkowicz fit) or \"filmic\" (Hable)"),
     param<&ToneParams::exposure>("exposure", 0, 1000, "", "multiplies the image before the curve"),
 };
 
@@ -188,7 +214,8 @@ struct PostFxParams {
     float flareIntensity = 1.f;  //!< multiplies ghosts, halo and streaks
 };
 inline constexpr Param<PostFxParams> kPostFxTopParams[] = {
-    param<&PostFxParams::flareIntensity>("flare_intensity", 0, 1000, "", "multiplies ghosts, halo and streaks"),
+    param<&PostFxParams::flareIntensity>("flare_intensity", 0, 1000, "",
+                                         "multiplies ghosts, halo and streaks"),
 };
 
 //! Every field against the tables above, plus at most kMaxGhosts ghosts of |scale| >= 0.05:

@@ -41,12 +41,12 @@ struct PspStep {
 };
 
 struct PspFrameResult {
-    Image8 frame;              //!< the displayed 480x272 RGB frame
-    bool sunInFrame = false;   //!< false: no mask, no flare (documented behaviour)
-    int coverageByte = 0;      //!< Burnout: the chain's last value; Ridge Racer: the accumulated sum
-    int clutAlpha = 0;         //!< Burnout: the alpha of the flare CLUT the GE loaded for the flare draw
-    int visiblePixels = 0;     //!< white pixels of the mask (what the coverage estimates)
-    int maskPixels = 0;        //!< 196 (Burnout) or 256 (Ridge Racer)
+    Image8 frame;             //!< the displayed 480x272 RGB frame
+    bool sunInFrame = false;  //!< false: no mask, no flare (documented behaviour)
+    int coverageByte = 0;     //!< Burnout: the chain's last value; Ridge Racer: the accumulated sum
+    int clutAlpha = 0;  //!< Burnout: the alpha of the flare CLUT the GE loaded for the flare draw
+    int visiblePixels = 0;        //!< white pixels of the mask (what the coverage estimates)
+    int maskPixels = 0;           //!< 196 (Burnout) or 256 (Ridge Racer)
     bool regionRestored = false;  //!< the backed-up region is bit-identical after the restore
     //! The flare CLUT as the GE's CLUT load reads it, before and after the CLUT render (8888).
     std::array<std::uint32_t, 256> clutBefore{}, clutAfter{};

@@ -24,7 +24,8 @@ struct RenderOptions {
 //! The sample counts every GL 4.5 implementation supports for RGBA8/depth targets.
 inline constexpr int kMsaaSampleCounts[] = {1, 2, 4, 8};
 inline constexpr Param<RenderOptions> kRenderParams[] = {
-    oneOf<&RenderOptions::msaaSamples>("msaa", kMsaaSampleCounts, "samples", "samples per pixel of the scene pass"),
+    oneOf<&RenderOptions::msaaSamples>("msaa", kMsaaSampleCounts, "samples",
+                                       "samples per pixel of the scene pass"),
 };
 
 struct SceneTargets;
@@ -33,7 +34,7 @@ struct SceneTargets;
 //! so an animation pays only for drawing. A GL context must be current while it lives; it
 //! is move-only.
 class SceneRenderer {
-public:
+  public:
     //! Targets of the scene's image size; uploads the scene's objects once.
     static Result<SceneRenderer> create(const Scene& scene, const RenderOptions& options = {});
     ~SceneRenderer();
@@ -53,10 +54,11 @@ public:
     //! Samples per pixel of the scene pass.
     int msaaSamples() const;
 
-private:
+  private:
     struct Impl;
     explicit SceneRenderer(std::unique_ptr<Impl> impl);
-    friend SceneTargets sceneTargets(const SceneRenderer& renderer);  // the GL passes' view (src/scene)
+    friend SceneTargets sceneTargets(
+        const SceneRenderer& renderer);  // the GL passes' view (src/scene)
     std::unique_ptr<Impl> m;
 };
 

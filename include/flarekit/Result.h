@@ -19,14 +19,20 @@ struct Error {
     std::string message;  //!< one line: "file: field: what was expected, got what"
 };
 
-inline Error invalidInput(std::string message) { return {ErrorCode::InvalidInput, std::move(message)}; }
-inline Error ioError(std::string message) { return {ErrorCode::Io, std::move(message)}; }
-inline Error internalError(std::string message) { return {ErrorCode::Internal, std::move(message)}; }
+inline Error invalidInput(std::string message) {
+    return {ErrorCode::InvalidInput, std::move(message)};
+}
+inline Error ioError(std::string message) {
+    return {ErrorCode::Io, std::move(message)};
+}
+inline Error internalError(std::string message) {
+    return {ErrorCode::Internal, std::move(message)};
+}
 
 template <typename T>
 class [[nodiscard]] Result {
-public:
-    Result(T value) : m_state(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  public:
+    Result(T value) : m_state(std::move(value)) {}      // NOLINT(google-explicit-constructor)
     Result(Error error) : m_state(std::move(error)) {}  // NOLINT(google-explicit-constructor)
 
     bool ok() const { return std::holds_alternative<T>(m_state); }
@@ -42,7 +48,7 @@ public:
 
     const Error& error() const { return std::get<Error>(m_state); }
 
-private:
+  private:
     std::variant<T, Error> m_state;
 };
 

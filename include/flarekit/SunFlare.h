@@ -9,9 +9,9 @@
 namespace flarekit {
 
 struct FlaredFrame {
-    bool sunInFront = false;  //!< false when the sun is behind the camera: no flare
-    Point sunPixel;           //!< where the sun projects (may be outside the frame)
-    float flareIntensity = 0; //!< coverage x the sun's brightness scale
+    bool sunInFront = false;   //!< false when the sun is behind the camera: no flare
+    Point sunPixel;            //!< where the sun projects (may be outside the frame)
+    float flareIntensity = 0;  //!< coverage x the sun's brightness scale
 };
 
 //! The flare's brightness for a fully visible sun: flareScaleForBrightness of the luminance of

@@ -30,13 +30,17 @@ struct TemporalParams {
 
 //! The keys are also the CLI flags (--attack, --guard-band, ...).
 inline constexpr Param<TemporalParams> kTemporalParams[] = {
-    param<&TemporalParams::attackSeconds>("attack", 0, 10, "s", "coverage rise time constant (sun appearing)"),
-    param<&TemporalParams::releaseSeconds>("release", 0, 10, "s", "coverage fall time constant (sun hidden)"),
+    param<&TemporalParams::attackSeconds>("attack", 0, 10, "s",
+                                          "coverage rise time constant (sun appearing)"),
+    param<&TemporalParams::releaseSeconds>("release", 0, 10, "s",
+                                           "coverage fall time constant (sun hidden)"),
     param<&TemporalParams::guardBand>("guard-band", 0, 0.5, "shorter side", "edge fade width"),
-    param<&TemporalParams::adaptStrength>("adapt-strength", 0, 10, "",
-        "exposure dimming when staring at the visible sun (0 = off)"),
-    param<&TemporalParams::adaptDarkenSeconds>("adapt-darken", 0, 30, "s", "exposure darkening time constant"),
-    param<&TemporalParams::adaptBrightenSeconds>("adapt-brighten", 0, 30, "s", "exposure recovery time constant"),
+    param<&TemporalParams::adaptStrength>(
+        "adapt-strength", 0, 10, "", "exposure dimming when staring at the visible sun (0 = off)"),
+    param<&TemporalParams::adaptDarkenSeconds>("adapt-darken", 0, 30, "s",
+                                               "exposure darkening time constant"),
+    param<&TemporalParams::adaptBrightenSeconds>("adapt-brighten", 0, 30, "s",
+                                                 "exposure recovery time constant"),
 };
 
 //! Range check of every field; the error names the field ("guard-band: expected ...").
@@ -50,14 +54,14 @@ double smoothingStep(double dtSeconds, double tauSeconds);
 double edgeFade(Point pixel, int width, int height, double guardBand);
 
 struct TemporalState {
-    double coverage = 0;   //!< smoothed coverage, 0..1
-    double edgeFade = 0;   //!< this frame's edge fade, 0..1
-    double exposure = 1;   //!< adapted exposure multiplier
+    double coverage = 0;     //!< smoothed coverage, 0..1
+    double edgeFade = 0;     //!< this frame's edge fade, 0..1
+    double exposure = 1;     //!< adapted exposure multiplier
     double flareWeight = 0;  //!< coverage x edgeFade: what the flare's intensity is scaled by
 };
 
 class TemporalFilter {
-public:
+  public:
     explicit TemporalFilter(const TemporalParams& params = {}) : m_params(params) {}
     //! One frame: the measured coverage, where the sun projects (and whether it is in front),
     //! the frame size and the time since the previous frame. The first update starts from
@@ -66,7 +70,7 @@ public:
                          double dtSeconds);
     const TemporalState& state() const { return m_state; }
 
-private:
+  private:
     TemporalParams m_params;
     TemporalState m_state;
     bool m_started = false;

@@ -16,10 +16,10 @@ namespace flarekit {
 
 struct VisibilityResult {
     std::string method;
-    double coverage = 0;     //!< visible fraction of the disc, 0..1
-    double inFrame = 0;      //!< fraction of the disc inside the camera's frame, 0..1
-    std::size_t samples = 0; //!< rays cast
-    double milliseconds = 0; //!< wall time of the estimate
+    double coverage = 0;      //!< visible fraction of the disc, 0..1
+    double inFrame = 0;       //!< fraction of the disc inside the camera's frame, 0..1
+    std::size_t samples = 0;  //!< rays cast
+    double milliseconds = 0;  //!< wall time of the estimate
 };
 
 struct RaycastOptions {
@@ -30,7 +30,8 @@ struct RaycastOptions {
     std::uint64_t seed = 1;  //!< jitter seed: the same seed gives the same estimate
 };
 inline constexpr Param<RaycastOptions> kRaycastParams[] = {
-    param<&RaycastOptions::samplesPerSide>("samples", 1, 4096, "per side", "raycast: strata per side (N^2 rays)"),
+    param<&RaycastOptions::samplesPerSide>("samples", 1, 4096, "per side",
+                                           "raycast: strata per side (N^2 rays)"),
 };
 
 //! The contract's GPU method names (readback pbo query texture-mask texture-mask-screen burnout
@@ -51,7 +52,7 @@ double sunInFrameFraction(const Scene& scene, int samplesPerSide = 64);
 //! the scene it is given and ignores that scene's objects. Safe to measure from one thread
 //! at a time (each call is itself multi-threaded).
 class RaycastCaster {
-public:
+  public:
     explicit RaycastCaster(const Scene& geometry);
     ~RaycastCaster();
     RaycastCaster(RaycastCaster&&) noexcept;
@@ -59,7 +60,7 @@ public:
     Result<VisibilityResult> measure(const Scene& view, const RaycastOptions& options = {}) const;
     std::size_t primitiveCount() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> m;
 };

@@ -17,7 +17,8 @@ const std::uint8_t* addLut() {
     return table.data();
 }
 
-void addSpanScalar16(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out, std::size_t n) {
+void addSpanScalar16(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out,
+                     std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) out[i] = add(a[i], b[i]);
 }
 

@@ -40,8 +40,9 @@ constexpr std::size_t kStreamingBytes = std::size_t(4) << 20;
 //! Adds 64 bytes per iteration (two vectors keep both load ports busy) from i while a whole
 //! block fits; Stream picks streaming stores (out + i must then be 32-byte aligned).
 template <bool Stream>
-__attribute__((target("avx2"))) std::size_t addAvx2Blocks(const std::uint8_t* a, const std::uint8_t* b,
-                                                          std::uint8_t* out, std::size_t i, std::size_t n) {
+__attribute__((target("avx2"))) std::size_t addAvx2Blocks(const std::uint8_t* a,
+                                                          const std::uint8_t* b, std::uint8_t* out,
+                                                          std::size_t i, std::size_t n) {
     for (; i + 64 <= n; i += 64) {
         for (std::size_t k = i; k < i + 64; k += 32) {
             const __m256i va = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + k));
@@ -99,6 +100,8 @@ void addSpanSimd(const std::uint8_t* a, const std::uint8_t* b, std::uint8_t* out
     dispatch().fn(a, b, out, n);
 }
 
-std::string_view addSimdIsa() { return dispatch().isa; }
+std::string_view addSimdIsa() {
+    return dispatch().isa;
+}
 
 }  // namespace flarekit::blend8

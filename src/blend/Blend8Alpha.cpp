@@ -10,7 +10,8 @@ void alphaSpan(const std::uint8_t* src, std::uint8_t* dst, int dstChannels, std:
     }
 }
 
-void alphaShiftSpan(const std::uint8_t* src, std::uint8_t* dst, int dstChannels, std::size_t pixels) {
+void alphaShiftSpan(const std::uint8_t* src, std::uint8_t* dst, int dstChannels,
+                    std::size_t pixels) {
     for (std::size_t i = 0; i < pixels; ++i, src += 4, dst += dstChannels) {
         for (int c = 0; c < 3; ++c) dst[c] = alphaShift(src[c], dst[c], src[3]);
     }
@@ -23,7 +24,8 @@ void toPremultipliedInverse(const std::uint8_t* src, std::uint8_t* out, std::siz
     }
 }
 
-void premultipliedSpan(const std::uint8_t* src, std::uint8_t* dst, int dstChannels, std::size_t pixels) {
+void premultipliedSpan(const std::uint8_t* src, std::uint8_t* dst, int dstChannels,
+                       std::size_t pixels) {
     for (std::size_t i = 0; i < pixels; ++i, src += 4, dst += dstChannels) {
         for (int c = 0; c < 3; ++c) dst[c] = premultiplied(src[c], dst[c], src[3]);
     }

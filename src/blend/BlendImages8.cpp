@@ -7,7 +7,8 @@
 namespace flarekit {
 
 namespace {
-constexpr std::array<std::string_view, 4> kBlend8Names = {"alpha", "alpha-shift", "premultiplied", "add"};
+constexpr std::array<std::string_view, 4> kBlend8Names = {"alpha", "alpha-shift", "premultiplied",
+                                                          "add"};
 
 //! The first three channels of every pixel, packed as RGB bytes.
 std::vector<std::uint8_t> packRgb(const Image8& image) {
@@ -19,7 +20,7 @@ std::vector<std::uint8_t> packRgb(const Image8& image) {
     }
     return rgb;
 }
-}
+}  // namespace
 
 std::optional<Blend8Mode> parseBlend8Mode(std::string_view name) {
     for (std::size_t i = 0; i < kBlend8Names.size(); ++i) {
@@ -28,7 +29,9 @@ std::optional<Blend8Mode> parseBlend8Mode(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view blend8ModeName(Blend8Mode mode) { return kBlend8Names[std::size_t(mode)]; }
+std::string_view blend8ModeName(Blend8Mode mode) {
+    return kBlend8Names[std::size_t(mode)];
+}
 
 Result<Image8> blendImages8(Blend8Mode mode, const Image8& src, const Image8& dst) {
     if (src.width != dst.width || src.height != dst.height) {
@@ -38,19 +41,25 @@ Result<Image8> blendImages8(Blend8Mode mode, const Image8& src, const Image8& ds
     }
     const bool srcOk = src.channels == 4 || (mode == Blend8Mode::Add && src.channels == 3);
     if (!srcOk) {
-        return invalidInput("src: expected RGBA (4 channels; the alpha channel is the blend alpha), got " +
-                            std::to_string(src.channels) + " channel(s)");
+        return invalidInput(
+            "src: expected RGBA (4 channels; the alpha channel is the blend alpha), got " +
+            std::to_string(src.channels) + " channel(s)");
     }
     if (dst.channels != 3 && dst.channels != 4) {
-        return invalidInput("dst: expected RGB or RGBA, got " + std::to_string(dst.channels) + " channel(s)");
+        return invalidInput("dst: expected RGB or RGBA, got " + std::to_string(dst.channels) +
+                            " channel(s)");
     }
     const std::size_t pixels = std::size_t(src.width) * std::size_t(src.height);
 
     // Work on an RGB copy of dst: the output is RGB.
     Image8 out{dst.width, dst.height, 3, packRgb(dst)};
     switch (mode) {
-        case Blend8Mode::Alpha: blend8::alphaSpan(src.pixels.data(), out.pixels.data(), 3, pixels); break;
-        case Blend8Mode::AlphaShift: blend8::alphaShiftSpan(src.pixels.data(), out.pixels.data(), 3, pixels); break;
+        case Blend8Mode::Alpha:
+            blend8::alphaSpan(src.pixels.data(), out.pixels.data(), 3, pixels);
+            break;
+        case Blend8Mode::AlphaShift:
+            blend8::alphaShiftSpan(src.pixels.data(), out.pixels.data(), 3, pixels);
+            break;
         case Blend8Mode::Premultiplied: {
             std::vector<std::uint8_t> stored(pixels * 4);
             blend8::toPremultipliedInverse(src.pixels.data(), stored.data(), pixels);

@@ -12,7 +12,9 @@ std::optional<BlendMode> parseBlendMode(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view blendModeName(BlendMode mode) { return kBlendModeNames[std::size_t(mode)]; }
+std::string_view blendModeName(BlendMode mode) {
+    return kBlendModeNames[std::size_t(mode)];
+}
 
 void compositeSpan(BlendMode mode, const float* src, float* dst, std::size_t n) {
     switch (mode) {
@@ -35,7 +37,8 @@ void compositeSpan(BlendMode mode, const float* src, float* dst, std::size_t n) 
         case BlendMode::Over:
             for (std::size_t i = 0; i < n; ++i) {
                 const float keep = 1.f - src[4 * i + 3];
-                for (std::size_t c = 0; c < 4; ++c) dst[4 * i + c] = src[4 * i + c] + dst[4 * i + c] * keep;
+                for (std::size_t c = 0; c < 4; ++c)
+                    dst[4 * i + c] = src[4 * i + c] + dst[4 * i + c] * keep;
             }
             break;
     }

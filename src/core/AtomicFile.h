@@ -11,6 +11,7 @@ namespace flarekit {
 
 //! Calls write(tempPath) and renames tempPath to path when it succeeds; removes tempPath
 //! otherwise. The temporary name keeps path's extension so format detection still works.
-Status writeAtomically(const std::string& path, const std::function<Status(const std::string&)>& write);
+Status writeAtomically(const std::string& path,
+                       const std::function<Status(const std::string&)>& write);
 
 }  // namespace flarekit

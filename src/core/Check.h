@@ -6,13 +6,13 @@
 #include <cstdlib>
 #include <sstream>
 
-#define FK_CHECK(cond, values)                                                           \
-    do {                                                                                 \
-        if (!(cond)) {                                                                   \
-            std::ostringstream fk_check_os;                                              \
-            fk_check_os << values;                                                       \
-            std::fprintf(stderr, "flarekit: internal check failed at %s:%d: %s (%s)\n",  \
-                         __FILE__, __LINE__, #cond, fk_check_os.str().c_str());          \
-            std::abort();                                                                \
-        }                                                                                \
+#define FK_CHECK(cond, values)                                                                    \
+    do {                                                                                          \
+        if (!(cond)) {                                                                            \
+            std::ostringstream fk_check_os;                                                       \
+            fk_check_os << values;                                                                \
+            std::fprintf(stderr, "flarekit: internal check failed at %s:%d: %s (%s)\n", __FILE__, \
+                         __LINE__, #cond, fk_check_os.str().c_str());                             \
+            std::abort();                                                                         \
+        }                                                                                         \
     } while (0)

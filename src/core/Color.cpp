@@ -34,7 +34,8 @@ std::uint8_t linearToSrgb8(float linear) {
         std::array<float, 255> b{};
         for (int k = 0; k < 255; ++k) {
             const double e = (k + 0.5) / 255.0;
-            b[std::size_t(k)] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
+            b[std::size_t(k)] =
+                float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
         }
         return b;
     }();

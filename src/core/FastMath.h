@@ -16,8 +16,11 @@ inline float fastAtan2(float y, float x) {
     const float hi = std::max(ax, ay), lo = std::min(ax, ay);
     if (hi == 0.f) return 0.f;
     const float z = lo / hi, z2 = z * z;
-    float a = z * (0.99997726f + z2 * (-0.33262347f + z2 * (0.19354346f + z2 * (-0.11643287f +
-                   z2 * (0.05265332f + z2 * -0.01172120f)))));
+    float a =
+        z *
+        (0.99997726f +
+         z2 * (-0.33262347f +
+               z2 * (0.19354346f + z2 * (-0.11643287f + z2 * (0.05265332f + z2 * -0.01172120f)))));
     if (ay > ax) a = 0.5f * std::numbers::pi_v<float> - a;
     if (x < 0.f) a = std::numbers::pi_v<float> - a;
     return y < 0.f ? -a : a;

@@ -23,7 +23,8 @@ namespace {
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
@@ -38,10 +39,12 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         std::string why = firstLine(OIIO::geterror());
-        return invalidInput(path + ": cannot read image: " + (why.empty() ? "unknown format" : why));
+        return invalidInput(path +
+                            ": cannot read image: " + (why.empty() ? "unknown format" : why));
     }
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide) {
+    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide ||
+        spec.height > kMaxImageSide) {
         return invalidInput(path + ": image size " + std::to_string(spec.width) + "x" +
                             std::to_string(spec.height) + ": expected width and height in [1, " +
                             std::to_string(kMaxImageSide) + "]");
@@ -72,7 +75,8 @@ bool isFloatType(OIIO::TypeDesc type) {
 
 bool declaredLinear(const OIIO::ImageSpec& spec) {
     std::string cs = spec.get_string_attribute("oiio:ColorSpace");
-    std::transform(cs.begin(), cs.end(), cs.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(cs.begin(), cs.end(), cs.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return cs == "linear" || cs == "lin_srgb" || cs == "scene_linear";
 }
 
@@ -92,7 +96,8 @@ Result<LoadedImage> readImage(const std::string& path) {
     const bool decodeSrgb = !out.wasFloat && !declaredLinear(spec);
     // 8-bit sRGB files decode exactly through a 256-entry table; everything else as float.
     const bool bytes = spec.format == OIIO::TypeDesc::UINT8 && decodeSrgb;
-    const std::size_t samples = std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(keep);
+    const std::size_t samples =
+        std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(keep);
     std::vector<std::uint8_t> raw8(bytes ? samples : 0);
     std::vector<float> rawF(bytes ? 0 : samples);
     const bool read = bytes ? in->read_image(0, 0, 0, keep, OIIO::TypeDesc::UINT8, raw8.data())
@@ -116,7 +121,8 @@ Result<LoadedImage> readImage(const std::string& path) {
             const float v = sample(i);
             return decodeSrgb ? srgbToLinear(v) : v;
         };
-        for (std::size_t p = std::size_t(y0) * std::size_t(spec.width); p < std::size_t(y1) * std::size_t(spec.width); ++p) {
+        for (std::size_t p = std::size_t(y0) * std::size_t(spec.width);
+             p < std::size_t(y1) * std::size_t(spec.width); ++p) {
             const std::size_t s = p * std::size_t(keep);
             float* d = out.image.data() + p * 4;
             if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
@@ -138,7 +144,8 @@ namespace {
 //! The OIIO writer for path's extension, or the error naming the unsupported extension.
 Result<std::unique_ptr<OIIO::ImageOutput>> createOutput(const std::string& path) {
     auto out = OIIO::ImageOutput::create(path);
-    if (!out) return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
+    if (!out)
+        return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
     return out;
 }
 }  // namespace
@@ -172,15 +179,19 @@ SampleFormat resolveFormat(const std::string& path, SampleFormat requested) {
 //! temporary file.
 Status writeWithOiio(OIIO::ImageOutput& out, const std::string& path, const std::string& tempPath,
                      const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType, const void* data) {
-    if (!out.open(tempPath, spec)) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
-    if (!out.write_image(dataType, data)) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
+    if (!out.open(tempPath, spec))
+        return ioError(path + ": cannot write: " + firstLine(out.geterror()));
+    if (!out.write_image(dataType, data))
+        return ioError(path + ": cannot write: " + firstLine(out.geterror()));
     if (!out.close()) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
     return Ok{};
 }
 
 }  // namespace
 
-SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested) { return resolveFormat(path, requested); }
+SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested) {
+    return resolveFormat(path, requested);
+}
 
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     if (Status s = checkOutputPath(path); !s) return s;
@@ -192,10 +203,10 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     const SampleFormat format = resolveFormat(path, options.format);
     const bool isFloat = format == SampleFormat::Half || format == SampleFormat::Float;
 
-    OIIO::TypeDesc fileType = format == SampleFormat::U8    ? OIIO::TypeDesc::UINT8
-                              : format == SampleFormat::U16 ? OIIO::TypeDesc::UINT16
+    OIIO::TypeDesc fileType = format == SampleFormat::U8     ? OIIO::TypeDesc::UINT8
+                              : format == SampleFormat::U16  ? OIIO::TypeDesc::UINT16
                               : format == SampleFormat::Half ? OIIO::TypeDesc::HALF
-                                                            : OIIO::TypeDesc::FLOAT;
+                                                             : OIIO::TypeDesc::FLOAT;
     OIIO::ImageSpec spec(image.width(), image.height(), channels, fileType);
     if (alpha) {
         spec.alpha_channel = 3;
@@ -228,7 +239,9 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     }
     if (format == SampleFormat::U16) {
         std::vector<std::uint16_t> words(count);
-        forEachSample(count, [&](std::size_t i) { words[i] = std::uint16_t(std::lround(encode(i) * 65535.f)); });
+        forEachSample(count, [&](std::size_t i) {
+            words[i] = std::uint16_t(std::lround(encode(i) * 65535.f));
+        });
         return writeAtomically(path, [&](const std::string& temp) {
             return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::UINT16, words.data());
         });
@@ -246,10 +259,12 @@ Result<Image8> readImage8(const std::string& path) {
     auto& in = opened.value();
     const OIIO::ImageSpec spec = in->spec();
     if (spec.format != OIIO::TypeDesc::UINT8) {
-        return invalidInput(path + ": expected an 8-bit image, got " + std::string(spec.format.c_str()) + " samples");
+        return invalidInput(path + ": expected an 8-bit image, got " +
+                            std::string(spec.format.c_str()) + " samples");
     }
     if (spec.nchannels > 4) {
-        return invalidInput(path + ": expected 1 to 4 channels, got " + std::to_string(spec.nchannels));
+        return invalidInput(path + ": expected 1 to 4 channels, got " +
+                            std::to_string(spec.nchannels));
     }
     Image8 out;
     out.width = spec.width;

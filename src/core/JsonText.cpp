@@ -10,9 +10,11 @@ Result<nlohmann::json> parseJsonText(const std::string& text, const std::string&
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        const std::string what = e.what();  // "[json.exception.parse_error.101] parse error at line ..."
+        const std::string what =
+            e.what();  // "[json.exception.parse_error.101] parse error at line ..."
         const auto pos = what.find("parse error");
-        return invalidInput(source + ": invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+        return invalidInput(
+            source + ": invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
     }
 }
 
@@ -24,7 +26,8 @@ std::string jsonExcerpt(const nlohmann::json& value) {
 
 Result<std::string> readTextFile(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return ioError(path + ": cannot read: no such file");
+    if (!std::filesystem::is_regular_file(path, ec))
+        return ioError(path + ": cannot read: no such file");
     std::ifstream in(path, std::ios::binary);
     std::stringstream text;
     text << in.rdbuf();

@@ -11,7 +11,8 @@
 
 namespace flarekit {
 
-//! Parses text; a syntax error becomes "source: invalid JSON: parse error at line L, column C: ...".
+//! Parses text; a syntax error becomes "source: invalid JSON: parse error at line L, column C:
+//! ...".
 Result<nlohmann::json> parseJsonText(const std::string& text, const std::string& source);
 //! The value as JSON text, cut to 60 characters: what an error message shows after "got".
 std::string jsonExcerpt(const nlohmann::json& value);

@@ -20,6 +20,8 @@ ThreadLimit::ThreadLimit(int threads)
     : m_control(new tbb::global_control(tbb::global_control::max_allowed_parallelism,
                                         std::size_t(threads > 0 ? threads : 1))) {}
 
-ThreadLimit::~ThreadLimit() { delete static_cast<tbb::global_control*>(m_control); }
+ThreadLimit::~ThreadLimit() {
+    delete static_cast<tbb::global_control*>(m_control);
+}
 
 }  // namespace flarekit

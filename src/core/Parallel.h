@@ -12,13 +12,13 @@ void parallelFor(int begin, int end, int grain, const std::function<void(int, in
 
 //! Limits worker threads for the lifetime of the returned object (benchmarks: 1 vs 2 cores).
 class ThreadLimit {
-public:
+  public:
     explicit ThreadLimit(int threads);
     ~ThreadLimit();
     ThreadLimit(const ThreadLimit&) = delete;
     ThreadLimit& operator=(const ThreadLimit&) = delete;
 
-private:
+  private:
     void* m_control;
 };
 

@@ -16,19 +16,22 @@ namespace flarekit {
 
 //! Where a reader is: the file (for messages) and the field path so far ("element[3]").
 class JsonPlace {
-public:
-    JsonPlace(std::string source, std::string at = {}) : m_source(std::move(source)), m_at(std::move(at)) {}
+  public:
+    JsonPlace(std::string source, std::string at = {})
+        : m_source(std::move(source)), m_at(std::move(at)) {}
     JsonPlace operator/(std::string_view key) const {
         return {m_source, m_at.empty() ? std::string(key) : m_at + "." + std::string(key)};
     }
-    JsonPlace index(std::size_t i) const { return {m_source, m_at + "[" + std::to_string(i) + "]"}; }
+    JsonPlace index(std::size_t i) const {
+        return {m_source, m_at + "[" + std::to_string(i) + "]"};
+    }
     const std::string& at() const { return m_at; }
     const std::string& source() const { return m_source; }
     Error fail(const std::string& what) const {
         return invalidInput(m_source + ": " + (m_at.empty() ? "(top level)" : m_at) + ": " + what);
     }
 
-private:
+  private:
     std::string m_source, m_at;
 };
 
@@ -36,7 +39,9 @@ private:
 template <class Owner>
 Result<ParamValue> readParamValue(const Param<Owner>& p, const nlohmann::json& v,
                                   const JsonPlace& place) {
-    const auto bad = [&] { return place.fail("expected " + expectedText(p) + ", got " + jsonExcerpt(v)); };
+    const auto bad = [&] {
+        return place.fail("expected " + expectedText(p) + ", got " + jsonExcerpt(v));
+    };
     const auto number = [&](const nlohmann::json& x) -> std::optional<double> {
         if (!x.is_number()) return std::nullopt;
         const double d = x.get<double>();
@@ -101,7 +106,8 @@ std::optional<Error> readParams(const nlohmann::json& v, std::span<const Param<O
                 if (q.appliesTo & mask) known += (known.empty() ? "" : ", ") + std::string(q.key);
             }
             const std::string forWhat = what.empty() ? "" : " for a " + std::string(what);
-            return (place / key).fail("unknown key" + forWhat + " (expected one of: " + known + ")");
+            return (place / key)
+                .fail("unknown key" + forWhat + " (expected one of: " + known + ")");
         }
         auto read = readParamValue(*p, value, place / key);
         if (!read) return read.error();

@@ -47,10 +47,11 @@ std::vector<std::string> presetNamesIn(const std::string& subdir) {
     return names;
 }
 
-Result<std::string> readPresetText(const std::string& nameOrPath, const std::string& subdir, std::string& path) {
+Result<std::string> readPresetText(const std::string& nameOrPath, const std::string& subdir,
+                                   std::string& path) {
     path = nameOrPath;
-    const bool looksLikePath = nameOrPath.find('/') != std::string::npos ||
-                               fs::path(nameOrPath).extension() == ".json";
+    const bool looksLikePath =
+        nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json";
     if (!looksLikePath) {
         path.clear();
         for (const std::string& dir : presetSearchPath()) {
@@ -63,9 +64,11 @@ Result<std::string> readPresetText(const std::string& nameOrPath, const std::str
         }
         if (path.empty()) {
             std::string names;
-            for (const std::string& n : presetNamesIn(subdir)) names += (names.empty() ? "" : ", ") + n;
+            for (const std::string& n : presetNamesIn(subdir))
+                names += (names.empty() ? "" : ", ") + n;
             return invalidInput((subdir.empty() ? "preset '" : subdir + " preset '") + nameOrPath +
-                                "': expected a JSON file or one of: " + (names.empty() ? "(no shipped presets found)" : names));
+                                "': expected a JSON file or one of: " +
+                                (names.empty() ? "(no shipped presets found)" : names));
         }
     }
     return readTextFile(path);

@@ -14,6 +14,7 @@ std::vector<std::string> presetNamesIn(const std::string& subdir);
 
 //! The text of a shipped preset (a name, looked up in `subdir`) or of a file (a path, or a name
 //! ending in .json); `path` receives the file read, for error messages.
-Result<std::string> readPresetText(const std::string& nameOrPath, const std::string& subdir, std::string& path);
+Result<std::string> readPresetText(const std::string& nameOrPath, const std::string& subdir,
+                                   std::string& path);
 
 }  // namespace flarekit

@@ -8,7 +8,7 @@
 namespace flarekit {
 
 class SplitMix64 {
-public:
+  public:
     explicit SplitMix64(std::uint64_t seed) : m_state(seed) {}
 
     std::uint64_t next() {
@@ -20,7 +20,7 @@ public:
     //! Uniform in [0, 1): the top 24 bits, exactly representable in a float.
     float nextFloat() { return float(next() >> 40) * 0x1.0p-24f; }
 
-private:
+  private:
     std::uint64_t m_state;
 };
 

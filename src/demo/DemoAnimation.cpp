@@ -18,8 +18,12 @@ DemoAnimation::~DemoAnimation() = default;
 DemoAnimation::DemoAnimation(DemoAnimation&&) noexcept = default;
 DemoAnimation& DemoAnimation::operator=(DemoAnimation&&) noexcept = default;
 
-int DemoAnimation::frameCount() const { return m->settings.frames; }
-std::size_t DemoAnimation::primitiveCount() const { return m->pipeline.primitiveCount(); }
+int DemoAnimation::frameCount() const {
+    return m->settings.frames;
+}
+std::size_t DemoAnimation::primitiveCount() const {
+    return m->pipeline.primitiveCount();
+}
 
 Result<DemoAnimation> DemoAnimation::create(const DemoSettings& settings, const Preset& preset) {
     if (Status s = validateDemoSettings(settings); !s) return s.error();
@@ -34,7 +38,8 @@ Result<DemoAnimation> DemoAnimation::create(const DemoSettings& settings, const 
     if (!pipeline) return pipeline.error();
     Scene view;
     view.width = world.width, view.height = world.height, view.sun = world.sun;
-    return DemoAnimation(std::make_unique<Impl>(Impl{settings, std::move(view), std::move(*pipeline), 0}));
+    return DemoAnimation(
+        std::make_unique<Impl>(Impl{settings, std::move(view), std::move(*pipeline), 0}));
 }
 
 Result<DemoFrame> DemoAnimation::next() {

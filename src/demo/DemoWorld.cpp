@@ -43,7 +43,8 @@ Pose poseAt(double s) {
     if (s <= kStraight) return {{0, 0, -s}, {0, 0, -1}};
     const double a = (s - kStraight) / kTurnRadius;  // radians turned left
     const Vec3 centre{-kTurnRadius, 0, -kStraight};
-    return {centre + Vec3{kTurnRadius * std::cos(a), 0, -kTurnRadius * std::sin(a)}, {-std::sin(a), 0, -std::cos(a)}};
+    return {centre + Vec3{kTurnRadius * std::cos(a), 0, -kTurnRadius * std::sin(a)},
+            {-std::sin(a), 0, -std::cos(a)}};
 }
 
 void addQuad(Scene& s, Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 color) {
@@ -51,7 +52,9 @@ void addQuad(Scene& s, Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 color) {
     s.triangles.push_back({a, c, d, color});
 }
 
-double uniform(SplitMix64& rng, double lo, double hi) { return lo + (hi - lo) * double(rng.nextFloat()); }
+double uniform(SplitMix64& rng, double lo, double hi) {
+    return lo + (hi - lo) * double(rng.nextFloat());
+}
 
 //! A leafy tree: a trunk box and a crown of `leaves` random leaf triangles inside an ellipsoid,
 //! sparse enough that the sun flickers through the gaps.
@@ -66,18 +69,24 @@ void addLeafTree(Scene& s, SplitMix64& rng, Vec3 base, double height, int leaves
         } while (dot(p, p) > 1);
         const Vec3 c = crown + Vec3{p.x * rx, p.y * ry, p.z * rx};
         const double size = uniform(rng, 0.35, 0.6);
-        auto jitter = [&] { return Vec3{uniform(rng, -size, size), uniform(rng, -size, size), uniform(rng, -size, size)}; };
-        const Vec3 green{uniform(rng, 0.03, 0.07), uniform(rng, 0.10, 0.20), uniform(rng, 0.02, 0.05)};
+        auto jitter = [&] {
+            return Vec3{uniform(rng, -size, size), uniform(rng, -size, size),
+                        uniform(rng, -size, size)};
+        };
+        const Vec3 green{uniform(rng, 0.03, 0.07), uniform(rng, 0.10, 0.20),
+                         uniform(rng, 0.02, 0.05)};
         s.triangles.push_back({c + jitter(), c + jitter(), c + jitter(), green});
     }
 }
 
 //! A round tree: a trunk and two overlapping sphere crowns (the sphere foliage).
 void addRoundTree(Scene& s, Vec3 base, double height) {
-    s.boxes.push_back({base + Vec3{-0.25, 0, -0.25}, base + Vec3{0.25, height * 0.55, 0.25}, kBark});
+    s.boxes.push_back(
+        {base + Vec3{-0.25, 0, -0.25}, base + Vec3{0.25, height * 0.55, 0.25}, kBark});
     const double r = height * 0.22;
     s.spheres.push_back({base + Vec3{0, height * 0.62, 0}, r, {0.05, 0.16, 0.04}});
-    s.spheres.push_back({base + Vec3{0.4 * r, height * 0.62 + 1.1 * r, -0.3 * r}, 0.8 * r, {0.06, 0.18, 0.05}});
+    s.spheres.push_back(
+        {base + Vec3{0.4 * r, height * 0.62 + 1.1 * r, -0.3 * r}, 0.8 * r, {0.06, 0.18, 0.05}});
 }
 
 void addRoad(Scene& s) {
@@ -90,9 +99,11 @@ void addRoad(Scene& s) {
     for (int i = 0; i < kArcSteps; ++i) {
         const Pose p0 = poseAt(kStraight + kTurnLength * i / kArcSteps);
         const Pose p1 = poseAt(kStraight + kTurnLength * (i + 1) / kArcSteps);
-        const Vec3 r0 = cross(p0.heading, Vec3{0, 1, 0}) * 4.0, r1 = cross(p1.heading, Vec3{0, 1, 0}) * 4.0;
+        const Vec3 r0 = cross(p0.heading, Vec3{0, 1, 0}) * 4.0,
+                   r1 = cross(p1.heading, Vec3{0, 1, 0}) * 4.0;
         const Vec3 up{0, 0.02, 0};
-        addQuad(s, p0.position - r0 + up, p0.position + r0 + up, p1.position + r1 + up, p1.position - r1 + up, kAsphalt);
+        addQuad(s, p0.position - r0 + up, p0.position + r0 + up, p1.position + r1 + up,
+                p1.position - r1 + up, kAsphalt);
     }
 }
 
@@ -116,7 +127,8 @@ void addTrees(Scene& s, SplitMix64& rng) {
         const Pose p = poseAt(kStraight + kTurnLength * (k + 0.5) / 8.0);
         const Vec3 left = cross(Vec3{0, 1, 0}, p.heading);
         const double side = k % 2 ? -1.0 : 1.0;
-        addLeafTree(s, rng, p.position + left * (side * uniform(rng, 9, 13)), uniform(rng, 7, 10), 140);
+        addLeafTree(s, rng, p.position + left * (side * uniform(rng, 9, 13)), uniform(rng, 7, 10),
+                    140);
     }
 }
 
@@ -127,7 +139,9 @@ void addBuildingsAndPoles(Scene& s, SplitMix64& rng) {
     for (double z = -44; z > -70; ++index) {
         const double length = uniform(rng, 5, 7), gap = uniform(rng, 10, 13);
         const double height = index % 2 ? uniform(rng, 12, 16) : uniform(rng, 6, 7.5);
-        s.boxes.push_back({{10, 0, z - length}, {uniform(rng, 13, 15), height, z}, kConcrete * uniform(rng, 0.7, 1.2)});
+        s.boxes.push_back({{10, 0, z - length},
+                           {uniform(rng, 13, 15), height, z},
+                           kConcrete * uniform(rng, 0.7, 1.2)});
         z -= length + gap;
     }
     // Lamp posts on the right verge, 0.24 m thick: they slice across the disc before the tunnel.
@@ -136,12 +150,15 @@ void addBuildingsAndPoles(Scene& s, SplitMix64& rng) {
     }
     // Left: scenery.
     for (double z = -20; z > -115; z -= 18) {
-        s.boxes.push_back({{-34, 0, z - 12}, {-20, uniform(rng, 10, 22), z}, kConcrete * uniform(rng, 0.6, 1.1)});
+        s.boxes.push_back(
+            {{-34, 0, z - 12}, {-20, uniform(rng, 10, 22), z}, kConcrete * uniform(rng, 0.6, 1.1)});
     }
     // Ahead after the turn (the road then runs toward -x).
     for (int k = 0; k < 6; ++k) {
         const double z = -150 - 22.0 * k, x = -120 - uniform(rng, 0, 30);
-        s.boxes.push_back({{x - 14, 0, z - 14}, {x, uniform(rng, 12, 30), z}, kConcrete * uniform(rng, 0.6, 1.1)});
+        s.boxes.push_back({{x - 14, 0, z - 14},
+                           {x, uniform(rng, 12, 30), z},
+                           kConcrete * uniform(rng, 0.6, 1.1)});
     }
 }
 

@@ -13,7 +13,8 @@ inline float interval(float x, float lo, float hi, float filter) {
     return std::clamp(overlap / filter, 0.f, 1.f);
 }
 
-//! interval() for (-inf, edge]: a linear ramp from 1 to 0 across [edge - filter/2, edge + filter/2].
+//! interval() for (-inf, edge]: a linear ramp from 1 to 0 across [edge - filter/2, edge +
+//! filter/2].
 inline float below(float x, float edge, float filter) {
     return std::clamp((edge - x) / filter + 0.5f, 0.f, 1.f);
 }

@@ -12,7 +12,9 @@ namespace flarekit {
 namespace {
 constexpr std::array<std::string_view, kElementTypeCount> kTypeNames = {"glow", "ring", "streaks",
                                                                         "rays", "disc", "polygon"};
-Rgb scaled(const Rgb& c, float k) { return {c[0] * k, c[1] * k, c[2] * k}; }
+Rgb scaled(const Rgb& c, float k) {
+    return {c[0] * k, c[1] * k, c[2] * k};
+}
 }  // namespace
 
 std::optional<ElementType> parseElementType(std::string_view name) {
@@ -22,7 +24,9 @@ std::optional<ElementType> parseElementType(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view elementTypeName(ElementType type) { return kTypeNames[std::size_t(type)]; }
+std::string_view elementTypeName(ElementType type) {
+    return kTypeNames[std::size_t(type)];
+}
 
 ElementKernel prepareElement(const ElementParams& params, float radiusPx) {
     FK_CHECK(std::isfinite(radiusPx) && radiusPx > 0.f, "radiusPx=" << radiusPx);
@@ -61,12 +65,17 @@ Rgba shadeElement(const ElementKernel& k, float dx, float dy) {
     const float ly = (-dx * k.sinRot + dy * k.cosRot) / k.radiusPx;
     if (lx * lx + ly * ly >= (1.f + k.pixel) * (1.f + k.pixel)) return {};
     switch (k.params.type) {
-        case ElementType::Glow: return shadeGlow(k, lx, ly);
-        case ElementType::Ring: return shadeRing(k, lx, ly);
+        case ElementType::Glow:
+            return shadeGlow(k, lx, ly);
+        case ElementType::Ring:
+            return shadeRing(k, lx, ly);
         case ElementType::Streaks:
-        case ElementType::Rays: return shadeSpikes(k, lx, ly);
-        case ElementType::Disc: return shadeDisc(k, lx, ly);
-        case ElementType::Polygon: return shadePolygon(k, lx, ly);
+        case ElementType::Rays:
+            return shadeSpikes(k, lx, ly);
+        case ElementType::Disc:
+            return shadeDisc(k, lx, ly);
+        case ElementType::Polygon:
+            return shadePolygon(k, lx, ly);
     }
     return {};
 }
@@ -78,7 +87,8 @@ Image renderElement(const ElementParams& params, float radiusPx) {
     parallelFor(0, image.height(), 8, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const float dy = float(y) + 0.5f - float(halfH);
-            for (int x = 0; x < image.width(); ++x) image.at(x, y) = shadeElement(k, float(x) + 0.5f - float(halfW), dy);
+            for (int x = 0; x < image.width(); ++x)
+                image.at(x, y) = shadeElement(k, float(x) + 0.5f - float(halfW), dy);
         }
     });
     return image;

@@ -16,12 +16,12 @@ struct Spike {
 
 struct ElementKernel {
     ElementParams params;
-    Rgb outer{}, inner{};      //!< colour x intensity at the rim and at the centre
-    float radiusPx = 1.f;      //!< R
-    float pixel = 1.f;         //!< one pixel in local units (fractions of R), for antialiasing
+    Rgb outer{}, inner{};  //!< colour x intensity at the rim and at the centre
+    float radiusPx = 1.f;  //!< R
+    float pixel = 1.f;     //!< one pixel in local units (fractions of R), for antialiasing
     float cosRot = 1.f, sinRot = 0.f;
-    std::vector<Spike> spikes; //!< streaks/rays, sorted by angle
-    float maxHalfWidth = 0.f;  //!< widest spike half-width plus half a pixel
+    std::vector<Spike> spikes;                   //!< streaks/rays, sorted by angle
+    float maxHalfWidth = 0.f;                    //!< widest spike half-width plus half a pixel
     float halfExtentX = 0.f, halfExtentY = 0.f;  //!< support half-size in pixels (bounding box)
 };
 

@@ -15,7 +15,9 @@ namespace {
 //! The seed's reference radius in pixels (see the file comment).
 constexpr float kSeedRadius = 128.f;
 
-float seedFalloff(float i) { return std::exp(-i * i * 0.006f) * 0.5f + std::exp(-i * 0.03f) * 0.5f; }
+float seedFalloff(float i) {
+    return std::exp(-i * i * 0.006f) * 0.5f + std::exp(-i * 0.03f) * 0.5f;
+}
 }  // namespace
 
 float glowProfile(float d) {

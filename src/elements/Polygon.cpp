@@ -14,7 +14,8 @@ Rgba shadePolygon(const ElementKernel& k, float x, float y) {
     const float d = std::sqrt(x * x + y * y);
     const float sector = 2.f * std::numbers::pi_v<float> / float(k.params.blades);
     const float theta = fastAtan2(y, x);
-    const float phi = theta - sector * std::round(theta / sector);  // angle to the nearest edge normal
+    const float phi =
+        theta - sector * std::round(theta / sector);  // angle to the nearest edge normal
     const float apothem = std::cos(0.5f * sector);
     const float filter = std::max(k.pixel, k.params.softness);
     const float edge = apothem - 0.5f * (filter - k.pixel);

@@ -23,7 +23,8 @@ std::vector<Spike> makeSpikes(const ElementParams& p) {
     std::vector<Spike> spikes;
     spikes.reserve(std::size_t(p.count));
     if (p.type == ElementType::Streaks) {
-        for (int i = 0; i < p.count; ++i) spikes.push_back({kTwoPi * float(i) / float(p.count), 1.f, 1.f});
+        for (int i = 0; i < p.count; ++i)
+            spikes.push_back({kTwoPi * float(i) / float(p.count), 1.f, 1.f});
     } else {
         SplitMix64 rng(p.seed);
         for (int i = 0; i < p.count; ++i) {
@@ -33,7 +34,8 @@ std::vector<Spike> makeSpikes(const ElementParams& p) {
             spikes.push_back({std::min(angle, std::nextafter(kTwoPi, 0.f)), length, weight});
         }
     }
-    std::sort(spikes.begin(), spikes.end(), [](const Spike& a, const Spike& b) { return a.angle < b.angle; });
+    std::sort(spikes.begin(), spikes.end(),
+              [](const Spike& a, const Spike& b) { return a.angle < b.angle; });
     return spikes;
 }
 
@@ -45,7 +47,8 @@ Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
 
     // Only spikes within this angle can reach the pixel: perp = d*sin(delta) <= maxHalfWidth.
     const std::size_t n = k.spikes.size();
-    const float window = d > k.maxHalfWidth ? asinUpperBound(k.maxHalfWidth / d) : 0.5f * std::numbers::pi_v<float>;
+    const float window =
+        d > k.maxHalfWidth ? asinUpperBound(k.maxHalfWidth / d) : 0.5f * std::numbers::pi_v<float>;
     float lo = theta - window;
     if (lo < 0.f) lo += kTwoPi;
     const auto first = std::lower_bound(k.spikes.begin(), k.spikes.end(), lo,
@@ -63,7 +66,8 @@ Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
         if (along <= 0.f || along >= s.length) continue;
         const float perp = d * std::sin(delta);
         const float cover = coverage::interval(perp, -halfWidth, halfWidth, k.pixel);
-        if (cover > 0.f) sum += s.weight * cover * std::pow(1.f - along / s.length, k.params.falloff);
+        if (cover > 0.f)
+            sum += s.weight * cover * std::pow(1.f - along / s.length, k.params.falloff);
     }
     return gradient(k, std::min(d, 1.f), sum);
 }

@@ -27,7 +27,8 @@ std::string label(std::size_t index, const ElementParams& e) {
 
 Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
     if (cellSize < 32 || cellSize > 4096) {
-        return invalidInput("cell size: expected an integer in [32, 4096], got " + std::to_string(cellSize));
+        return invalidInput("cell size: expected an integer in [32, 4096], got " +
+                            std::to_string(cellSize));
     }
     const int n = int(preset.elements.size());
     const int columns = std::min(n, kMaxColumns), rows = (n + columns - 1) / columns;
@@ -48,11 +49,14 @@ Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
         const Image sprite = renderElement(e, radius);
         // Sprite centred in its cell, clipped to the cell (a wide streak may overhang it).
         const int cellX = (i % columns) * cellSize, cellY = (i / columns) * cellSize;
-        const int left = cellX + cellSize / 2 - sprite.width() / 2, top = cellY + cellSize / 2 - sprite.height() / 2;
-        const int x0 = std::max(left, cellX), x1 = std::min(left + sprite.width(), cellX + cellSize);
+        const int left = cellX + cellSize / 2 - sprite.width() / 2,
+                  top = cellY + cellSize / 2 - sprite.height() / 2;
+        const int x0 = std::max(left, cellX),
+                  x1 = std::min(left + sprite.width(), cellX + cellSize);
         const int y0 = std::max(top, cellY), y1 = std::min(top + sprite.height(), cellY + cellSize);
         for (int y = y0; y < y1; ++y) {
-            compositeSpan(BlendMode::Add, &sprite.at(x0 - left, y - top).r, &sheet.image.at(x0, y).r, std::size_t(x1 - x0));
+            compositeSpan(BlendMode::Add, &sprite.at(x0 - left, y - top).r,
+                          &sheet.image.at(x0, y).r, std::size_t(x1 - x0));
         }
         if (sheet.labelled) {
             sheet.labelled = OIIO::ImageBufAlgo::render_text(

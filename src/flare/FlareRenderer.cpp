@@ -25,7 +25,8 @@ struct PlacedElement {
     int x0, y0, x1, y1;  //!< clipped bounding box, half-open
 };
 
-std::vector<PlacedElement> placeElements(const Image& image, const Preset& preset, Point light, float intensity) {
+std::vector<PlacedElement> placeElements(const Image& image, const Preset& preset, Point light,
+                                         float intensity) {
     std::vector<PlacedElement> placed;
     const float height = float(image.height());
     for (const ElementParams& e : preset.elements) {
@@ -34,7 +35,12 @@ std::vector<PlacedElement> placeElements(const Image& image, const Preset& prese
         if (radius < kMinRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
         ElementParams scaled = e;
         scaled.intensity = k;
-        PlacedElement p{prepareElement(scaled, radius), flareVectorPoint(light, image.width(), image.height(), e.t), 0, 0, 0, 0};
+        PlacedElement p{prepareElement(scaled, radius),
+                        flareVectorPoint(light, image.width(), image.height(), e.t),
+                        0,
+                        0,
+                        0,
+                        0};
         // Clip in double: a light far outside the frame must not overflow int.
         auto clip = [](double v, int hi) { return int(std::clamp(v, 0.0, double(hi))); };
         p.x0 = clip(std::floor(double(p.centre.x) - p.kernel.halfExtentX), image.width());
@@ -61,15 +67,17 @@ FlareStats renderFlare(Image& image, const Preset& preset, Point light, float in
             for (int y = y0; y < y1; ++y) {
                 const float dy = float(y) + 0.5f - p.centre.y;
                 for (int x = p.x0; x < p.x1; ++x) {
-                    span[std::size_t(x - p.x0)] = shadeElement(p.kernel, float(x) + 0.5f - p.centre.x, dy);
+                    span[std::size_t(x - p.x0)] =
+                        shadeElement(p.kernel, float(x) + 0.5f - p.centre.x, dy);
                 }
-                compositeSpan(p.kernel.params.blend, reinterpret_cast<const float*>(span.data()), image.row(y) + std::size_t(p.x0) * 4,
-                              std::size_t(p.x1 - p.x0));
+                compositeSpan(p.kernel.params.blend, reinterpret_cast<const float*>(span.data()),
+                              image.row(y) + std::size_t(p.x0) * 4, std::size_t(p.x1 - p.x0));
             }
         }
     });
     stats.elementsDrawn = placed.size();
-    for (const PlacedElement& p : placed) stats.pixelsShaded += std::size_t(p.x1 - p.x0) * std::size_t(p.y1 - p.y0);
+    for (const PlacedElement& p : placed)
+        stats.pixelsShaded += std::size_t(p.x1 - p.x0) * std::size_t(p.y1 - p.y0);
     return stats;
 }
 

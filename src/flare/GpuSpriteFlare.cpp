@@ -6,11 +6,11 @@
 #include <cmath>
 #include <vector>
 
-#include "scene/SceneTargets.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit {
 
@@ -32,9 +32,15 @@ void setBlend(BlendMode mode) {
     // Premultiplied source, the same equations as compositeSpan (Blend.h). Add keeps the
     // destination's alpha; Screen and Over combine alpha as Porter-Duff over.
     switch (mode) {
-        case BlendMode::Add: glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE); break;
-        case BlendMode::Screen: glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); break;
-        case BlendMode::Over: glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); break;
+        case BlendMode::Add:
+            glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+            break;
+        case BlendMode::Screen:
+            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            break;
+        case BlendMode::Over:
+            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            break;
     }
 }
 }  // namespace
@@ -48,8 +54,9 @@ struct GpuSpriteFlare::Impl {
 
 Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) {
     if (height < 1) return invalidInput("sprite flare: frame height must be positive");
-    auto program = gl::linkProgram({{GL_VERTEX_SHADER, "sprite_flare.vert", shaders::sprite_flare_vert},
-                                    {GL_FRAGMENT_SHADER, "sprite_flare.frag", shaders::sprite_flare_frag}});
+    auto program =
+        gl::linkProgram({{GL_VERTEX_SHADER, "sprite_flare.vert", shaders::sprite_flare_vert},
+                         {GL_FRAGMENT_SHADER, "sprite_flare.frag", shaders::sprite_flare_frag}});
     if (!program) return program.error();
     auto m = std::make_unique<Impl>();
     m->height = height;
@@ -65,10 +72,12 @@ Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) 
         const float extent = 2.f * radius * std::max(1.f, e.aspect) + 8.f;
         const float texScale = std::min(1.f, float(kMaxTextureSide) / extent);
         const Image image = renderElement(scaled, radius * texScale);
-        ElementSprite sprite{e.t, 0.5f * float(image.width()) / texScale, 0.5f * float(image.height()) / texScale,
-                             e.blend, gl::makeTexture2D(GL_RGBA16F, image.width(), image.height())};
+        ElementSprite sprite{e.t, 0.5f * float(image.width()) / texScale,
+                             0.5f * float(image.height()) / texScale, e.blend,
+                             gl::makeTexture2D(GL_RGBA16F, image.width(), image.height())};
         const GLuint tex = sprite.texture.get();
-        glTextureSubImage2D(tex, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT, image.data());
+        glTextureSubImage2D(tex, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT,
+                            image.data());
         glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
@@ -86,24 +95,30 @@ GpuSpriteFlare::~GpuSpriteFlare() = default;
 GpuSpriteFlare::GpuSpriteFlare(GpuSpriteFlare&&) noexcept = default;
 GpuSpriteFlare& GpuSpriteFlare::operator=(GpuSpriteFlare&&) noexcept = default;
 
-std::size_t GpuSpriteFlare::elementCount() const { return m->sprites.size(); }
+std::size_t GpuSpriteFlare::elementCount() const {
+    return m->sprites.size();
+}
 
-Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scene& view, GpuChannel weight,
-                                         unsigned conditionQuery) const {
-    if (target.height() != m->height) return invalidInput("sprite flare: made for another frame height");
+Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scene& view,
+                                         GpuChannel weight, unsigned conditionQuery) const {
+    if (target.height() != m->height)
+        return invalidInput("sprite flare: made for another frame height");
     if (!weight || weight.channel < 0 || weight.channel > 3) {
         return invalidInput("sprite flare: expected a weight texture and a channel 0..3");
     }
     FlaredFrame result;
     result.sunInFront = projectDirection(view, view.sun.direction, result.sunPixel);
     result.flareIntensity = sunFlareScale(view.sun);
-    if (!result.sunInFront || !std::isfinite(result.sunPixel.x) || !std::isfinite(result.sunPixel.y)) return result;
+    if (!result.sunInFront || !std::isfinite(result.sunPixel.x) ||
+        !std::isfinite(result.sunPixel.y))
+        return result;
     const GLuint p = m->program.get();
     const int w = target.width(), h = target.height();
     glProgramUniform1i(p, gl::uniformLocation(p, "weightChannel"), weight.channel);
     glProgramUniform1f(p, gl::uniformLocation(p, "brightnessScale"), result.flareIntensity);
     glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(w), float(h));
-    const GLint centreAt = gl::uniformLocation(p, "centre"), halfAt = gl::uniformLocation(p, "halfSize");
+    const GLint centreAt = gl::uniformLocation(p, "centre"),
+                halfAt = gl::uniformLocation(p, "halfSize");
 
     glBindFramebuffer(GL_FRAMEBUFFER, sceneTargets(target).framebuffer);
     glViewport(0, 0, w, h);

@@ -11,7 +11,6 @@
 #include "core/PresetFiles.h"
 #include "flarekit/Flare.h"
 
-
 namespace flarekit {
 
 namespace fs = std::filesystem;
@@ -22,7 +21,8 @@ namespace {
 std::string elementTypeList() {
     std::string names;
     for (int i = 0; i < kElementTypeCount; ++i) {
-        names += std::string(i ? ", " : "") + "\"" + std::string(elementTypeName(ElementType(i))) + "\"";
+        names +=
+            std::string(i ? ", " : "") + "\"" + std::string(elementTypeName(ElementType(i))) + "\"";
     }
     return names;
 }
@@ -30,9 +30,12 @@ std::string elementTypeList() {
 Result<ElementParams> readElement(const json& e, const JsonPlace& at) {
     if (!e.is_object()) return at.fail("expected an object, got " + jsonExcerpt(e));
     const auto typeIt = e.find("type");
-    if (typeIt == e.end()) return (at / "type").fail("missing; expected one of " + elementTypeList());
+    if (typeIt == e.end())
+        return (at / "type").fail("missing; expected one of " + elementTypeList());
     auto type = typeIt->is_string() ? parseElementType(typeIt->get<std::string>()) : std::nullopt;
-    if (!type) return (at / "type").fail("expected one of " + elementTypeList() + ", got " + jsonExcerpt(*typeIt));
+    if (!type)
+        return (at / "type")
+            .fail("expected one of " + elementTypeList() + ", got " + jsonExcerpt(*typeIt));
     ElementParams p = defaultElement(*type);
     if (auto err = readParams<ElementParams>(e, kElementParams, p, at, {"type"}, typeBit(*type),
                                              elementTypeName(*type))) {
@@ -46,8 +49,8 @@ Result<ElementParams> readElement(const json& e, const JsonPlace& at) {
 Status validatePreset(const Preset& preset) {
     if (Status s = validateParams<Preset>(preset, kPresetParams, ""); !s) return s;
     if (preset.elements.empty() || preset.elements.size() > kMaxPresetElements) {
-        return invalidInput("elements: expected 1 to " + std::to_string(kMaxPresetElements) + " elements, got " +
-                            std::to_string(preset.elements.size()));
+        return invalidInput("elements: expected 1 to " + std::to_string(kMaxPresetElements) +
+                            " elements, got " + std::to_string(preset.elements.size()));
     }
     for (std::size_t i = 0; i < preset.elements.size(); ++i) {
         const ElementParams& e = preset.elements[i];
@@ -55,7 +58,8 @@ Status validatePreset(const Preset& preset) {
         if (int(e.type) < 0 || int(e.type) >= kElementTypeCount) {
             return invalidInput(at + "type: expected one of " + elementTypeList());
         }
-        if (Status s = validateParams<ElementParams>(e, kElementParams, at, typeBit(e.type)); !s) return s;
+        if (Status s = validateParams<ElementParams>(e, kElementParams, at, typeBit(e.type)); !s)
+            return s;
     }
     return Ok{};
 }
@@ -70,12 +74,14 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
     preset.name = fs::path(source).stem().string();
     for (const auto& [key, value] : doc.items()) {
         if (key == "name" || key == "description") {
-            if (!value.is_string()) return (top / key).fail("expected a string, got " + jsonExcerpt(value));
+            if (!value.is_string())
+                return (top / key).fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? preset.name : preset.description) = value.get<std::string>();
         } else if (key == "elements") {
             if (!value.is_array() || value.empty() || value.size() > kMaxPresetElements) {
-                return (top / key).fail("expected an array of 1 to " + std::to_string(kMaxPresetElements) +
-                                        " elements, got " + jsonExcerpt(value));
+                return (top / key).fail("expected an array of 1 to " +
+                                        std::to_string(kMaxPresetElements) + " elements, got " +
+                                        jsonExcerpt(value));
             }
             for (std::size_t i = 0; i < value.size(); ++i) {
                 auto element = readElement(value[i], JsonPlace(source, "element").index(i));
@@ -87,15 +93,20 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
             if (!v) return v.error();
             p->set(preset, *v);
         } else {
-            return (top / key).fail("unknown key (expected one of: name, description, intensity, elements)");
+            return (top / key).fail(
+                "unknown key (expected one of: name, description, intensity, elements)");
         }
     }
-    if (preset.elements.empty()) return (top / "elements").fail("missing; expected an array of elements");
-    if (Status s = validatePreset(preset); !s) return invalidInput(source + ": " + s.error().message);
+    if (preset.elements.empty())
+        return (top / "elements").fail("missing; expected an array of elements");
+    if (Status s = validatePreset(preset); !s)
+        return invalidInput(source + ": " + s.error().message);
     return preset;
 }
 
-std::vector<std::string> shippedPresetNames() { return presetNamesIn(""); }
+std::vector<std::string> shippedPresetNames() {
+    return presetNamesIn("");
+}
 
 Result<Preset> loadPreset(const std::string& nameOrPath) {
     std::string path;
@@ -108,20 +119,24 @@ std::string presetParameterReference() {
     std::ostringstream os;
     os << "| key | applies to | range | unit | meaning |\n|---|---|---|---|---|\n";
     os << "| `type` | all | ";
-    for (int i = 0; i < kElementTypeCount; ++i) os << (i ? ", " : "") << "`" << elementTypeName(ElementType(i)) << "`";
+    for (int i = 0; i < kElementTypeCount; ++i)
+        os << (i ? ", " : "") << "`" << elementTypeName(ElementType(i)) << "`";
     os << " | | element kind (required) |\n";
     const auto none = [](const Param<ElementParams>&) { return std::string(); };
-    os << markdownRows<ElementParams>(kElementParams, nullptr, none, [](const Param<ElementParams>& f) {
-        if ((f.appliesTo & kAllElementTypes) == kAllElementTypes) return std::string("all | ");
-        std::string types;
-        for (int i = 0; i < kElementTypeCount; ++i) {
-            if (f.appliesTo & typeBit(ElementType(i))) {
-                types += (types.empty() ? "" : ", ") + std::string(elementTypeName(ElementType(i)));
+    os << markdownRows<ElementParams>(
+        kElementParams, nullptr, none, [](const Param<ElementParams>& f) {
+            if ((f.appliesTo & kAllElementTypes) == kAllElementTypes) return std::string("all | ");
+            std::string types;
+            for (int i = 0; i < kElementTypeCount; ++i) {
+                if (f.appliesTo & typeBit(ElementType(i))) {
+                    types +=
+                        (types.empty() ? "" : ", ") + std::string(elementTypeName(ElementType(i)));
+                }
             }
-        }
-        return types + " | ";
-    });
-    os << "\nDefaults per type:\n\n| type | size | color | inner_color | intensity | type-specific |\n|---|---|---|---|---|---|\n";
+            return types + " | ";
+        });
+    os << "\nDefaults per type:\n\n| type | size | color | inner_color | intensity | type-specific "
+          "|\n|---|---|---|---|---|---|\n";
     for (int i = 0; i < kElementTypeCount; ++i) {
         const ElementParams p = defaultElement(ElementType(i));
         auto rgb = [](const Rgb& c) {
@@ -132,19 +147,30 @@ std::string presetParameterReference() {
         os << "| " << elementTypeName(p.type) << " | " << p.size << " | " << rgb(p.color) << " | "
            << (p.innerColor ? rgb(*p.innerColor) : "= color") << " | " << p.intensity << " | ";
         switch (p.type) {
-            case ElementType::Ring: os << "width " << p.width; break;
-            case ElementType::Streaks: os << "count " << p.count << ", thickness " << p.thickness << ", falloff " << p.falloff; break;
-            case ElementType::Rays:
-                os << "count " << p.count << ", thickness " << p.thickness << ", falloff " << p.falloff
-                   << ", min_length " << p.minLength << ", seed " << p.seed;
+            case ElementType::Ring:
+                os << "width " << p.width;
                 break;
-            case ElementType::Disc: os << "softness " << p.softness; break;
-            case ElementType::Polygon: os << "blades " << p.blades << ", softness " << p.softness; break;
-            case ElementType::Glow: break;
+            case ElementType::Streaks:
+                os << "count " << p.count << ", thickness " << p.thickness << ", falloff "
+                   << p.falloff;
+                break;
+            case ElementType::Rays:
+                os << "count " << p.count << ", thickness " << p.thickness << ", falloff "
+                   << p.falloff << ", min_length " << p.minLength << ", seed " << p.seed;
+                break;
+            case ElementType::Disc:
+                os << "softness " << p.softness;
+                break;
+            case ElementType::Polygon:
+                os << "blades " << p.blades << ", softness " << p.softness;
+                break;
+            case ElementType::Glow:
+                break;
         }
         os << " |\n";
     }
-    os << "\nEvery element also takes `t` (default 1), `aspect` (1), `rotation` (0) and `blend` (`add`).\n";
+    os << "\nEvery element also takes `t` (default 1), `aspect` (1), `rotation` (0) and `blend` "
+          "(`add`).\n";
     return os.str();
 }
 

@@ -9,7 +9,8 @@ namespace flarekit {
 
 float sunFlareScale(const SceneSun& sun) {
     const Vec3 radiance = sun.color * sun.intensity;
-    return flareScaleForBrightness(luminance(float(radiance.x), float(radiance.y), float(radiance.z)));
+    return flareScaleForBrightness(
+        luminance(float(radiance.x), float(radiance.y), float(radiance.z)));
 }
 
 FlaredFrame addSunFlare(Image& frame, const Scene& scene, const Preset& preset, double coverage) {

@@ -39,7 +39,8 @@ Result<Framebuffer> makeFramebuffer(GLuint color, GLuint depth) {
     glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, color, 0);
     if (depth) glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth, 0);
     const GLenum status = glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) return internalError("OpenGL: framebuffer incomplete (status " + hex(status) + ")");
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return internalError("OpenGL: framebuffer incomplete (status " + hex(status) + ")");
     return fb;
 }
 
@@ -71,10 +72,14 @@ bool sourcesMention(GLuint program, const std::string& identifier) {
         glGetShaderiv(shader, GL_SHADER_SOURCE_LENGTH, &length);
         std::string text(std::size_t(std::max(length, 1)), '\0');
         glGetShaderSource(shader, length, nullptr, text.data());
-        const auto isWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-        for (std::size_t at = text.find(identifier); at != std::string::npos; at = text.find(identifier, at + 1)) {
+        const auto isWord = [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+        };
+        for (std::size_t at = text.find(identifier); at != std::string::npos;
+             at = text.find(identifier, at + 1)) {
             const std::size_t end = at + identifier.size();
-            if ((at == 0 || !isWord(text[at - 1])) && (end >= text.size() || !isWord(text[end]))) return true;
+            if ((at == 0 || !isWord(text[at - 1])) && (end >= text.size() || !isWord(text[end])))
+                return true;
         }
     }
     return false;
@@ -109,18 +114,20 @@ Result<Image> readTextureRgba(GLuint texture, int width, int height, bool flipRo
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     for (int y = 0; y < height; y += bandRows) {
         const int rows = std::min(bandRows, height - y);
-        glGetTextureSubImage(texture, 0, 0, y, 0, width, rows, 1, GL_RGBA, GL_FLOAT, GLsizei(rowBytes * std::size_t(rows)),
-                             image.row(y));
+        glGetTextureSubImage(texture, 0, 0, y, 0, width, rows, 1, GL_RGBA, GL_FLOAT,
+                             GLsizei(rowBytes * std::size_t(rows)), image.row(y));
     }
     if (Status s = checkError("reading a frame back"); !s) return s.error();
-    for (int y = 0; flipRows && y < height / 2; ++y) std::swap_ranges(image.row(y), image.row(y) + rowFloats, image.row(height - 1 - y));
+    for (int y = 0; flipRows && y < height / 2; ++y)
+        std::swap_ranges(image.row(y), image.row(y) + rowFloats, image.row(height - 1 - y));
     return image;
 }
 
 namespace {
 std::string infoLog(GLuint object, bool isProgram) {
     GLint length = 0;
-    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+              : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::vector<char> log(std::size_t(length > 1 ? length : 1), '\0');
     isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
               : glGetShaderInfoLog(object, length, nullptr, log.data());
@@ -138,7 +145,9 @@ Result<Program> linkProgram(std::initializer_list<ShaderSource> sources) {
         glCompileShader(shader.get());
         GLint ok = 0;
         glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
-        if (!ok) return internalError("OpenGL: " + s.name + ": compile error: " + infoLog(shader.get(), false));
+        if (!ok)
+            return internalError("OpenGL: " + s.name +
+                                 ": compile error: " + infoLog(shader.get(), false));
         glAttachShader(program.get(), shader.get());
         shaders.push_back(std::move(shader));
     }
@@ -153,7 +162,9 @@ Result<Program> linkProgram(std::initializer_list<ShaderSource> sources) {
 
 namespace flarekit {
 
-GpuTimer::GpuTimer() { glCreateQueries(GL_TIME_ELAPSED, 1, &m_query); }
+GpuTimer::GpuTimer() {
+    glCreateQueries(GL_TIME_ELAPSED, 1, &m_query);
+}
 GpuTimer::~GpuTimer() {
     if (m_query) glDeleteQueries(1, &m_query);
 }
@@ -165,8 +176,12 @@ GpuTimer& GpuTimer::operator=(GpuTimer&& other) noexcept {
     }
     return *this;
 }
-void GpuTimer::begin() const { glBeginQuery(GL_TIME_ELAPSED, m_query); }
-void GpuTimer::end() const { glEndQuery(GL_TIME_ELAPSED); }
+void GpuTimer::begin() const {
+    glBeginQuery(GL_TIME_ELAPSED, m_query);
+}
+void GpuTimer::end() const {
+    glEndQuery(GL_TIME_ELAPSED);
+}
 double GpuTimer::milliseconds() const {
     GLuint64 ns = 0;
     glGetQueryObjectui64v(m_query, GL_QUERY_RESULT, &ns);

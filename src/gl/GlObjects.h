@@ -17,7 +17,7 @@ namespace flarekit::gl {
 
 template <void (*Delete)(GLuint)>
 class Name {
-public:
+  public:
     Name() = default;
     explicit Name(GLuint name) : m_name(name) {}
     ~Name() { reset(); }
@@ -39,18 +39,32 @@ public:
         m_name = 0;
     }
 
-private:
+  private:
     GLuint m_name = 0;
 };
 
 namespace detail {
-inline void deleteTexture(GLuint n) { glDeleteTextures(1, &n); }
-inline void deleteFramebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
-inline void deleteBuffer(GLuint n) { glDeleteBuffers(1, &n); }
-inline void deleteVertexArray(GLuint n) { glDeleteVertexArrays(1, &n); }
-inline void deleteQuery(GLuint n) { glDeleteQueries(1, &n); }
-inline void deleteProgram(GLuint n) { glDeleteProgram(n); }
-inline void deleteShader(GLuint n) { glDeleteShader(n); }
+inline void deleteTexture(GLuint n) {
+    glDeleteTextures(1, &n);
+}
+inline void deleteFramebuffer(GLuint n) {
+    glDeleteFramebuffers(1, &n);
+}
+inline void deleteBuffer(GLuint n) {
+    glDeleteBuffers(1, &n);
+}
+inline void deleteVertexArray(GLuint n) {
+    glDeleteVertexArrays(1, &n);
+}
+inline void deleteQuery(GLuint n) {
+    glDeleteQueries(1, &n);
+}
+inline void deleteProgram(GLuint n) {
+    glDeleteProgram(n);
+}
+inline void deleteShader(GLuint n) {
+    glDeleteShader(n);
+}
 }  // namespace detail
 
 using Texture = Name<detail::deleteTexture>;

@@ -19,9 +19,11 @@ std::string eglErrorText(EGLint code) {
 }
 
 #ifndef NDEBUG
-void GLAPIENTRY logGlMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message, const void*) {
+void GLAPIENTRY logGlMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
+                             const GLchar* message, const void*) {
     if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
-    std::fprintf(stderr, "flarekit: GL %s: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "message", message);
+    std::fprintf(stderr, "flarekit: GL %s: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "message",
+                 message);
 }
 #endif
 
@@ -30,15 +32,21 @@ EGLContext makeCoreContext(EGLDisplay display) {
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display, &major, &minor)) return EGL_NO_CONTEXT;
     if (!eglBindAPI(EGL_OPENGL_API)) return EGL_NO_CONTEXT;
-    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     4,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     5,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
 #ifndef NDEBUG
-                                     EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     EGL_TRUE,
 #endif
                                      EGL_NONE};
     // No surface is ever drawn to (every pass renders into framebuffer objects), so no config
     // is needed: EGL_KHR_no_config_context.
-    EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttribs);
+    EGLContext context =
+        eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttribs);
     if (context == EGL_NO_CONTEXT) return EGL_NO_CONTEXT;
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         eglDestroyContext(display, context);
@@ -74,8 +82,10 @@ Result<std::unique_ptr<HeadlessGl>> HeadlessGl::create() {
         }
         tried += "EGL devices (" + std::to_string(count) + ")";
     }
-    if (!gl->m_context && trySurfaceless && epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-        EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (!gl->m_context && trySurfaceless &&
+        epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
+        EGLDisplay display =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display != EGL_NO_DISPLAY) {
             if (EGLContext context = makeCoreContext(display); context != EGL_NO_CONTEXT) {
                 gl->m_display = display;
@@ -88,9 +98,11 @@ Result<std::unique_ptr<HeadlessGl>> HeadlessGl::create() {
         tried += std::string(tried.empty() ? "" : ", ") + "Mesa surfaceless";
     }
     if (!gl->m_context) {
-        return internalError("OpenGL: no EGL display gave a 4.5 core context (tried " +
-                             (tried.empty() ? std::string("nothing: no EGL platform extension") : tried) + ", last " +
-                             eglErrorText(eglGetError()) + "); install libegl-mesa0 and libgl1-mesa-dri");
+        return internalError(
+            "OpenGL: no EGL display gave a 4.5 core context (tried " +
+            (tried.empty() ? std::string("nothing: no EGL platform extension") : tried) +
+            ", last " + eglErrorText(eglGetError()) +
+            "); install libegl-mesa0 and libgl1-mesa-dri");
     }
 #ifndef NDEBUG
     glEnable(GL_DEBUG_OUTPUT);
@@ -106,7 +118,11 @@ HeadlessGl::~HeadlessGl() {
     eglTerminate(m_display);
 }
 
-std::string HeadlessGl::renderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
-std::string HeadlessGl::version() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
+std::string HeadlessGl::renderer() const {
+    return reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+}
+std::string HeadlessGl::version() const {
+    return reinterpret_cast<const char*>(glGetString(GL_VERSION));
+}
 
 }  // namespace flarekit::gl

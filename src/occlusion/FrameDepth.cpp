@@ -1,5 +1,5 @@
-#include "scene/SceneTargets.h"
 #include "occlusion/FrameDepth.h"
+#include "scene/SceneTargets.h"
 
 #include <algorithm>
 #include <map>
@@ -43,7 +43,9 @@ const std::vector<float>& samplePositions(int samples) {
 Result<FrameDepthProgram> FrameDepthProgram::link(std::initializer_list<gl::ShaderSource> sources) {
     FrameDepthProgram p;
     for (bool multisample : {false, true}) {
-        auto program = linkWithDisc(sources, std::string(multisample ? "#define MULTISAMPLE\n" : "") + shaders::frame_depth_glsl);
+        auto program =
+            linkWithDisc(sources, std::string(multisample ? "#define MULTISAMPLE\n" : "") +
+                                      shaders::frame_depth_glsl);
         if (!program) return program.error();
         p.m_variants[multisample] = std::move(*program);
     }
@@ -60,7 +62,8 @@ void FrameDepthProgram::bindDepth(const SceneRenderer& renderer) const {
     const std::vector<float>& positions = samplePositions(samples);
     const int n = std::min(samples, 16);
     glProgramUniform1i(program, gl::uniformLocation(program, "frameSampleCount"), n);
-    glProgramUniform2fv(program, gl::uniformLocation(program, "frameSamplePositions"), n, positions.data());
+    glProgramUniform2fv(program, gl::uniformLocation(program, "frameSamplePositions"), n,
+                        positions.data());
     glBindTextureUnit(0, sceneTargets(renderer).multisampleDepth);
 }
 

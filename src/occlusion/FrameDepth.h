@@ -13,16 +13,18 @@
 namespace flarekit::occlusion {
 
 class FrameDepthProgram {
-public:
+  public:
     //! Links `sources` with the sun_disc.glsl and frame_depth.glsl preludes, twice.
     static Result<FrameDepthProgram> link(std::initializer_list<gl::ShaderSource> sources);
     //! The variant for `renderer`'s frame, to set uniforms on and draw with.
-    GLuint forFrame(const SceneRenderer& renderer) const { return m_variants[renderer.msaaSamples() > 1].get(); }
+    GLuint forFrame(const SceneRenderer& renderer) const {
+        return m_variants[renderer.msaaSamples() > 1].get();
+    }
     //! Binds `renderer`'s depth to texture unit 0 and, with MSAA, sets forFrame(renderer)'s
     //! sample count and sample positions.
     void bindDepth(const SceneRenderer& renderer) const;
 
-private:
+  private:
     std::array<gl::Program, 2> m_variants;  //!< single-sample frame, multisampled frame
 };
 

@@ -33,20 +33,28 @@ std::string withPrelude(std::string text, const std::string& prelude) {
 }
 }  // namespace
 
-Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources, const std::string& defines) {
-    const std::string prelude = std::string("#version 450 core\n") + defines + shaders::sun_disc_glsl;
+Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources,
+                                 const std::string& defines) {
+    const std::string prelude =
+        std::string("#version 450 core\n") + defines + shaders::sun_disc_glsl;
     std::vector<gl::ShaderSource> full;
-    for (const gl::ShaderSource& s : sources) full.push_back({s.stage, s.name, withPrelude(s.text, prelude)});
+    for (const gl::ShaderSource& s : sources)
+        full.push_back({s.stage, s.name, withPrelude(s.text, prelude)});
     switch (full.size()) {
-        case 1: return gl::linkProgram({full[0]});
-        case 2: return gl::linkProgram({full[0], full[1]});
-        default: return internalError("linkWithDisc: one or two shaders");
+        case 1:
+            return gl::linkProgram({full[0]});
+        case 2:
+            return gl::linkProgram({full[0], full[1]});
+        default:
+            return internalError("linkWithDisc: one or two shaders");
     }
 }
 
-Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText, const std::string& defines) {
+Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText,
+                                   const std::string& defines) {
     return gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                            {GL_FRAGMENT_SHADER, fragmentName, withPrelude(fragmentText, "#version 450 core\n" + defines)}});
+                            {GL_FRAGMENT_SHADER, fragmentName,
+                             withPrelude(fragmentText, "#version 450 core\n" + defines)}});
 }
 
 }  // namespace flarekit::occlusion

@@ -13,26 +13,27 @@
 namespace flarekit::occlusion {
 
 class GpuMethod : public GpuVisibility {
-public:
+  public:
     GpuMethod();
     GpuChannel coverage() const override { return {m_coverage.get(), 0}; }
     std::optional<double> latestCoverage() override;
 
-protected:
+  protected:
     //! Stores a CPU-side result in the coverage texture (read-back methods).
     void publish(double coverage);
     //! Binds the coverage texture as image unit 0 / a draw target for GPU-side results.
     GLuint coverageName() const { return m_coverage.get(); }
     void markPublished() { m_hasResult = true; }
 
-private:
+  private:
     gl::Texture m_coverage;
     bool m_hasResult = false;
 };
 
 //! Links a program whose shaders get "#version 450 core", `defines` (e.g. "#define X\n") and
 //! the sun_disc.glsl prelude.
-Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources, const std::string& defines = "");
+Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources,
+                                 const std::string& defines = "");
 //! A full-screen-triangle program (fullscreen.vert) with the given fragment shader, with
 //! `defines` after its #version line and without the disc prelude.
 Result<gl::Program> linkFullscreen(const std::string& fragmentName, const char* fragmentText,

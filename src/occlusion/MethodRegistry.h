@@ -4,11 +4,11 @@
 #pragma once
 
 //! X(name, factory) for every method, in the order --help lists them.
-#define FLAREKIT_GPU_METHODS(X)                   \
-    X("readback", makeReadback)                   \
-    X("pbo", makePbo)                             \
-    X("query", makeQuery)                         \
-    X("texture-mask", makeTextureMask)            \
+#define FLAREKIT_GPU_METHODS(X)                     \
+    X("readback", makeReadback)                     \
+    X("pbo", makePbo)                               \
+    X("query", makeQuery)                           \
+    X("texture-mask", makeTextureMask)              \
     X("texture-mask-screen", makeTextureMaskScreen) \
-    X("burnout", makeBurnout)                     \
+    X("burnout", makeBurnout)                       \
     X("compute", makeCompute)

@@ -1,5 +1,5 @@
-#include "scene/SceneTargets.h"
 #include "occlusion/SkyFraction.h"
+#include "scene/SceneTargets.h"
 
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
@@ -8,7 +8,8 @@ namespace flarekit::occlusion {
 
 Result<SkyFraction> SkyFraction::create() {
     SkyFraction s;
-    auto ms = linkFullscreen("sky_fraction.frag (MSAA)", shaders::sky_fraction_frag, "#define MULTISAMPLE\n");
+    auto ms = linkFullscreen("sky_fraction.frag (MSAA)", shaders::sky_fraction_frag,
+                             "#define MULTISAMPLE\n");
     if (!ms) return ms.error();
     auto single = linkFullscreen("sky_fraction.frag", shaders::sky_fraction_frag);
     if (!single) return single.error();
@@ -28,14 +29,16 @@ Result<GLuint> SkyFraction::update(const SunDiscView& v, const SceneRenderer& re
     }
     const bool multisampled = renderer.msaaSamples() > 1;
     const GLuint p = multisampled ? m_multisample.get() : m_single.get();
-    if (multisampled) glProgramUniform1i(p, gl::uniformLocation(p, "sampleCount"), renderer.msaaSamples());
+    if (multisampled)
+        glProgramUniform1i(p, gl::uniformLocation(p, "sampleCount"), renderer.msaaSamples());
     glBindFramebuffer(GL_FRAMEBUFFER, m_target.get());
     glViewport(0, 0, m_width, m_height);
     glEnable(GL_SCISSOR_TEST);
     glScissor(v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glBindTextureUnit(0, multisampled ? sceneTargets(renderer).multisampleDepth : sceneTargets(renderer).depth);
+    glBindTextureUnit(
+        0, multisampled ? sceneTargets(renderer).multisampleDepth : sceneTargets(renderer).depth);
     glBindVertexArray(m_vao.get());
     glUseProgram(p);
     glDrawArrays(GL_TRIANGLES, 0, 3);

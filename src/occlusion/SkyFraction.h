@@ -10,13 +10,13 @@
 namespace flarekit::occlusion {
 
 class SkyFraction {
-public:
+  public:
     static Result<SkyFraction> create();
     //! Fills the disc's pixel box of a frame-sized R32F target from `renderer`'s depth samples;
     //! the framebuffer to read it from (GL_RED, GL_FLOAT).
     Result<GLuint> update(const SunDiscView& v, const SceneRenderer& renderer);
 
-private:
+  private:
     gl::Program m_multisample, m_single;
     gl::VertexArray m_vao;
     gl::Texture m_texture;

@@ -12,7 +12,8 @@ namespace flarekit::occlusion {
 
 struct SunCone {
     explicit SunCone(const SceneSun& sun)
-        : axis(normalize(sun.direction)), radius(sun.angularRadiusDeg * std::numbers::pi / 180.0),
+        : axis(normalize(sun.direction)),
+          radius(sun.angularRadiusDeg * std::numbers::pi / 180.0),
           oneMinusCos(1.0 - std::cos(radius)) {
         const Vec3 helper = std::abs(axis.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
         t1 = normalize(cross(axis, helper));
@@ -36,13 +37,15 @@ struct SunCone {
         }
         const double cosTheta = 1.0 - rho * rho * oneMinusCos;
         const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-        const double sign = rho < 0 ? -1.0 : 1.0;  // rho may be negative: the sign folds into the angle
+        const double sign =
+            rho < 0 ? -1.0 : 1.0;  // rho may be negative: the sign folds into the angle
         return cosTheta * axis + (sign * sinTheta) * (std::cos(phi) * t1 + std::sin(phi) * t2);
     }
 
     //! The rim direction at angle phi around the axis.
     Vec3 rim(double phi) const {
-        return std::cos(radius) * axis + std::sin(radius) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+        return std::cos(radius) * axis +
+               std::sin(radius) * (std::cos(phi) * t1 + std::sin(phi) * t2);
     }
 
     Vec3 axis, t1, t2;

@@ -39,7 +39,8 @@ SunDiscView sunDiscView(const SceneCamera& camera, int width, int height, const 
         }
         const double px = (dot(d, v.right) / z / v.tanHalfX + 1) * 0.5 * width;
         const double py = (dot(d, v.up) / z / v.tanHalfY + 1) * 0.5 * height;
-        lox = std::min(lox, px), hix = std::max(hix, px), loy = std::min(loy, py), hiy = std::max(hiy, py);
+        lox = std::min(lox, px), hix = std::max(hix, px), loy = std::min(loy, py),
+        hiy = std::max(hiy, py);
     }
     v.bounded = !behind;
     v.rimX0 = lox, v.rimX1 = hix, v.rimY0 = loy, v.rimY1 = hiy;
@@ -83,7 +84,8 @@ void setSunDiscUniforms(GLuint p, const SunDiscView& v) {
     gl::setUniform(p, "camUp", v.up);
     gl::setUniform(p, "camForward", v.forward);
     gl::setUniform(p, "sunDir", v.sun);
-    glProgramUniform2f(p, gl::uniformLocation(p, "tanHalfFov"), float(v.tanHalfX), float(v.tanHalfY));
+    glProgramUniform2f(p, gl::uniformLocation(p, "tanHalfFov"), float(v.tanHalfX),
+                       float(v.tanHalfY));
     glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(v.width), float(v.height));
     glProgramUniform1f(p, gl::uniformLocation(p, "sunChord2"), float(v.chord2));
 }

@@ -25,7 +25,9 @@ struct SunDiscView {
 
 //! The disc as seen by `camera` over a width x height frame with vertical field of view fovYDeg.
 SunDiscView sunDiscView(const SceneCamera& camera, int width, int height, const SceneSun& sun);
-inline SunDiscView sunDiscView(const Scene& s) { return sunDiscView(s.camera, s.width, s.height, s.sun); }
+inline SunDiscView sunDiscView(const Scene& s) {
+    return sunDiscView(s.camera, s.width, s.height, s.sun);
+}
 
 Vec3 rayThrough(const SunDiscView& v, double px, double py);
 bool inSunDisc(const SunDiscView& v, Vec3 d);

@@ -14,7 +14,9 @@ namespace flarekit {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+double ms(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
 }  // namespace
 
 //! The GPU half of a frame for the GPU methods: nothing crosses to the CPU but the image.
@@ -27,7 +29,10 @@ struct GpuFlarePath {
 
 struct FramePipeline::Impl {
     Impl(FramePipelineSettings s, Preset p, const Scene& world, SceneRenderer r)
-        : settings(std::move(s)), preset(std::move(p)), renderer(std::move(r)), caster(world),
+        : settings(std::move(s)),
+          preset(std::move(p)),
+          renderer(std::move(r)),
+          caster(world),
           filter(settings.temporalParams) {}
     FramePipelineSettings settings;
     Preset preset;
@@ -43,7 +48,8 @@ struct FramePipeline::Impl {
 Result<FramePipeline> FramePipeline::create(const Scene& world, const Preset& preset,
                                             const FramePipelineSettings& settings) {
     if (settings.method != "raycast" && !isGpuVisibilityMethod(settings.method)) {
-        return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" + settings.method + "'");
+        return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" +
+                            settings.method + "'");
     }
     if (Status s = validateTemporalParams(settings.temporalParams); !s) return s.error();
     auto renderer = SceneRenderer::create(world, settings.render);
@@ -58,7 +64,8 @@ Result<FramePipeline> FramePipeline::create(const Scene& world, const Preset& pr
         if (!flare) return flare.error();
         auto tonemap = GpuTonemap::create(world.width, world.height);
         if (!tonemap) return tonemap.error();
-        impl->gpu.emplace(GpuFlarePath{std::move(*method), std::move(*filter), std::move(*flare), std::move(*tonemap)});
+        impl->gpu.emplace(GpuFlarePath{std::move(*method), std::move(*filter), std::move(*flare),
+                                       std::move(*tonemap)});
     }
     return FramePipeline(std::move(impl));
 }
@@ -68,7 +75,9 @@ FramePipeline::~FramePipeline() = default;
 FramePipeline::FramePipeline(FramePipeline&&) noexcept = default;
 FramePipeline& FramePipeline::operator=(FramePipeline&&) noexcept = default;
 
-std::size_t FramePipeline::primitiveCount() const { return m->caster.primitiveCount(); }
+std::size_t FramePipeline::primitiveCount() const {
+    return m->caster.primitiveCount();
+}
 
 Result<PipelineFrame> FramePipeline::run(const Scene& view, double dt, std::uint64_t raySeed) {
     PipelineFrame frame;
@@ -76,12 +85,14 @@ Result<PipelineFrame> FramePipeline::run(const Scene& view, double dt, std::uint
     const auto t0 = Clock::now();
     if (Status s = m->renderer.draw(view); !s) return s.error();
     frame.renderMs = ms(t0, Clock::now());
-    if (Status s = m->gpu ? m->gpuHalf(view, frame, dt) : m->cpuHalf(view, frame, dt, raySeed); !s) return s.error();
+    if (Status s = m->gpu ? m->gpuHalf(view, frame, dt) : m->cpuHalf(view, frame, dt, raySeed); !s)
+        return s.error();
     return frame;
 }
 
 // raycast: rays on the CPU, then filter, flare and tone map over the read-back frame.
-Status FramePipeline::Impl::cpuHalf(const Scene& view, PipelineFrame& frame, double dt, std::uint64_t raySeed) {
+Status FramePipeline::Impl::cpuHalf(const Scene& view, PipelineFrame& frame, double dt,
+                                    std::uint64_t raySeed) {
     const auto t0 = Clock::now();
     auto image = renderer.readColor();
     if (!image) return image.error();
@@ -96,12 +107,14 @@ Status FramePipeline::Impl::cpuHalf(const Scene& view, PipelineFrame& frame, dou
     frame.rawCoverage = visibility->coverage;
     frame.inFrame = visibility->inFrame;
     if (settings.temporal) {
-        frame.temporal = filter.update(frame.rawCoverage, frame.sunPixel, frame.sunInFront, view.width, view.height, dt);
+        frame.temporal = filter.update(frame.rawCoverage, frame.sunPixel, frame.sunInFront,
+                                       view.width, view.height, dt);
     } else {
         frame.temporal = {frame.rawCoverage, 1, 1, frame.rawCoverage};
     }
     if (settings.flare) {
-        frame.flareIntensity = addSunFlare(*image, view, preset, frame.temporal.flareWeight).flareIntensity;
+        frame.flareIntensity =
+            addSunFlare(*image, view, preset, frame.temporal.flareWeight).flareIntensity;
     }
     if (settings.toneMap) tonemapAcesFitted(*image, float(frame.temporal.exposure));
     frame.image = std::move(*image);
@@ -128,14 +141,18 @@ Status FramePipeline::Impl::gpuHalf(const Scene& view, PipelineFrame& frame, dou
     // The flare's weight and the exposure: the filter's state, or (a still) the raw coverage.
     GpuChannel weight = g.method->coverage(), exposure{};
     if (settings.temporal) {
-        if (Status s = g.filter.update(weight, frame.sunPixel, frame.sunInFront, view.width, view.height, dt); !s) {
+        if (Status s = g.filter.update(weight, frame.sunPixel, frame.sunInFront, view.width,
+                                       view.height, dt);
+            !s) {
             return s;
         }
         weight = g.filter.state(GpuStateChannel::FlareWeight);
         exposure = g.filter.state(GpuStateChannel::Exposure);
     }
     if (settings.flare) {
-        auto flare = g.flare.draw(renderer, view, weight, settings.conditionalRender ? g.method->conditionalRenderQuery() : 0);
+        auto flare =
+            g.flare.draw(renderer, view, weight,
+                         settings.conditionalRender ? g.method->conditionalRenderQuery() : 0);
         if (!flare) return flare.error();
         frame.flareIntensity = flare->flareIntensity;  // x the weight, below
     }

@@ -35,17 +35,27 @@ struct CpuPostFx::Impl {
     //! A buffer a step writes (never the input or the dirt texture).
     Image& write(BufferId id) {
         switch (id.kind) {
-            case BufferKind::Mip: return mips[id.level];
-            case BufferKind::Up: return ups[id.level];
-            case BufferKind::Ghosts: return ghosts;
-            case BufferKind::Halo: return halo;
-            case BufferKind::Streaks: return streaks;
-            case BufferKind::Right: return right;
-            case BufferKind::Ping: return ping;
-            case BufferKind::Lens: return lens;
-            case BufferKind::Final: return *final;
+            case BufferKind::Mip:
+                return mips[id.level];
+            case BufferKind::Up:
+                return ups[id.level];
+            case BufferKind::Ghosts:
+                return ghosts;
+            case BufferKind::Halo:
+                return halo;
+            case BufferKind::Streaks:
+                return streaks;
+            case BufferKind::Right:
+                return right;
+            case BufferKind::Ping:
+                return ping;
+            case BufferKind::Lens:
+                return lens;
+            case BufferKind::Final:
+                return *final;
             case BufferKind::Input:
-            case BufferKind::Dirt: break;
+            case BufferKind::Dirt:
+                break;
         }
         return lens;
     }
@@ -72,30 +82,35 @@ CpuPostFx::~CpuPostFx() = default;
 CpuPostFx::CpuPostFx(CpuPostFx&&) noexcept = default;
 CpuPostFx& CpuPostFx::operator=(CpuPostFx&&) noexcept = default;
 
-Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResult& result, const PostFxOptions& options) {
+Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResult& result,
+                      const PostFxOptions& options) {
     auto planned = planChain(input.width(), input.height(), params);
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
     Impl& b = *m;
     b.input = &input, b.final = &result.final;
     b.mips.resize(plan.levels.size()), b.ups.resize(plan.levels.size());
-    if (plan.dirtOn) b.dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on
+    if (plan.dirtOn)
+        b.dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on
     PassClock clock(options.times);
-    forEachGroup(plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
-        const auto group = [&] {
-            for (std::size_t i = first; i < last; ++i) b.execute(plan, plan.steps[i]);
-        };
-        off ? group() : clock.run(label, written, group);
-    });
+    forEachGroup(
+        plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
+            const auto group = [&] {
+                for (std::size_t i = first; i < last; ++i) b.execute(plan, plan.steps[i]);
+            };
+            off ? group() : clock.run(label, written, group);
+        });
     if (options.keepLayers) {
         result.bloom = b.read(plan.bloom);
         result.bloom.scale(params.bloom.intensity);
-        result.ghosts = b.ghosts, result.halo = b.halo, result.streaks = b.streaks, result.lens = b.lens;
+        result.ghosts = b.ghosts, result.halo = b.halo, result.streaks = b.streaks,
+        result.lens = b.lens;
     }
     return Ok{};
 }
 
-Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params, const PostFxOptions& options) {
+Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params,
+                               const PostFxOptions& options) {
     PostFxResult result;
     CpuPostFx chain;
     if (Status s = chain.run(input, params, result, options); !s) return s.error();

@@ -6,8 +6,12 @@ namespace flarekit::postfx {
 
 namespace {
 
-BufferId mip(std::size_t level) { return {BufferKind::Mip, level}; }
-BufferId named(BufferKind kind) { return {kind, 0}; }
+BufferId mip(std::size_t level) {
+    return {BufferKind::Mip, level};
+}
+BufferId named(BufferKind kind) {
+    return {kind, 0};
+}
 
 //! The upsample result at `level`: the coarsest level is its own (nothing coarser to add).
 BufferId upAt(const ChainPlan& plan, std::size_t level) {
@@ -20,7 +24,8 @@ BufferId upAt(const ChainPlan& plan, std::size_t level) {
 //!   input + lens -> composite (+ tone curve)
 //! A pass that is off clears its buffer instead, so the lens pass reads black.
 void wireChain(ChainPlan& plan, const PostFxParams& p) {
-    const auto add = [&](const char* label, PassUniforms u, std::vector<BufferId> in, BufferId out) {
+    const auto add = [&](const char* label, PassUniforms u, std::vector<BufferId> in,
+                         BufferId out) {
         plan.steps.push_back({label, std::move(u), std::move(in), out});
     };
     const Size work = plan.work();
@@ -28,22 +33,28 @@ void wireChain(ChainPlan& plan, const PostFxParams& p) {
     const float aspect = float(plan.input.width) / float(plan.input.height);
 
     // 1. Bright pass at 1/2, then the 13-tap downsample chain.
-    add("bright", BrightUniforms{p.bright.threshold, p.bright.knee, inverseSize(plan.levels[0].width, plan.levels[0].height)},
+    add("bright",
+        BrightUniforms{p.bright.threshold, p.bright.knee,
+                       inverseSize(plan.levels[0].width, plan.levels[0].height)},
         {named(BufferKind::Input)}, mip(0));
     for (std::size_t i = 0; i + 1 < plan.levels.size(); ++i) {
         const Size src = plan.levels[i], dst = plan.levels[i + 1];
-        add("downsample", DownsampleUniforms{inverseSize(dst.width, dst.height), inverseSize(src.width, src.height)},
+        add("downsample",
+            DownsampleUniforms{inverseSize(dst.width, dst.height),
+                               inverseSize(src.width, src.height)},
             {mip(i)}, mip(i + 1));
     }
 
     // 2. Blur: U(k) = (D(k) + spread U(k+1)) x scale, from the coarsest up to the working level;
     //    the last step divides by 1 + spread + spread^2 + ... so a flat field stays flat.
     double norm = 0, weight = 1;
-    for (std::size_t i = kWorkLevel; i < plan.levels.size(); ++i, weight *= p.bloom.spread) norm += weight;
+    for (std::size_t i = kWorkLevel; i < plan.levels.size(); ++i, weight *= p.bloom.spread)
+        norm += weight;
     for (std::size_t i = plan.levels.size() - 2; i-- > 0;) {
         const Size dst = plan.levels[i + 1], coarse = plan.levels[i + 2];
         add("upsample",
-            UpsampleUniforms{inverseSize(dst.width, dst.height), inverseSize(coarse.width, coarse.height), p.bloom.spread,
+            UpsampleUniforms{inverseSize(dst.width, dst.height),
+                             inverseSize(coarse.width, coarse.height), p.bloom.spread,
                              i == 0 ? float(1.0 / norm) : 1.f},
             {mip(i + 1), upAt(plan, i + 2)}, BufferId{BufferKind::Up, i + 1});
     }
@@ -67,7 +78,8 @@ void wireChain(ChainPlan& plan, const PostFxParams& p) {
         streaks = streakPasses(p.streaks, work.width, p.flareIntensity * p.streaks.intensity);
     }
     if (!streaks.left.empty()) {
-        for (auto [passes, last] : {std::pair{&streaks.right, BufferKind::Right}, std::pair{&streaks.left, BufferKind::Streaks}}) {
+        for (auto [passes, last] : {std::pair{&streaks.right, BufferKind::Right},
+                                    std::pair{&streaks.left, BufferKind::Streaks}}) {
             BufferId src = mip(kWorkLevel);
             for (std::size_t i = 0; i < passes->size(); ++i) {
                 const StreakUniforms& u = (*passes)[i];
@@ -83,10 +95,15 @@ void wireChain(ChainPlan& plan, const PostFxParams& p) {
     }
 
     // 5. The lens buffer (chromatic aberration, starburst, dirt) and the full-res composite.
-    add("lens", LensUniforms{invWork, aspect, p.bloom.intensity, p.chromatic.amount, p.dirt.intensity, starburstUniforms(p.starburst)},
-        {plan.bloom, named(BufferKind::Ghosts), named(BufferKind::Halo), named(BufferKind::Streaks), named(BufferKind::Dirt)},
+    add("lens",
+        LensUniforms{invWork, aspect, p.bloom.intensity, p.chromatic.amount, p.dirt.intensity,
+                     starburstUniforms(p.starburst)},
+        {plan.bloom, named(BufferKind::Ghosts), named(BufferKind::Halo), named(BufferKind::Streaks),
+         named(BufferKind::Dirt)},
         named(BufferKind::Lens));
-    add("composite", CompositeUniforms{inverseSize(plan.input.width, plan.input.height), int(p.tone.op), p.tone.exposure},
+    add("composite",
+        CompositeUniforms{inverseSize(plan.input.width, plan.input.height), int(p.tone.op),
+                          p.tone.exposure},
         {named(BufferKind::Input), named(BufferKind::Lens)}, named(BufferKind::Final));
     plan.dirt = p.dirt;
     plan.dirtOn = p.dirt.intensity > 0.f;
@@ -97,10 +114,13 @@ void wireChain(ChainPlan& plan, const PostFxParams& p) {
 Size ChainPlan::sizeOf(BufferId id) const {
     switch (id.kind) {
         case BufferKind::Input:
-        case BufferKind::Final: return input;
+        case BufferKind::Final:
+            return input;
         case BufferKind::Mip:
-        case BufferKind::Up: return levels[id.level];
-        default: return work();
+        case BufferKind::Up:
+            return levels[id.level];
+        default:
+            return work();
     }
 }
 

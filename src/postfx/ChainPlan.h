@@ -59,15 +59,19 @@ template <class F>
 void forEachGroup(const ChainPlan& plan, F&& f) {
     for (std::size_t first = 0, last = 0; first < plan.steps.size(); first = last) {
         Size written;
-        for (last = first; last < plan.steps.size() && plan.steps[last].label == plan.steps[first].label; ++last) {
+        for (last = first;
+             last < plan.steps.size() && plan.steps[last].label == plan.steps[first].label;
+             ++last) {
             const Size s = plan.sizeOf(plan.steps[last].output);
             if (s.megapixels() > written.megapixels()) written = s;
         }
-        f(plan.steps[first].label, written, first, last, std::holds_alternative<ClearStep>(plan.steps[first].uniforms));
+        f(plan.steps[first].label, written, first, last,
+          std::holds_alternative<ClearStep>(plan.steps[first].uniforms));
     }
 }
 
-//! Validates the params (validatePostFxParams: JSON and code-built params alike) and plans the chain.
+//! Validates the params (validatePostFxParams: JSON and code-built params alike) and plans the
+//! chain.
 Result<ChainPlan> planChain(int width, int height, const PostFxParams& params);
 
 }  // namespace flarekit::postfx

@@ -44,8 +44,9 @@ Result<Target> makeTarget(Size size) {
 //! The sizes C++ and GLSL share, defined once in C++ and handed to every pass shader.
 std::string sharedSizeDefines() {
     return "#define FK_MAX_GHOSTS " + std::to_string(kMaxGhosts) + "\n#define FK_MAX_SPOKES " +
-           std::to_string(kMaxSpokes) + "\n#define FK_HALO_SAMPLES " + std::to_string(kHaloSamples) +
-           "\n#define FK_STREAK_TAPS " + std::to_string(kStreakTaps) + "\n";
+           std::to_string(kMaxSpokes) + "\n#define FK_HALO_SAMPLES " +
+           std::to_string(kHaloSamples) + "\n#define FK_STREAK_TAPS " +
+           std::to_string(kStreakTaps) + "\n";
 }
 
 Result<gl::Program> linkPass(const PassShader& shader) {
@@ -64,8 +65,12 @@ struct GlUniforms {
     void set(const char* name, float v) const { glProgramUniform1f(p, at(name), v); }
     void set(const char* name, int v) const { glProgramUniform1i(p, at(name), v); }
     void set(const char* name, Vec2 v) const { glProgramUniform2f(p, at(name), v.x, v.y); }
-    void set(const char* name, const Rgb& v) const { glProgramUniform3f(p, at(name), v[0], v[1], v[2]); }
-    void set(const char* name, F4 v) const { glProgramUniform4f(p, at(name), v[0], v[1], v[2], v[3]); }
+    void set(const char* name, const Rgb& v) const {
+        glProgramUniform3f(p, at(name), v[0], v[1], v[2]);
+    }
+    void set(const char* name, F4 v) const {
+        glProgramUniform4f(p, at(name), v[0], v[1], v[2], v[3]);
+    }
     void set(const char* name, std::span<const float> v) const {
         glProgramUniform1fv(p, at(name), GLsizei(v.size()), v.data());
     }
@@ -78,7 +83,7 @@ void clear(const Target& t) {
 
 //! Times a group of draws with a timer query and, around glFinish, the wall clock.
 class GlClock {
-public:
+  public:
     explicit GlClock(std::vector<PassTime>* times) : m_clock(times) {}
     template <typename Work>
     void run(const char* pass, Size written, const Work& work) {
@@ -89,11 +94,13 @@ public:
         work();
         m_query.end();
         glFinish();
-        const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const double wall =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         m_clock.add(pass, written, m_query.milliseconds(), wall);
     }
 
-private:
+  private:
     PassClock m_clock;
     gl::TimerQuery m_query;
 };
@@ -107,8 +114,10 @@ Status linkAll(std::vector<gl::Program>& programs, std::index_sequence<I...>) {
             programs.emplace_back();  // a clear draws nothing
         } else if (status) {
             auto program = linkPass(passShader(std::type_identity<U>{}));
-            if (!program) status = program.error();
-            else programs.push_back(std::move(*program));
+            if (!program)
+                status = program.error();
+            else
+                programs.push_back(std::move(*program));
         }
     };
     (one(std::type_identity<std::variant_alternative_t<I, PassUniforms>>{}), ...);
@@ -135,7 +144,9 @@ struct GpuPostFx::Impl {
 
 Result<GpuPostFx> GpuPostFx::create() {
     auto m = std::make_unique<Impl>();
-    if (Status s = linkAll(m->programs, std::make_index_sequence<std::variant_size_v<PassUniforms>>{}); !s) {
+    if (Status s =
+            linkAll(m->programs, std::make_index_sequence<std::variant_size_v<PassUniforms>>{});
+        !s) {
         return s.error();
     }
     m->vao = gl::makeVertexArray();
@@ -148,12 +159,16 @@ GpuPostFx::GpuPostFx(GpuPostFx&&) noexcept = default;
 GpuPostFx& GpuPostFx::operator=(GpuPostFx&&) noexcept = default;
 
 Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
-    if (input.width == plan.input.width && input.height == plan.input.height && levelCount == plan.levels.size()) return Ok{};
+    if (input.width == plan.input.width && input.height == plan.input.height &&
+        levelCount == plan.levels.size())
+        return Ok{};
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (plan.input.width > maxSize || plan.input.height > maxSize) {
-        return invalidInput("postfx --backend gl: image " + std::to_string(plan.input.width) + "x" + std::to_string(plan.input.height) +
-                            " exceeds this GL's GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) + " (use --backend cpu)");
+        return invalidInput("postfx --backend gl: image " + std::to_string(plan.input.width) + "x" +
+                            std::to_string(plan.input.height) +
+                            " exceeds this GL's GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) +
+                            " (use --backend cpu)");
     }
     source = gl::makeTexture2D(GL_RGBA32F, plan.input.width, plan.input.height);
     const auto make = [](Size s, Target& t) -> Status {
@@ -181,17 +196,27 @@ Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
 
 const Target& GpuPostFx::Impl::target(BufferId id) const {
     switch (id.kind) {
-        case BufferKind::Mip: return mips[id.level];
-        case BufferKind::Up: return ups[id.level];
-        case BufferKind::Ghosts: return ghosts;
-        case BufferKind::Halo: return halo;
-        case BufferKind::Streaks: return streaks;
-        case BufferKind::Right: return right;
-        case BufferKind::Ping: return ping;
-        case BufferKind::Lens: return lens;
-        case BufferKind::Dirt: return dirtT;
+        case BufferKind::Mip:
+            return mips[id.level];
+        case BufferKind::Up:
+            return ups[id.level];
+        case BufferKind::Ghosts:
+            return ghosts;
+        case BufferKind::Halo:
+            return halo;
+        case BufferKind::Streaks:
+            return streaks;
+        case BufferKind::Right:
+            return right;
+        case BufferKind::Ping:
+            return ping;
+        case BufferKind::Lens:
+            return lens;
+        case BufferKind::Dirt:
+            return dirtT;
         case BufferKind::Final:
-        case BufferKind::Input: break;
+        case BufferKind::Input:
+            break;
     }
     return final;
 }
@@ -221,7 +246,8 @@ void GpuPostFx::Impl::execute(const Step& step) const {
     for (GLuint u = 0; u < unit; ++u) glBindTextureUnit(u, 0);  // no target stays bound as an input
 }
 
-Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& params, const PostFxOptions& options) {
+Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& params,
+                                    const PostFxOptions& options) {
     auto planned = planChain(input.width(), input.height(), params);
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
@@ -231,17 +257,20 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
     glDisable(GL_BLEND), glDisable(GL_DEPTH_TEST), glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(g.vao.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(g.source.get(), 0, 0, 0, input.width(), input.height(), GL_RGBA, GL_FLOAT, input.data());
+    glTextureSubImage2D(g.source.get(), 0, 0, 0, input.width(), input.height(), GL_RGBA, GL_FLOAT,
+                        input.data());
     if (plan.dirtOn && g.dirt.update(work.width, work.height, plan.dirt)) {
-        glTextureSubImage2D(g.dirtT.texture.get(), 0, 0, 0, work.width, work.height, GL_RGBA, GL_FLOAT, g.dirt.image().data());
+        glTextureSubImage2D(g.dirtT.texture.get(), 0, 0, 0, work.width, work.height, GL_RGBA,
+                            GL_FLOAT, g.dirt.image().data());
     }
     GlClock clock(options.times);
-    forEachGroup(plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
-        const auto group = [&] {
-            for (std::size_t i = first; i < last; ++i) g.execute(plan.steps[i]);
-        };
-        off ? group() : clock.run(label, written, group);
-    });
+    forEachGroup(
+        plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
+            const auto group = [&] {
+                for (std::size_t i = first; i < last; ++i) g.execute(plan.steps[i]);
+            };
+            off ? group() : clock.run(label, written, group);
+        });
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (Status s = gl::checkError("post-process chain"); !s) return s.error();
 
@@ -254,8 +283,9 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
     };
     if (Status s = read(g.final, result.final); !s) return s.error();
     if (options.keepLayers) {
-        for (auto [t, out] : {std::pair{&g.ghosts, &result.ghosts}, std::pair{&g.halo, &result.halo},
-                              std::pair{&g.streaks, &result.streaks}, std::pair{&g.lens, &result.lens}}) {
+        for (auto [t, out] :
+             {std::pair{&g.ghosts, &result.ghosts}, std::pair{&g.halo, &result.halo},
+              std::pair{&g.streaks, &result.streaks}, std::pair{&g.lens, &result.lens}}) {
             if (Status s = read(*t, *out); !s) return s.error();
         }
         if (Status s = read(g.target(plan.bloom), result.bloom); !s) return s.error();

@@ -16,10 +16,18 @@ namespace flarekit::postfx {
 
 typedef float F4 __attribute__((vector_size(16)));  // NOLINT: GCC/Clang vector extension
 
-inline F4 splat(float s) { return F4{s, s, s, s}; }
-inline F4 rgbOnly(F4 v) { return F4{v[0], v[1], v[2], 0.f}; }
-inline F4 max0(F4 v) { return v > splat(0.f) ? v : splat(0.f); }  // lane-wise select
-inline F4 maxv(F4 a, F4 b) { return a > b ? a : b; }
+inline F4 splat(float s) {
+    return F4{s, s, s, s};
+}
+inline F4 rgbOnly(F4 v) {
+    return F4{v[0], v[1], v[2], 0.f};
+}
+inline F4 max0(F4 v) {
+    return v > splat(0.f) ? v : splat(0.f);
+}  // lane-wise select
+inline F4 maxv(F4 a, F4 b) {
+    return a > b ? a : b;
+}
 
 struct Vec2 {
     float x = 0, y = 0;
@@ -29,11 +37,13 @@ struct Vec2 {
 struct Tex {
     const float* data = nullptr;
     int width = 0, height = 0;
-    explicit Tex(const Image& image) : data(image.data()), width(image.width()), height(image.height()) {}
+    explicit Tex(const Image& image)
+        : data(image.data()), width(image.width()), height(image.height()) {}
 
     F4 texel(int x, int y) const {  // GLSL texelFetch: no bounds check
         F4 v;
-        std::memcpy(&v, data + (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4, sizeof v);
+        std::memcpy(&v, data + (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4,
+                    sizeof v);
         return v;
     }
 };
@@ -77,11 +87,17 @@ inline F4 bilinear(const Tex& t, Vec2 uv) {
     return top + (bottom - top) * fy;
 }
 //! postfx_common.glsl bilinearFinite.
-inline F4 bilinearFinite(const Tex& t, Vec2 uv) { return bilinear<fetchFinite>(t, uv); }
+inline F4 bilinearFinite(const Tex& t, Vec2 uv) {
+    return bilinear<fetchFinite>(t, uv);
+}
 
 //! The centre of output pixel (x, y) in normalised coordinates, as gl_FragCoord.xy * invSize.
-inline Vec2 pixelUv(int x, int y, Vec2 invSize) { return {(float(x) + 0.5f) * invSize.x, (float(y) + 0.5f) * invSize.y}; }
-inline Vec2 inverseSize(int width, int height) { return {1.f / float(width), 1.f / float(height)}; }
+inline Vec2 pixelUv(int x, int y, Vec2 invSize) {
+    return {(float(x) + 0.5f) * invSize.x, (float(y) + 0.5f) * invSize.y};
+}
+inline Vec2 inverseSize(int width, int height) {
+    return {1.f / float(width), 1.f / float(height)};
+}
 
 //! Runs kernel(x, y) -> F4 for every pixel of `out`, rows in parallel: the CPU's draw call.
 template <typename Kernel>
@@ -109,6 +125,8 @@ inline float centreFalloff(Vec2 p, float exponent) {
 }
 
 //! Half the size, rounded up, never below 1: each level of the chain.
-inline int halfSize(int n) { return std::max(1, (n + 1) / 2); }
+inline int halfSize(int n) {
+    return std::max(1, (n + 1) / 2);
+}
 
 }  // namespace flarekit::postfx

@@ -10,7 +10,7 @@
 namespace flarekit::postfx {
 
 class PassClock {
-public:
+  public:
     explicit PassClock(std::vector<PassTime>* times) : m_times(times) {}
     bool on() const { return m_times != nullptr; }
     //! Runs `work` and, when timing, adds its wall time (CPU).
@@ -19,7 +19,9 @@ public:
         const auto start = std::chrono::steady_clock::now();
         work();
         if (!m_times) return;
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         add(pass, written, ms, ms);
     }
     //! Adds a measurement (the GL chain times its passes itself).
@@ -27,14 +29,15 @@ public:
         if (!m_times) return;
         for (PassTime& t : *m_times) {
             if (t.pass == pass) {
-                t.milliseconds += ms, t.wallMilliseconds += wallMs, t.megapixels += written.megapixels();
+                t.milliseconds += ms, t.wallMilliseconds += wallMs,
+                    t.megapixels += written.megapixels();
                 return;
             }
         }
         m_times->push_back({pass, ms, wallMs, written.megapixels()});
     }
 
-private:
+  private:
     std::vector<PassTime>* m_times;
 };
 

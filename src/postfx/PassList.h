@@ -20,7 +20,8 @@ namespace flarekit::postfx {
 //! A step that writes black: the buffer of a pass that is off, read as "no light" downstream.
 struct ClearStep {};
 
-using PassUniforms = std::variant<ClearStep, BrightUniforms, DownsampleUniforms, UpsampleUniforms, GhostsUniforms,
-                                  HaloUniforms, StreakUniforms, LensUniforms, CompositeUniforms>;
+using PassUniforms =
+    std::variant<ClearStep, BrightUniforms, DownsampleUniforms, UpsampleUniforms, GhostsUniforms,
+                 HaloUniforms, StreakUniforms, LensUniforms, CompositeUniforms>;
 
 }  // namespace flarekit::postfx

@@ -31,8 +31,11 @@ void forEachSection(P& p, F&& f) {
 Status checkGhost(const GhostParams& g, const std::string& at) {
     if (Status s = validateParams<GhostParams>(g, kGhostParams, at + "."); !s) return s;
     if (std::abs(g.scale) < kMinGhostScale) {
-        return invalidInput(at + ".scale: expected |scale| >= 0.05 (a ghost that small magnifies one bloom texel "
-                                 "over the frame), got " + std::to_string(g.scale));
+        return invalidInput(
+            at +
+            ".scale: expected |scale| >= 0.05 (a ghost that small magnifies one bloom texel "
+            "over the frame), got " +
+            std::to_string(g.scale));
     }
     return Ok{};
 }
@@ -40,7 +43,9 @@ Status checkGhost(const GhostParams& g, const std::string& at) {
 std::optional<Error> readSeries(const json& v, const JsonPlace& at, PostFxParams& p) {
     GhostParams base;
     GhostSeriesParams series;
-    if (auto e = readParams<GhostParams>(v, kGhostParams, base, at, {"count", "spacing", "start", "tints"})) return e;
+    if (auto e = readParams<GhostParams>(v, kGhostParams, base, at,
+                                         {"count", "spacing", "start", "tints"}))
+        return e;
     for (const Param<GhostSeriesParams>& q : kGhostSeriesParams) {
         const auto it = v.find(std::string(q.key));
         if (it == v.end()) {
@@ -54,8 +59,9 @@ std::optional<Error> readSeries(const json& v, const JsonPlace& at, PostFxParams
     std::vector<Rgb> tints;
     if (auto it = v.find("tints"); it != v.end()) {
         if (!it->is_array() || it->empty() || it->size() > std::size_t(kMaxGhosts)) {
-            return (at / "tints").fail("expected an array of 1 to " + std::to_string(kMaxGhosts) +
-                                       " colours, got " + jsonExcerpt(*it));
+            return (at / "tints")
+                .fail("expected an array of 1 to " + std::to_string(kMaxGhosts) + " colours, got " +
+                      jsonExcerpt(*it));
         }
         const Param<GhostParams>& tint = *findParam<GhostParams>(kGhostParams, "tint");
         for (std::size_t i = 0; i < it->size(); ++i) {
@@ -81,10 +87,12 @@ std::optional<Error> readSeries(const json& v, const JsonPlace& at, PostFxParams
 Status validatePostFxParams(const PostFxParams& params) {
     if (params.ghosts.size() > std::size_t(kMaxGhosts)) {
         return invalidInput("ghosts: expected at most " + std::to_string(kMaxGhosts) +
-                            " ghosts with ghost_series included, got " + std::to_string(params.ghosts.size()));
+                            " ghosts with ghost_series included, got " +
+                            std::to_string(params.ghosts.size()));
     }
     for (std::size_t i = 0; i < params.ghosts.size(); ++i) {
-        if (Status s = checkGhost(params.ghosts[i], "ghosts[" + std::to_string(i) + "]"); !s) return s;
+        if (Status s = checkGhost(params.ghosts[i], "ghosts[" + std::to_string(i) + "]"); !s)
+            return s;
     }
     if (Status s = validateParams<PostFxParams>(params, kPostFxTopParams, ""); !s) return s;
     Status status = Ok{};
@@ -113,7 +121,8 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
         if (error) return *error;
         if (section) continue;
         if (key == "name" || key == "description") {
-            if (!value.is_string()) return (top / key).fail("expected a string, got " + jsonExcerpt(value));
+            if (!value.is_string())
+                return (top / key).fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? p.name : p.description) = value.get<std::string>();
         } else if (const Param<PostFxParams>* f = findParam<PostFxParams>(kPostFxTopParams, key)) {
             auto v = readParamValue(*f, value, top / key);
@@ -121,28 +130,34 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
             f->set(p, *v);
         } else if (key == "ghosts") {
             if (!value.is_array() || value.size() > std::size_t(kMaxGhosts)) {
-                return (top / key).fail("expected an array of at most " + std::to_string(kMaxGhosts) +
-                                        " ghosts, got " + jsonExcerpt(value));
+                return (top / key).fail("expected an array of at most " +
+                                        std::to_string(kMaxGhosts) + " ghosts, got " +
+                                        jsonExcerpt(value));
             }
             for (std::size_t i = 0; i < value.size(); ++i) {
                 const JsonPlace at = (top / key).index(i);
                 GhostParams g;
                 if (auto e = readParams<GhostParams>(value[i], kGhostParams, g, at)) return *e;
-                if (Status s = checkGhost(g, at.at()); !s) return invalidInput(source + ": " + s.error().message);
+                if (Status s = checkGhost(g, at.at()); !s)
+                    return invalidInput(source + ": " + s.error().message);
                 p.ghosts.push_back(g);
             }
         } else if (key == "ghost_series") {
             if (auto e = readSeries(value, top / key, p)) return *e;
         } else {
-            return (top / key).fail("unknown key (expected one of: name, description, flare_intensity, bright, bloom, "
-                                    "ghosts, ghost_series, halo, streaks, chromatic, starburst, dirt, tonemap)");
+            return (top / key).fail(
+                "unknown key (expected one of: name, description, flare_intensity, bright, bloom, "
+                "ghosts, ghost_series, halo, streaks, chromatic, starburst, dirt, tonemap)");
         }
     }
-    if (Status s = validatePostFxParams(p); !s) return invalidInput(source + ": " + s.error().message);
+    if (Status s = validatePostFxParams(p); !s)
+        return invalidInput(source + ": " + s.error().message);
     return p;
 }
 
-std::vector<std::string> shippedPostFxPresetNames() { return presetNamesIn("postfx"); }
+std::vector<std::string> shippedPostFxPresetNames() {
+    return presetNamesIn("postfx");
+}
 
 Result<PostFxParams> loadPostFxPreset(const std::string& nameOrPath) {
     std::string path;
@@ -155,16 +170,23 @@ std::string postFxParameterReference() {
     PostFxParams defaults;
     const GhostParams ghost;
     const GhostSeriesParams series;
-    auto lead = [](std::string_view s) { return [s](const auto&) { return std::string(s) + " | "; }; };
+    auto lead = [](std::string_view s) {
+        return [s](const auto&) { return std::string(s) + " | "; };
+    };
     auto none = [](const auto&) { return std::string(); };
-    std::string out = "| section | key | default | range | unit | meaning |\n|---|---|---|---|---|---|\n";
+    std::string out =
+        "| section | key | default | range | unit | meaning |\n|---|---|---|---|---|---|\n";
     out += markdownRows<PostFxParams>(kPostFxTopParams, &defaults, lead("(top)"), none);
     forEachSection(defaults, [&](std::string_view section, auto table, auto& owner) {
         out += markdownRows(table, &owner, lead(section), none);
-        if (section == "bloom") out += markdownRows<GhostParams>(kGhostParams, &ghost, lead("ghosts[i], ghost_series"), none);
+        if (section == "bloom")
+            out += markdownRows<GhostParams>(kGhostParams, &ghost, lead("ghosts[i], ghost_series"),
+                                             none);
     });
     out += markdownRows<GhostSeriesParams>(kGhostSeriesParams, &series, lead("ghost_series"), none);
-    out += "| ghost_series | `tints` | | 1-32 colours | linear RGB | per-ghost tints, cycled; overrides `tint` |\n";
+    out +=
+        "| ghost_series | `tints` | | 1-32 colours | linear RGB | per-ghost tints, cycled; "
+        "overrides `tint` |\n";
     return out;
 }
 

@@ -7,8 +7,12 @@ namespace flarekit::psp {
 namespace {
 constexpr std::uint32_t kVertexType = kVtTexFloat | kVtColor8888 | kVtPosS16 | kVtThrough;
 constexpr std::uint32_t kVertexBytes = 20;  // float u, v; 8888 colour; s16 x, y, z; padded to 4
-std::uint32_t upper(std::uint32_t address) { return (address >> 8) & 0xFF0000u; }
-std::uint32_t low24(std::uint32_t address) { return address & 0xFFFFFFu; }
+std::uint32_t upper(std::uint32_t address) {
+    return (address >> 8) & 0xFF0000u;
+}
+std::uint32_t low24(std::uint32_t address) {
+    return address & 0xFFFFFFu;
+}
 }  // namespace
 
 DisplayList::DisplayList(Memory& memory, std::uint32_t listAddress, std::uint32_t vertexAddress)
@@ -43,7 +47,8 @@ void DisplayList::depthTest(bool on, int compare, bool write) {
     command(GeCmd::ZWriteDisable, write ? 0 : 1);
 }
 
-void DisplayList::texture(std::uint32_t address, int bufferWidth, int log2Width, int log2Height, int format, bool bilinear) {
+void DisplayList::texture(std::uint32_t address, int bufferWidth, int log2Width, int log2Height,
+                          int format, bool bilinear) {
     enable(GeCmd::TextureMapEnable, true);
     command(GeCmd::TexAddr0, low24(address));
     command(GeCmd::TexBufWidth0, upper(address) | std::uint32_t(bufferWidth));
@@ -53,7 +58,9 @@ void DisplayList::texture(std::uint32_t address, int bufferWidth, int log2Width,
     command(GeCmd::TexWrap, 0x101);  // clamp s and t
 }
 
-void DisplayList::textureFunction(int function) { command(GeCmd::TexFunc, std::uint32_t(function) | 1u << 8); }
+void DisplayList::textureFunction(int function) {
+    command(GeCmd::TexFunc, std::uint32_t(function) | 1u << 8);
+}
 
 void DisplayList::loadClut(std::uint32_t address, int format, int entries) {
     command(GeCmd::ClutAddr, low24(address));
@@ -63,10 +70,12 @@ void DisplayList::loadClut(std::uint32_t address, int format, int entries) {
     command(GeCmd::LoadClut, std::uint32_t(bytes / 32));
 }
 
-void DisplayList::blend(bool on, int source, int destination, std::uint32_t fixA, std::uint32_t fixB) {
+void DisplayList::blend(bool on, int source, int destination, std::uint32_t fixA,
+                        std::uint32_t fixB) {
     enable(GeCmd::AlphaBlendEnable, on);
     if (!on) return;
-    command(GeCmd::BlendMode, std::uint32_t(source) | std::uint32_t(destination) << 4 | std::uint32_t(kBlendAdd) << 8);
+    command(GeCmd::BlendMode, std::uint32_t(source) | std::uint32_t(destination) << 4 |
+                                  std::uint32_t(kBlendAdd) << 8);
     command(GeCmd::BlendFixedA, fixA);
     command(GeCmd::BlendFixedB, fixB);
 }
@@ -93,14 +102,17 @@ void DisplayList::draw(int primType, const std::vector<ListVertex>& vertices) {
     command(GeCmd::Prim, std::uint32_t(primType) << 16 | std::uint32_t(vertices.size()));
 }
 
-void DisplayList::sprite(int x0, int y0, int x1, int y1, float u0, float v0, float u1, float v1, std::uint32_t color, int z) {
+void DisplayList::sprite(int x0, int y0, int x1, int y1, float u0, float v0, float u1, float v1,
+                         std::uint32_t color, int z) {
     draw(kPrimSprites, {{u0, v0, color, x0, y0, z}, {u1, v1, color, x1, y1, z}});
 }
 
-void DisplayList::triangles(const std::vector<ListVertex>& vertices) { draw(kPrimTriangles, vertices); }
+void DisplayList::triangles(const std::vector<ListVertex>& vertices) {
+    draw(kPrimTriangles, vertices);
+}
 
-void DisplayList::transfer(std::uint32_t src, int srcWidth, int sx, int sy, std::uint32_t dst, int dstWidth, int dx, int dy,
-                           int w, int h, bool bits32) {
+void DisplayList::transfer(std::uint32_t src, int srcWidth, int sx, int sy, std::uint32_t dst,
+                           int dstWidth, int dx, int dy, int w, int h, bool bits32) {
     command(GeCmd::TransferSrc, low24(src));
     command(GeCmd::TransferSrcWidth, upper(src) | std::uint32_t(srcWidth));
     command(GeCmd::TransferDst, low24(dst));

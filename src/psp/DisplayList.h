@@ -18,7 +18,7 @@ struct ListVertex {
 };
 
 class DisplayList {
-public:
+  public:
     //! Commands from `listAddress` on, vertices from `vertexAddress` on (both in RAM).
     DisplayList(Memory& memory, std::uint32_t listAddress, std::uint32_t vertexAddress);
 
@@ -28,24 +28,26 @@ public:
     void depthBuffer(std::uint32_t address, int width);
     void scissor(int x1, int y1, int x2, int y2);  //!< inclusive corners
     void depthTest(bool on, int compare, bool write);
-    void texture(std::uint32_t address, int bufferWidth, int log2Width, int log2Height, int format, bool bilinear);
+    void texture(std::uint32_t address, int bufferWidth, int log2Width, int log2Height, int format,
+                 bool bilinear);
     //! TFUNC (modulate or replace, texture alpha used), clamp on both axes.
     void textureFunction(int function);
     //! CBP/CBPH, CMODE (format, mask 0xFF) and CLOAD of `entries` colours.
     void loadClut(std::uint32_t address, int format, int entries);
-    void blend(bool on, int source = kSrcSrcAlpha, int destination = kDstInvSrcAlpha, std::uint32_t fixA = 0,
-               std::uint32_t fixB = 0);
+    void blend(bool on, int source = kSrcSrcAlpha, int destination = kDstInvSrcAlpha,
+               std::uint32_t fixA = 0, std::uint32_t fixB = 0);
     void writeMask(std::uint32_t protectRgb);
-    void sprite(int x0, int y0, int x1, int y1, float u0, float v0, float u1, float v1, std::uint32_t color, int z = 0);
+    void sprite(int x0, int y0, int x1, int y1, float u0, float v0, float u1, float v1,
+                std::uint32_t color, int z = 0);
     void triangles(const std::vector<ListVertex>& vertices);
     //! Block transfer of a w x h rectangle, 32-bit or 16-bit pixels.
-    void transfer(std::uint32_t src, int srcWidth, int sx, int sy, std::uint32_t dst, int dstWidth, int dx, int dy, int w,
-                  int h, bool bits32);
+    void transfer(std::uint32_t src, int srcWidth, int sx, int sy, std::uint32_t dst, int dstWidth,
+                  int dx, int dy, int w, int h, bool bits32);
     void signal(int id) { command(GeCmd::Signal, std::uint32_t(id)); }
     //! Appends FINISH and END; returns the list's address.
     std::uint32_t end();
 
-private:
+  private:
     void draw(int primType, const std::vector<ListVertex>& vertices);
     Memory& m_memory;
     std::uint32_t m_start, m_pc, m_vertices;

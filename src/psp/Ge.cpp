@@ -18,12 +18,17 @@ std::string hex(std::uint32_t v, int digits) {
     return text;
 }
 //! An address from a 24-bit parameter and the upper byte kept in bits 16-23 of its companion.
-std::uint32_t address(std::uint32_t low24, std::uint32_t upperParam) { return (upperParam & 0xFF0000u) << 8 | low24; }
+std::uint32_t address(std::uint32_t low24, std::uint32_t upperParam) {
+    return (upperParam & 0xFF0000u) << 8 | low24;
+}
 }  // namespace
 
-std::string Ge::fault(const std::string& what) const { return "GE at 0x" + hex(m_pc, 8) + ": " + what; }
+std::string Ge::fault(const std::string& what) const {
+    return "GE at 0x" + hex(m_pc, 8) + ": " + what;
+}
 
-Status Ge::run(std::uint32_t listAddress, const std::function<void(int)>& onSignal, std::vector<std::string>* trace) {
+Status Ge::run(std::uint32_t listAddress, const std::function<void(int)>& onSignal,
+               std::vector<std::string>* trace) {
     // A list longer than this is a runaway (no END): 1 Mi commands.
     constexpr int kMaxCommands = 1 << 20;
     std::uint32_t pc = listAddress;
@@ -35,7 +40,8 @@ Status Ge::run(std::uint32_t listAddress, const std::function<void(int)>& onSign
         const std::uint32_t param = word & 0xFFFFFFu;
         if (trace) {
             const char* name = geCommandName(op);
-            trace->push_back(hex(pc, 8) + "  " + hex(op, 2) + " " + hex(param, 6) + "  " + (*name ? name : "?"));
+            trace->push_back(hex(pc, 8) + "  " + hex(op, 2) + " " + hex(param, 6) + "  " +
+                             (*name ? name : "?"));
         }
         if (GeCmd(op) == GeCmd::End) return Ok{};
         if (GeCmd(op) == GeCmd::Signal) {
@@ -50,64 +56,134 @@ Status Ge::run(std::uint32_t listAddress, const std::function<void(int)>& onSign
 Status Ge::execute(std::uint8_t op, std::uint32_t param) {
     switch (GeCmd(op)) {
         case GeCmd::Nop:
-        case GeCmd::Finish: return Ok{};
-        case GeCmd::Base: m_base = param; return Ok{};
-        case GeCmd::VertexAddress: m_vertexAddress = address(param, m_base); return Ok{};
-        case GeCmd::VertexType: m_vertexType = param; return Ok{};
-        case GeCmd::Prim: return drawPrimitive(param);
-        case GeCmd::TextureMapEnable: m_texture = param & 1; return Ok{};
-        case GeCmd::AlphaBlendEnable: m_blend = param & 1; return Ok{};
-        case GeCmd::ZTestEnable: m_depthTest = param & 1; return Ok{};
-        case GeCmd::ZWriteDisable: m_depthWrite = !(param & 1); return Ok{};
-        case GeCmd::FramebufPtr: m_fbAddress = param; return Ok{};
+        case GeCmd::Finish:
+            return Ok{};
+        case GeCmd::Base:
+            m_base = param;
+            return Ok{};
+        case GeCmd::VertexAddress:
+            m_vertexAddress = address(param, m_base);
+            return Ok{};
+        case GeCmd::VertexType:
+            m_vertexType = param;
+            return Ok{};
+        case GeCmd::Prim:
+            return drawPrimitive(param);
+        case GeCmd::TextureMapEnable:
+            m_texture = param & 1;
+            return Ok{};
+        case GeCmd::AlphaBlendEnable:
+            m_blend = param & 1;
+            return Ok{};
+        case GeCmd::ZTestEnable:
+            m_depthTest = param & 1;
+            return Ok{};
+        case GeCmd::ZWriteDisable:
+            m_depthWrite = !(param & 1);
+            return Ok{};
+        case GeCmd::FramebufPtr:
+            m_fbAddress = param;
+            return Ok{};
         case GeCmd::FramebufWidth:
             m_fbAddress = address(m_fbAddress & 0xFFFFFF, param), m_fbWidth = param & 0xFFFF;
             return Ok{};
-        case GeCmd::FramebufPixFormat: m_fbFormat = param & 3; return Ok{};
-        case GeCmd::ZbufPtr: m_zAddress = param; return Ok{};
+        case GeCmd::FramebufPixFormat:
+            m_fbFormat = param & 3;
+            return Ok{};
+        case GeCmd::ZbufPtr:
+            m_zAddress = param;
+            return Ok{};
         case GeCmd::ZbufWidth:
             m_zAddress = address(m_zAddress & 0xFFFFFF, param), m_zWidth = param & 0xFFFF;
             return Ok{};
-        case GeCmd::TexAddr0: m_texAddress = param; return Ok{};
+        case GeCmd::TexAddr0:
+            m_texAddress = param;
+            return Ok{};
         case GeCmd::TexBufWidth0:
             m_texAddress = address(m_texAddress & 0xFFFFFF, param), m_texBufWidth = param & 0xFFFF;
             return Ok{};
-        case GeCmd::TexSize0: m_texLog2W = param & 0xF, m_texLog2H = (param >> 8) & 0xF; return Ok{};
-        case GeCmd::TexFormat: m_texFormat = param & 0xF; return Ok{};
-        case GeCmd::TexFilter: m_bilinear = (param & 7) == 1; return Ok{};
-        case GeCmd::TexWrap: m_clampS = param & 1, m_clampT = (param >> 8) & 1; return Ok{};
-        case GeCmd::TexFunc: m_texFunc = param & 7, m_texAlpha = (param >> 8) & 1; return Ok{};
-        case GeCmd::ClutAddr: m_clutAddress = (m_clutAddress & 0xFF000000u) | param; return Ok{};
-        case GeCmd::ClutAddrUpper: m_clutAddress = address(m_clutAddress & 0xFFFFFF, param); return Ok{};
-        case GeCmd::ClutFormat: m_clutFormat = param; return Ok{};
+        case GeCmd::TexSize0:
+            m_texLog2W = param & 0xF, m_texLog2H = (param >> 8) & 0xF;
+            return Ok{};
+        case GeCmd::TexFormat:
+            m_texFormat = param & 0xF;
+            return Ok{};
+        case GeCmd::TexFilter:
+            m_bilinear = (param & 7) == 1;
+            return Ok{};
+        case GeCmd::TexWrap:
+            m_clampS = param & 1, m_clampT = (param >> 8) & 1;
+            return Ok{};
+        case GeCmd::TexFunc:
+            m_texFunc = param & 7, m_texAlpha = (param >> 8) & 1;
+            return Ok{};
+        case GeCmd::ClutAddr:
+            m_clutAddress = (m_clutAddress & 0xFF000000u) | param;
+            return Ok{};
+        case GeCmd::ClutAddrUpper:
+            m_clutAddress = address(m_clutAddress & 0xFFFFFF, param);
+            return Ok{};
+        case GeCmd::ClutFormat:
+            m_clutFormat = param;
+            return Ok{};
         case GeCmd::LoadClut: {
             // The hardware copies the palette into its CLUT buffer now: later writes to that
             // memory are not seen until the next CLOAD. It reads memory, not a host copy.
             const std::uint32_t bytes = std::min<std::uint32_t>((param & 0x3F) * 32, 1024);
-            if (!m_memory.valid(m_clutAddress, bytes)) return invalidInput(fault("CLOAD outside memory"));
+            if (!m_memory.valid(m_clutAddress, bytes))
+                return invalidInput(fault("CLOAD outside memory"));
             for (std::uint32_t i = 0; i < bytes; ++i) m_clut[i] = m_memory.read8(m_clutAddress + i);
             return Ok{};
         }
-        case GeCmd::Scissor1: m_scissorX1 = int(param & 0x3FF), m_scissorY1 = int((param >> 10) & 0x3FF); return Ok{};
-        case GeCmd::Scissor2: m_scissorX2 = int(param & 0x3FF), m_scissorY2 = int((param >> 10) & 0x3FF); return Ok{};
-        case GeCmd::ZTest: m_depthFunc = param & 7; return Ok{};
+        case GeCmd::Scissor1:
+            m_scissorX1 = int(param & 0x3FF), m_scissorY1 = int((param >> 10) & 0x3FF);
+            return Ok{};
+        case GeCmd::Scissor2:
+            m_scissorX2 = int(param & 0x3FF), m_scissorY2 = int((param >> 10) & 0x3FF);
+            return Ok{};
+        case GeCmd::ZTest:
+            m_depthFunc = param & 7;
+            return Ok{};
         case GeCmd::BlendMode:
             m_blendSrc = param & 0xF, m_blendDst = (param >> 4) & 0xF, m_blendOp = (param >> 8) & 7;
             return Ok{};
-        case GeCmd::BlendFixedA: m_fixA = param; return Ok{};
-        case GeCmd::BlendFixedB: m_fixB = param; return Ok{};
-        case GeCmd::MaskRgb: m_maskRgb = param; return Ok{};
-        case GeCmd::MaskAlpha: return Ok{};  // alpha bits are stencil: colour writes keep them anyway
-        case GeCmd::TransferSrc: m_trxSrc = param; return Ok{};
-        case GeCmd::TransferSrcWidth: m_trxSrc = address(m_trxSrc & 0xFFFFFF, param), m_trxSrcWidth = param & 0xFFFF; return Ok{};
-        case GeCmd::TransferDst: m_trxDst = param; return Ok{};
-        case GeCmd::TransferDstWidth: m_trxDst = address(m_trxDst & 0xFFFFFF, param), m_trxDstWidth = param & 0xFFFF; return Ok{};
-        case GeCmd::TransferSrcPos: m_trxSrcPos = param; return Ok{};
-        case GeCmd::TransferDstPos: m_trxDstPos = param; return Ok{};
-        case GeCmd::TransferSize: m_trxSize = param; return Ok{};
-        case GeCmd::TransferStart: return blockTransfer(param);
+        case GeCmd::BlendFixedA:
+            m_fixA = param;
+            return Ok{};
+        case GeCmd::BlendFixedB:
+            m_fixB = param;
+            return Ok{};
+        case GeCmd::MaskRgb:
+            m_maskRgb = param;
+            return Ok{};
+        case GeCmd::MaskAlpha:
+            return Ok{};  // alpha bits are stencil: colour writes keep them anyway
+        case GeCmd::TransferSrc:
+            m_trxSrc = param;
+            return Ok{};
+        case GeCmd::TransferSrcWidth:
+            m_trxSrc = address(m_trxSrc & 0xFFFFFF, param), m_trxSrcWidth = param & 0xFFFF;
+            return Ok{};
+        case GeCmd::TransferDst:
+            m_trxDst = param;
+            return Ok{};
+        case GeCmd::TransferDstWidth:
+            m_trxDst = address(m_trxDst & 0xFFFFFF, param), m_trxDstWidth = param & 0xFFFF;
+            return Ok{};
+        case GeCmd::TransferSrcPos:
+            m_trxSrcPos = param;
+            return Ok{};
+        case GeCmd::TransferDstPos:
+            m_trxDstPos = param;
+            return Ok{};
+        case GeCmd::TransferSize:
+            m_trxSize = param;
+            return Ok{};
+        case GeCmd::TransferStart:
+            return blockTransfer(param);
         case GeCmd::End:
-        case GeCmd::Signal: return Ok{};  // handled by run()
+        case GeCmd::Signal:
+            return Ok{};  // handled by run()
     }
     return invalidInput(fault("command 0x" + hex(op, 2) + " is outside the emulated subset"));
 }
@@ -118,11 +194,15 @@ Status Ge::blockTransfer(std::uint32_t param) {
     const int sx = int(m_trxSrcPos & 0x3FF), sy = int((m_trxSrcPos >> 10) & 0x3FF);
     const int dx = int(m_trxDstPos & 0x3FF), dy = int((m_trxDstPos >> 10) & 0x3FF);
     for (int y = 0; y < h; ++y) {
-        const std::uint32_t from = m_trxSrc + (std::uint32_t(sy + y) * m_trxSrcWidth + std::uint32_t(sx)) * bpp;
-        const std::uint32_t to = m_trxDst + (std::uint32_t(dy + y) * m_trxDstWidth + std::uint32_t(dx)) * bpp;
-        if (!m_memory.valid(from, std::uint32_t(w) * bpp) || !m_memory.valid(to, std::uint32_t(w) * bpp))
+        const std::uint32_t from =
+            m_trxSrc + (std::uint32_t(sy + y) * m_trxSrcWidth + std::uint32_t(sx)) * bpp;
+        const std::uint32_t to =
+            m_trxDst + (std::uint32_t(dy + y) * m_trxDstWidth + std::uint32_t(dx)) * bpp;
+        if (!m_memory.valid(from, std::uint32_t(w) * bpp) ||
+            !m_memory.valid(to, std::uint32_t(w) * bpp))
             return invalidInput(fault("block transfer outside memory"));
-        for (std::uint32_t i = 0; i < std::uint32_t(w) * bpp; ++i) m_memory.gpuWrite8(to + i, m_memory.gpuRead8(from + i));
+        for (std::uint32_t i = 0; i < std::uint32_t(w) * bpp; ++i)
+            m_memory.gpuWrite8(to + i, m_memory.gpuRead8(from + i));
     }
     return Ok{};
 }
@@ -143,11 +223,13 @@ std::uint32_t Ge::vertexSize() const {
 }
 
 Status Ge::readVertex(std::uint32_t at, Vertex& v) const {
-    const std::uint32_t tc = m_vertexType & 3, color = (m_vertexType >> 2) & 7, pos = (m_vertexType >> 7) & 3;
-    if (!(m_vertexType & kVtThrough) || pos != 2 || (tc != 0 && tc != 2 && tc != 3) || (color != 0 && color != 7) ||
-        (m_vertexType & 0x1DDE60u) != 0)
-        return invalidInput(fault("vertex type 0x" + hex(m_vertexType, 6) +
-                                  " is outside the subset (throughmode; s16 position; u16 or float uv; 8888 colour)"));
+    const std::uint32_t tc = m_vertexType & 3, color = (m_vertexType >> 2) & 7,
+                        pos = (m_vertexType >> 7) & 3;
+    if (!(m_vertexType & kVtThrough) || pos != 2 || (tc != 0 && tc != 2 && tc != 3) ||
+        (color != 0 && color != 7) || (m_vertexType & 0x1DDE60u) != 0)
+        return invalidInput(fault(
+            "vertex type 0x" + hex(m_vertexType, 6) +
+            " is outside the subset (throughmode; s16 position; u16 or float uv; 8888 colour)"));
     if (!m_memory.valid(at, vertexSize())) return invalidInput(fault("vertex read outside memory"));
     std::uint32_t offset = 0;
     if (tc == 2) {
@@ -175,7 +257,9 @@ Status Ge::readVertex(std::uint32_t at, Vertex& v) const {
 Status Ge::drawPrimitive(std::uint32_t param) {
     const std::uint32_t type = (param >> 16) & 7, count = param & 0xFFFF;
     const std::uint32_t perPrim = type == kPrimSprites ? 2 : type == kPrimTriangles ? 3 : 0;
-    if (perPrim == 0) return invalidInput(fault("primitive type " + std::to_string(type) + " is outside the subset (triangles 3, sprites 6)"));
+    if (perPrim == 0)
+        return invalidInput(fault("primitive type " + std::to_string(type) +
+                                  " is outside the subset (triangles 3, sprites 6)"));
     const std::uint32_t stride = vertexSize();
     std::vector<Vertex> v(perPrim);
     for (std::uint32_t i = 0; i + perPrim <= count; i += perPrim) {
@@ -191,7 +275,8 @@ Status Ge::drawPrimitive(std::uint32_t param) {
 Status Ge::drawSprite(const Vertex& a, const Vertex& b) {
     // Pixels [x0, x1) x [y0, y1); colour and depth of the second vertex (flat); texture
     // coordinates linear across the rectangle, taken at pixel centres.
-    const int x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x), y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
+    const int x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x), y0 = std::min(a.y, b.y),
+              y1 = std::max(a.y, b.y);
     const Vertex& left = a.x <= b.x ? a : b;
     const Vertex& right = a.x <= b.x ? b : a;
     const Vertex& top = a.y <= b.y ? a : b;
@@ -211,8 +296,10 @@ Status Ge::drawTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
     // coordinates interpolated barycentrically, colours and depth rounded to integers.
     const double area = double(b.x - a.x) * (c.y - a.y) - double(b.y - a.y) * (c.x - a.x);
     if (area == 0) return Ok{};
-    const int minX = std::max({std::min({a.x, b.x, c.x}), m_scissorX1}), maxX = std::min({std::max({a.x, b.x, c.x}), m_scissorX2 + 1});
-    const int minY = std::max({std::min({a.y, b.y, c.y}), m_scissorY1}), maxY = std::min({std::max({a.y, b.y, c.y}), m_scissorY2 + 1});
+    const int minX = std::max({std::min({a.x, b.x, c.x}), m_scissorX1}),
+              maxX = std::min({std::max({a.x, b.x, c.x}), m_scissorX2 + 1});
+    const int minY = std::max({std::min({a.y, b.y, c.y}), m_scissorY1}),
+              maxY = std::min({std::max({a.y, b.y, c.y}), m_scissorY2 + 1});
     auto edge = [&](const Vertex& p, const Vertex& q, double x, double y) {
         return (double(q.x - p.x) * (y - p.y) - double(q.y - p.y) * (x - p.x)) / area;
     };
@@ -229,10 +316,15 @@ Status Ge::drawTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
             if ((wa == 0 && !tlA) || (wb == 0 && !tlB) || (wc == 0 && !tlC)) continue;
             auto mix = [&](double p, double q, double r) { return wa * p + wb * q + wc * r; };
             auto round = [](double v) { return int(std::lround(v)); };
-            Fragment f{x, y, round(mix(a.z, b.z, c.z)),
-                       {round(mix(a.color.r, b.color.r, c.color.r)), round(mix(a.color.g, b.color.g, c.color.g)),
-                        round(mix(a.color.b, b.color.b, c.color.b)), round(mix(a.color.a, b.color.a, c.color.a))},
-                       float(mix(a.u, b.u, c.u)), float(mix(a.v, b.v, c.v))};
+            Fragment f{x,
+                       y,
+                       round(mix(a.z, b.z, c.z)),
+                       {round(mix(a.color.r, b.color.r, c.color.r)),
+                        round(mix(a.color.g, b.color.g, c.color.g)),
+                        round(mix(a.color.b, b.color.b, c.color.b)),
+                        round(mix(a.color.a, b.color.a, c.color.a))},
+                       float(mix(a.u, b.u, c.u)),
+                       float(mix(a.v, b.v, c.v))};
             if (Status st = shade(f); !st) return st;
         }
     }

@@ -23,7 +23,7 @@ struct Rgba8 {
 };
 
 class Ge {
-public:
+  public:
     explicit Ge(Memory& memory) : m_memory(memory) {}
 
     //! Executes the display list at `address` until END. SIGNAL n calls onSignal(n) (the hosts'
@@ -34,7 +34,7 @@ public:
     //! The CLUT buffer inside the GE (1 KiB), as the last CLOAD left it.
     const std::array<std::uint8_t, 1024>& clutBuffer() const { return m_clut; }
 
-private:
+  private:
     struct Vertex {
         float u = 0, v = 0;
         Rgba8 color;
@@ -68,7 +68,8 @@ private:
     bool m_texture = false, m_blend = false, m_depthTest = false, m_depthWrite = true;
     std::uint32_t m_fbAddress = 0, m_fbWidth = 0, m_fbFormat = 3;
     std::uint32_t m_zAddress = 0, m_zWidth = 0;
-    std::uint32_t m_texAddress = 0, m_texBufWidth = 0, m_texLog2W = 0, m_texLog2H = 0, m_texFormat = 3;
+    std::uint32_t m_texAddress = 0, m_texBufWidth = 0, m_texLog2W = 0, m_texLog2H = 0,
+                  m_texFormat = 3;
     std::uint32_t m_clutAddress = 0, m_clutFormat = 0;
     bool m_bilinear = false, m_clampS = false, m_clampT = false;
     std::uint32_t m_texFunc = 0;

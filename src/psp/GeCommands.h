@@ -59,10 +59,26 @@ const char* geCommandName(std::uint8_t opcode);
 
 // Parameter values.
 enum GePixelFormat { kPixel565 = 0, kPixel5551 = 1, kPixel4444 = 2, kPixel8888 = 3 };
-enum GeTextureFormat { kTex565 = 0, kTex5551 = 1, kTex4444 = 2, kTex8888 = 3, kTexT4 = 4, kTexT8 = 5 };
+enum GeTextureFormat {
+    kTex565 = 0,
+    kTex5551 = 1,
+    kTex4444 = 2,
+    kTex8888 = 3,
+    kTexT4 = 4,
+    kTexT8 = 5
+};
 enum GePrimType { kPrimTriangles = 3, kPrimSprites = 6 };
 enum GeTexFunc { kTexModulate = 0, kTexReplace = 3 };
-enum GeCompare { kNever = 0, kAlways = 1, kEqual = 2, kNotEqual = 3, kLess = 4, kLessEqual = 5, kGreater = 6, kGreaterEqual = 7 };
+enum GeCompare {
+    kNever = 0,
+    kAlways = 1,
+    kEqual = 2,
+    kNotEqual = 3,
+    kLess = 4,
+    kLessEqual = 5,
+    kGreater = 6,
+    kGreaterEqual = 7
+};
 enum GeBlendSrc { kSrcSrcAlpha = 2, kSrcInvSrcAlpha = 3, kSrcFixA = 10 };
 enum GeBlendDst { kDstSrcAlpha = 2, kDstInvSrcAlpha = 3, kDstFixB = 10 };
 enum GeBlendOp { kBlendAdd = 0 };

@@ -21,33 +21,55 @@
 namespace flarekit::psp {
 
 namespace {
-int expand5(std::uint32_t v) { return int(v << 3 | v >> 2); }
-int expand6(std::uint32_t v) { return int(v << 2 | v >> 4); }
-int expand4(std::uint32_t v) { return int(v << 4 | v); }
-int clamp255(int v) { return std::clamp(v, 0, 255); }
+int expand5(std::uint32_t v) {
+    return int(v << 3 | v >> 2);
+}
+int expand6(std::uint32_t v) {
+    return int(v << 2 | v >> 4);
+}
+int expand4(std::uint32_t v) {
+    return int(v << 4 | v);
+}
+int clamp255(int v) {
+    return std::clamp(v, 0, 255);
+}
 
 bool depthPasses(std::uint32_t func, int z, int stored) {
     switch (func) {
-        case kNever: return false;
-        case kAlways: return true;
-        case kEqual: return z == stored;
-        case kNotEqual: return z != stored;
-        case kLess: return z < stored;
-        case kLessEqual: return z <= stored;
-        case kGreater: return z > stored;
-        default: return z >= stored;  // kGreaterEqual
+        case kNever:
+            return false;
+        case kAlways:
+            return true;
+        case kEqual:
+            return z == stored;
+        case kNotEqual:
+            return z != stored;
+        case kLess:
+            return z < stored;
+        case kLessEqual:
+            return z <= stored;
+        case kGreater:
+            return z > stored;
+        default:
+            return z >= stored;  // kGreaterEqual
     }
 }
 
 //! Blend factor (0..255 per channel, as a colour) for the source (isSource) or destination.
 Rgba8 blendFactor(std::uint32_t code, bool isSource, Rgba8 s, Rgba8 d, std::uint32_t fix) {
     switch (code) {
-        case 2: return {s.a, s.a, s.a, s.a};                          // SRCALPHA
-        case 3: return {255 - s.a, 255 - s.a, 255 - s.a, 255 - s.a};  // INVSRCALPHA
-        case 4: return {d.a, d.a, d.a, d.a};                          // DSTALPHA
-        case 5: return {255 - d.a, 255 - d.a, 255 - d.a, 255 - d.a};  // INVDSTALPHA
-        case 10: return {int(fix & 0xFF), int((fix >> 8) & 0xFF), int((fix >> 16) & 0xFF), 0};
-        default: break;
+        case 2:
+            return {s.a, s.a, s.a, s.a};  // SRCALPHA
+        case 3:
+            return {255 - s.a, 255 - s.a, 255 - s.a, 255 - s.a};  // INVSRCALPHA
+        case 4:
+            return {d.a, d.a, d.a, d.a};  // DSTALPHA
+        case 5:
+            return {255 - d.a, 255 - d.a, 255 - d.a, 255 - d.a};  // INVDSTALPHA
+        case 10:
+            return {int(fix & 0xFF), int((fix >> 8) & 0xFF), int((fix >> 16) & 0xFF), 0};
+        default:
+            break;
     }
     // 0/1: the other side's colour (src: DSTCOLOR, dst: SRCCOLOR) and its inverse.
     const Rgba8 o = isSource ? d : s;
@@ -56,38 +78,52 @@ Rgba8 blendFactor(std::uint32_t code, bool isSource, Rgba8 s, Rgba8 d, std::uint
 }  // namespace
 
 std::uint32_t encodePixel(Rgba8 c, std::uint32_t format) {
-    const auto r = std::uint32_t(c.r), g = std::uint32_t(c.g), b = std::uint32_t(c.b), a = std::uint32_t(c.a);
+    const auto r = std::uint32_t(c.r), g = std::uint32_t(c.g), b = std::uint32_t(c.b),
+               a = std::uint32_t(c.a);
     switch (format) {
-        case kPixel565: return r >> 3 | (g >> 2) << 5 | (b >> 3) << 11;
-        case kPixel5551: return r >> 3 | (g >> 3) << 5 | (b >> 3) << 10 | (a >> 7) << 15;
-        case kPixel4444: return r >> 4 | (g >> 4) << 4 | (b >> 4) << 8 | (a >> 4) << 12;
-        default: return r | g << 8 | b << 16 | a << 24;
+        case kPixel565:
+            return r >> 3 | (g >> 2) << 5 | (b >> 3) << 11;
+        case kPixel5551:
+            return r >> 3 | (g >> 3) << 5 | (b >> 3) << 10 | (a >> 7) << 15;
+        case kPixel4444:
+            return r >> 4 | (g >> 4) << 4 | (b >> 4) << 8 | (a >> 4) << 12;
+        default:
+            return r | g << 8 | b << 16 | a << 24;
     }
 }
 
 Rgba8 decodePixel(std::uint32_t v, std::uint32_t format) {
     switch (format) {
-        case kPixel565: return {expand5(v & 31), expand6((v >> 5) & 63), expand5((v >> 11) & 31), 255};
-        case kPixel5551: return {expand5(v & 31), expand5((v >> 5) & 31), expand5((v >> 10) & 31), (v >> 15) & 1 ? 255 : 0};
-        case kPixel4444: return {expand4(v & 15), expand4((v >> 4) & 15), expand4((v >> 8) & 15), expand4((v >> 12) & 15)};
-        default: return {int(v & 0xFF), int((v >> 8) & 0xFF), int((v >> 16) & 0xFF), int(v >> 24)};
+        case kPixel565:
+            return {expand5(v & 31), expand6((v >> 5) & 63), expand5((v >> 11) & 31), 255};
+        case kPixel5551:
+            return {expand5(v & 31), expand5((v >> 5) & 31), expand5((v >> 10) & 31),
+                    (v >> 15) & 1 ? 255 : 0};
+        case kPixel4444:
+            return {expand4(v & 15), expand4((v >> 4) & 15), expand4((v >> 8) & 15),
+                    expand4((v >> 12) & 15)};
+        default:
+            return {int(v & 0xFF), int((v >> 8) & 0xFF), int((v >> 16) & 0xFF), int(v >> 24)};
     }
 }
 
 std::uint32_t protectedBits(std::uint32_t maskRgb, std::uint32_t format) {
     // Alpha = stencil bits: always kept by colour writes (see above), whatever PMSKA says.
-    const Rgba8 m{int(maskRgb & 0xFF), int((maskRgb >> 8) & 0xFF), int((maskRgb >> 16) & 0xFF), 0xFF};
+    const Rgba8 m{int(maskRgb & 0xFF), int((maskRgb >> 8) & 0xFF), int((maskRgb >> 16) & 0xFF),
+                  0xFF};
     return encodePixel(m, format);
 }
 
 Rgba8 Ge::clutColor(unsigned index) const {
     // CMODE: format bits 0-1, shift 2-6, mask 8-15, start (x 16) 16-20.
-    const std::uint32_t format = m_clutFormat & 3, shift = (m_clutFormat >> 2) & 31, mask = (m_clutFormat >> 8) & 0xFF;
+    const std::uint32_t format = m_clutFormat & 3, shift = (m_clutFormat >> 2) & 31,
+                        mask = (m_clutFormat >> 8) & 0xFF;
     const std::uint32_t start = ((m_clutFormat >> 16) & 31) << 4;
     const std::uint32_t i = ((index >> shift) & mask) | start;
     if (format == kPixel8888) {
         const std::uint32_t at = (i * 4) & 1023;
-        return decodePixel(std::uint32_t(m_clut[at]) | std::uint32_t(m_clut[at + 1]) << 8 | std::uint32_t(m_clut[at + 2]) << 16 |
+        return decodePixel(std::uint32_t(m_clut[at]) | std::uint32_t(m_clut[at + 1]) << 8 |
+                               std::uint32_t(m_clut[at + 2]) << 16 |
                                std::uint32_t(m_clut[at + 3]) << 24,
                            kPixel8888);
     }
@@ -141,18 +177,20 @@ Status Ge::sampleTexture(float s, float t, Rgba8& out) const {
     const int fu = (baseU >> 4) & 15, fv = (baseV >> 4) & 15;
     const int u0 = baseU >> 8, v0 = baseV >> 8;  // arithmetic shifts: floor
     Rgba8 tl, tr, bl, br;
-    for (auto [texel, du, dv] : {std::tuple{&tl, 0, 0}, std::tuple{&tr, 1, 0}, std::tuple{&bl, 0, 1}, std::tuple{&br, 1, 1}})
+    for (auto [texel, du, dv] : {std::tuple{&tl, 0, 0}, std::tuple{&tr, 1, 0},
+                                 std::tuple{&bl, 0, 1}, std::tuple{&br, 1, 1}})
         if (Status st = fetchTexel(u0 + du, v0 + dv, *texel); !st) return st;
     auto filter = [&](int a, int b, int c, int d) {
         return ((a * (16 - fu) + b * fu) * (16 - fv) + (c * (16 - fu) + d * fu) * fv) / 256;
     };
-    out = {filter(tl.r, tr.r, bl.r, br.r), filter(tl.g, tr.g, bl.g, br.g), filter(tl.b, tr.b, bl.b, br.b),
-           filter(tl.a, tr.a, bl.a, br.a)};
+    out = {filter(tl.r, tr.r, bl.r, br.r), filter(tl.g, tr.g, bl.g, br.g),
+           filter(tl.b, tr.b, bl.b, br.b), filter(tl.a, tr.a, bl.a, br.a)};
     return Ok{};
 }
 
 Status Ge::shade(const Fragment& f) {
-    if (f.x < 0 || f.y < 0 || std::uint32_t(f.x) >= m_fbWidth) return Ok{};  // outside the buffer's stride
+    if (f.x < 0 || f.y < 0 || std::uint32_t(f.x) >= m_fbWidth)
+        return Ok{};  // outside the buffer's stride
     Rgba8 c = f.color;
     if (m_texture) {
         Rgba8 t;
@@ -163,25 +201,34 @@ Status Ge::shade(const Fragment& f) {
             auto mul = [](int a, int b) { return (a * b + 127) / 255; };
             c = {mul(t.r, c.r), mul(t.g, c.g), mul(t.b, c.b), m_texAlpha ? mul(t.a, c.a) : c.a};
         } else {
-            return invalidInput(fault("texture function " + std::to_string(m_texFunc) + " is outside the subset (modulate 0, replace 3)"));
+            return invalidInput(fault("texture function " + std::to_string(m_texFunc) +
+                                      " is outside the subset (modulate 0, replace 3)"));
         }
     }
     if (m_depthTest) {
-        const std::uint32_t zAt = m_zAddress + (std::uint32_t(f.y) * m_zWidth + std::uint32_t(f.x)) * 2;
-        if (!m_memory.valid(zAt, 2)) return invalidInput(fault("depth buffer access outside memory"));
+        const std::uint32_t zAt =
+            m_zAddress + (std::uint32_t(f.y) * m_zWidth + std::uint32_t(f.x)) * 2;
+        if (!m_memory.valid(zAt, 2))
+            return invalidInput(fault("depth buffer access outside memory"));
         const int z = std::clamp(f.z, 0, 65535);
         if (!depthPasses(m_depthFunc, z, m_memory.gpuRead16(zAt))) return Ok{};
         if (m_depthWrite) m_memory.gpuWrite16(zAt, std::uint16_t(z));
     }
     const std::uint32_t bytes = m_fbFormat == kPixel8888 ? 4 : 2;
-    const std::uint32_t at = m_fbAddress + (std::uint32_t(f.y) * m_fbWidth + std::uint32_t(f.x)) * bytes;
+    const std::uint32_t at =
+        m_fbAddress + (std::uint32_t(f.y) * m_fbWidth + std::uint32_t(f.x)) * bytes;
     if (!m_memory.valid(at, bytes)) return invalidInput(fault("framebuffer write outside memory"));
     const std::uint32_t old = bytes == 4 ? m_memory.gpuRead32(at) : m_memory.gpuRead16(at);
     if (m_blend) {
-        if (m_blendOp != kBlendAdd) return invalidInput(fault("blend equation " + std::to_string(m_blendOp) + " is outside the subset (add 0)"));
+        if (m_blendOp != kBlendAdd)
+            return invalidInput(fault("blend equation " + std::to_string(m_blendOp) +
+                                      " is outside the subset (add 0)"));
         const Rgba8 d = decodePixel(old, m_fbFormat);
-        const Rgba8 fs = blendFactor(m_blendSrc, true, c, d, m_fixA), fd = blendFactor(m_blendDst, false, c, d, m_fixB);
-        auto mix = [](int s, int a, int dd, int b) { return clamp255((s * a + dd * b + 127) / 255); };
+        const Rgba8 fs = blendFactor(m_blendSrc, true, c, d, m_fixA),
+                    fd = blendFactor(m_blendDst, false, c, d, m_fixB);
+        auto mix = [](int s, int a, int dd, int b) {
+            return clamp255((s * a + dd * b + 127) / 255);
+        };
         c = {mix(c.r, fs.r, d.r, fd.r), mix(c.g, fs.g, d.g, fd.g), mix(c.b, fs.b, d.b, fd.b), c.a};
     }
     const std::uint32_t keep = protectedBits(m_maskRgb, m_fbFormat);

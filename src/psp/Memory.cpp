@@ -18,11 +18,14 @@ bool Memory::valid(std::uint32_t address, std::uint32_t size) const {
 }
 
 std::uint8_t* Memory::plain(std::uint32_t address) {
-    if (address >= kVramBase && address - kVramBase < kVramSize) return &m_vram[address - kVramBase];
+    if (address >= kVramBase && address - kVramBase < kVramSize)
+        return &m_vram[address - kVramBase];
     if (address >= kRamBase && address - kRamBase < kRamSize) return &m_ram[address - kRamBase];
     return nullptr;
 }
-const std::uint8_t* Memory::plain(std::uint32_t address) const { return const_cast<Memory*>(this)->plain(address); }
+const std::uint8_t* Memory::plain(std::uint32_t address) const {
+    return const_cast<Memory*>(this)->plain(address);
+}
 
 std::uint8_t Memory::read8(std::uint32_t address) const {
     const std::uint8_t* p = plain(address);
@@ -49,8 +52,8 @@ void Memory::writeBytes(std::uint32_t address, const void* data, std::size_t siz
 }
 
 std::uint8_t Memory::gpuRead8(std::uint32_t address) const {
-    if (m_model == MemoryModel::SplitFramebuffers && address >= kVramBase && address - kVramBase < kVramSize &&
-        m_rendered[address - kVramBase])
+    if (m_model == MemoryModel::SplitFramebuffers && address >= kVramBase &&
+        address - kVramBase < kVramSize && m_rendered[address - kVramBase])
         return m_hostVram[address - kVramBase];
     return read8(address);
 }
@@ -61,7 +64,8 @@ std::uint32_t Memory::gpuRead32(std::uint32_t address) const {
     return std::uint32_t(gpuRead16(address)) | std::uint32_t(gpuRead16(address + 2)) << 16;
 }
 void Memory::gpuWrite8(std::uint32_t address, std::uint8_t value) {
-    if (m_model == MemoryModel::SplitFramebuffers && address >= kVramBase && address - kVramBase < kVramSize) {
+    if (m_model == MemoryModel::SplitFramebuffers && address >= kVramBase &&
+        address - kVramBase < kVramSize) {
         m_hostVram[address - kVramBase] = value;
         m_rendered[address - kVramBase] = true;
         return;

@@ -14,15 +14,17 @@
 namespace flarekit::psp {
 
 constexpr std::uint32_t kVramBase = 0x04000000, kVramSize = 2u << 20;  // PSP VRAM
-constexpr std::uint32_t kRamBase = 0x08000000, kRamSize = 4u << 20;    // enough user RAM for the lists
+constexpr std::uint32_t kRamBase = 0x08000000,
+                        kRamSize = 4u << 20;  // enough user RAM for the lists
 
 enum class MemoryModel {
     Unified,           //!< the hardware: the GE reads and writes the one memory
-    SplitFramebuffers  //!< a naive emulator: rendering goes to host framebuffers, CLUT loads miss it
+    SplitFramebuffers  //!< a naive emulator: rendering goes to host framebuffers, CLUT loads miss
+                       //!< it
 };
 
 class Memory {
-public:
+  public:
     explicit Memory(MemoryModel model = MemoryModel::Unified);
     MemoryModel model() const { return m_model; }
 
@@ -49,7 +51,7 @@ public:
     void gpuWrite16(std::uint32_t address, std::uint16_t value);
     void gpuWrite32(std::uint32_t address, std::uint32_t value);
 
-private:
+  private:
     std::uint8_t* plain(std::uint32_t address);
     const std::uint8_t* plain(std::uint32_t address) const;
 

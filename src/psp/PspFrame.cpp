@@ -1,5 +1,6 @@
-// The game frames as display lists (steps 1-6 of the trick as Rydgård's "The lens flare in Burnout" describes it) and the harness that runs them, takes
-// the dumps at the lists' SIGNAL markers and reads the results out of emulated memory.
+// The game frames as display lists (steps 1-6 of the trick as Rydgård's "The lens flare in
+// Burnout" describes it) and the harness that runs them, takes the dumps at the lists' SIGNAL
+// markers and reads the results out of emulated memory.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -16,16 +17,16 @@ namespace {
 // texture's CLUT and the striped depth buffer of the CLUT render. RAM: list, vertices, flare
 // texture, gradient CLUT, depth stripes.
 constexpr int kStride = 512;
-constexpr std::uint32_t kFrame = kVramBase;                                 // 512 x 272 x 4
-constexpr std::uint32_t kDepth = kFrame + kStride * kScreenHeight * 4;      // 512 x 272 x 2
-constexpr std::uint32_t kBackup = kDepth + kStride * kScreenHeight * 2;     // 16 x 16 x 4
-constexpr std::uint32_t kFlareClut = kBackup + 16 * 16 * 4;                 // 256 x 4
-constexpr std::uint32_t kClutDepth = kFlareClut + 256 * 4;                  // 512 x 2
+constexpr std::uint32_t kFrame = kVramBase;                              // 512 x 272 x 4
+constexpr std::uint32_t kDepth = kFrame + kStride * kScreenHeight * 4;   // 512 x 272 x 2
+constexpr std::uint32_t kBackup = kDepth + kStride * kScreenHeight * 2;  // 16 x 16 x 4
+constexpr std::uint32_t kFlareClut = kBackup + 16 * 16 * 4;              // 256 x 4
+constexpr std::uint32_t kClutDepth = kFlareClut + 256 * 4;               // 512 x 2
 constexpr std::uint32_t kList = kRamBase;
 constexpr std::uint32_t kVertices = kRamBase + 0x100000;
-constexpr std::uint32_t kFlareTexture = kRamBase + 0x300000;                // 64 x 64 T8
-constexpr std::uint32_t kGradientClut = kFlareTexture + 64 * 64;            // 256 x 16-bit
-constexpr std::uint32_t kStripes = kGradientClut + 512;                     // 512 x 16-bit
+constexpr std::uint32_t kFlareTexture = kRamBase + 0x300000;      // 64 x 64 T8
+constexpr std::uint32_t kGradientClut = kFlareTexture + 64 * 64;  // 256 x 16-bit
+constexpr std::uint32_t kStripes = kGradientClut + 512;           // 512 x 16-bit
 
 //! Burnout's mask and chain (the blog): 14x14, then 8, 4, 2 and one value over 2x2 pixels.
 constexpr int kMask = 14;
@@ -49,7 +50,8 @@ constexpr int kStripeLow = 0, kStripeHigh = 32767, kClutPassZ = 16384;
 constexpr std::uint32_t kHighByteOnly = 0x001FFF;
 
 std::uint32_t rgba(int r, int g, int b, int a = 255) {
-    return std::uint32_t(r) | std::uint32_t(g) << 8 | std::uint32_t(b) << 16 | std::uint32_t(a) << 24;
+    return std::uint32_t(r) | std::uint32_t(g) << 8 | std::uint32_t(b) << 16 |
+           std::uint32_t(a) << 24;
 }
 
 //! Data the CPU puts in memory before the GE runs: the flare texture (a glow and a ring, as
@@ -61,13 +63,15 @@ void uploadAssets(Memory& m) {
             const double r = std::hypot(x + 0.5 - 32, y + 0.5 - 32) / 32;
             double v = std::pow(std::max(0.0, 1 - r), 2.0);
             v += 0.6 * std::exp(-std::pow((r - 0.82) / 0.05, 2));
-            m.write8(kFlareTexture + std::uint32_t(y * 64 + x), std::uint8_t(std::lround(255 * std::min(1.0, v))));
+            m.write8(kFlareTexture + std::uint32_t(y * 64 + x),
+                     std::uint8_t(std::lround(255 * std::min(1.0, v))));
         }
     for (int i = 0; i < 256; ++i) {
         m.write32(kFlareClut + std::uint32_t(i) * 4, rgba(i, i * 230 / 255, i * 180 / 255, 255));
         m.write16(kGradientClut + std::uint32_t(i) * 2, std::uint16_t(i << 8));
     }
-    for (int i = 0; i < 512; ++i) m.write16(kStripes + std::uint32_t(i) * 2, std::uint16_t(i % 2 ? kStripeHigh : kStripeLow));
+    for (int i = 0; i < 512; ++i)
+        m.write16(kStripes + std::uint32_t(i) * 2, std::uint16_t(i % 2 ? kStripeHigh : kStripeLow));
 }
 
 //! Step 1: sky (gouraud), the sun (a 24-gon), the occluders (one sprite per run of a row).
@@ -80,18 +84,24 @@ void drawScene(DisplayList& list, const PspFrameInput& in) {
     list.writeMask(0);
     list.depthTest(true, kAlways, true);
     const std::uint32_t top = rgba(40, 90, 200), bottom = rgba(250, 170, 110);
-    list.triangles({{0, 0, top, 0, 0, 0}, {0, 0, top, kScreenWidth, 0, 0}, {0, 0, bottom, 0, kScreenHeight, 0},
-                    {0, 0, top, kScreenWidth, 0, 0}, {0, 0, bottom, kScreenWidth, kScreenHeight, 0},
+    list.triangles({{0, 0, top, 0, 0, 0},
+                    {0, 0, top, kScreenWidth, 0, 0},
+                    {0, 0, bottom, 0, kScreenHeight, 0},
+                    {0, 0, top, kScreenWidth, 0, 0},
+                    {0, 0, bottom, kScreenWidth, kScreenHeight, 0},
                     {0, 0, bottom, 0, kScreenHeight, 0}});
     std::vector<ListVertex> sun;
     constexpr int kSides = 24;
     constexpr double kRadius = 6.5;
     for (int i = 0; i < kSides; ++i) {
-        const double a0 = 2 * std::numbers::pi * i / kSides, a1 = 2 * std::numbers::pi * (i + 1) / kSides;
+        const double a0 = 2 * std::numbers::pi * i / kSides,
+                     a1 = 2 * std::numbers::pi * (i + 1) / kSides;
         const std::uint32_t c = rgba(255, 250, 225);
         sun.push_back({0, 0, c, in.sunX, in.sunY, 0});
-        sun.push_back({0, 0, c, in.sunX + int(std::lround(kRadius * std::cos(a0))), in.sunY + int(std::lround(kRadius * std::sin(a0))), 0});
-        sun.push_back({0, 0, c, in.sunX + int(std::lround(kRadius * std::cos(a1))), in.sunY + int(std::lround(kRadius * std::sin(a1))), 0});
+        sun.push_back({0, 0, c, in.sunX + int(std::lround(kRadius * std::cos(a0))),
+                       in.sunY + int(std::lround(kRadius * std::sin(a0))), 0});
+        sun.push_back({0, 0, c, in.sunX + int(std::lround(kRadius * std::cos(a1))),
+                       in.sunY + int(std::lround(kRadius * std::sin(a1))), 0});
     }
     list.triangles(sun);
     for (int y = 0; y < kScreenHeight; ++y) {
@@ -134,14 +144,16 @@ void burnoutChainAndFlare(DisplayList& list, const PspFrameInput& in, int rx, in
     list.scissor(0, 0, kStride - 1, kScreenHeight - 1);
     list.textureFunction(kTexReplace);
     list.texture(kFrame + std::uint32_t(ry) * kStride * 4, kStride, 9, 4, kTex8888, true);
-    list.sprite(kLevel8X, 0, kLevel8X + 8, 8, float(rx), 0, float(rx + kMask), float(kMask), 0xFFFFFFFF);
+    list.sprite(kLevel8X, 0, kLevel8X + 8, 8, float(rx), 0, float(rx + kMask), float(kMask),
+                0xFFFFFFFF);
     list.signal(3);
     list.texture(kFrame, kStride, 9, 3, kTex8888, true);
     list.sprite(kLevel4X, 0, kLevel4X + 4, 4, kLevel8X, 0, kLevel8X + 8, 8, 0xFFFFFFFF);
     list.signal(4);
     list.sprite(kLevel2X, 0, kLevel2X + 2, 2, kLevel4X, 0, kLevel4X + 4, 4, 0xFFFFFFFF);
     list.signal(5);
-    list.sprite(kFinalX, 0, kFinalX + 2, 2, kLevel2X + 1, 1, kLevel2X + 1, 1, 0xFFFFFFFF);  // the 2x2's centre
+    list.sprite(kFinalX, 0, kFinalX + 2, 2, kLevel2X + 1, 1, kLevel2X + 1, 1,
+                0xFFFFFFFF);  // the 2x2's centre
     list.signal(6);
     list.enable(GeCmd::TextureMapEnable, false);
     // 4. Restore.
@@ -170,12 +182,19 @@ void burnoutChainAndFlare(DisplayList& list, const PspFrameInput& in, int rx, in
     list.texture(kFlareTexture, 64, 6, 6, kTexT8, true);
     list.textureFunction(kTexModulate);
     list.blend(true, kSrcSrcAlpha, kDstFixB, 0, 0xFFFFFF);
-    struct Element { double along; int size; std::uint32_t tint; };
-    const Element elements[] = {{0.0, 120, rgba(255, 240, 210)}, {0.45, 22, rgba(120, 200, 255)}, {0.75, 46, rgba(255, 170, 90)},
-                                {1.15, 18, rgba(140, 255, 160)}, {1.45, 70, rgba(200, 140, 255)}, {1.9, 34, rgba(255, 210, 120)}};
+    struct Element {
+        double along;
+        int size;
+        std::uint32_t tint;
+    };
+    const Element elements[] = {{0.0, 120, rgba(255, 240, 210)}, {0.45, 22, rgba(120, 200, 255)},
+                                {0.75, 46, rgba(255, 170, 90)},  {1.15, 18, rgba(140, 255, 160)},
+                                {1.45, 70, rgba(200, 140, 255)}, {1.9, 34, rgba(255, 210, 120)}};
     for (const Element& e : elements) {
-        const double cx = in.sunX + (kScreenWidth / 2.0 - in.sunX) * e.along, cy = in.sunY + (kScreenHeight / 2.0 - in.sunY) * e.along;
-        const int x0 = int(std::lround(cx - e.size / 2.0)), y0 = int(std::lround(cy - e.size / 2.0));
+        const double cx = in.sunX + (kScreenWidth / 2.0 - in.sunX) * e.along,
+                     cy = in.sunY + (kScreenHeight / 2.0 - in.sunY) * e.along;
+        const int x0 = int(std::lround(cx - e.size / 2.0)),
+                  y0 = int(std::lround(cy - e.size / 2.0));
         list.sprite(x0, y0, x0 + e.size, y0 + e.size, 0, 0, 64, 64, e.tint);
     }
     list.blend(false);
@@ -192,7 +211,8 @@ void ridgeRacerSumAndFlare(DisplayList& list, const PspFrameInput& in, int rx, i
     list.blend(true, kSrcFixA, kDstFixB, 0x010101, 0xFFFFFF);
     for (int j = 0; j < kRidgeMask; ++j)
         for (int i = 0; i < kRidgeMask; ++i)
-            list.sprite(480, 0, 481, 1, float(rx + i), float(j), float(rx + i + 1), float(j + 1), 0xFFFFFFFF);
+            list.sprite(480, 0, 481, 1, float(rx + i), float(j), float(rx + i + 1), float(j + 1),
+                        0xFFFFFFFF);
     list.blend(false);
     list.enable(GeCmd::TextureMapEnable, false);
     list.signal(3);
@@ -201,9 +221,15 @@ void ridgeRacerSumAndFlare(DisplayList& list, const PspFrameInput& in, int rx, i
     list.texture(kRidgeSum, 16, 0, 0, kTex8888, false);
     list.textureFunction(kTexModulate);
     list.blend(true, kSrcFixA, kDstFixB, 0xFFFFFF, 0xFFFFFF);
-    struct Hexagon { double along; int radius; std::uint32_t centre, rim; };
-    const Hexagon hexagons[] = {{0.3, 14, rgba(160, 200, 255), rgba(40, 60, 120)}, {0.7, 24, rgba(255, 190, 120), rgba(90, 40, 20)},
-                                {1.2, 10, rgba(170, 255, 170), rgba(30, 80, 30)}, {1.6, 34, rgba(210, 160, 255), rgba(50, 30, 90)}};
+    struct Hexagon {
+        double along;
+        int radius;
+        std::uint32_t centre, rim;
+    };
+    const Hexagon hexagons[] = {{0.3, 14, rgba(160, 200, 255), rgba(40, 60, 120)},
+                                {0.7, 24, rgba(255, 190, 120), rgba(90, 40, 20)},
+                                {1.2, 10, rgba(170, 255, 170), rgba(30, 80, 30)},
+                                {1.6, 34, rgba(210, 160, 255), rgba(50, 30, 90)}};
     for (const Hexagon& h : hexagons) {
         const int cx = int(std::lround(in.sunX + (kScreenWidth / 2.0 - in.sunX) * h.along));
         const int cy = int(std::lround(in.sunY + (kScreenHeight / 2.0 - in.sunY) * h.along));
@@ -211,8 +237,10 @@ void ridgeRacerSumAndFlare(DisplayList& list, const PspFrameInput& in, int rx, i
         for (int k = 0; k < 6; ++k) {
             const double a0 = std::numbers::pi / 3 * k, a1 = std::numbers::pi / 3 * (k + 1);
             v.push_back({0.5f, 0.5f, h.centre, cx, cy, 0});
-            v.push_back({0.5f, 0.5f, h.rim, cx + int(std::lround(h.radius * std::cos(a0))), cy + int(std::lround(h.radius * std::sin(a0))), 0});
-            v.push_back({0.5f, 0.5f, h.rim, cx + int(std::lround(h.radius * std::cos(a1))), cy + int(std::lround(h.radius * std::sin(a1))), 0});
+            v.push_back({0.5f, 0.5f, h.rim, cx + int(std::lround(h.radius * std::cos(a0))),
+                         cy + int(std::lround(h.radius * std::sin(a0))), 0});
+            v.push_back({0.5f, 0.5f, h.rim, cx + int(std::lround(h.radius * std::cos(a1))),
+                         cy + int(std::lround(h.radius * std::sin(a1))), 0});
         }
         list.triangles(v);
     }
@@ -222,10 +250,12 @@ void ridgeRacerSumAndFlare(DisplayList& list, const PspFrameInput& in, int rx, i
 
 //! Reads pixels (8888) of the frame as the GE sees them, scaled by `zoom` (nearest).
 Image8 framePixels(const Memory& m, int x0, int y0, int w, int h, int zoom = 1) {
-    Image8 image{w * zoom, h * zoom, 3, std::vector<std::uint8_t>(std::size_t(w * zoom * h * zoom * 3))};
+    Image8 image{w * zoom, h * zoom, 3,
+                 std::vector<std::uint8_t>(std::size_t(w * zoom * h * zoom * 3))};
     for (int y = 0; y < h * zoom; ++y)
         for (int x = 0; x < w * zoom; ++x) {
-            const std::uint32_t p = m.gpuRead32(kFrame + std::uint32_t((y0 + y / zoom) * kStride + x0 + x / zoom) * 4);
+            const std::uint32_t p =
+                m.gpuRead32(kFrame + std::uint32_t((y0 + y / zoom) * kStride + x0 + x / zoom) * 4);
             std::uint8_t* o = &image.pixels[std::size_t((y * w * zoom + x) * 3)];
             o[0] = std::uint8_t(p), o[1] = std::uint8_t(p >> 8), o[2] = std::uint8_t(p >> 16);
         }
@@ -258,27 +288,32 @@ Image8 clutStrip(const std::array<std::uint32_t, 256>& clut) {
 
 Result<std::vector<std::uint8_t>> occludersFromMask(const Image8& mask, const std::string& name) {
     if (mask.width != kScreenWidth || mask.height != kScreenHeight)
-        return invalidInput(name + ": occluder mask must be " + std::to_string(kScreenWidth) + "x" + std::to_string(kScreenHeight) +
-                            " (the PSP screen), got " + std::to_string(mask.width) + "x" + std::to_string(mask.height));
+        return invalidInput(name + ": occluder mask must be " + std::to_string(kScreenWidth) + "x" +
+                            std::to_string(kScreenHeight) + " (the PSP screen), got " +
+                            std::to_string(mask.width) + "x" + std::to_string(mask.height));
     std::vector<std::uint8_t> occluders(std::size_t(kScreenWidth * kScreenHeight));
-    for (std::size_t i = 0; i < occluders.size(); ++i) occluders[i] = mask.pixels[i * std::size_t(mask.channels)] != 0;
+    for (std::size_t i = 0; i < occluders.size(); ++i)
+        occluders[i] = mask.pixels[i * std::size_t(mask.channels)] != 0;
     return occluders;
 }
 
 Result<PspFrameResult> runPspFrame(PspTrick trick, const PspFrameInput& in) {
     if (in.occluders.size() != std::size_t(kScreenWidth * kScreenHeight))
-        return invalidInput("occluders: expected " + std::to_string(kScreenWidth * kScreenHeight) + " values (480x272), got " +
-                            std::to_string(in.occluders.size()));
+        return invalidInput("occluders: expected " + std::to_string(kScreenWidth * kScreenHeight) +
+                            " values (480x272), got " + std::to_string(in.occluders.size()));
     if (std::abs(in.sunX) > 8192 || std::abs(in.sunY) > 8192)
-        return invalidInput("sun: position (" + std::to_string(in.sunX) + ", " + std::to_string(in.sunY) + ") is beyond +-8192");
+        return invalidInput("sun: position (" + std::to_string(in.sunX) + ", " +
+                            std::to_string(in.sunY) + ") is beyond +-8192");
     Memory memory(in.naive ? MemoryModel::SplitFramebuffers : MemoryModel::Unified);
     uploadAssets(memory);
     PspFrameResult out;
-    out.sunInFrame = in.sunX >= 0 && in.sunX < kScreenWidth && in.sunY >= 0 && in.sunY < kScreenHeight;
+    out.sunInFrame =
+        in.sunX >= 0 && in.sunX < kScreenWidth && in.sunY >= 0 && in.sunY < kScreenHeight;
     const int size = trick == PspTrick::Burnout ? kMask : kRidgeMask;
     out.maskPixels = size * size;
     // The mask region: centred on the sun, kept inside the screen near its edges.
-    const int rx = std::clamp(in.sunX - size / 2, 0, kScreenWidth - size), ry = std::clamp(in.sunY - size / 2, 0, kScreenHeight - size);
+    const int rx = std::clamp(in.sunX - size / 2, 0, kScreenWidth - size),
+              ry = std::clamp(in.sunY - size / 2, 0, kScreenHeight - size);
 
     DisplayList list(memory, kList, kVertices);
     drawScene(list, in);
@@ -305,7 +340,8 @@ Result<PspFrameResult> runPspFrame(PspTrick trick, const PspFrameInput& in) {
                 break;
             case 2: {
                 const Image8 mask = framePixels(memory, rx, ry, size, size);
-                for (std::size_t i = 0; i < mask.pixels.size(); i += 3) out.visiblePixels += mask.pixels[i] == 255;
+                for (std::size_t i = 0; i < mask.pixels.size(); i += 3)
+                    out.visiblePixels += mask.pixels[i] == 255;
                 keep("02-mask", framePixels(memory, rx, ry, size, size, 16));
                 break;
             }
@@ -315,17 +351,30 @@ Result<PspFrameResult> runPspFrame(PspTrick trick, const PspFrameInput& in) {
                 else
                     keep("03-sum", framePixels(memory, 480, 0, 1, 1, 64));
                 break;
-            case 4: keep("04-level-4x4", framePixels(memory, kLevel4X, 0, 4, 4, 16)); break;
-            case 5: keep("05-level-2x2", framePixels(memory, kLevel2X, 0, 2, 2, 16)); break;
-            case 6: keep("06-level-1-over-2x2", framePixels(memory, kFinalX, 0, 2, 2, 16)); break;
-            case 7:
-                out.regionRestored = framePixels(memory, rx, ry, size, size).pixels == regionBefore.pixels;
-                keep("07-restored", framePixels(memory, 0, 0, kScreenWidth, kScreenHeight));
-                if (trick == PspTrick::Burnout) keep("08-clut-before", clutStrip(out.clutBefore));  // step 5 is next
+            case 4:
+                keep("04-level-4x4", framePixels(memory, kLevel4X, 0, 4, 4, 16));
                 break;
-            case 8: keep("09-clut-after", clutStrip(clutInMemory(memory))); break;
-            case 9: keep("10-final", framePixels(memory, 0, 0, kScreenWidth, kScreenHeight)); break;
-            default: break;
+            case 5:
+                keep("05-level-2x2", framePixels(memory, kLevel2X, 0, 2, 2, 16));
+                break;
+            case 6:
+                keep("06-level-1-over-2x2", framePixels(memory, kFinalX, 0, 2, 2, 16));
+                break;
+            case 7:
+                out.regionRestored =
+                    framePixels(memory, rx, ry, size, size).pixels == regionBefore.pixels;
+                keep("07-restored", framePixels(memory, 0, 0, kScreenWidth, kScreenHeight));
+                if (trick == PspTrick::Burnout)
+                    keep("08-clut-before", clutStrip(out.clutBefore));  // step 5 is next
+                break;
+            case 8:
+                keep("09-clut-after", clutStrip(clutInMemory(memory)));
+                break;
+            case 9:
+                keep("10-final", framePixels(memory, 0, 0, kScreenWidth, kScreenHeight));
+                break;
+            default:
+                break;
         }
     };
     Ge ge(memory);

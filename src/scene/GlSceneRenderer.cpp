@@ -43,10 +43,10 @@ gl::Texture makeMultisample(GLenum format, int samples, int w, int h) {
 
 struct SceneRenderer::Impl {
     int width = 0, height = 0, samples = 1;
-    gl::Texture color, depth;            // single-sample results
-    gl::Framebuffer target;              // color + depth
-    gl::Texture msColor, msDepth;        // MSAA only
-    gl::Framebuffer msTarget;            // MSAA only
+    gl::Texture color, depth;      // single-sample results
+    gl::Framebuffer target;        // color + depth
+    gl::Texture msColor, msDepth;  // MSAA only
+    gl::Framebuffer msTarget;      // MSAA only
     bool shadows = true;
     double shadowRange = 160;
     gl::Texture shadowMap;
@@ -64,9 +64,15 @@ SceneRenderer::~SceneRenderer() = default;
 SceneRenderer::SceneRenderer(SceneRenderer&&) noexcept = default;
 SceneRenderer& SceneRenderer::operator=(SceneRenderer&&) noexcept = default;
 
-int SceneRenderer::width() const { return m->width; }
-int SceneRenderer::height() const { return m->height; }
-int SceneRenderer::msaaSamples() const { return m->samples; }
+int SceneRenderer::width() const {
+    return m->width;
+}
+int SceneRenderer::height() const {
+    return m->height;
+}
+int SceneRenderer::msaaSamples() const {
+    return m->samples;
+}
 
 SceneTargets sceneTargets(const SceneRenderer& r) {
     const SceneRenderer::Impl& m = *r.m;
@@ -81,8 +87,8 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
     GLint maxSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
     if (samples > maxSamples) {
-        return invalidInput("msaa: " + std::to_string(samples) + " samples requested, the GL supports " +
-                            std::to_string(maxSamples));
+        return invalidInput("msaa: " + std::to_string(samples) +
+                            " samples requested, the GL supports " + std::to_string(maxSamples));
     }
     auto impl = std::make_unique<Impl>();
     impl->width = scene.width;
@@ -96,7 +102,8 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
     impl->shadowRange = options.shadowRange;
     if (options.shadows) {
         impl->shadowMap = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize);
-        glTextureParameteri(impl->shadowMap.get(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTextureParameteri(impl->shadowMap.get(), GL_TEXTURE_COMPARE_MODE,
+                            GL_COMPARE_REF_TO_TEXTURE);
         glTextureParameteri(impl->shadowMap.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
         GLuint fb = 0;
         glCreateFramebuffers(1, &fb);
@@ -107,8 +114,9 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
         if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
             return internalError("OpenGL: shadow-map framebuffer incomplete");
         }
-        auto shadowPass = gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
-                                           {GL_FRAGMENT_SHADER, "shadow.frag", shaders::shadow_frag}});
+        auto shadowPass =
+            gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
+                             {GL_FRAGMENT_SHADER, "shadow.frag", shaders::shadow_frag}});
         if (!shadowPass) return shadowPass.error();
         impl->shadowPass = std::move(*shadowPass);
     }
@@ -141,8 +149,9 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
 Status SceneRenderer::setGeometry(const Scene& scene) {
     if (scene.width != m->width || scene.height != m->height) {
         return invalidInput("scene renderer: geometry for a " + std::to_string(scene.width) + "x" +
-                            std::to_string(scene.height) + " scene given to a " + std::to_string(m->width) + "x" +
-                            std::to_string(m->height) + " renderer");
+                            std::to_string(scene.height) + " scene given to a " +
+                            std::to_string(m->width) + "x" + std::to_string(m->height) +
+                            " renderer");
     }
     const std::vector<MeshVertex> mesh = buildSceneMesh(scene);
     m->vertices.reset();
@@ -176,8 +185,9 @@ std::array<float, 16> SceneRenderer::Impl::drawShadowMap(const Scene& scene) {
     sunCamera.position = focus + scene.sun.direction * kShadowEyeDistance;
     sunCamera.lookAt = focus;
     sunCamera.up = std::abs(scene.sun.direction.y) < 0.99 ? Vec3{0, 1, 0} : Vec3{0, 0, -1};
-    const Mat4 sunViewProjection = multiply(
-        orthographicMatrix(m.shadowRange, m.shadowRange, 0.0, 2 * kShadowEyeDistance), lookAtMatrix(sunCamera));
+    const Mat4 sunViewProjection =
+        multiply(orthographicMatrix(m.shadowRange, m.shadowRange, 0.0, 2 * kShadowEyeDistance),
+                 lookAtMatrix(sunCamera));
     const GLuint p = m.shadowPass.get();
     const auto vp = toFloat(sunViewProjection);
     glProgramUniformMatrix4fv(p, gl::uniformLocation(p, "viewProjection"), 1, GL_FALSE, vp.data());
@@ -206,7 +216,8 @@ std::array<float, 16> SceneRenderer::Impl::drawShadowMap(const Scene& scene) {
 
 Status SceneRenderer::draw(const Scene& scene) {
     const int w = m->width, h = m->height;
-    const Mat4 viewProjection = multiply(perspectiveMatrix(scene.camera, double(w) / h), lookAtMatrix(scene.camera));
+    const Mat4 viewProjection =
+        multiply(perspectiveMatrix(scene.camera, double(w) / h), lookAtMatrix(scene.camera));
     const auto vp = toFloat(viewProjection), inv = toFloat(inverse(viewProjection));
     const Vec3 sunRadiance = scene.sun.color * scene.sun.intensity;
 
@@ -220,7 +231,8 @@ Status SceneRenderer::draw(const Scene& scene) {
     glClear(GL_DEPTH_BUFFER_BIT);
 
     const GLuint s = m->sky.get();
-    glProgramUniformMatrix4fv(s, gl::uniformLocation(s, "inverseViewProjection"), 1, GL_FALSE, inv.data());
+    glProgramUniformMatrix4fv(s, gl::uniformLocation(s, "inverseViewProjection"), 1, GL_FALSE,
+                              inv.data());
     glProgramUniform2f(s, gl::uniformLocation(s, "viewportSize"), float(w), float(h));
     gl::setUniform(s, "sunDirection", scene.sun.direction);
     gl::setUniform(s, "sunRadiance", sunRadiance);
@@ -239,15 +251,18 @@ Status SceneRenderer::draw(const Scene& scene) {
         glProgramUniform1i(o, gl::uniformLocation(o, "shadowsEnabled"), m->shadows ? 1 : 0);
         if (m->shadows) {
             const auto shadow = m->drawShadowMap(scene);
-            glProgramUniformMatrix4fv(o, gl::uniformLocation(o, "shadowMatrix"), 1, GL_FALSE, shadow.data());
-            glProgramUniform1f(o, gl::uniformLocation(o, "shadowTexel"), float(2 * m->shadowRange / kShadowMapSize));
+            glProgramUniformMatrix4fv(o, gl::uniformLocation(o, "shadowMatrix"), 1, GL_FALSE,
+                                      shadow.data());
+            glProgramUniform1f(o, gl::uniformLocation(o, "shadowTexel"),
+                               float(2 * m->shadowRange / kShadowMapSize));
             glProgramUniform1i(o, gl::uniformLocation(o, "sunShadow"), 0);
             glBindTextureUnit(0, m->shadowMap.get());
             glBindFramebuffer(GL_FRAMEBUFFER, m->samples > 1 ? m->msTarget.get() : m->target.get());
             glViewport(0, 0, w, h);
             glBindVertexArray(m->vao.get());
         }
-        glProgramUniformMatrix4fv(o, gl::uniformLocation(o, "viewProjection"), 1, GL_FALSE, vp.data());
+        glProgramUniformMatrix4fv(o, gl::uniformLocation(o, "viewProjection"), 1, GL_FALSE,
+                                  vp.data());
         gl::setUniform(o, "sunDirection", scene.sun.direction);
         gl::setUniform(o, "cameraPosition", scene.camera.position);
         gl::setUniform(o, "sunRadiance", sunRadiance);
@@ -264,14 +279,18 @@ Status SceneRenderer::draw(const Scene& scene) {
     }
     if (m->samples > 1) {
         // Resolve: colour averages the samples; depth blits must use NEAREST (one sample).
-        glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h,
+                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h,
+                               GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return gl::checkError("scene render");
 }
 
-Result<Image> SceneRenderer::readColor() const { return gl::readTextureRgba(m->color.get(), m->width, m->height); }
+Result<Image> SceneRenderer::readColor() const {
+    return gl::readTextureRgba(m->color.get(), m->width, m->height);
+}
 
 Result<Image> renderScene(const Scene& scene, const RenderOptions& options) {
     auto renderer = SceneRenderer::create(scene, options);

@@ -8,12 +8,14 @@ namespace flarekit {
 
 namespace {
 void push(std::vector<MeshVertex>& out, Vec3 p, Vec3 n, Vec3 c) {
-    out.push_back({{float(p.x), float(p.y), float(p.z)}, {float(n.x), float(n.y), float(n.z)},
+    out.push_back({{float(p.x), float(p.y), float(p.z)},
+                   {float(n.x), float(n.y), float(n.z)},
                    {float(c.x), float(c.y), float(c.z)}});
 }
 
 Vec3 unitSphere(int slice, int stack) {
-    const double theta = std::numbers::pi * stack / kSphereStacks, phi = 2 * std::numbers::pi * slice / kSphereSlices;
+    const double theta = std::numbers::pi * stack / kSphereStacks,
+                 phi = 2 * std::numbers::pi * slice / kSphereSlices;
     return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
 }
 }  // namespace
@@ -23,8 +25,8 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
     for (const Sphere& s : scene.spheres) {
         for (int st = 0; st < kSphereStacks; ++st) {
             for (int sl = 0; sl < kSphereSlices; ++sl) {
-                const Vec3 a = unitSphere(sl, st), b = unitSphere(sl + 1, st), c = unitSphere(sl + 1, st + 1),
-                           d = unitSphere(sl, st + 1);
+                const Vec3 a = unitSphere(sl, st), b = unitSphere(sl + 1, st),
+                           c = unitSphere(sl + 1, st + 1), d = unitSphere(sl, st + 1);
                 for (Vec3 n : {a, b, c, a, c, d}) push(out, s.center + n * s.radius, n, s.color);
             }
         }
@@ -37,7 +39,8 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
                 const double v = side ? hi[axis] : lo[axis];
                 const int u1 = (axis + 1) % 3, u2 = (axis + 2) % 3;
                 Vec3 corner[4];
-                const double uv[4][2] = {{lo[u1], lo[u2]}, {hi[u1], lo[u2]}, {hi[u1], hi[u2]}, {lo[u1], hi[u2]}};
+                const double uv[4][2] = {
+                    {lo[u1], lo[u2]}, {hi[u1], lo[u2]}, {hi[u1], hi[u2]}, {lo[u1], hi[u2]}};
                 for (int k = 0; k < 4; ++k) {
                     double p[3];
                     p[axis] = v;
@@ -78,7 +81,8 @@ std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene) {
     }
     for (const Triangle& t : scene.triangles) {
         const Vec3 c = (t.a + t.b + t.c) * (1.0 / 3.0);
-        out.push_back({first, 3, c, std::max({length(t.a - c), length(t.b - c), length(t.c - c)}), 0.0});
+        out.push_back(
+            {first, 3, c, std::max({length(t.a - c), length(t.b - c), length(t.c - c)}), 0.0});
         first += 3;
     }
     return out;

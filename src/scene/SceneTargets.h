@@ -9,11 +9,13 @@
 namespace flarekit {
 
 struct SceneTargets {
-    GLuint color = 0;             //!< RGBA16F, single-sample (resolved)
-    GLuint depth = 0;             //!< DEPTH_COMPONENT32F, single-sample (resolved)
-    GLuint framebuffer = 0;       //!< holds color + depth
-    GLuint multisampleDepth = 0;  //!< with MSAA, the depth before its resolve (GL_TEXTURE_2D_MULTISAMPLE); else 0
-    GLuint meshVertexArray = 0;   //!< the uploaded objects (positions, normals, colours at attributes 0-2)
+    GLuint color = 0;        //!< RGBA16F, single-sample (resolved)
+    GLuint depth = 0;        //!< DEPTH_COMPONENT32F, single-sample (resolved)
+    GLuint framebuffer = 0;  //!< holds color + depth
+    GLuint multisampleDepth =
+        0;  //!< with MSAA, the depth before its resolve (GL_TEXTURE_2D_MULTISAMPLE); else 0
+    GLuint meshVertexArray =
+        0;  //!< the uploaded objects (positions, normals, colours at attributes 0-2)
     int msaaSamples = 1;
 };
 

@@ -15,14 +15,15 @@ struct GpuTemporalFilter::Impl {
     std::array<gl::Texture, 2> states;
     std::array<gl::Framebuffer, 2> targets;
     gl::Texture consumed;  // R32F: the raw coverage the last update used (attachment 1 of both)
-    int newest = 0;  // index of the texture holding the newest state
+    int newest = 0;        // index of the texture holding the newest state
     bool started = false;
 };
 
 Result<GpuTemporalFilter> GpuTemporalFilter::create(const TemporalParams& params) {
     if (Status s = validateTemporalParams(params); !s) return s.error();
-    auto program = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                    {GL_FRAGMENT_SHADER, "temporal_filter.frag", shaders::temporal_filter_frag}});
+    auto program = gl::linkProgram(
+        {{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+         {GL_FRAGMENT_SHADER, "temporal_filter.frag", shaders::temporal_filter_frag}});
     if (!program) return program.error();
     auto m = std::make_unique<Impl>();
     m->params = params;
@@ -52,13 +53,16 @@ GpuChannel GpuTemporalFilter::state(GpuStateChannel channel) const {
     return {m->states[std::size_t(m->newest)].get(), int(channel)};
 }
 
-Status GpuTemporalFilter::update(GpuChannel rawCoverage, Point sunPixel, bool sunInFront, int width, int height,
-                                 double dtSeconds) {
-    if (rawCoverage.channel < 0 || rawCoverage.channel > 3) return invalidInput("temporal filter: channel must be 0..3");
+Status GpuTemporalFilter::update(GpuChannel rawCoverage, Point sunPixel, bool sunInFront, int width,
+                                 int height, double dtSeconds) {
+    if (rawCoverage.channel < 0 || rawCoverage.channel > 3)
+        return invalidInput("temporal filter: channel must be 0..3");
     const GLuint p = m->program.get();
     glProgramUniform1i(p, gl::uniformLocation(p, "rawChannel"), rawCoverage.channel);
     const TemporalParams& t = m->params;
-    auto set = [p](const char* name, double v) { glProgramUniform1f(p, gl::uniformLocation(p, name), float(v)); };
+    auto set = [p](const char* name, double v) {
+        glProgramUniform1f(p, gl::uniformLocation(p, name), float(v));
+    };
     glProgramUniform1i(p, gl::uniformLocation(p, "started"), m->started ? 1 : 0);
     set("dtSeconds", dtSeconds);
     set("attackSeconds", t.attackSeconds);

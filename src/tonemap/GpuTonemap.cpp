@@ -1,9 +1,9 @@
 // GpuTonemap: shaders/tonemap_aces.frag from the renderer's HDR colour into an RGBA16F
 // display target (linear [0, 1], like tonemapAcesFitted's output).
-#include "scene/SceneTargets.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit {
 
@@ -19,8 +19,8 @@ Result<GpuTonemap> GpuTonemap::create(int width, int height) {
     if (width < 1 || height < 1) return invalidInput("tonemap: empty frame");
     auto program = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
                                     {GL_FRAGMENT_SHADER, "tonemap_aces.frag",
-                                     std::string("#version 450 core\n") + shaders::tone_curves_glsl +
-                                         shaders::tonemap_aces_frag}});
+                                     std::string("#version 450 core\n") +
+                                         shaders::tone_curves_glsl + shaders::tonemap_aces_frag}});
     if (!program) return program.error();
     auto m = std::make_unique<Impl>();
     m->width = width, m->height = height;
@@ -43,7 +43,8 @@ Status GpuTonemap::apply(const SceneRenderer& source, GpuChannel exposure) {
         return invalidInput("tonemap: frame size differs from the display target's");
     }
     const GLuint p = m->program.get();
-    glProgramUniform1i(p, gl::uniformLocation(p, "exposureChannel"), exposure ? exposure.channel : -1);
+    glProgramUniform1i(p, gl::uniformLocation(p, "exposureChannel"),
+                       exposure ? exposure.channel : -1);
     glBindFramebuffer(GL_FRAMEBUFFER, m->target.get());
     glViewport(0, 0, m->width, m->height);
     glDisable(GL_BLEND);
@@ -57,6 +58,8 @@ Status GpuTonemap::apply(const SceneRenderer& source, GpuChannel exposure) {
     return gl::checkError("tone-map pass");
 }
 
-Result<Image> GpuTonemap::read() const { return gl::readTextureRgba(m->display.get(), m->width, m->height); }
+Result<Image> GpuTonemap::read() const {
+    return gl::readTextureRgba(m->display.get(), m->width, m->height);
+}
 
 }  // namespace flarekit

@@ -23,11 +23,13 @@ std::uint32_t crc32(const unsigned char* data, std::size_t n) {
     return c ^ 0xFFFFFFFFu;
 }
 
-void expectRejected(const CliResult& r, const TempDir& dir, std::size_t entriesBefore, const std::string& mention) {
+void expectRejected(const CliResult& r, const TempDir& dir, std::size_t entriesBefore,
+                    const std::string& mention) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind("flarekit: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(mention), std::string::npos) << "expected '" << mention << "' in: " << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos)
+        << "expected '" << mention << "' in: " << r.err;
     EXPECT_EQ(dir.entries(), entriesBefore) << "no output and no temporary file may be left";
 }
 
@@ -35,7 +37,8 @@ void expectRejected(const CliResult& r, const TempDir& dir, std::size_t entriesB
 
 TEST(BadInput, MissingFile) {
     TempDir dir;
-    expectRejected(runCli({"apply", dir.file("nope.png"), "-o", dir.file("o.png")}), dir, 0, "nope.png: cannot read");
+    expectRejected(runCli({"apply", dir.file("nope.png"), "-o", dir.file("o.png")}), dir, 0,
+                   "nope.png: cannot read");
 }
 
 TEST(BadInput, CorruptAndTruncatedPngAndExr) {
@@ -57,25 +60,31 @@ TEST(BadInput, CorruptAndTruncatedPngAndExr) {
 
 TEST(BadInput, TooLargeAndEmptyImages) {
     TempDir dir;
-    ASSERT_TRUE(writeRawBytes(dir.file("wide.png"), 32769, 1, 1, std::vector<unsigned char>(32769, 200)));
+    ASSERT_TRUE(
+        writeRawBytes(dir.file("wide.png"), 32769, 1, 1, std::vector<unsigned char>(32769, 200)));
     expectRejected(runCli({"apply", dir.file("wide.png"), "-o", dir.file("o.png")}), dir, 1,
                    "image size 32769x1: expected width and height in [1, 32768]");
     // A PNG whose header says 0x0: valid signature, IHDR with a correct CRC, zero dimensions.
-    std::vector<unsigned char> zero = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13,
-                                       'I', 'H', 'D', 'R', 0, 0, 0, 0, 0, 0, 0, 0, 8, 2, 0, 0, 0};
+    std::vector<unsigned char> zero = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0,
+                                       0,    13,  'I', 'H', 'D',  'R',  0,    0,    0, 0,
+                                       0,    0,   0,   0,   8,    2,    0,    0,    0};
     const std::uint32_t crc = crc32(zero.data() + 12, 17);
     for (int shift : {24, 16, 8, 0}) zero.push_back(static_cast<unsigned char>(crc >> shift));
-    std::ofstream(dir.file("zero.png"), std::ios::binary).write(reinterpret_cast<const char*>(zero.data()), std::streamsize(zero.size()));
-    expectRejected(runCli({"apply", dir.file("zero.png"), "-o", dir.file("o.png")}), dir, 2, "zero.png");
+    std::ofstream(dir.file("zero.png"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(zero.data()), std::streamsize(zero.size()));
+    expectRejected(runCli({"apply", dir.file("zero.png"), "-o", dir.file("o.png")}), dir, 2,
+                   "zero.png");
 }
 
 TEST(BadInput, NanAndInfPixelsAreSanitisedWithAWarning) {
     TempDir dir;
-    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN(),
+                inf = std::numeric_limits<float>::infinity();
     std::vector<float> px(64 * 64 * 3, 0.05f);
     px[0] = nan;
     px[100] = inf;
-    px[3 * (32 * 64 + 40)] = px[3 * (32 * 64 + 40) + 1] = px[3 * (32 * 64 + 40) + 2] = 20.f;  // a light
+    px[3 * (32 * 64 + 40)] = px[3 * (32 * 64 + 40) + 1] = px[3 * (32 * 64 + 40) + 2] =
+        20.f;  // a light
     ASSERT_TRUE(writeRawFloat(dir.file("nan.exr"), 64, 64, 3, px));
     const CliResult r = runCli({"apply", dir.file("nan.exr"), "-o", dir.file("o.exr")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -88,27 +97,34 @@ TEST(BadInput, NanAndInfPixelsAreSanitisedWithAWarning) {
 
 TEST(BadInput, InvalidPresetNamesFileAndField) {
     TempDir dir;
-    std::ofstream(dir.file("p.json")) << R"({"elements":[{"type":"glow"},{"type":"ring"},{"type":"disc"},{"type":"disc","size":"big"}]})";
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--preset", dir.file("p.json")}), dir, 1,
-                   dir.file("p.json") + R"(: element[3].size: expected a number in [0, 4], got "big")");
-    expectRejected(runCli({"elements", "--preset", dir.file("p.json"), "-o", dir.file("o.png")}), dir, 1, "element[3].size");
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--preset", "no-such"}), dir, 1,
-                   "preset 'no-such': expected a JSON file or one of:");
+    std::ofstream(dir.file("p.json"))
+        << R"({"elements":[{"type":"glow"},{"type":"ring"},{"type":"disc"},{"type":"disc","size":"big"}]})";
+    expectRejected(
+        runCli({"apply", kSunset, "-o", dir.file("o.png"), "--preset", dir.file("p.json")}), dir, 1,
+        dir.file("p.json") + R"(: element[3].size: expected a number in [0, 4], got "big")");
+    expectRejected(runCli({"elements", "--preset", dir.file("p.json"), "-o", dir.file("o.png")}),
+                   dir, 1, "element[3].size");
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--preset", "no-such"}), dir,
+                   1, "preset 'no-such': expected a JSON file or one of:");
 }
 
 TEST(BadInput, OutputIntoAMissingDirectory) {
     TempDir dir;
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("nodir/o.png")}), dir, 0, "does not exist");
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("nodir/o.png")}), dir, 0,
+                   "does not exist");
     expectRejected(runCli({"elements", "-o", dir.file("nodir/s.png")}), dir, 0, "does not exist");
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.unknownext")}), dir, 0, "unsupported output format");
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.unknownext")}), dir, 0,
+                   "unsupported output format");
 }
 
 TEST(BadInput, BadLightAndIntensity) {
     TempDir dir;
     expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light", "10;20"}), dir, 0,
                    "--light: expected X,Y in pixels or 'auto', got '10;20'");
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light", "nan,3"}), dir, 0, "--light");
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--intensity", "-1"}), dir, 0, "--intensity");
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light", "nan,3"}), dir, 0,
+                   "--light");
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.png"), "--intensity", "-1"}), dir, 0,
+                   "--intensity");
 }
 
 TEST(BadInput, BlendRejectsNon8BitInput) {
@@ -116,6 +132,7 @@ TEST(BadInput, BlendRejectsNon8BitInput) {
     std::vector<float> px(4 * 4 * 4, 0.5f);
     ASSERT_TRUE(writeRawFloat(dir.file("f.exr"), 4, 4, 4, px));
     ASSERT_TRUE(writeRawBytes(dir.file("d.png"), 4, 4, 3, std::vector<unsigned char>(48, 9)));
-    expectRejected(runCli({"blend", "--mode", "add", "--src", dir.file("f.exr"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")}),
+    expectRejected(runCli({"blend", "--mode", "add", "--src", dir.file("f.exr"), "--dst",
+                           dir.file("d.png"), "-o", dir.file("o.png")}),
                    dir, 2, "expected an 8-bit image");
 }

@@ -44,7 +44,11 @@ inline CliResult runCli(const std::vector<std::string>& args) {
     std::string cmd = quote(FLAREKIT_CLI);
     // append() rather than "literal" + std::string: GCC 12 gives a false -Wrestrict on the latter.
     for (const std::string& a : args) cmd.append(" ").append(quote(a));
-    cmd.append(" >").append(quote(logs.file("out"))).append(" 2>").append(quote(logs.file("err"))).append(" </dev/null");
+    cmd.append(" >")
+        .append(quote(logs.file("out")))
+        .append(" 2>")
+        .append(quote(logs.file("err")))
+        .append(" </dev/null");
     const int status = std::system(cmd.c_str());
     CliResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

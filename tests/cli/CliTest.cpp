@@ -38,8 +38,8 @@ TEST(CliBlend, EveryModeIsBitExactOnFiles) {
     ASSERT_TRUE(writeImage8(dir.file("s.png"), src).ok());
     ASSERT_TRUE(writeImage8(dir.file("d.png"), dst).ok());
     for (const char* mode : {"alpha", "alpha-shift", "premultiplied", "add"}) {
-        const CliResult r = runCli({"blend", "--mode", mode, "--src", dir.file("s.png"), "--dst", dir.file("d.png"), "-o",
-                                    dir.file(std::string(mode) + ".png")});
+        const CliResult r = runCli({"blend", "--mode", mode, "--src", dir.file("s.png"), "--dst",
+                                    dir.file("d.png"), "-o", dir.file(std::string(mode) + ".png")});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         auto out = readImage8(dir.file(std::string(mode) + ".png"));
         ASSERT_TRUE(out.ok());
@@ -51,7 +51,8 @@ TEST(CliBlend, EveryModeIsBitExactOnFiles) {
                 int want = 0;
                 if (std::string(mode) == "alpha") want = (s * a + d * (255 - a)) / 255;
                 if (std::string(mode) == "alpha-shift") want = (s * a + d * (255 - a)) >> 8;
-                if (std::string(mode) == "premultiplied") want = s * a / 255 + ((d * (255 - a)) >> 8);
+                if (std::string(mode) == "premultiplied")
+                    want = s * a / 255 + ((d * (255 - a)) >> 8);
                 if (std::string(mode) == "add") want = std::min(s + d, 255);
                 ASSERT_EQ(out->pixels[i * 3 + c], want) << mode << " pixel " << i;
             }
@@ -63,15 +64,18 @@ TEST(CliBlend, SizeMismatchAndBadModeExitTwoWithoutOutput) {
     TempDir dir;
     ASSERT_TRUE(writeImage8(dir.file("s.png"), randomImage(8, 8, 4, 3)).ok());
     ASSERT_TRUE(writeImage8(dir.file("d.png"), randomImage(9, 8, 3, 4)).ok());
-    CliResult r = runCli({"blend", "--mode", "alpha", "--src", dir.file("s.png"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")});
+    CliResult r = runCli({"blend", "--mode", "alpha", "--src", dir.file("s.png"), "--dst",
+                          dir.file("d.png"), "-o", dir.file("o.png")});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("sizes differ"), std::string::npos) << r.err;
-    r = runCli({"blend", "--mode", "multiply", "--src", dir.file("s.png"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")});
+    r = runCli({"blend", "--mode", "multiply", "--src", dir.file("s.png"), "--dst",
+                dir.file("d.png"), "-o", dir.file("o.png")});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     ASSERT_TRUE(writeImage8(dir.file("rgb.png"), randomImage(9, 8, 3, 5)).ok());
-    r = runCli({"blend", "--mode", "alpha", "--src", dir.file("rgb.png"), "--dst", dir.file("d.png"), "-o", dir.file("o.png")});
+    r = runCli({"blend", "--mode", "alpha", "--src", dir.file("rgb.png"), "--dst",
+                dir.file("d.png"), "-o", dir.file("o.png")});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("expected RGBA"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
@@ -80,7 +84,8 @@ TEST(CliBlend, SizeMismatchAndBadModeExitTwoWithoutOutput) {
 
 TEST(CliApply, AutoLightOnTheSampleAddsAFlare) {
     TempDir dir;
-    const CliResult r = runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light", "auto", "-v"});
+    const CliResult r =
+        runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light", "auto", "-v"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("light at 930.0,250.0"), std::string::npos) << r.out;
     auto in = readImage(kSunset), out = readImage(dir.file("o.png"));
@@ -90,7 +95,8 @@ TEST(CliApply, AutoLightOnTheSampleAddsAFlare) {
     const int mx = 1280 - 930, my = 720 - 250;
     double added = 0;
     for (int y = my - 60; y < my + 60; ++y) {
-        for (int x = mx - 60; x < mx + 60; ++x) added += out->image.at(x, y).r - in->image.at(x, y).r;
+        for (int x = mx - 60; x < mx + 60; ++x)
+            added += out->image.at(x, y).r - in->image.at(x, y).r;
     }
     EXPECT_GT(added / (120.0 * 120.0), 0.02);
     EXPECT_EQ(dir.entries(), 1u);
@@ -98,11 +104,14 @@ TEST(CliApply, AutoLightOnTheSampleAddsAFlare) {
 
 TEST(CliApply, EveryShippedPresetAndFormatWorks) {
     TempDir dir;
-    for (const char* preset : {"tanczos-classic", "sun-wide", "anamorphic", "hexagon-ghosts", "subtle", "starburst"}) {
-        const CliResult r = runCli({"apply", kSunset, "-o", dir.file(std::string(preset) + ".jpg"), "--preset", preset});
+    for (const char* preset :
+         {"tanczos-classic", "sun-wide", "anamorphic", "hexagon-ghosts", "subtle", "starburst"}) {
+        const CliResult r = runCli(
+            {"apply", kSunset, "-o", dir.file(std::string(preset) + ".jpg"), "--preset", preset});
         EXPECT_EQ(r.exitCode, 0) << preset << ": " << r.err;
     }
-    const CliResult hdr = runCli({"apply", kSunsetHdr, "-o", dir.file("hdr.exr"), "--light", "930,250"});
+    const CliResult hdr =
+        runCli({"apply", kSunsetHdr, "-o", dir.file("hdr.exr"), "--light", "930,250"});
     ASSERT_EQ(hdr.exitCode, 0) << hdr.err;
     auto out = readImage(dir.file("hdr.exr"));
     ASSERT_TRUE(out.ok());
@@ -114,7 +123,8 @@ TEST(CliApply, EveryShippedPresetAndFormatWorks) {
 
 TEST(CliApply, ExplicitLightOutsideTheFrame) {
     TempDir dir;
-    const CliResult r = runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light=-300,-200", "--intensity", "2"});
+    const CliResult r = runCli(
+        {"apply", kSunset, "-o", dir.file("o.png"), "--light=-300,-200", "--intensity", "2"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto in = readImage(kSunset), out = readImage(dir.file("o.png"));
     EXPECT_GT(meanAbsDiff(in->image, out->image), 0.001);
@@ -127,7 +137,8 @@ TEST(CliApply, NoLightWritesTheImageUnchangedWithAWarning) {
     ASSERT_TRUE(writeImage(dir.file("grey.png"), grey).ok());
     const CliResult r = runCli({"apply", dir.file("grey.png"), "-o", dir.file("o.png")});
     EXPECT_EQ(r.exitCode, 0);
-    EXPECT_NE(r.err.find(dir.file("grey.png").append(": no light found")), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(dir.file("grey.png").append(": no light found")), std::string::npos)
+        << r.err;
     auto a = readImage8(dir.file("grey.png")), b = readImage8(dir.file("o.png"));
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_EQ(a->pixels, b->pixels);
@@ -147,7 +158,8 @@ TEST(CliApply, KeepsAlpha) {
 
 TEST(CliElements, WritesALabelledSheet) {
     TempDir dir;
-    const CliResult r = runCli({"elements", "--preset", "hexagon-ghosts", "-o", dir.file("sheet.png"), "--cell", "128"});
+    const CliResult r = runCli(
+        {"elements", "--preset", "hexagon-ghosts", "-o", dir.file("sheet.png"), "--cell", "128"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err, "");  // labels drawn: no font warning
     auto sheet = readImage(dir.file("sheet.png"));
@@ -159,7 +171,8 @@ TEST(CliElements, WritesALabelledSheet) {
 TEST(CliPresets, ListsChecksAndDocuments) {
     CliResult r = runCli({"presets"});
     ASSERT_EQ(r.exitCode, 0);
-    for (const char* name : {"tanczos-classic", "sun-wide", "anamorphic", "hexagon-ghosts", "subtle"}) {
+    for (const char* name :
+         {"tanczos-classic", "sun-wide", "anamorphic", "hexagon-ghosts", "subtle"}) {
         EXPECT_NE(r.out.find(name), std::string::npos) << name;
     }
     r = runCli({"presets", "--params"});
@@ -181,17 +194,20 @@ TEST(CliParams, NumericFlagsTakeRangeAndHelpFromTheParameterTables) {
     CliResult r = runCli({"demo", "--help"});
     ASSERT_EQ(r.exitCode, 0);
     EXPECT_NE(r.out.find("[1, 100000]"), std::string::npos) << r.out;  // --frames
-    EXPECT_NE(r.out.find("edge fade width (shorter side)"), std::string::npos) << r.out;  // --guard-band
+    EXPECT_NE(r.out.find("edge fade width (shorter side)"), std::string::npos)
+        << r.out;  // --guard-band
     TempDir dir;
     r = runCli({"demo", "-o", dir.file("d"), "--samples", "0"});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("--samples: expected an integer in [1, 4096], got 0"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--samples: expected an integer in [1, 4096], got 0"), std::string::npos)
+        << r.err;
     r = runCli({"visibility", "no-scene.json", "--msaa", "3"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("--msaa: expected one of 1, 2, 4, 8, got 3"), std::string::npos) << r.err;
     r = runCli({"postfx", "in.png", "-o", dir.file("o.png"), "--threshold", "-1"});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("--threshold: expected a number in [0, 10000], got -1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--threshold: expected a number in [0, 10000], got -1"), std::string::npos)
+        << r.err;
     r = runCli({"demo", "-o", dir.file("d"), "--frames", "2.5"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("expected an integer"), std::string::npos) << r.err;
@@ -199,7 +215,8 @@ TEST(CliParams, NumericFlagsTakeRangeAndHelpFromTheParameterTables) {
 }
 
 TEST(CliHelp, EverySubcommandHasHelp) {
-    for (const char* sub : {"blend", "apply", "elements", "presets", "visibility", "render", "demo"}) {
+    for (const char* sub :
+         {"blend", "apply", "elements", "presets", "visibility", "render", "demo"}) {
         const CliResult r = runCli({sub, "--help"});
         EXPECT_EQ(r.exitCode, 0) << sub;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
@@ -209,11 +226,15 @@ TEST(CliHelp, EverySubcommandHasHelp) {
 }
 
 TEST(CliVisibility, RaycastPrintsOneJsonObject) {
-    const CliResult r = runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json", "--method",
-                                "raycast", "--json"});
+    const CliResult r =
+        runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json",
+                "--method", "raycast", "--json"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(lineCount(r.out), 1);
-    EXPECT_EQ(r.out.rfind("{\"method\": \"raycast\", \"coverage\": 1.000000, \"in_frame\": 1.000000, \"samples\": 16384", 0), 0u)
+    EXPECT_EQ(r.out.rfind("{\"method\": \"raycast\", \"coverage\": 1.000000, \"in_frame\": "
+                          "1.000000, \"samples\": 16384",
+                          0),
+              0u)
         << r.out;
 }
 
@@ -237,8 +258,10 @@ TEST(CliVisibility, BadSceneAndBadMethodExitTwo) {
         "objects": [{"type": "sphere", "center": [0, 0, -5], "radius": "big"}]})";
     CliResult r = runCli({"visibility", dir.file("bad.json")});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(r.err, "flarekit: " + dir.file("bad.json") + ": objects[0].radius: expected a positive number, got \"big\"\n");
-    r = runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json", "--method", "magic"});
+    EXPECT_EQ(r.err, "flarekit: " + dir.file("bad.json") +
+                         ": objects[0].radius: expected a positive number, got \"big\"\n");
+    r = runCli({"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json",
+                "--method", "magic"});
     EXPECT_EQ(lineCount(r.err), 1);
     EXPECT_EQ(r.exitCode, 2);
     r = runCli({"visibility", dir.file("missing.json")});
@@ -247,10 +270,14 @@ TEST(CliVisibility, BadSceneAndBadMethodExitTwo) {
 
 FLAREKIT_GL_TEST(CliVisibility, EveryGpuMethodPrintsOneJsonObject) {
     const std::string scene = std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json";
-    for (const char* method : {"readback", "pbo", "query", "texture-mask", "texture-mask-screen", "burnout", "compute"}) {
+    for (const char* method : {"readback", "pbo", "query", "texture-mask", "texture-mask-screen",
+                               "burnout", "compute"}) {
         const CliResult r = runCli({"visibility", scene, "--method", method, "--json"});
         ASSERT_EQ(r.exitCode, 0) << method << ": " << r.err;
-        EXPECT_EQ(r.out.rfind(std::string("{\"method\": \"") + method + "\", \"coverage\": 1.000000", 0), 0u) << r.out;
+        EXPECT_EQ(
+            r.out.rfind(std::string("{\"method\": \"") + method + "\", \"coverage\": 1.000000", 0),
+            0u)
+            << r.out;
         EXPECT_NE(r.out.find("\"latency_frames\": "), std::string::npos) << r.out;
     }
 }
@@ -268,7 +295,8 @@ FLAREKIT_GL_TEST(CliRender, RendersTheContractSceneWithAFlare) {
     EXPECT_EQ(png->image.width(), 640);
     EXPECT_TRUE(exr->wasFloat);
     float peak = 0;
-    for (std::size_t i = 0; i < exr->image.pixelCount(); ++i) peak = std::max(peak, exr->image.data()[i * 4]);
+    for (std::size_t i = 0; i < exr->image.pixelCount(); ++i)
+        peak = std::max(peak, exr->image.data()[i * 4]);
     EXPECT_NEAR(peak, 50.f, 0.1f);  // the sun disc, linear HDR
     r = runCli({"render", dir.file("missing.json"), "-o", dir.file("x.png")});
     EXPECT_EQ(r.exitCode, 2);
@@ -282,11 +310,13 @@ FLAREKIT_GL_TEST(CliRender, GpuMethodsDrawTheFlareTheRaycastPathDraws) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto reference = readImage(dir.file("raycast.exr"));
     ASSERT_TRUE(reference.ok());
-    for (const char* method : {"readback", "pbo", "query", "texture-mask", "texture-mask-screen", "burnout", "compute"}) {
+    for (const char* method : {"readback", "pbo", "query", "texture-mask", "texture-mask-screen",
+                               "burnout", "compute"}) {
         const std::string out = dir.file(std::string(method) + ".exr");
         r = runCli({"render", scene, "-o", out, "--method", method, "-v"});
         ASSERT_EQ(r.exitCode, 0) << method << ": " << r.err;
-        EXPECT_NE(r.out.find("coverage 1.0000 (" + std::string(method) + ")"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("coverage 1.0000 (" + std::string(method) + ")"), std::string::npos)
+            << r.out;
         auto image = readImage(out);
         ASSERT_TRUE(image.ok()) << method;
         // The sun is fully visible, so the GPU flare (coverage read in the vertex shader) must
@@ -309,7 +339,8 @@ FLAREKIT_GL_TEST(CliRender, GpuMethodsDrawTheFlareTheRaycastPathDraws) {
 FLAREKIT_GL_TEST(CliDemo, GpuMethodRunsFlareFilterAndToneMapOnTheGpu) {
     TempDir dir;
     const std::string out = dir.file("demo");
-    CliResult r = runCli({"demo", "-o", out, "--frames", "24", "--size", "160x90", "--method", "compute", "--no-video"});
+    CliResult r = runCli({"demo", "-o", out, "--frames", "24", "--size", "160x90", "--method",
+                          "compute", "--no-video"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("method compute"), std::string::npos) << r.out;
     const std::string csv = slurp(out + "/coverage.csv");
@@ -333,7 +364,8 @@ FLAREKIT_GL_TEST(CliDemo, WritesFramesLogStripAndVideo) {
     const std::string out = dir.file("demo");  // created by the command
     CliResult r = runCli({"demo", "-o", out, "--frames", "6", "--size", "160x90"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("demo: 6/6 (100%)"), std::string::npos) << r.err;  // plain progress off a TTY
+    EXPECT_NE(r.err.find("demo: 6/6 (100%)"), std::string::npos)
+        << r.err;  // plain progress off a TTY
     for (int i = 1; i <= 6; ++i) {
         auto frame = readImage(out + "/frame_000" + std::to_string(i) + ".png");
         ASSERT_TRUE(frame.ok()) << i;

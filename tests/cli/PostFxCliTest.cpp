@@ -20,7 +20,8 @@ void writeChannels(const std::string& path, int channels, bool floatFile) {
     std::vector<float> px(std::size_t(w * h * channels), 0.1f);
     for (int y = 20; y < 26; ++y) {
         for (int x = 60; x < 66; ++x) {
-            for (int c = 0; c < channels; ++c) px[std::size_t((y * w + x) * channels + c)] = floatFile ? 40.f : 1.f;
+            for (int c = 0; c < channels; ++c)
+                px[std::size_t((y * w + x) * channels + c)] = floatFile ? 40.f : 1.f;
         }
     }
     auto out = OIIO::ImageOutput::create(path);
@@ -41,16 +42,19 @@ int channelsOf(const std::string& path) {
 FLAREKIT_GL_TEST(PostFxCli, EveryPresetOnBothBackendsAgreesWithinOneLevel) {
     TempDir dir;
     for (const char* preset : {"killzone2", "modern", "anamorphic", "subtle"}) {
-        const std::string cpu = dir.file(std::string(preset) + "-cpu.png"), gl = dir.file(std::string(preset) + "-gl.png");
+        const std::string cpu = dir.file(std::string(preset) + "-cpu.png"),
+                          gl = dir.file(std::string(preset) + "-gl.png");
         auto r = runCli({"postfx", kSunsetHdr, "-o", cpu, "--preset", preset, "--tonemap", "aces"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        r = runCli({"postfx", kSunsetHdr, "-o", gl, "--preset", preset, "--tonemap", "aces", "--backend", "gl"});
+        r = runCli({"postfx", kSunsetHdr, "-o", gl, "--preset", preset, "--tonemap", "aces",
+                    "--backend", "gl"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         auto a = readImage8(cpu), b = readImage8(gl);
         ASSERT_TRUE(a.ok() && b.ok());
         ASSERT_EQ(a->pixels.size(), b->pixels.size());
         int worst = 0;
-        for (std::size_t i = 0; i < a->pixels.size(); ++i) worst = std::max(worst, std::abs(int(a->pixels[i]) - int(b->pixels[i])));
+        for (std::size_t i = 0; i < a->pixels.size(); ++i)
+            worst = std::max(worst, std::abs(int(a->pixels[i]) - int(b->pixels[i])));
         EXPECT_LE(worst, 1) << preset;
     }
 }
@@ -58,13 +62,15 @@ FLAREKIT_GL_TEST(PostFxCli, EveryPresetOnBothBackendsAgreesWithinOneLevel) {
 TEST(PostFxCli, HdrStaysLinearAndLayersAreWritten) {
     TempDir dir;
     const std::string out = dir.file("flare.exr"), layers = dir.file("layers");
-    auto r = runCli({"postfx", kSunsetHdr, "-o", out, "--preset", "modern", "--save-layers", layers, "-v"});
+    auto r = runCli(
+        {"postfx", kSunsetHdr, "-o", out, "--preset", "modern", "--save-layers", layers, "-v"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("ghosts"), std::string::npos) << r.out;  // -v prints the pass times
     auto image = readImage(out);
     ASSERT_TRUE(image.ok());
     float peak = 0;
-    for (std::size_t i = 0; i < image->image.pixelCount() * 4; ++i) peak = std::max(peak, image->image.data()[i]);
+    for (std::size_t i = 0; i < image->image.pixelCount() * 4; ++i)
+        peak = std::max(peak, image->image.data()[i]);
     EXPECT_GT(peak, 10.f);  // the sun is still HDR: no tone curve on a float output by default
     for (const char* layer : {"bloom", "ghosts", "halo", "streaks", "lens", "final"}) {
         const std::string path = layers + "/" + layer + ".exr";
@@ -77,7 +83,8 @@ TEST(PostFxCli, HdrStaysLinearAndLayersAreWritten) {
 TEST(PostFxCli, GreyAndGreyAlphaArePromoted) {
     TempDir dir;
     for (int channels : {1, 2}) {
-        const std::string in = dir.file("in" + std::to_string(channels) + ".png"), out = dir.file("out" + std::to_string(channels) + ".png");
+        const std::string in = dir.file("in" + std::to_string(channels) + ".png"),
+                          out = dir.file("out" + std::to_string(channels) + ".png");
         writeChannels(in, channels, false);
         auto r = runCli({"postfx", in, "-o", out, "--preset", "subtle"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -121,15 +128,18 @@ TEST(PostFxCli, BadInputExitsTwoWithOneLineAndWritesNothing) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
         {{"postfx", corrupt, "-o", dir.file("o.png")}, "corrupt.png"},
         {{"postfx", dir.file("missing.exr"), "-o", dir.file("o.png")}, "missing.exr"},
-        {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", "nope"}, "expected a JSON file or one of: anamorphic, killzone2, modern, subtle"},
-        {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", badPreset}, "ghosts[0].samples: expected an integer in [1, 64], got 0"},
+        {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", "nope"},
+         "expected a JSON file or one of: anamorphic, killzone2, modern, subtle"},
+        {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", badPreset},
+         "ghosts[0].samples: expected an integer in [1, 64], got 0"},
         {{"postfx", kSunset, "-o", dir.file("no/such/dir/o.png")}, "no/such/dir"},
     };
     for (const auto& [args, mention] : cases) {
         auto r = runCli(args);
         EXPECT_EQ(r.exitCode, 2) << args[1] << ": " << r.err;
         EXPECT_EQ(lineCount(r.err), 1) << r.err;
-        EXPECT_NE(r.err.find(mention), std::string::npos) << "expected '" << mention << "' in: " << r.err;
+        EXPECT_NE(r.err.find(mention), std::string::npos)
+            << "expected '" << mention << "' in: " << r.err;
     }
     EXPECT_EQ(dir.entries(), before);
     auto r = runCli({"postfx", kSunset, "-o", dir.file("o.png"), "--backend", "vulkan"});

@@ -4,15 +4,17 @@
 
 #include <vector>
 
-#include "gl/GlObjects.h"
 #include "GlTestContext.h"
 #include "flarekit/HeadlessGl.h"
+#include "gl/GlObjects.h"
 
 using namespace flarekit;
 using namespace flarekit::gl;
 
 namespace {
-HeadlessGl& context() { return test::glContext(); }
+HeadlessGl& context() {
+    return test::glContext();
+}
 
 const char* kFullscreenVs = R"(#version 450 core
 void main() {
@@ -25,7 +27,8 @@ TEST(GlPlumbing, CreatesA45CoreContext) {
     HeadlessGl& gl = context();
     EXPECT_EQ(gl.version().rfind("4.", 0), 0u) << gl.version();
     EXPECT_NE(gl.version().find("Core"), std::string::npos) << gl.version();
-    std::printf("GL: %s on %s via %s\n", gl.version().c_str(), gl.renderer().c_str(), gl.platform().c_str());
+    std::printf("GL: %s on %s via %s\n", gl.version().c_str(), gl.renderer().c_str(),
+                gl.platform().c_str());
 }
 
 TEST(GlPlumbing, RendersIntoAFloatTargetAndReadsItBack) {
@@ -67,10 +70,13 @@ void main() { color = vec4(gl_FragCoord.xy, 50.0, 0.25); })"}});
 
 TEST(GlPlumbing, CompileErrorsComeBackWithTheLog) {
     context();
-    auto program = linkProgram({{GL_FRAGMENT_SHADER, "broken.frag", "#version 450 core\nvoid main() { undefined_thing; }"}});
+    auto program = linkProgram({{GL_FRAGMENT_SHADER, "broken.frag",
+                                 "#version 450 core\nvoid main() { undefined_thing; }"}});
     ASSERT_FALSE(program.ok());
-    EXPECT_EQ(program.error().message.rfind("OpenGL: broken.frag: compile error: ", 0), 0u) << program.error().message;
-    EXPECT_NE(program.error().message.find("undefined_thing"), std::string::npos) << program.error().message;
+    EXPECT_EQ(program.error().message.rfind("OpenGL: broken.frag: compile error: ", 0), 0u)
+        << program.error().message;
+    EXPECT_NE(program.error().message.find("undefined_thing"), std::string::npos)
+        << program.error().message;
 }
 
 TEST(GlPlumbing, NamesAreMoveOnlyOwners) {

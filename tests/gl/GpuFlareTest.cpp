@@ -7,11 +7,11 @@
 #include <cmath>
 #include <memory>
 
+#include <epoxy/gl.h>
 #include "GlTestContext.h"
 #include "flarekit/GpuFlare.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/Tonemap.h"
-#include <epoxy/gl.h>
 
 #include "scene/CameraMath.h"
 
@@ -38,14 +38,17 @@ Scene sceneWithSunAt(double px, double py) {
 
 //! A 1x1 RGBA32F texture the test owns (plain GL: the library's wrappers are internal).
 class TestTexture {
-public:
-    TestTexture() { glCreateTextures(GL_TEXTURE_2D, 1, &m_name), glTextureStorage2D(m_name, 1, GL_RGBA32F, 1, 1); }
+  public:
+    TestTexture() {
+        glCreateTextures(GL_TEXTURE_2D, 1, &m_name),
+            glTextureStorage2D(m_name, 1, GL_RGBA32F, 1, 1);
+    }
     ~TestTexture() { glDeleteTextures(1, &m_name); }
     TestTexture(const TestTexture&) = delete;
     TestTexture& operator=(const TestTexture&) = delete;
     GLuint get() const { return m_name; }
 
-private:
+  private:
     GLuint m_name = 0;
 };
 
@@ -88,7 +91,8 @@ std::size_t mismatches(const Image& gpu, const Image& cpu, float relative) {
             const float a = gpu.data()[i + c], b = cpu.data()[i + c];
             if (std::fabs(a - b) > relative * std::max(1.f, std::fabs(b))) {
                 if (std::getenv("FK_DEBUG") && bad < 20) {
-                    std::printf("pixel %zu,%zu c%zu: gpu %g cpu %g\n", (i / 4) % cpu.width(), (i / 4) / cpu.width(), c, a, b);
+                    std::printf("pixel %zu,%zu c%zu: gpu %g cpu %g\n", (i / 4) % cpu.width(),
+                                (i / 4) / cpu.width(), c, a, b);
                 }
                 ++bad;
                 break;
@@ -100,7 +104,8 @@ std::size_t mismatches(const Image& gpu, const Image& cpu, float relative) {
 
 double energy(const Image& image) {
     double sum = 0;
-    for (std::size_t i = 0; i < image.pixelCount() * 4; i += 4) sum += image.data()[i] + image.data()[i + 1] + image.data()[i + 2];
+    for (std::size_t i = 0; i < image.pixelCount() * 4; i += 4)
+        sum += image.data()[i] + image.data()[i + 1] + image.data()[i + 2];
     return sum;
 }
 
@@ -113,7 +118,7 @@ Preset everyKind() {
                                  ElementType::Rays, ElementType::Disc, ElementType::Polygon};
     const float ts[] = {1.f, 1.f, 1.f, 0.5f, -0.25f, -0.75f};
     const BlendMode blends[] = {BlendMode::Add, BlendMode::Screen, BlendMode::Add,
-                                BlendMode::Add, BlendMode::Over, BlendMode::Screen};
+                                BlendMode::Add, BlendMode::Over,   BlendMode::Screen};
     for (int i = 0; i < 6; ++i) {
         ElementParams e;
         e.type = types[i];
@@ -193,7 +198,8 @@ TEST(GpuTemporalFilter, FollowsTheCpuFilterFrameByFrame) {
     ASSERT_TRUE(gpu.ok()) << gpu.error().message;
     TemporalFilter cpu(params);
     const auto raw = weightTexture(0);
-    const double inputs[] = {0.3, 1.0, 1.0, 0.0, 0.0, 0.5, NAN, INFINITY, 1.7, -0.4, 0.8, 0.8, 0.1, 0.9, 1.0, 0.0};
+    const double inputs[] = {0.3, 1.0,  1.0, 0.0, 0.0, 0.5, NAN, INFINITY,
+                             1.7, -0.4, 0.8, 0.8, 0.1, 0.9, 1.0, 0.0};
     for (int i = 0; i < 16; ++i) {
         const float v = float(inputs[i]);
         glTextureSubImage2D(raw->get(), 0, 0, 0, 1, 1, GL_RED, GL_FLOAT, &v);
@@ -224,7 +230,9 @@ TEST(GpuTonemap, EqualsTheCpuToneMapWithTheExposureFromATexture) {
     ASSERT_TRUE(tonemap.ok());
     const auto exposure = weightTexture(0, 0, 0.37f, 0);
     for (float e : {1.f, 0.37f}) {
-        ASSERT_TRUE(tonemap->apply(*renderer, e == 1.f ? GpuChannel{} : GpuChannel{exposure->get(), 2}).ok());
+        ASSERT_TRUE(
+            tonemap->apply(*renderer, e == 1.f ? GpuChannel{} : GpuChannel{exposure->get(), 2})
+                .ok());
         auto gpu = tonemap->read();
         ASSERT_TRUE(gpu.ok());
         Image cpu = *renderer->readColor();
@@ -243,7 +251,8 @@ TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
     for (const bool hidden : {true, false}) {
         Scene scene = sceneWithSunAt(400, 120);
         // A sphere on the sun's ray 30 m away, 3 m across: covers the 1.5-degree disc whole.
-        if (hidden) scene.spheres.push_back({scene.camera.position + scene.sun.direction * 30.0, 1.5});
+        if (hidden)
+            scene.spheres.push_back({scene.camera.position + scene.sun.direction * 30.0, 1.5});
         auto renderer = SceneRenderer::create(scene, noShadows());
         ASSERT_TRUE(renderer.ok());
         auto query = createGpuVisibility("query", scene);
@@ -257,7 +266,9 @@ TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
         ASSERT_TRUE(flare.ok());
         // A weight of 1 regardless: only the conditional render can keep the flare away.
         const auto one = weightTexture(1.f);
-        ASSERT_TRUE(flare->draw(*renderer, scene, {one->get(), 0}, (*query)->conditionalRenderQuery()).ok());
+        ASSERT_TRUE(
+            flare->draw(*renderer, scene, {one->get(), 0}, (*query)->conditionalRenderQuery())
+                .ok());
         const double after = energy(*renderer->readColor());
         if (hidden) {
             EXPECT_EQ(after, base);

@@ -32,20 +32,23 @@ const std::vector<Truth>& truths() {
         for (auto& c : test::occlusionCases()) {
             RaycastOptions o;
             o.samplesPerSide = 256;
-            t.push_back({c.name, c.scene, raycastVisibility(c.scene, o)->coverage, test::judgedScene(c.scene)});
+            t.push_back({c.name, c.scene, raycastVisibility(c.scene, o)->coverage,
+                         test::judgedScene(c.scene)});
         }
         return t;
     }();
     return all;
 }
 
-double measure(const std::string& method, const Scene& scene, int msaa = 1, const std::string& variant = "circle") {
+double measure(const std::string& method, const Scene& scene, int msaa = 1,
+               const std::string& variant = "circle") {
     auto coverage = test::measureGpuCoverage(method, scene, msaa, variant);
     EXPECT_TRUE(coverage.ok()) << method << ": " << coverage.error().message;
     return coverage ? *coverage : NAN;
 }
 
-void judge(const std::string& method, double bound, double poleBound, int msaa = 1, const std::string& variant = "circle") {
+void judge(const std::string& method, double bound, double poleBound, int msaa = 1,
+           const std::string& variant = "circle") {
     test::glContext();
     int judged = 0;
     for (const Truth& t : truths()) {
@@ -61,38 +64,77 @@ void judge(const std::string& method, double bound, double poleBound, int msaa =
 
 }  // namespace
 
-TEST(OcclusionAccuracy, Readback) { judge("readback", 0.05, 0.08); }
-TEST(OcclusionAccuracy, Pbo) { judge("pbo", 0.05, 0.08); }
-TEST(OcclusionAccuracy, Query) { judge("query", 0.05, 0.08); }
-TEST(OcclusionAccuracy, TextureMaskCircle) { judge("texture-mask", 0.05, 0.08, 1, "circle"); }
-TEST(OcclusionAccuracy, TextureMaskSquare) { judge("texture-mask", 0.05, 0.08, 1, "square"); }
-TEST(OcclusionAccuracy, TextureMaskBilinear) { judge("texture-mask", 0.05, 0.08, 1, "bilinear"); }
-TEST(OcclusionAccuracy, TextureMaskScreen) { judge("texture-mask-screen", 0.05, 0.09); }
-TEST(OcclusionAccuracy, Burnout) { judge("burnout", 0.05, 0.10); }
-TEST(OcclusionAccuracy, ComputeSingleSample) { judge("compute", 0.05, 0.08); }
-TEST(OcclusionAccuracy, ComputeOnMsaaSamplesWithinTwoHundredths) { judge("compute", 0.02, 0.02, 4); }
+TEST(OcclusionAccuracy, Readback) {
+    judge("readback", 0.05, 0.08);
+}
+TEST(OcclusionAccuracy, Pbo) {
+    judge("pbo", 0.05, 0.08);
+}
+TEST(OcclusionAccuracy, Query) {
+    judge("query", 0.05, 0.08);
+}
+TEST(OcclusionAccuracy, TextureMaskCircle) {
+    judge("texture-mask", 0.05, 0.08, 1, "circle");
+}
+TEST(OcclusionAccuracy, TextureMaskSquare) {
+    judge("texture-mask", 0.05, 0.08, 1, "square");
+}
+TEST(OcclusionAccuracy, TextureMaskBilinear) {
+    judge("texture-mask", 0.05, 0.08, 1, "bilinear");
+}
+TEST(OcclusionAccuracy, TextureMaskScreen) {
+    judge("texture-mask-screen", 0.05, 0.09);
+}
+TEST(OcclusionAccuracy, Burnout) {
+    judge("burnout", 0.05, 0.10);
+}
+TEST(OcclusionAccuracy, ComputeSingleSample) {
+    judge("compute", 0.05, 0.08);
+}
+TEST(OcclusionAccuracy, ComputeOnMsaaSamplesWithinTwoHundredths) {
+    judge("compute", 0.02, 0.02, 4);
+}
 // With 4x MSAA every method sees occluders to a sample: the read-back methods copy per-pixel
 // sky fractions, the query counts samples, texture-mask multisamples its sun map, and
 // texture-mask-screen and burnout read the depth sample nearest each sub-texel / sub-cell.
 // Within the 0.05 on every judged scene, the thin poles included.
-TEST(OcclusionAccuracy, ReadbackOnMsaaSamples) { judge("readback", 0.05, 0.05, 4); }
-TEST(OcclusionAccuracy, PboOnMsaaSamples) { judge("pbo", 0.05, 0.05, 4); }
-TEST(OcclusionAccuracy, QueryOnMsaaSamples) { judge("query", 0.05, 0.05, 4); }
-TEST(OcclusionAccuracy, TextureMaskCircleOnMsaaSamples) { judge("texture-mask", 0.05, 0.05, 4, "circle"); }
-TEST(OcclusionAccuracy, TextureMaskSquareOnMsaaSamples) { judge("texture-mask", 0.05, 0.05, 4, "square"); }
-TEST(OcclusionAccuracy, TextureMaskBilinearOnMsaaSamples) { judge("texture-mask", 0.05, 0.05, 4, "bilinear"); }
-TEST(OcclusionAccuracy, TextureMaskScreenOnMsaaSamples) { judge("texture-mask-screen", 0.05, 0.05, 4); }
-TEST(OcclusionAccuracy, BurnoutOnMsaaSamples) { judge("burnout", 0.05, 0.05, 4); }
+TEST(OcclusionAccuracy, ReadbackOnMsaaSamples) {
+    judge("readback", 0.05, 0.05, 4);
+}
+TEST(OcclusionAccuracy, PboOnMsaaSamples) {
+    judge("pbo", 0.05, 0.05, 4);
+}
+TEST(OcclusionAccuracy, QueryOnMsaaSamples) {
+    judge("query", 0.05, 0.05, 4);
+}
+TEST(OcclusionAccuracy, TextureMaskCircleOnMsaaSamples) {
+    judge("texture-mask", 0.05, 0.05, 4, "circle");
+}
+TEST(OcclusionAccuracy, TextureMaskSquareOnMsaaSamples) {
+    judge("texture-mask", 0.05, 0.05, 4, "square");
+}
+TEST(OcclusionAccuracy, TextureMaskBilinearOnMsaaSamples) {
+    judge("texture-mask", 0.05, 0.05, 4, "bilinear");
+}
+TEST(OcclusionAccuracy, TextureMaskScreenOnMsaaSamples) {
+    judge("texture-mask-screen", 0.05, 0.05, 4);
+}
+TEST(OcclusionAccuracy, BurnoutOnMsaaSamples) {
+    judge("burnout", 0.05, 0.05, 4);
+}
 
 TEST(OcclusionAccuracy, ExactCasesAreExact) {
     test::glContext();
     for (const Truth& t : truths()) {
-        if (t.name.rfind("visible-", 0) && t.name.rfind("hidden-", 0) && t.name.rfind("half-box-", 0)) continue;
+        if (t.name.rfind("visible-", 0) && t.name.rfind("hidden-", 0) &&
+            t.name.rfind("half-box-", 0))
+            continue;
         for (const std::string& method : gpuVisibilityMethods()) {
             const double v = measure(method, t.scene);
             // Fully visible/hidden: exact. Half: exact but for texture masking's 8-bit sum of the
             // 18x18 map, whose 254 disc texels cannot split evenly (127/254 vs 128/254).
-            EXPECT_NEAR(v, t.coverage, t.name.rfind("half-box-", 0) == 0 ? 0.005 : 1e-6) << method << " on " << t.name;
+            EXPECT_NEAR(v, t.coverage, t.name.rfind("half-box-", 0) == 0 ? 0.005 : 1e-6)
+                << method << " on " << t.name;
         }
     }
 }
@@ -127,5 +169,6 @@ TEST(OcclusionAccuracy, LateMethodsReportTheirLatency) {
     }
     auto bad = createGpuVisibility("telepathy", s);
     ASSERT_FALSE(bad.ok());
-    EXPECT_NE(bad.error().message.find("readback pbo query"), std::string::npos) << bad.error().message;
+    EXPECT_NE(bad.error().message.find("readback pbo query"), std::string::npos)
+        << bad.error().message;
 }

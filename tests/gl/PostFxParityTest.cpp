@@ -15,9 +15,9 @@ namespace flarekit {
 namespace {
 
 struct Diff {
-    double worstRelative = 0;   //!< max |a - b| / max(|a|, |b|, floor)
-    int worst8Bit = 0;          //!< max 8-bit level difference
-    int x = 0, y = 0, c = 0;    //!< where worstRelative is
+    double worstRelative = 0;  //!< max |a - b| / max(|a|, |b|, floor)
+    int worst8Bit = 0;         //!< max 8-bit level difference
+    int x = 0, y = 0, c = 0;   //!< where worstRelative is
 };
 
 constexpr double kRelative = 1e-3;
@@ -29,7 +29,8 @@ Diff compare(const Image& cpu, const Image& gpu) {
         const float* a = cpu.row(y);
         const float* b = gpu.row(y);
         for (int i = 0; i < cpu.width() * 4; ++i) {
-            const double rel = std::abs(double(a[i]) - b[i]) / std::max({std::abs(double(a[i])), std::abs(double(b[i])), kFloor});
+            const double rel = std::abs(double(a[i]) - b[i]) /
+                               std::max({std::abs(double(a[i])), std::abs(double(b[i])), kFloor});
             if (rel > d.worstRelative) d.worstRelative = rel, d.x = i / 4, d.y = y, d.c = i % 4;
             if (i % 4 != 3) {
                 const int levels = std::abs(int(linearToSrgb8(a[i])) - int(linearToSrgb8(b[i])));
@@ -71,15 +72,19 @@ TEST(PostFxParity, EveryPresetOnEveryImageCpuMatchesGl) {
                 auto gl = gpu->run(t.image, *params);
                 ASSERT_TRUE(cpu.ok() && gl.ok());
                 const Diff d = compare(cpu->final, gl->final);
-                const std::string where = preset + (op == ToneOperator::Aces ? " +aces" : "") + ", " + t.name;
-                EXPECT_LE(d.worstRelative, kRelative) << where << " at " << d.x << "," << d.y << " channel " << d.c << ": cpu "
-                                                      << cpu->final.row(d.y)[d.x * 4 + d.c] << " gl " << gl->final.row(d.y)[d.x * 4 + d.c];
+                const std::string where =
+                    preset + (op == ToneOperator::Aces ? " +aces" : "") + ", " + t.name;
+                EXPECT_LE(d.worstRelative, kRelative)
+                    << where << " at " << d.x << "," << d.y << " channel " << d.c << ": cpu "
+                    << cpu->final.row(d.y)[d.x * 4 + d.c] << " gl "
+                    << gl->final.row(d.y)[d.x * 4 + d.c];
                 EXPECT_LE(d.worst8Bit, 1) << where;
                 worst = std::max(worst, d.worstRelative), worst8 = std::max(worst8, d.worst8Bit);
             }
         }
     }
-    std::printf("worst relative difference %.3g, worst 8-bit difference %d level(s)\n", worst, worst8);
+    std::printf("worst relative difference %.3g, worst 8-bit difference %d level(s)\n", worst,
+                worst8);
 }
 
 TEST(PostFxParity, LayersMatchToo) {
@@ -95,8 +100,10 @@ TEST(PostFxParity, LayersMatchToo) {
     auto cpu = postFxCpu(in, *params, o);
     auto gl = gpu->run(in, *params, o);
     ASSERT_TRUE(cpu.ok() && gl.ok());
-    for (auto [name, a, b] : {std::tuple{"bloom", &cpu->bloom, &gl->bloom}, std::tuple{"ghosts", &cpu->ghosts, &gl->ghosts},
-                              std::tuple{"halo", &cpu->halo, &gl->halo}, std::tuple{"streaks", &cpu->streaks, &gl->streaks},
+    for (auto [name, a, b] : {std::tuple{"bloom", &cpu->bloom, &gl->bloom},
+                              std::tuple{"ghosts", &cpu->ghosts, &gl->ghosts},
+                              std::tuple{"halo", &cpu->halo, &gl->halo},
+                              std::tuple{"streaks", &cpu->streaks, &gl->streaks},
                               std::tuple{"lens", &cpu->lens, &gl->lens}}) {
         ASSERT_EQ(a->width(), b->width()) << name;
         double energy = 0;

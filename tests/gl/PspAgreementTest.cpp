@@ -35,7 +35,8 @@ TEST(PspAgreement, BurnoutByteMatchesTheGlBurnoutMethod) {
     half.boxes.push_back({{0, -50, -40}, {60, 80, -35}, {0.3, 0.3, 0.3}});
     scenes.emplace_back("half", half);
     Scene sphere = pspScene();
-    sphere.spheres.push_back({sphere.camera.position + normalize(Vec3{0.012, 0.25, -1}) * 10.0, 0.15, {0.3, 0.3, 0.3}});
+    sphere.spheres.push_back(
+        {sphere.camera.position + normalize(Vec3{0.012, 0.25, -1}) * 10.0, 0.15, {0.3, 0.3, 0.3}});
     scenes.emplace_back("sphere", sphere);
     for (const auto& [name, scene] : scenes) {
         auto gl = test::measureGpuCoverage("burnout", scene);
@@ -45,6 +46,7 @@ TEST(PspAgreement, BurnoutByteMatchesTheGlBurnoutMethod) {
         auto r = psp::runPspFrame(psp::PspTrick::Burnout, *in);
         ASSERT_TRUE(r.ok()) << name;
         ASSERT_TRUE(r->sunInFrame) << name;
-        EXPECT_NEAR(r->coverageByte / 255.0, *gl, 0.08) << name << ": PSP byte " << r->coverageByte << ", GL " << *gl;
+        EXPECT_NEAR(r->coverageByte / 255.0, *gl, 0.08)
+            << name << ": PSP byte " << r->coverageByte << ", GL " << *gl;
     }
 }

@@ -5,14 +5,16 @@
 #include <cmath>
 #include <cstring>
 
-#include "flarekit/Render.h"
 #include "GlTestContext.h"
+#include "flarekit/Render.h"
 #include "scene/CameraMath.h"
 
 using namespace flarekit;
 
 namespace {
-void needContext() { test::glContext(); }
+void needContext() {
+    test::glContext();
+}
 
 Scene openSky() {
     Scene s;
@@ -160,7 +162,8 @@ TEST(SceneRender, BoxCastsItsShadowWhereTheSunRayPredicts) {
     ASSERT_TRUE(frame.ok() && flat.ok());
     // Lambert: albedo x (sun x 0.1 x cos + ambient); in shadow the sun term is gone.
     const double sunTerm = 0.5 * 50 * 0.1 * s.sun.direction.y;  // red channel, sun colour r = 1
-    const float inShadow = frame->at(int(ps.x), int(ps.y)).r, inSun = frame->at(int(pl.x), int(pl.y)).r;
+    const float inShadow = frame->at(int(ps.x), int(ps.y)).r,
+                inSun = frame->at(int(pl.x), int(pl.y)).r;
     EXPECT_NEAR(inSun - inShadow, sunTerm, 0.02 * sunTerm);
     EXPECT_NEAR(flat->at(int(ps.x), int(ps.y)).r, inSun, 0.01f * inSun);
 }

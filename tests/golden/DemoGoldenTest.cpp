@@ -25,7 +25,8 @@ void checkDrive(const std::string& method, std::initializer_list<int> frames) {
             auto frame = demo->next();
             ASSERT_TRUE(frame.ok()) << frame.error().message;
             if (next == want) {
-                golden::expectMatches("demo-" + method + "-" + std::to_string(want), frame->image, {6, 0.1});
+                golden::expectMatches("demo-" + method + "-" + std::to_string(want), frame->image,
+                                      {6, 0.1});
             }
         }
     }

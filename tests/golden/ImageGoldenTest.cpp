@@ -25,7 +25,8 @@ const Image& sunset() {
 }  // namespace
 
 TEST(Golden, EverySpritePresetOnTheHdrSunset) {
-    ASSERT_GT(sunset().at(0, 0).r + sunset().at(160, 60).r, 0.f) << "samples/sunset-hdr.exr did not load";
+    ASSERT_GT(sunset().at(0, 0).r + sunset().at(160, 60).r, 0.f)
+        << "samples/sunset-hdr.exr did not load";
     const std::vector<std::string> names = shippedPresetNames();
     ASSERT_GE(names.size(), 6u);
     for (const std::string& name : names) {
@@ -35,7 +36,8 @@ TEST(Golden, EverySpritePresetOnTheHdrSunset) {
         const FoundLight light = findLight(image);
         ASSERT_TRUE(light.found) << name;
         renderFlare(image, *preset, light.position, light.flareScale);
-        tonemapAcesFitted(image, 1.f);  // HDR to display range so the 8-bit reference keeps the flare
+        tonemapAcesFitted(image,
+                          1.f);  // HDR to display range so the 8-bit reference keeps the flare
         golden::expectMatches("sprite-" + name, image);
     }
 }

@@ -46,7 +46,8 @@ inline std::vector<OcclusionCase> occlusionCases() {
     const Vec3 dirs[] = {{0.2, 0.3, -1}, {-0.4, 0.15, -1}, {0.05, 0.6, -1}};
     for (double radius : {1.5, 3.0}) {
         for (int k = 0; k < 3; ++k) {
-            const std::string tag = std::string("r") + std::to_string(int(radius * 10)) + std::string("-d") + std::to_string(k);
+            const std::string tag = std::string("r") + std::to_string(int(radius * 10)) +
+                                    std::string("-d") + std::to_string(k);
             Scene s = base(dirs[k], radius);
             cases.push_back({std::string("visible-") + tag, s});
             Vec3 a, b;
@@ -60,9 +61,14 @@ inline std::vector<OcclusionCase> occlusionCases() {
             for (double offset : {0.6, 1.0}) {
                 Scene part = s;
                 const double d = 40, r = 1.0, alphaRad = radius * M_PI / 180;
-                part.spheres.push_back({eye + s.sun.direction * d + a * (r + offset * (alphaRad * d - r) + 0.3 * alphaRad * d * offset),
-                                        r, {0.3, 0.3, 0.3}});
-                cases.push_back({std::string("sphere-part") + std::to_string(int(offset * 10)) + std::string("-") + tag, part});
+                part.spheres.push_back(
+                    {eye + s.sun.direction * d +
+                         a * (r + offset * (alphaRad * d - r) + 0.3 * alphaRad * d * offset),
+                     r,
+                     {0.3, 0.3, 0.3}});
+                cases.push_back({std::string("sphere-part") + std::to_string(int(offset * 10)) +
+                                     std::string("-") + tag,
+                                 part});
             }
             // Foliage: 150 small spheres scattered around the axis 15-25 m out.
             Scene leaves = s;
@@ -70,15 +76,18 @@ inline std::vector<OcclusionCase> occlusionCases() {
             const double spread = std::tan(radius * M_PI / 180) * 1.3;
             for (int i = 0; i < 150; ++i) {
                 const double dist = 15 + 10 * uniform01(state);
-                const double u = (2 * uniform01(state) - 1) * spread * dist, v = (2 * uniform01(state) - 1) * spread * dist;
-                leaves.spheres.push_back({eye + s.sun.direction * dist + a * u + b * v, 0.04 + 0.06 * uniform01(state),
+                const double u = (2 * uniform01(state) - 1) * spread * dist,
+                             v = (2 * uniform01(state) - 1) * spread * dist;
+                leaves.spheres.push_back({eye + s.sun.direction * dist + a * u + b * v,
+                                          0.04 + 0.06 * uniform01(state),
                                           {0.1, 0.3, 0.1}});
             }
             cases.push_back({std::string("foliage-") + tag, leaves});
             // A thin pole across the disc: 8 cm, 10 m out (2.5 px), through the centre.
             Scene pole = s;
             const Vec3 c = eye + s.sun.direction * 10.0;
-            pole.boxes.push_back({c - Vec3{0.04, 5, 0.04}, c + Vec3{0.04, 5, 0.04}, {0.2, 0.2, 0.2}});
+            pole.boxes.push_back(
+                {c - Vec3{0.04, 5, 0.04}, c + Vec3{0.04, 5, 0.04}, {0.2, 0.2, 0.2}});
             cases.push_back({std::string("pole-") + tag, pole});
         }
     }
@@ -89,7 +98,9 @@ inline std::vector<OcclusionCase> occlusionCases() {
             Scene s = base({0, elevation, -1}, radius);
             s.camera.position = {0, 1.7, 0};
             s.boxes.push_back({{0, -50, -40}, {60, 80, -35}, {0.3, 0.3, 0.3}});
-            cases.push_back({std::string("half-box-r") + std::to_string(int(radius * 10)) + std::string("-e") + std::to_string(int(elevation * 10)), s});
+            cases.push_back({std::string("half-box-r") + std::to_string(int(radius * 10)) +
+                                 std::string("-e") + std::to_string(int(elevation * 10)),
+                             s});
         }
     }
     // Near the frame edge: the camera turned so the disc sits 20 px inside the right edge.
@@ -98,13 +109,16 @@ inline std::vector<OcclusionCase> occlusionCases() {
         const double pxPerRad = 180 / std::tan(M_PI / 6);
         const double tanHalfX = std::tan(M_PI / 6) * 640.0 / 360.0;
         const double rimPx = radius * M_PI / 180 * pxPerRad;
-        const double x = (320 - 20 - rimPx) / 320 * tanHalfX;  // tangent of the sun's azimuth in the view
+        const double x =
+            (320 - 20 - rimPx) / 320 * tanHalfX;  // tangent of the sun's azimuth in the view
         Vec3 a, b;
         detail::perpendiculars(s.sun.direction, a, b);
         const Vec3 right = normalize(cross(s.sun.direction, Vec3{0, 1, 0}));
         s.camera.lookAt = s.camera.position + normalize(s.sun.direction - right * x) * 20.0;
         Scene edge = s;
-        edge.spheres.push_back({s.camera.position + s.sun.direction * 40.0 + a * (std::tan(radius * M_PI / 180) * 40 * 0.8), 1.2,
+        edge.spheres.push_back({s.camera.position + s.sun.direction * 40.0 +
+                                    a * (std::tan(radius * M_PI / 180) * 40 * 0.8),
+                                1.2,
                                 {0.3, 0.3, 0.3}});
         cases.push_back({std::string("edge-r") + std::to_string(int(radius * 10)), s});
         cases.push_back({std::string("edge-part-r") + std::to_string(int(radius * 10)), edge});
@@ -114,8 +128,10 @@ inline std::vector<OcclusionCase> occlusionCases() {
         Scene s = base({0.1, 0.25, -1}, radius);
         Vec3 a, b;
         detail::perpendiculars(s.sun.direction, a, b);
-        s.spheres.push_back({s.camera.position + s.sun.direction * 30.0 + a * (std::tan(radius * M_PI / 180) * 30), 
-                             std::tan(radius * M_PI / 180) * 30 * 0.9, {0.3, 0.3, 0.3}});
+        s.spheres.push_back(
+            {s.camera.position + s.sun.direction * 30.0 + a * (std::tan(radius * M_PI / 180) * 30),
+             std::tan(radius * M_PI / 180) * 30 * 0.9,
+             {0.3, 0.3, 0.3}});
         cases.push_back({std::string("size-r") + std::to_string(int(radius * 10)), s});
     }
     return cases;

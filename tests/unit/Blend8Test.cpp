@@ -39,7 +39,8 @@ void checkEveryTriple(Span span, Expected expected) {
                 const int want = expected(s, d, a);
                 ASSERT_GE(want, 0);
                 ASSERT_LE(want, 255) << "s=" << s << " d=" << d << " a=" << a;
-                ASSERT_EQ(g.dst[i * 3 + std::size_t(c)], want) << "s=" << s << " d=" << d << " a=" << a;
+                ASSERT_EQ(g.dst[i * 3 + std::size_t(c)], want)
+                    << "s=" << s << " d=" << d << " a=" << a;
             }
         }
     }
@@ -111,8 +112,10 @@ TEST(Blend8, SimdAddHandlesEveryAlignmentAndTail) {
         for (std::size_t n = 0; n + offset <= 200; ++n) {
             std::vector<std::uint8_t> simd(a.size(), 7), scalar(a.size(), 7);
             blend8::addSpanSimd(a.data() + offset, b.data() + offset, simd.data() + offset, n);
-            blend8::addSpanScalar16(a.data() + offset, b.data() + offset, scalar.data() + offset, n);
-            ASSERT_EQ(simd, scalar) << "offset " << offset << " n " << n;  // also: nothing written past n
+            blend8::addSpanScalar16(a.data() + offset, b.data() + offset, scalar.data() + offset,
+                                    n);
+            ASSERT_EQ(simd, scalar)
+                << "offset " << offset << " n " << n;  // also: nothing written past n
         }
     }
     // In place (out aliases a), as `flarekit blend` uses it.
@@ -155,7 +158,8 @@ TEST(Blend8, ImagesRejectMismatchedSizesAndChannels) {
 }
 
 TEST(Blend8, ModeNamesRoundTrip) {
-    for (auto mode : {Blend8Mode::Alpha, Blend8Mode::AlphaShift, Blend8Mode::Premultiplied, Blend8Mode::Add}) {
+    for (auto mode :
+         {Blend8Mode::Alpha, Blend8Mode::AlphaShift, Blend8Mode::Premultiplied, Blend8Mode::Add}) {
         EXPECT_EQ(parseBlend8Mode(blend8ModeName(mode)), mode);
     }
     EXPECT_FALSE(parseBlend8Mode("multiply").has_value());

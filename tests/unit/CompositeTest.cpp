@@ -27,6 +27,7 @@ TEST(Composite, ScreenAndOverFollowTheirDefinitions) {
 }
 
 TEST(Composite, NamesRoundTrip) {
-    for (auto m : {BlendMode::Add, BlendMode::Screen, BlendMode::Over}) EXPECT_EQ(parseBlendMode(blendModeName(m)), m);
+    for (auto m : {BlendMode::Add, BlendMode::Screen, BlendMode::Over})
+        EXPECT_EQ(parseBlendMode(blendModeName(m)), m);
     EXPECT_FALSE(parseBlendMode("multiply"));
 }

@@ -12,7 +12,9 @@ using namespace flarekit;
 
 namespace {
 //! Distances along the road (metres) as a fraction of the 230.85 m drive.
-double at(double metres) { return metres / (175 + 40 * 80 * M_PI / 180); }
+double at(double metres) {
+    return metres / (175 + 40 * 80 * M_PI / 180);
+}
 
 VisibilityResult measure(const RaycastCaster& caster, double t) {
     const Scene view = demoScene(640, 360, t);

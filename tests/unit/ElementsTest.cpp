@@ -8,7 +8,6 @@
 
 #include "elements/ElementKernel.h"
 #include "flarekit/Elements.h"
-#include "flarekit/Elements.h"
 
 using namespace flarekit;
 
@@ -30,7 +29,8 @@ float maxBeyond(const Image& img, double minDistance) {
     for (int y = 0; y < img.height(); ++y) {
         for (int x = 0; x < img.width(); ++x) {
             const double dx = x + 0.5 - img.width() / 2.0, dy = y + 0.5 - img.height() / 2.0;
-            if (std::hypot(dx, dy) >= minDistance) m = std::max({m, img.at(x, y).r, img.at(x, y).a});
+            if (std::hypot(dx, dy) >= minDistance)
+                m = std::max({m, img.at(x, y).r, img.at(x, y).a});
         }
     }
     return m;
@@ -52,7 +52,8 @@ TEST(Elements, EveryTypeIsZeroPastItsRadius) {
         ElementParams p = defaultElement(ElementType(t));
         for (float radius : {7.3f, 40.f, 123.5f}) {
             const Image img = renderElement(p, radius);
-            EXPECT_EQ(maxBeyond(img, radius + 1.0), 0.f) << elementTypeName(p.type) << " R=" << radius;
+            EXPECT_EQ(maxBeyond(img, radius + 1.0), 0.f)
+                << elementTypeName(p.type) << " R=" << radius;
             EXPECT_GT(energy(img), 0.0) << elementTypeName(p.type);
         }
     }
@@ -84,15 +85,18 @@ TEST(Elements, StreaksAndPolygonsHaveTheirSymmetry) {
     const int n = s.width();
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
-            ASSERT_NEAR(s.at(x, y).r, s.at(n - 1 - y, x).r, 1e-4f);  // 4 streaks: quarter-turn symmetric
-            ASSERT_NEAR(h.at(x, y).r, h.at(x, h.height() - 1 - y).r, 1e-5f);  // hexagon: mirror about x axis
-            ASSERT_NEAR(h.at(x, y).r, h.at(h.width() - 1 - x, y).r, 1e-5f);   // and about y axis
+            ASSERT_NEAR(s.at(x, y).r, s.at(n - 1 - y, x).r,
+                        1e-4f);  // 4 streaks: quarter-turn symmetric
+            ASSERT_NEAR(h.at(x, y).r, h.at(x, h.height() - 1 - y).r,
+                        1e-5f);  // hexagon: mirror about x axis
+            ASSERT_NEAR(h.at(x, y).r, h.at(h.width() - 1 - x, y).r, 1e-5f);  // and about y axis
         }
     }
 }
 
 TEST(Elements, GlowEnergyMatchesTheSeedFalloffIntegral) {
-    // g(d) = (f(128 d) - f(128)) / (1 - f(128)), f(i) = exp(-0.006 i^2)/2 + exp(-0.03 i)/2 (Tanczos 1999).
+    // g(d) = (f(128 d) - f(128)) / (1 - f(128)), f(i) = exp(-0.006 i^2)/2 + exp(-0.03 i)/2 (Tanczos
+    // 1999).
     auto f = [](double i) { return std::exp(-i * i * 0.006) * 0.5 + std::exp(-i * 0.03) * 0.5; };
     double integral = 0;  // 2*pi * int_0^1 g(d) d dd, midpoint rule
     const int steps = 200000;
@@ -102,7 +106,8 @@ TEST(Elements, GlowEnergyMatchesTheSeedFalloffIntegral) {
     }
     integral *= 2 * kPi;
     const float radius = 150.f;
-    const double measured = energy(renderElement(plain(ElementType::Glow), radius)) / (radius * radius);
+    const double measured =
+        energy(renderElement(plain(ElementType::Glow), radius)) / (radius * radius);
     EXPECT_NEAR(measured / integral, 1.0, 0.01);
 }
 
@@ -113,18 +118,21 @@ TEST(Elements, RingDiscAndPolygonEnergyMatchTheirAreas) {
     const double ringArea = kPi * (1.0 - 0.9 * 0.9);
     EXPECT_NEAR(energy(renderElement(ring, radius)) / (radius * radius) / ringArea, 1.0, 0.005);
 
-    EXPECT_NEAR(energy(renderElement(plain(ElementType::Disc), radius)) / (radius * radius) / kPi, 1.0, 0.003);
+    EXPECT_NEAR(energy(renderElement(plain(ElementType::Disc), radius)) / (radius * radius) / kPi,
+                1.0, 0.003);
 
     for (int blades : {3, 5, 6, 8}) {
         ElementParams poly = plain(ElementType::Polygon);
         poly.blades = blades;
         const double area = blades / 2.0 * std::sin(2 * kPi / blades);  // circumradius 1
-        EXPECT_NEAR(energy(renderElement(poly, radius)) / (radius * radius) / area, 1.0, 0.005) << blades;
+        EXPECT_NEAR(energy(renderElement(poly, radius)) / (radius * radius) / area, 1.0, 0.005)
+            << blades;
     }
 }
 
 TEST(Elements, StreakEnergyIsCountTimesWidthTimesFalloffIntegral) {
-    // Each streak: a strip of width `thickness`, length 1, brightness (1 - r)^p -> thickness / (p + 1).
+    // Each streak: a strip of width `thickness`, length 1, brightness (1 - r)^p -> thickness / (p +
+    // 1).
     for (int count : {2, 4, 6}) {
         for (float falloff : {1.f, 2.5f}) {
             ElementParams p = plain(ElementType::Streaks);
@@ -194,7 +202,9 @@ TEST(Elements, RaysHaveRandomLengthsWithinRange) {
     const Image img = renderElement(rays, radius);
     const double cx = img.width() / 2.0, cy = img.height() / 2.0;
     for (const Spike& s : spikes) {
-        auto at = [&](double r) { return img.at(int(cx + r * std::cos(s.angle)), int(cy + r * std::sin(s.angle))).r; };
+        auto at = [&](double r) {
+            return img.at(int(cx + r * std::cos(s.angle)), int(cy + r * std::sin(s.angle))).r;
+        };
         EXPECT_GT(at((s.length - 0.03) * radius), 0.f) << s.angle;
         EXPECT_GT(at(0.5 * s.length * radius), 0.f) << s.angle;
     }

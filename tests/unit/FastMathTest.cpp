@@ -12,7 +12,8 @@ TEST(FastMath, Atan2IsWithinItsStatedErrorEverywhere) {
         const double angle = -M_PI + 2 * M_PI * (i + 0.5) / 200000;
         for (double r : {1e-3, 1.0, 777.0}) {
             const float x = float(r * std::cos(angle)), y = float(r * std::sin(angle));
-            worst = std::max(worst, std::abs(double(fastAtan2(y, x)) - std::atan2(double(y), double(x))));
+            worst = std::max(worst,
+                             std::abs(double(fastAtan2(y, x)) - std::atan2(double(y), double(x))));
         }
     }
     EXPECT_LT(worst, 2e-6);

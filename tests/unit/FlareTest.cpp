@@ -70,7 +70,8 @@ TEST(Flare, ElementLandsWhereTheVectorSays) {
 
 TEST(Flare, CostIsThePixelsTheElementsCover) {
     Image img(1920, 1080);
-    const FlareStats stats = renderFlare(img, single(ElementType::Disc, 1.f, 0.02f), {960.f, 540.f}, 1.f);
+    const FlareStats stats =
+        renderFlare(img, single(ElementType::Disc, 1.f, 0.02f), {960.f, 540.f}, 1.f);
     EXPECT_EQ(stats.elementsDrawn, 1u);
     const double r = 0.02 * 1080;
     EXPECT_LE(double(stats.pixelsShaded), (2 * r + 6) * (2 * r + 6));
@@ -97,7 +98,8 @@ TEST(Flare, IntensityScalesLinearlyAndAddsToTheImage) {
 
 TEST(Flare, LightOutsideTheFrameStillPutsGhostsOnScreen) {
     Image img(640, 360);
-    const FlareStats stats = renderFlare(img, single(ElementType::Disc, -0.3f, 0.05f), {-400.f, -300.f}, 1.f);
+    const FlareStats stats =
+        renderFlare(img, single(ElementType::Disc, -0.3f, 0.05f), {-400.f, -300.f}, 1.f);
     EXPECT_EQ(stats.elementsDrawn, 1u);
     double total = 0;
     centroid(img, &total);
@@ -122,6 +124,7 @@ TEST(Flare, ResultDoesNotDependOnThreadCount) {
 
 TEST(Flare, TinyAndZeroSizedElementsAreSkippedSafely) {
     Image img(100, 100);
-    const FlareStats stats = renderFlare(img, single(ElementType::Glow, 1.f, 0.f), {50.f, 50.f}, 1.f);
+    const FlareStats stats =
+        renderFlare(img, single(ElementType::Glow, 1.f, 0.f), {50.f, 50.f}, 1.f);
     EXPECT_EQ(stats.elementsDrawn, 0u);
 }

@@ -13,7 +13,8 @@ using namespace flarekit;
 using flarekit::test::TempDir;
 
 TEST(Color, EightBitCodesSurviveDecodeAndEncode) {
-    for (int code = 0; code < 256; ++code) EXPECT_EQ(linearToSrgb8(srgb8ToLinear(std::uint8_t(code))), code);
+    for (int code = 0; code < 256; ++code)
+        EXPECT_EQ(linearToSrgb8(srgb8ToLinear(std::uint8_t(code))), code);
     EXPECT_NEAR(srgbToLinear(0.5f), 0.214041f, 1e-5f);  // IEC 61966-2-1
     EXPECT_EQ(linearToSrgb8(std::numeric_limits<float>::quiet_NaN()), 0);
     EXPECT_EQ(linearToSrgb8(7.f), 255);
@@ -61,7 +62,8 @@ TEST(ImageIO, ExrKeepsLinearHdrValues) {
 
 TEST(ImageIO, NonFiniteValuesAreReplacedAndCounted) {
     TempDir dir;
-    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN(),
+                inf = std::numeric_limits<float>::infinity();
     ASSERT_TRUE(test::writeRawFloat(dir.file("bad.exr"), 2, 1, 3, {nan, 1.f, 2.f, inf, -inf, 3.f}));
     auto r = readImage(dir.file("bad.exr"));
     ASSERT_TRUE(r.ok()) << r.error().message;
@@ -88,7 +90,9 @@ TEST(ImageIO, OversizedImagesAreRejectedBeforeAllocating) {
                                     std::vector<unsigned char>(std::size_t(kMaxImageSide) + 1, 9)));
     auto r = readImage(dir.file("wide.png"));
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().message, dir.file("wide.png") + ": image size 32769x1: expected width and height in [1, 32768]");
+    EXPECT_EQ(
+        r.error().message,
+        dir.file("wide.png") + ": image size 32769x1: expected width and height in [1, 32768]");
 }
 
 TEST(ImageIO, TruncatedFilesAreErrors) {

@@ -10,7 +10,8 @@ namespace {
 void blob(Image& img, float cx, float cy, float radius, float value) {
     for (int y = 0; y < img.height(); ++y) {
         for (int x = 0; x < img.width(); ++x) {
-            if (std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy) < radius) img.at(x, y) = {value, value, value, 1.f};
+            if (std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy) < radius)
+                img.at(x, y) = {value, value, value, 1.f};
         }
     }
 }
@@ -30,8 +31,8 @@ TEST(LightFinder, FindsTheCentroidOfTheBrightestRegion) {
 
 TEST(LightFinder, PicksTheRegionWithTheMostLightNotTheMidpoint) {
     Image img(400, 300);
-    blob(img, 60.f, 60.f, 4.f, 1.f);     // small
-    blob(img, 300.f, 200.f, 12.f, 0.98f); // large, almost as bright
+    blob(img, 60.f, 60.f, 4.f, 1.f);       // small
+    blob(img, 300.f, 200.f, 12.f, 0.98f);  // large, almost as bright
     const FoundLight light = findLight(img);
     ASSERT_TRUE(light.found);
     EXPECT_NEAR(light.position.x, 300.f, 0.5f);

@@ -31,25 +31,32 @@ void setNumber(const Param<Owner>& p, Owner& owner, double x) {
 //! by the JSON reader and by validatePostFxParams (params built in code) naming the same field,
 //! and the range's ends are accepted by both.
 template <class Owner>
-void checkSection(std::string_view section, std::span<const Param<Owner>> table, Owner PostFxParams::*member) {
+void checkSection(std::string_view section, std::span<const Param<Owner>> table,
+                  Owner PostFxParams::*member) {
     for (const Param<Owner>& p : table) {
         if (p.type == ParamType::Bool || p.type == ParamType::Choice) continue;
         const std::string field = std::string(section) + "." + std::string(p.key);
-        const double tooBig = p.max + (p.type == ParamType::Number || p.type == ParamType::Color ? 0.5 : 1);
-        const std::string text = p.type == ParamType::Color ? "[" + std::to_string(tooBig) + ", 0, 0]" : std::to_string(tooBig);
+        const double tooBig =
+            p.max + (p.type == ParamType::Number || p.type == ParamType::Color ? 0.5 : 1);
+        const std::string text = p.type == ParamType::Color
+                                     ? "[" + std::to_string(tooBig) + ", 0, 0]"
+                                     : std::to_string(tooBig);
         auto parsed = parsePostFxPreset(sectionJson(section, p.key, text), "p.json");
         ASSERT_FALSE(parsed.ok()) << field;
-        EXPECT_NE(parsed.error().message.find("p.json: " + field + ": expected " + expectedText(p)), std::string::npos)
+        EXPECT_NE(parsed.error().message.find("p.json: " + field + ": expected " + expectedText(p)),
+                  std::string::npos)
             << parsed.error().message;
 
         PostFxParams code;
         setNumber(p, code.*member, tooBig);
         const Status s = validatePostFxParams(code);
         ASSERT_FALSE(s.ok()) << field;
-        EXPECT_EQ(s.error().message.rfind(field + ": expected " + expectedText(p), 0), 0u) << s.error().message;
+        EXPECT_EQ(s.error().message.rfind(field + ": expected " + expectedText(p), 0), 0u)
+            << s.error().message;
         auto planned = postFxCpu(Image(8, 8), code);
         ASSERT_FALSE(planned.ok()) << field;
-        EXPECT_NE(planned.error().message.find(field), std::string::npos) << planned.error().message;
+        EXPECT_NE(planned.error().message.find(field), std::string::npos)
+            << planned.error().message;
 
         for (double end : {p.min, p.max}) {
             PostFxParams ok;
@@ -92,15 +99,20 @@ TEST(Params, CodeBuiltGhostsAreCheckedLikeJsonOnes) {
     PostFxParams p;
     p.ghosts.resize(2);
     p.ghosts[1].samples = 65;
-    EXPECT_EQ(validatePostFxParams(p).error().message, "ghosts[1].samples: expected an integer in [1, 64], got 65");
+    EXPECT_EQ(validatePostFxParams(p).error().message,
+              "ghosts[1].samples: expected an integer in [1, 64], got 65");
     p.ghosts[1].samples = 12;
     p.ghosts[1].scale = 0.01f;
-    EXPECT_EQ(validatePostFxParams(p).error().message.rfind("ghosts[1].scale: expected |scale| >= 0.05", 0), 0u);
+    EXPECT_EQ(validatePostFxParams(p).error().message.rfind(
+                  "ghosts[1].scale: expected |scale| >= 0.05", 0),
+              0u);
     p.ghosts.assign(std::size_t(kMaxGhosts) + 1, GhostParams{});
     EXPECT_NE(validatePostFxParams(p).error().message.find("at most 32 ghosts"), std::string::npos);
     p.ghosts.clear();
     p.flareIntensity = std::nanf("");
-    EXPECT_EQ(validatePostFxParams(p).error().message.rfind("flare_intensity: expected a number in [0, 1000]", 0), 0u);
+    EXPECT_EQ(validatePostFxParams(p).error().message.rfind(
+                  "flare_intensity: expected a number in [0, 1000]", 0),
+              0u);
 }
 
 TEST(Params, EveryPostFxDefaultIsInsideItsOwnRange) {
@@ -120,25 +132,30 @@ TEST(Params, CodeBuiltPresetsAreCheckedLikeJsonOnes) {
     preset.elements.push_back(defaultElement(ElementType::Ring));
     preset.elements.push_back(defaultElement(ElementType::Glow));
     preset.elements[1].size = 5;
-    EXPECT_EQ(validatePreset(preset).error().message, "element[1].size: expected a number in [0, 4], got 5");
+    EXPECT_EQ(validatePreset(preset).error().message,
+              "element[1].size: expected a number in [0, 4], got 5");
     // A field that does not apply to the type is not checked (a glow has no blades).
     preset.elements[1].size = 0.2f;
     preset.elements[1].blades = 0;
     EXPECT_TRUE(validatePreset(preset).ok());
     preset.elements[0].width = 0;
-    EXPECT_EQ(validatePreset(preset).error().message, "element[0].width: expected a number in [0.001, 1], got 0");
+    EXPECT_EQ(validatePreset(preset).error().message,
+              "element[0].width: expected a number in [0.001, 1], got 0");
     auto fromJson = parsePreset(R"({"elements": [{"type": "ring", "width": 0}]})", "r.json");
     ASSERT_FALSE(fromJson.ok());
-    EXPECT_EQ(fromJson.error().message, "r.json: element[0].width: expected a number in [0.001, 1], got 0");
+    EXPECT_EQ(fromJson.error().message,
+              "r.json: element[0].width: expected a number in [0.001, 1], got 0");
 }
 
 TEST(Params, TemporalAndDemoSettingsNameTheirField) {
     TemporalParams t;
     t.guardBand = 2;
-    EXPECT_EQ(validateTemporalParams(t).error().message, "guard-band: expected a number in [0, 0.5], got 2");
+    EXPECT_EQ(validateTemporalParams(t).error().message,
+              "guard-band: expected a number in [0, 0.5], got 2");
     DemoSettings d;
     d.frames = 0;
-    EXPECT_EQ(validateDemoSettings(d).error().message, "frames: expected an integer in [1, 100000], got 0");
+    EXPECT_EQ(validateDemoSettings(d).error().message,
+              "frames: expected an integer in [1, 100000], got 0");
     d.frames = 10;
     d.msaaSamples = 3;
     EXPECT_EQ(validateDemoSettings(d).error().message, "msaa: expected one of 1, 2, 4, 8, got 3");

@@ -57,7 +57,8 @@ double spreadAlong(const Image& img, const Moments& m, double dx, double dy) {
         for (int x = 0; x < img.width(); ++x) {
             const Rgba& p = img.at(x, y);
             const double e = double(p.r) + p.g + p.b;
-            const double t = ((x + 0.5) / img.width() * 2 - 1 - m.x) * dx + ((y + 0.5) / img.height() * 2 - 1 - m.y) * dy;
+            const double t = ((x + 0.5) / img.width() * 2 - 1 - m.x) * dx +
+                             ((y + 0.5) / img.height() * 2 - 1 - m.y) * dy;
             acc += e * t * t;
         }
     }
@@ -101,19 +102,38 @@ TEST(PostFxPresets, BadPresetsNameTheFieldAndWhatWasExpected) {
         auto r = parsePostFxPreset(text, "p.json");
         return r.ok() ? std::string("(accepted)") : r.error().message;
     };
-    EXPECT_EQ(error(R"({"bloom": {"intensty": 1}})").rfind("p.json: bloom.intensty: unknown key (expected one of: intensity, levels, spread)", 0), 0u);
-    EXPECT_NE(error(R"({"bloom": {"levels": 1}})").find("bloom.levels: expected an integer in [2, 12], got 1"), std::string::npos);
-    EXPECT_NE(error(R"({"ghosts": [{"tint": [1, 2]}]})").find("ghosts[0].tint: expected an array of 3 numbers"), std::string::npos);
-    EXPECT_NE(error(R"({"ghosts": [{"scale": 0.01}]})").find("ghosts[0].scale: expected |scale| >= 0.05"), std::string::npos);
-    EXPECT_NE(error(R"({"ghosts": [{"filter": "nearest"}]})").find("expected \"point\" or \"bilinear\""), std::string::npos);
-    EXPECT_NE(error(R"({"tonemap": {"operator": "reinhard"}})").find("tonemap.operator"), std::string::npos);
+    EXPECT_EQ(
+        error(R"({"bloom": {"intensty": 1}})")
+            .rfind(
+                "p.json: bloom.intensty: unknown key (expected one of: intensity, levels, spread)",
+                0),
+        0u);
+    EXPECT_NE(error(R"({"bloom": {"levels": 1}})")
+                  .find("bloom.levels: expected an integer in [2, 12], got 1"),
+              std::string::npos);
+    EXPECT_NE(error(R"({"ghosts": [{"tint": [1, 2]}]})")
+                  .find("ghosts[0].tint: expected an array of 3 numbers"),
+              std::string::npos);
+    EXPECT_NE(
+        error(R"({"ghosts": [{"scale": 0.01}]})").find("ghosts[0].scale: expected |scale| >= 0.05"),
+        std::string::npos);
+    EXPECT_NE(
+        error(R"({"ghosts": [{"filter": "nearest"}]})").find("expected \"point\" or \"bilinear\""),
+        std::string::npos);
+    EXPECT_NE(error(R"({"tonemap": {"operator": "reinhard"}})").find("tonemap.operator"),
+              std::string::npos);
     EXPECT_NE(error(R"({"flares": 1})").find("flares: unknown key"), std::string::npos);
-    EXPECT_NE(error(R"({"bright": {"threshold": -1}})").find("bright.threshold"), std::string::npos);
+    EXPECT_NE(error(R"({"bright": {"threshold": -1}})").find("bright.threshold"),
+              std::string::npos);
     EXPECT_NE(error("{\"bloom\": ").find("invalid JSON"), std::string::npos);
-    EXPECT_NE(error(R"({"ghost_series": {"spacing": 0.5}})").find("ghost_series.count: missing"), std::string::npos);
+    EXPECT_NE(error(R"({"ghost_series": {"spacing": 0.5}})").find("ghost_series.count: missing"),
+              std::string::npos);
     // A series reaching scale 0 would spread one bloom texel over the frame: refused.
-    EXPECT_NE(error(R"({"ghost_series": {"count": 4, "spacing": 0.5}})").find("ghost 2.scale"), std::string::npos);
-    auto series = parsePostFxPreset(R"({"ghost_series": {"count": 3, "spacing": 0.3, "tints": [[1,0,0],[0,1,0]], "blur": 0.2}})", "s.json");
+    EXPECT_NE(error(R"({"ghost_series": {"count": 4, "spacing": 0.5}})").find("ghost 2.scale"),
+              std::string::npos);
+    auto series = parsePostFxPreset(
+        R"({"ghost_series": {"count": 3, "spacing": 0.3, "tints": [[1,0,0],[0,1,0]], "blur": 0.2}})",
+        "s.json");
     ASSERT_TRUE(series.ok()) << series.error().message;
     ASSERT_EQ(series->ghosts.size(), 3u);
     EXPECT_FLOAT_EQ(series->ghosts[1].scale, 0.7f);
@@ -123,8 +143,8 @@ TEST(PostFxPresets, BadPresetsNameTheFieldAndWhatWasExpected) {
 }
 
 TEST(PostFxKernels, SoftKneeIsZeroBelowAndLinearAbove) {
-    using postfx::softThreshold;
     using postfx::F4;
+    using postfx::softThreshold;
     const float t = 1.f, k = 0.5f;
     EXPECT_EQ(softThreshold(F4{0.5f, 0.2f, 0.1f, 1.f}, t, k)[0], 0.f);  // at threshold - knee
     // Above threshold + knee: colour x (br - T) / br exactly.
@@ -133,7 +153,8 @@ TEST(PostFxKernels, SoftKneeIsZeroBelowAndLinearAbove) {
     EXPECT_FLOAT_EQ(out[1], 1.5f);
     EXPECT_FLOAT_EQ(out[3], 0.f);
     // The knee is continuous at both ends: (br - T + k)^2 / 4k meets br - T at br = T + k.
-    const float justBelow = softThreshold(F4{1.4999f, 0, 0, 0}, t, k)[0], justAbove = softThreshold(F4{1.5001f, 0, 0, 0}, t, k)[0];
+    const float justBelow = softThreshold(F4{1.4999f, 0, 0, 0}, t, k)[0],
+                justAbove = softThreshold(F4{1.5001f, 0, 0, 0}, t, k)[0];
     EXPECT_NEAR(justBelow, justAbove, 1e-3f);
 }
 
@@ -148,27 +169,33 @@ TEST(PostFxKernels, StreakChainsWeighEveryOffsetOnceByItsExponential) {
     for (const auto& pass : plan.right) {
         std::vector<double> next(kernel.size() + std::size_t(3 * pass.step), 0.0);
         for (std::size_t i = 0; i < kernel.size(); ++i) {
-            for (int k = 0; k < postfx::kStreakTaps; ++k) next[i + std::size_t(k * pass.step)] += kernel[i] * pass.weights[std::size_t(k)];
+            for (int k = 0; k < postfx::kStreakTaps; ++k)
+                next[i + std::size_t(k * pass.step)] += kernel[i] * pass.weights[std::size_t(k)];
         }
         kernel = next;
     }
     const double a = std::exp(-3.0 / (0.5 * width));
-    for (std::size_t n = 1; n < kernel.size(); ++n) EXPECT_NEAR(kernel[n] / kernel[n - 1], a, 1e-5) << n;
+    for (std::size_t n = 1; n < kernel.size(); ++n)
+        EXPECT_NEAR(kernel[n] / kernel[n - 1], a, 1e-5) << n;
     EXPECT_GE(kernel.size(), std::size_t(0.5 * width));
 }
 
 TEST(PostFxGeometry, GhostsSitOnTheMirroredLineWhereTheScalePutsThem) {
     const int w = 512, h = 256;
-    for (const auto& [lx, ly] : {std::pair{0.3, -0.2}, std::pair{-0.15, 0.25}, std::pair{0.2, 0.15}}) {
-        const Image in = brightDot(w, h, float((lx + 1) / 2 * w), float((ly + 1) / 2 * h), 100.f, 3.f);
+    for (const auto& [lx, ly] :
+         {std::pair{0.3, -0.2}, std::pair{-0.15, 0.25}, std::pair{0.2, 0.15}}) {
+        const Image in =
+            brightDot(w, h, float((lx + 1) / 2 * w), float((ly + 1) / 2 * h), 100.f, 3.f);
         for (float scale : {2.f, 1.f, 0.5f, -1.5f}) {
             auto r = runLayers(in, singleGhost(scale, 0.f, 1));
             ASSERT_TRUE(r.ok());
             const Moments m = moments(r->ghosts);
             ASSERT_GT(m.sum, 0.0);
             // A light at l appears at -l / scale; a tolerance of one working texel.
-            EXPECT_NEAR(m.x, -lx / scale, 2.0 / r->ghosts.width()) << "scale " << scale << " light " << lx << "," << ly;
-            EXPECT_NEAR(m.y, -ly / scale, 2.0 / r->ghosts.height()) << "scale " << scale << " light " << lx << "," << ly;
+            EXPECT_NEAR(m.x, -lx / scale, 2.0 / r->ghosts.width())
+                << "scale " << scale << " light " << lx << "," << ly;
+            EXPECT_NEAR(m.y, -ly / scale, 2.0 / r->ghosts.height())
+                << "scale " << scale << " light " << lx << "," << ly;
         }
     }
 }
@@ -194,7 +221,8 @@ TEST(PostFxGeometry, Killzone2GhostsBlurAlongTheLineThroughTheCentre) {
         // ...and the seed's one-sided sample offsets (+1, -1, ..., -21 units, i.e. the samples
         // reach outward) smear the ghost toward the centre, by at most the sample span / scale.
         const GhostParams& g = kz.ghosts[i];
-        const double span = (g.samples - 1) * 2.0 * g.blur * g.samples / std::min(r->ghosts.width(), r->ghosts.height());
+        const double span = (g.samples - 1) * 2.0 * g.blur * g.samples /
+                            std::min(r->ghosts.width(), r->ghosts.height());
         const double along = m.x * ux + m.y * uy;
         EXPECT_LT(along, len) << "ghost " << i;
         EXPECT_GT(along, len - span / std::abs(s)) << "ghost " << i;
@@ -209,7 +237,8 @@ TEST(PostFxGeometry, BlurStepsAreBloomTexelsSoTheyHalveInFrameUnitsAtTwiceTheSiz
         const int w = 320 << i, h = 320 << i;
         // Light at l = (0.6, 0): 12 samples 2 x 1.2 bloom texels apart reach 0.33 (0.165) of the
         // frame inward, short of the centre, where the seed's blur direction flips.
-        const Image in = brightDot(w, h, 0.8f * float(w), 0.5f * float(h), 200.f, 2.f * float(1 << i));
+        const Image in =
+            brightDot(w, h, 0.8f * float(w), 0.5f * float(h), 200.f, 2.f * float(1 << i));
         auto r = runLayers(in, singleGhost(1.f, 0.1f, 12));
         ASSERT_TRUE(r.ok());
         const Moments m = moments(r->ghosts);
@@ -228,7 +257,8 @@ TEST(PostFxGeometry, NoLightNoFlare) {
         auto r = runLayers(in, load(name));
         ASSERT_TRUE(r.ok());
         EXPECT_EQ(moments(r->lens).sum, 0.0) << name;
-        for (std::size_t i = 0; i < in.pixelCount() * 4; ++i) ASSERT_EQ(r->final.data()[i], in.data()[i]) << name;
+        for (std::size_t i = 0; i < in.pixelCount() * 4; ++i)
+            ASSERT_EQ(r->final.data()[i], in.data()[i]) << name;
     }
 }
 
@@ -247,7 +277,8 @@ TEST(PostFxGeometry, FlareEnergyIsLinearInTheLightAboveTheThreshold) {
             // light's value and above the knee (edge pixels of a disc would be partial).
             Image light(400, 240);
             for (int y = 80; y < 96; ++y) {
-                for (int x = 120; x < 136; ++x) light.at(x, y) = {values[i], values[i], values[i], 1.f};
+                for (int x = 120; x < 136; ++x)
+                    light.at(x, y) = {values[i], values[i], values[i], 1.f};
             }
             auto r = runLayers(light, p);
             ASSERT_TRUE(r.ok());
@@ -266,7 +297,8 @@ TEST(PostFxEdgeCases, TheExactCentreOfAnOddBufferStaysFinite) {
         auto r = runLayers(in, load(name));
         ASSERT_TRUE(r.ok());
         ASSERT_EQ(r->ghosts.width(), 65);
-        for (std::size_t i = 0; i < r->final.pixelCount() * 4; ++i) ASSERT_TRUE(std::isfinite(r->final.data()[i])) << name;
+        for (std::size_t i = 0; i < r->final.pixelCount() * 4; ++i)
+            ASSERT_TRUE(std::isfinite(r->final.data()[i])) << name;
         // Here the blur has no direction: every sample lands on the point itself, so the pixel is
         // the unblurred ghost, no brighter than the bloom it reads.
         const Rgba c = r->ghosts.at(32, 32);
@@ -282,7 +314,8 @@ TEST(PostFxEdgeCases, NanAndInfInputPixelsDoNotSpread) {
     auto r = postFxCpu(in, load("modern"));
     ASSERT_TRUE(r.ok());
     std::size_t bad = 0;
-    for (std::size_t i = 0; i < r->final.pixelCount() * 4; ++i) bad += !std::isfinite(r->final.data()[i]);
+    for (std::size_t i = 0; i < r->final.pixelCount() * 4; ++i)
+        bad += !std::isfinite(r->final.data()[i]);
     EXPECT_EQ(bad, 2u);  // the two input values themselves, nothing else
 }
 
@@ -311,7 +344,8 @@ TEST(PostFxEdgeCases, ToneCurvesMapIntoDisplayRangeAndKeepAlpha) {
         ASSERT_TRUE(r.ok());
         float hi = 0;
         for (int y = 0; y < 90; ++y) {
-            for (int x = 0; x < 160; ++x) hi = std::max({hi, r->final.at(x, y).r, r->final.at(x, y).g, r->final.at(x, y).b});
+            for (int x = 0; x < 160; ++x)
+                hi = std::max({hi, r->final.at(x, y).r, r->final.at(x, y).g, r->final.at(x, y).b});
         }
         EXPECT_LE(hi, 1.f);
         EXPECT_GT(hi, 0.9f);  // the sun of 50 saturates

@@ -41,7 +41,9 @@ TEST(Preset, TanczosClassicPlacesSecondariesWhereTheSeedDoes) {
 }
 
 TEST(Preset, ReportsTheFieldAndWhatWasExpected) {
-    EXPECT_EQ(errorOf(std::string(R"({"elements":[)").append(kThree).append(R"({"type":"disc","size":"big"}]})")),
+    EXPECT_EQ(errorOf(std::string(R"({"elements":[)")
+                          .append(kThree)
+                          .append(R"({"type":"disc","size":"big"}]})")),
               R"(my.json: element[3].size: expected a number in [0, 4], got "big")");
     EXPECT_EQ(errorOf(R"({"elements":[{"type":"disc","size":5}]})"),
               "my.json: element[0].size: expected a number in [0, 4], got 5");
@@ -49,22 +51,35 @@ TEST(Preset, ReportsTheFieldAndWhatWasExpected) {
               "my.json: element[0].count: expected an integer in [1, 4096], got 2.5");
     EXPECT_EQ(errorOf(R"({"elements":[{"type":"glow","color":[1,2]}]})"),
               "my.json: element[0].color: expected an array of 3 numbers in [0, 64], got [1,2]");
-    EXPECT_EQ(errorOf(R"({"elements":[{"type":"sparkle"}]})"),
-              R"(my.json: element[0].type: expected one of "glow", "ring", "streaks", "rays", "disc", "polygon", got "sparkle")");
-    EXPECT_EQ(errorOf(R"({"elements":[{"size":0.1}]})").rfind("my.json: element[0].type: missing", 0), 0u);
-    EXPECT_EQ(errorOf(R"({"elements":[{"type":"glow","blend":"multiply"}]})"),
-              R"(my.json: element[0].blend: expected one of "add", "screen", "over", got "multiply")");
-    EXPECT_EQ(errorOf(R"({"elements":[], "x":1})"), "my.json: elements: expected an array of 1 to 256 elements, got []");
-    EXPECT_EQ(errorOf(R"({"elemnts":[]})"),
-              "my.json: elemnts: unknown key (expected one of: name, description, intensity, elements)");
-    EXPECT_EQ(errorOf(R"({"name":"x"})"), "my.json: elements: missing; expected an array of elements");
+    EXPECT_EQ(
+        errorOf(R"({"elements":[{"type":"sparkle"}]})"),
+        R"(my.json: element[0].type: expected one of "glow", "ring", "streaks", "rays", "disc", "polygon", got "sparkle")");
+    EXPECT_EQ(
+        errorOf(R"({"elements":[{"size":0.1}]})").rfind("my.json: element[0].type: missing", 0),
+        0u);
+    EXPECT_EQ(
+        errorOf(R"({"elements":[{"type":"glow","blend":"multiply"}]})"),
+        R"(my.json: element[0].blend: expected one of "add", "screen", "over", got "multiply")");
+    EXPECT_EQ(errorOf(R"({"elements":[], "x":1})"),
+              "my.json: elements: expected an array of 1 to 256 elements, got []");
+    EXPECT_EQ(
+        errorOf(R"({"elemnts":[]})"),
+        "my.json: elemnts: unknown key (expected one of: name, description, intensity, elements)");
+    EXPECT_EQ(errorOf(R"({"name":"x"})"),
+              "my.json: elements: missing; expected an array of elements");
     EXPECT_EQ(errorOf("[1,2]"), "my.json: (top level): expected an object, got [1,2]");
 }
 
 TEST(Preset, UnknownKeysAndKeysOfOtherTypesAreRejected) {
     const std::string e = errorOf(R"({"elements":[{"type":"glow","blades":6}]})");
-    EXPECT_EQ(e.rfind("my.json: element[0].blades: unknown key for a glow (expected one of: type, t, size", 0), 0u) << e;
-    EXPECT_NE(errorOf(R"({"elements":[{"type":"glow","colour":[1,1,1]}]})").find("element[0].colour: unknown key"),
+    EXPECT_EQ(
+        e.rfind(
+            "my.json: element[0].blades: unknown key for a glow (expected one of: type, t, size",
+            0),
+        0u)
+        << e;
+    EXPECT_NE(errorOf(R"({"elements":[{"type":"glow","colour":[1,1,1]}]})")
+                  .find("element[0].colour: unknown key"),
               std::string::npos);
 }
 
@@ -75,8 +90,9 @@ TEST(Preset, BadJsonSaysWhere) {
 }
 
 TEST(Preset, ValuesAndDefaultsAreApplied) {
-    auto p = parsePreset(R"({"intensity":0.5,"elements":[{"type":"rays","count":7,"seed":99,"rotation":-45,"blend":"screen"}]})",
-                         "x.json");
+    auto p = parsePreset(
+        R"({"intensity":0.5,"elements":[{"type":"rays","count":7,"seed":99,"rotation":-45,"blend":"screen"}]})",
+        "x.json");
     ASSERT_TRUE(p.ok()) << p.error().message;
     EXPECT_EQ(p->name, "x");
     EXPECT_FLOAT_EQ(p->intensity, 0.5f);
@@ -99,8 +115,9 @@ TEST(Preset, UnknownNameListsTheShippedOnes) {
 
 TEST(Preset, ParameterReferenceCoversEveryKey) {
     const std::string ref = presetParameterReference();
-    for (const char* key : {"`t`", "`size`", "`color`", "`inner_color`", "`intensity`", "`aspect`", "`rotation`", "`width`",
-                            "`softness`", "`count`", "`thickness`", "`falloff`", "`min_length`", "`blades`", "`seed`", "`blend`"}) {
+    for (const char* key : {"`t`", "`size`", "`color`", "`inner_color`", "`intensity`", "`aspect`",
+                            "`rotation`", "`width`", "`softness`", "`count`", "`thickness`",
+                            "`falloff`", "`min_length`", "`blades`", "`seed`", "`blend`"}) {
         EXPECT_NE(ref.find(key), std::string::npos) << key;
     }
 }

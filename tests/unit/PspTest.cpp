@@ -14,12 +14,13 @@ using namespace flarekit::psp;
 
 namespace {
 
-constexpr int kSunX = 100, kSunY = 80;           // the mask region is then (93..106, 73..86)
+constexpr int kSunX = 100, kSunY = 80;  // the mask region is then (93..106, 73..86)
 constexpr int kRegionX = kSunX - 7, kRegionY = kSunY - 7;
 
 //! A frame whose 14x14 (or 16x16 for Ridge Racer: origin sun - 8) region has `hidden(i, j)`
 //! occluded; nothing else occludes.
-PspFrameInput input(const std::function<bool(int, int)>& hidden, int size = 14, bool naive = false) {
+PspFrameInput input(const std::function<bool(int, int)>& hidden, int size = 14,
+                    bool naive = false) {
     PspFrameInput in;
     in.occluders.assign(std::size_t(kScreenWidth * kScreenHeight), 0);
     const int x0 = kSunX - size / 2, y0 = kSunY - size / 2;
@@ -43,21 +44,26 @@ int expectedCoverageByte(const std::function<bool(int, int)>& hidden) {
     auto tap = [&](double sx, double sy) {
         const int bu = int(std::floor(sx * 256)) - 128, bv = int(std::floor(sy * 256)) - 128;
         const int fu = (bu >> 4) & 15, fv = (bv >> 4) & 15, u = bu >> 8, v = bv >> 8;
-        auto at = [&](int x, int y) { return level[std::size_t(std::min(y, n - 1) * n + std::min(x, n - 1))]; };
-        const int top = at(u, v) * (16 - fu) + at(u + 1, v) * fu, bottom = at(u, v + 1) * (16 - fu) + at(u + 1, v + 1) * fu;
+        auto at = [&](int x, int y) {
+            return level[std::size_t(std::min(y, n - 1) * n + std::min(x, n - 1))];
+        };
+        const int top = at(u, v) * (16 - fu) + at(u + 1, v) * fu,
+                  bottom = at(u, v + 1) * (16 - fu) + at(u + 1, v + 1) * fu;
         return (top * (16 - fv) + bottom * fv) / 256;
     };
     for (int m : {8, 4, 2}) {
         std::vector<int> next(std::size_t(m * m));
         for (int j = 0; j < m; ++j)
-            for (int i = 0; i < m; ++i) next[std::size_t(j * m + i)] = tap((i + 0.5) * n / m, (j + 0.5) * n / m);
+            for (int i = 0; i < m; ++i)
+                next[std::size_t(j * m + i)] = tap((i + 0.5) * n / m, (j + 0.5) * n / m);
         level = next, n = m;
     }
     return tap(1.0, 1.0);
 }
 
 std::uint32_t initialClut(int i) {  // what the CPU uploads (PspFrame.cpp): warm ramp, alpha 255
-    return std::uint32_t(i) | std::uint32_t(i * 230 / 255) << 8 | std::uint32_t(i * 180 / 255) << 16 | 0xFFu << 24;
+    return std::uint32_t(i) | std::uint32_t(i * 230 / 255) << 8 |
+           std::uint32_t(i * 180 / 255) << 16 | 0xFFu << 24;
 }
 
 const Image8& step(const PspFrameResult& r, const std::string& name) {
@@ -71,7 +77,8 @@ const Image8& step(const PspFrameResult& r, const std::string& name) {
 long long flareEnergy(const PspFrameResult& r) {
     const Image8& restored = step(r, "07-restored");
     long long e = 0;
-    for (std::size_t i = 0; i < r.frame.pixels.size() && i < restored.pixels.size(); ++i) e += r.frame.pixels[i] - restored.pixels[i];
+    for (std::size_t i = 0; i < r.frame.pixels.size() && i < restored.pixels.size(); ++i)
+        e += r.frame.pixels[i] - restored.pixels[i];
     return e;
 }
 
@@ -96,8 +103,10 @@ TEST(PspBurnout, HandComputedBytes) {
     // Worked by hand from the 4-bit weights (docs/psp-burnout.md): the corner texel weighs
     // 10/16 x 10/16 at 14 -> 8, then 1/4 at each later level, each step truncated.
     EXPECT_EQ(expectedCoverageByte([](int, int) { return false; }), 255);
-    EXPECT_EQ(expectedCoverageByte([](int i, int j) { return !(i == 0 && j == 0); }), 1);   // 99, 24, 6, 1
-    EXPECT_EQ(expectedCoverageByte([](int i, int j) { return i == 0 && j == 0; }), 253);    // 155, 230, 248, 253
+    EXPECT_EQ(expectedCoverageByte([](int i, int j) { return !(i == 0 && j == 0); }),
+              1);  // 99, 24, 6, 1
+    EXPECT_EQ(expectedCoverageByte([](int i, int j) { return i == 0 && j == 0; }),
+              253);  // 155, 230, 248, 253
 }
 
 TEST(PspBurnout, CoverageByteAndClutAreExact) {
@@ -110,9 +119,12 @@ TEST(PspBurnout, CoverageByteAndClutAreExact) {
         EXPECT_TRUE(r->regionRestored) << m.name;
         for (int i = 0; i < 256; ++i) {
             EXPECT_EQ(r->clutBefore[std::size_t(i)], initialClut(i)) << m.name << " entry " << i;
-            // The A byte carries the coverage; G/R (depth stripes) and B (write mask) are untouched.
-            EXPECT_EQ(r->clutAfter[std::size_t(i)] >> 24, std::uint32_t(expected)) << m.name << " entry " << i;
-            EXPECT_EQ(r->clutAfter[std::size_t(i)] & 0xFFFFFFu, initialClut(i) & 0xFFFFFFu) << m.name << " entry " << i;
+            // The A byte carries the coverage; G/R (depth stripes) and B (write mask) are
+            // untouched.
+            EXPECT_EQ(r->clutAfter[std::size_t(i)] >> 24, std::uint32_t(expected))
+                << m.name << " entry " << i;
+            EXPECT_EQ(r->clutAfter[std::size_t(i)] & 0xFFFFFFu, initialClut(i) & 0xFFFFFFu)
+                << m.name << " entry " << i;
         }
     }
 }
@@ -121,7 +133,8 @@ TEST(PspBurnout, MoreOcclusionNeverBrightens) {
     int lastByte = 256;
     long long lastEnergy = -1;
     for (int columns = 0; columns <= 14; ++columns) {
-        auto r = runPspFrame(PspTrick::Burnout, input([columns](int i, int) { return i < columns; }));
+        auto r =
+            runPspFrame(PspTrick::Burnout, input([columns](int i, int) { return i < columns; }));
         ASSERT_TRUE(r.ok());
         EXPECT_LE(r->coverageByte, lastByte) << columns << " columns";
         const long long energy = flareEnergy(*r);
@@ -136,7 +149,8 @@ TEST(PspBurnout, MoreOcclusionNeverBrightens) {
 TEST(PspBurnout, HiddenSunDrawsNoFlareAndTheNaiveEmulatorDrawsItAnyway) {
     auto hidden = runPspFrame(PspTrick::Burnout, input([](int, int) { return true; }));
     ASSERT_TRUE(hidden.ok());
-    EXPECT_EQ(hidden->frame.pixels, step(*hidden, "07-restored").pixels);  // alpha 0: the flare adds nothing
+    EXPECT_EQ(hidden->frame.pixels,
+              step(*hidden, "07-restored").pixels);  // alpha 0: the flare adds nothing
     auto naive = runPspFrame(PspTrick::Burnout, input([](int, int) { return true; }, 14, true));
     ASSERT_TRUE(naive.ok());
     EXPECT_EQ(naive->coverageByte, 0);  // the chain itself works in the naive emulator...
@@ -145,7 +159,8 @@ TEST(PspBurnout, HiddenSunDrawsNoFlareAndTheNaiveEmulatorDrawsItAnyway) {
     auto visible = runPspFrame(PspTrick::Burnout, input([](int, int) { return false; }));
     ASSERT_TRUE(visible.ok());
     EXPECT_GT(flareEnergy(*naive), 0);
-    EXPECT_EQ(naive->clutAfter, visible->clutAfter);  // the same full-alpha CLUT as a fully visible sun
+    EXPECT_EQ(naive->clutAfter,
+              visible->clutAfter);  // the same full-alpha CLUT as a fully visible sun
     // Full flare regardless: as bright as the visible sun's (less only where the flare lies
     // over the occluder square and the sky's clamped colours differ).
     EXPECT_GT(flareEnergy(*naive), flareEnergy(*visible) * 9 / 10);
@@ -187,7 +202,8 @@ TEST(PspRidgeRacer, SumCountsVisiblePixelsAndSaturates) {
 TEST(PspGe, ClutLoadCopiesAtExecution) {
     Memory memory;
     const std::uint32_t clut = kRamBase + 0x10000;
-    for (int i = 0; i < 256; ++i) memory.write32(clut + std::uint32_t(i) * 4, 0x11111111u * std::uint32_t(i % 16));
+    for (int i = 0; i < 256; ++i)
+        memory.write32(clut + std::uint32_t(i) * 4, 0x11111111u * std::uint32_t(i % 16));
     DisplayList list(memory, kRamBase, kRamBase + 0x20000);
     list.loadClut(clut, kPixel8888, 256);
     const std::uint32_t start = list.end();
@@ -201,11 +217,13 @@ TEST(PspGe, ClutLoadCopiesAtExecution) {
 }
 
 TEST(PspGe, PixelFormatsAndWriteMask) {
-    for (std::uint32_t v = 0; v < 65536; ++v) ASSERT_EQ(encodePixel(decodePixel(v, kPixel565), kPixel565), v);
+    for (std::uint32_t v = 0; v < 65536; ++v)
+        ASSERT_EQ(encodePixel(decodePixel(v, kPixel565), kPixel565), v);
     // PMSKC R 0xFF, G 0x1F, B 0x00 protects bits 0-7 of a 565 pixel: the seed's 0xFF00 writes.
     EXPECT_EQ(protectedBits(0x001FFF, kPixel565), 0x00FFu);
     // The gradient CLUT entry n << 8 comes back as n in the high byte.
-    for (std::uint32_t n = 0; n < 256; ++n) EXPECT_EQ(encodePixel(decodePixel(n << 8, kPixel565), kPixel565) >> 8, n);
+    for (std::uint32_t n = 0; n < 256; ++n)
+        EXPECT_EQ(encodePixel(decodePixel(n << 8, kPixel565), kPixel565) >> 8, n);
 }
 
 TEST(PspGe, UnsupportedCommandIsAnErrorNotACrash) {

@@ -17,7 +17,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
-// The ground truth's own bound: with the default sample count the error is below 0.005 on any scene.
+// The ground truth's own bound: with the default sample count the error is below 0.005 on any
+// scene.
 constexpr double kTolerance = 0.005;
 
 Scene sunAhead(double angularRadiusDeg) {
@@ -132,8 +133,10 @@ TEST(Raycast, BvhAgreesWithBruteForceOnFoliage) {
     std::uniform_real_distribution<double> u(-3, 3), depth(-40, -10), small(-0.3, 0.3);
     for (int i = 0; i < 3000; ++i) {
         const Vec3 c{u(rng), u(rng), depth(rng)};
-        s.triangles.push_back({c + Vec3{small(rng), small(rng), small(rng)}, c + Vec3{small(rng), small(rng), small(rng)},
-                               c + Vec3{small(rng), small(rng), small(rng)}, {}});
+        s.triangles.push_back({c + Vec3{small(rng), small(rng), small(rng)},
+                               c + Vec3{small(rng), small(rng), small(rng)},
+                               c + Vec3{small(rng), small(rng), small(rng)},
+                               {}});
     }
     for (int i = 0; i < 30; ++i) s.spheres.push_back({{u(rng), u(rng), depth(rng)}, 0.2, {}});
     for (int i = 0; i < 30; ++i) {
@@ -150,7 +153,8 @@ TEST(Raycast, BvhAgreesWithBruteForceOnFoliage) {
         for (const Triangle& t : s.triangles) brute = brute || intersect::triangle({0, 0, 0}, d, t);
         for (const Sphere& sp : s.spheres) brute = brute || intersect::sphere({0, 0, 0}, d, sp);
         const Vec3 inv{1 / d.x, 1 / d.y, 1 / d.z};
-        for (const Box& b : s.boxes) brute = brute || intersect::slabs({0, 0, 0}, inv, b.min, b.max);
+        for (const Box& b : s.boxes)
+            brute = brute || intersect::slabs({0, 0, 0}, inv, b.min, b.max);
         ASSERT_EQ(bvh.occluded({0, 0, 0}, d), brute) << i;
         hits += brute;
     }

@@ -27,19 +27,25 @@ TEST(Scene, ContractExampleLoads) {
 }
 
 TEST(Scene, ErrorsNameTheField) {
-    EXPECT_EQ(errorOf(R"([{"type":"box","min":[0,0,0],"max":[1,1,1]},{"type":"box","min":[0,0,0],"max":[1,1,1]},
+    EXPECT_EQ(
+        errorOf(
+            R"([{"type":"box","min":[0,0,0],"max":[1,1,1]},{"type":"box","min":[0,0,0],"max":[1,1,1]},
         {"type":"box","min":[0,0,0],"max":[1,1,1]},{"type":"box","min":[0,0,0],"max":[1,1,1]},
         {"type":"sphere","center":[0,0,0],"radius":-1}])"),
-              "scene.json: objects[4].radius: expected a positive number, got -1");
+        "scene.json: objects[4].radius: expected a positive number, got -1");
     EXPECT_EQ(errorOf(R"([{"type":"sphere","center":[0,0],"radius":1}])"),
               "scene.json: objects[0].center: expected an array of 3 numbers, got [0,0]");
-    EXPECT_EQ(errorOf(R"([{"type":"cone"}])"), R"(scene.json: objects[0].type: expected "sphere", "box" or "triangles", got "cone")");
+    EXPECT_EQ(
+        errorOf(R"([{"type":"cone"}])"),
+        R"(scene.json: objects[0].type: expected "sphere", "box" or "triangles", got "cone")");
     EXPECT_EQ(errorOf(R"([{"type":"box","min":[0,0,0],"max":[1,0,1]}])"),
               "scene.json: objects[0].max: expected every component greater than min's");
     EXPECT_EQ(errorOf(R"([{"type":"triangles","vertices":[[0,0,0],[1,0,0]]}])"),
-              "scene.json: objects[0].vertices: expected an array of 3N vertices (N >= 1), got [[0,0,0],[1,0,0]]");
+              "scene.json: objects[0].vertices: expected an array of 3N vertices (N >= 1), got "
+              "[[0,0,0],[1,0,0]]");
     EXPECT_EQ(errorOf(R"([{"type":"sphere","center":[0,0,0],"radius":1,"colour":[1,0,0]}])"),
-              "scene.json: objects[0].colour: unknown key (expected one of: type, center, radius, color)");
+              "scene.json: objects[0].colour: unknown key (expected one of: type, center, radius, "
+              "color)");
     EXPECT_EQ(errorOf("[]"), "(ok)");
 }
 
@@ -48,15 +54,20 @@ TEST(Scene, CameraAndSunAreChecked) {
         auto r = parseScene(text, "s.json");
         return r.ok() ? "(ok)" : r.error().message;
     };
-    EXPECT_EQ(bad(R"({"camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}})"),
-              "s.json: image: missing; expected an object");
-    EXPECT_EQ(bad(R"({"image": {"width": 0, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}})"),
-              "s.json: image.width: expected an integer in [1, 32768], got 0");
-    EXPECT_EQ(bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,0]}, "sun": {"direction": [0,0,-1]}})"),
-              "s.json: camera.look_at: expected a point different from camera.position");
-    EXPECT_EQ(bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,0]}})"),
-              "s.json: sun.direction: expected a non-zero direction");
-    EXPECT_EQ(bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,1,0]}, "sun": {"direction": [0,0,-1]}})"),
-              "s.json: camera.up: expected a direction not parallel to the view direction");
+    EXPECT_EQ(
+        bad(R"({"camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}})"),
+        "s.json: image: missing; expected an object");
+    EXPECT_EQ(
+        bad(R"({"image": {"width": 0, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}})"),
+        "s.json: image.width: expected an integer in [1, 32768], got 0");
+    EXPECT_EQ(
+        bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,0]}, "sun": {"direction": [0,0,-1]}})"),
+        "s.json: camera.look_at: expected a point different from camera.position");
+    EXPECT_EQ(
+        bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,0]}})"),
+        "s.json: sun.direction: expected a non-zero direction");
+    EXPECT_EQ(
+        bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,1,0]}, "sun": {"direction": [0,0,-1]}})"),
+        "s.json: camera.up: expected a direction not parallel to the view direction");
     EXPECT_EQ(bad("{").rfind("s.json: invalid JSON: parse error", 0), 0u);
 }

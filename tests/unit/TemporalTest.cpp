@@ -96,9 +96,11 @@ TEST(Temporal, ExposureDimsWhileStaringAtTheSunAndRecovers) {
     p.adaptBrightenSeconds = 1.5;
     p.attackSeconds = p.releaseSeconds = 0;  // coverage steps at once: only adaptation lags
     TemporalFilter f(p);
-    EXPECT_DOUBLE_EQ(f.update(0, kCentre, true, kW, kH, 0).exposure, 1.0);  // hidden sun: no dimming
+    EXPECT_DOUBLE_EQ(f.update(0, kCentre, true, kW, kH, 0).exposure,
+                     1.0);  // hidden sun: no dimming
     double e = 1;
-    for (int i = 0; i < 300; ++i) e = f.update(1, kCentre, true, kW, kH, 0.01).exposure;  // 10 time constants
+    for (int i = 0; i < 300; ++i)
+        e = f.update(1, kCentre, true, kW, kH, 0.01).exposure;  // 10 time constants
     EXPECT_NEAR(e, 1 / 1.6, 1e-4);
     // One brighten time constant after the sun is hidden: 1/e of the way back, in log space.
     double back = e;

@@ -18,7 +18,9 @@ int runBlend(const BlendArgs& a) {
         auto dst = readQuietly(readImage8, a.dst);
         if (!dst) return dst.error();
         auto blended = blendImages8(mode, *src, *dst);
-        if (!blended) return Error{blended.error().code, a.src + " onto " + a.dst + ": " + blended.error().message};
+        if (!blended)
+            return Error{blended.error().code,
+                         a.src + " onto " + a.dst + ": " + blended.error().message};
         return blended;
     });
 }
@@ -29,14 +31,17 @@ void addBlendCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand(
         "blend", "Blend two 8-bit images with the exact integer formulas of Tanczos 1999; RGB out");
     cmd->add_option("--mode", args->mode,
-                    "alpha: (s*a + d*(255-a))/255; alpha-shift: ... >> 8; premultiplied: s*a/255 + ((d*(255-a)) >> 8); "
+                    "alpha: (s*a + d*(255-a))/255; alpha-shift: ... >> 8; premultiplied: s*a/255 + "
+                    "((d*(255-a)) >> 8); "
                     "add: min(s + d, 255) (SIMD)")
         ->required()
         ->check(CLI::IsMember({"alpha", "alpha-shift", "premultiplied", "add"}));
-    cmd->add_option("--src", args->src, "source, 8-bit RGBA (its alpha is the blend alpha; RGB allowed for add)")
+    cmd->add_option("--src", args->src,
+                    "source, 8-bit RGBA (its alpha is the blend alpha; RGB allowed for add)")
         ->required();
     cmd->add_option("--dst", args->dst, "destination, 8-bit RGB or RGBA, same size")->required();
-    cmd->add_option("-o,--output", args->out, "output, 8-bit RGB (.png, .tif, .bmp, ...)")->required();
+    cmd->add_option("-o,--output", args->out, "output, 8-bit RGB (.png, .tif, .bmp, ...)")
+        ->required();
     cmd->callback([args, &exitCode] { exitCode = runBlend(*args); });
 }
 

@@ -2,9 +2,9 @@
 
 #include "core/AtomicFile.h"
 
+#include <unistd.h>
 #include <charconv>
 #include <cmath>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstring>
@@ -17,7 +17,9 @@ int report(const Error& error) {
     return error.code == ErrorCode::Internal ? kExitInternal : kExitBadInput;
 }
 
-void warn(const std::string& message) { std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str()); }
+void warn(const std::string& message) {
+    std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str());
+}
 
 LibraryNoiseFilter::LibraryNoiseFilter() {
     std::fflush(stderr);
@@ -69,7 +71,8 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text) {
         if (ec != std::errc() || ptr != end || begin == end) return std::nullopt;
         return v;
     };
-    auto w = number(text.data(), text.data() + x), h = number(text.data() + x + 1, text.data() + text.size());
+    auto w = number(text.data(), text.data() + x),
+         h = number(text.data() + x + 1, text.data() + text.size());
     if (!w || !h) return std::nullopt;
     return std::pair{*w, *h};
 }
@@ -78,11 +81,13 @@ Result<LoadedImage> readInputImage(const std::string& path) {
     auto loaded = readQuietly(readImage, path);
     if (!loaded) return loaded.error();
     if (loaded->droppedChannels > 0) {
-        return invalidInput(path + ": " + std::to_string(loaded->fileChannels) +
-                            " channels; flarekit reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off "
-                            "first, e.g. oiiotool IN --ch R,G,B,A -o rgba.exr");
+        return invalidInput(
+            path + ": " + std::to_string(loaded->fileChannels) +
+            " channels; flarekit reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off "
+            "first, e.g. oiiotool IN --ch R,G,B,A -o rgba.exr");
     }
-    if (loaded->nonFinite > 0) warn(path + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
+    if (loaded->nonFinite > 0)
+        warn(path + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
     return loaded;
 }
 
@@ -90,7 +95,8 @@ Status makeOutputDirectory(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir)) {
-        return invalidInput(dir + ": cannot create the output directory" + (ec ? ": " + ec.message() : ""));
+        return invalidInput(dir + ": cannot create the output directory" +
+                            (ec ? ": " + ec.message() : ""));
     }
     return Ok{};
 }
@@ -112,8 +118,9 @@ int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& 
 }
 
 Error builtWithoutGl(const std::string& what) {
-    return invalidInput(what + ": this flarekit was built without OpenGL (FLAREKIT_GL=OFF); rebuild with "
-                               "-DFLAREKIT_GL=ON for the GPU paths");
+    return invalidInput(what +
+                        ": this flarekit was built without OpenGL (FLAREKIT_GL=OFF); rebuild with "
+                        "-DFLAREKIT_GL=ON for the GPU paths");
 }
 
 Status writeText(const std::string& path, const std::string& text) {

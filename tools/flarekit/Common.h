@@ -26,13 +26,13 @@ void warn(const std::string& message);
 //! Holds back what libraries print on stderr while it lives; on destruction replays it except
 //! libpng's own "libpng error: ..." lines, which repeat what flarekit reports in its one line.
 class LibraryNoiseFilter {
-public:
+  public:
     LibraryNoiseFilter();
     ~LibraryNoiseFilter();
     LibraryNoiseFilter(const LibraryNoiseFilter&) = delete;
     LibraryNoiseFilter& operator=(const LibraryNoiseFilter&) = delete;
 
-private:
+  private:
     std::FILE* m_capture = nullptr;
     int m_saved = -1;
 };

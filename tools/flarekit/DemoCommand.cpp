@@ -32,8 +32,9 @@ struct DemoArgs {
 
 //! Writes frames in order on its own thread; at most `capacity` frames wait in memory.
 class FrameWriter {
-public:
-    explicit FrameWriter(std::size_t capacity) : m_capacity(capacity), m_thread([this] { run(); }) {}
+  public:
+    explicit FrameWriter(std::size_t capacity)
+        : m_capacity(capacity), m_thread([this] { run(); }) {}
     ~FrameWriter() { (void)close(); }
     void push(std::string path, Image image) {
         std::unique_lock lock(m_mutex);
@@ -52,7 +53,7 @@ public:
         return m_status;
     }
 
-private:
+  private:
     void run() {
         for (;;) {
             std::pair<std::string, Image> job;
@@ -98,8 +99,9 @@ Image shrink(const Image& src, int factor) {
 
 //! Six evenly spaced frames side by side, 3 x 2, each 1/4 size (or less for big frames).
 class Strip {
-public:
-    Strip(int frames, int width, int height) : m_frames(frames), m_factor(std::max(1, width / 320)) {
+  public:
+    Strip(int frames, int width, int height)
+        : m_frames(frames), m_factor(std::max(1, width / 320)) {
         m_cellW = width / m_factor;
         m_cellH = height / m_factor;
         m_image = Image(3 * m_cellW, 2 * m_cellH);
@@ -117,7 +119,7 @@ public:
     }
     const Image& image() const { return m_image; }
 
-private:
+  private:
     int pick(int k) const { return int(std::lround((k + 0.5) / 6.0 * (m_frames - 1))); }
     int m_frames, m_factor, m_cellW = 0, m_cellH = 0;
     Image m_image;
@@ -126,7 +128,9 @@ private:
 #if FLAREKIT_HAS_GL
 int runDemo(DemoArgs& a) {
     const auto size = parseSize(a.size);
-    if (!size) return report(invalidInput("--size: expected WIDTHxHEIGHT, e.g. 1280x720, got '" + a.size + "'"));
+    if (!size)
+        return report(
+            invalidInput("--size: expected WIDTHxHEIGHT, e.g. 1280x720, got '" + a.size + "'"));
     const auto [w, h] = *size;
     a.settings.width = w;
     a.settings.height = h;
@@ -147,12 +151,14 @@ int runDemo(DemoArgs& a) {
         number.insert(0, std::size_t(digits) - std::min(number.size(), std::size_t(digits)), '0');
         return dir + "frame_" + number + ".png";
     };
-    std::printf("demo: %d frames at %dx%d, %zu objects, method %s, %s via %s\n", n, w, h, demo->primitiveCount(),
-                a.settings.method.c_str(), (*gl)->renderer().c_str(), (*gl)->platform().c_str());
+    std::printf("demo: %d frames at %dx%d, %zu objects, method %s, %s via %s\n", n, w, h,
+                demo->primitiveCount(), a.settings.method.c_str(), (*gl)->renderer().c_str(),
+                (*gl)->platform().c_str());
     std::fflush(stdout);
 
-    std::string csv = "frame,time_s,coverage_raw,coverage_smoothed,in_frame,edge_fade,exposure,sun_x,sun_y,"
-                      "flare_intensity,render_ms,visibility_ms,flare_ms\n";
+    std::string csv =
+        "frame,time_s,coverage_raw,coverage_smoothed,in_frame,edge_fade,exposure,sun_x,sun_y,"
+        "flare_intensity,render_ms,visibility_ms,flare_ms\n";
     double renderMs = 0, visibilityMs = 0, flareMs = 0;
     Strip strip(n, w, h);
     FrameWriter writer(3);
@@ -165,11 +171,12 @@ int runDemo(DemoArgs& a) {
             return report(frame.error());
         }
         char line[256];
-        std::snprintf(line, sizeof line, "%d,%.4f,%.5f,%.5f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.2f,%.2f,%.2f\n", i + 1,
+        std::snprintf(line, sizeof line,
+                      "%d,%.4f,%.5f,%.5f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.2f,%.2f,%.2f\n", i + 1,
                       frame->time, frame->rawCoverage, frame->temporal.coverage, frame->inFrame,
                       frame->temporal.edgeFade, frame->temporal.exposure, double(frame->sunPixel.x),
-                      double(frame->sunPixel.y), double(frame->flareIntensity), frame->renderMs, frame->visibilityMs,
-                      frame->flareMs);
+                      double(frame->sunPixel.y), double(frame->flareIntensity), frame->renderMs,
+                      frame->visibilityMs, frame->flareMs);
         csv += line;
         renderMs += frame->renderMs;
         visibilityMs += frame->visibilityMs;
@@ -182,10 +189,11 @@ int runDemo(DemoArgs& a) {
     if (Status s = writer.close(); !s) return report(s.error());
     if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
     if (Status s = writeImage(dir + "strip.png", strip.image()); !s) return report(s.error());
-    std::printf("demo: per frame %.1f ms render, %.1f ms visibility (%s), %.1f ms flare + tone map\n", renderMs / n,
-                visibilityMs / n, a.settings.method.c_str(), flareMs / n);
-    std::printf("demo: frames %s .. %s, log %scoverage.csv, strip %sstrip.png\n", framePath(0).c_str(),
-                framePath(n - 1).c_str(), dir.c_str(), dir.c_str());
+    std::printf(
+        "demo: per frame %.1f ms render, %.1f ms visibility (%s), %.1f ms flare + tone map\n",
+        renderMs / n, visibilityMs / n, a.settings.method.c_str(), flareMs / n);
+    std::printf("demo: frames %s .. %s, log %scoverage.csv, strip %sstrip.png\n",
+                framePath(0).c_str(), framePath(n - 1).c_str(), dir.c_str(), dir.c_str());
     if (a.noVideo) return kExitOk;
     const std::string ffmpeg = findFfmpeg();
     if (ffmpeg.empty()) {
@@ -195,7 +203,8 @@ int runDemo(DemoArgs& a) {
     const double fps = n / kDemoDurationSeconds;
     char pattern[64];
     std::snprintf(pattern, sizeof pattern, "frame_%%0%dd.png", digits);
-    if (Status s = encodeVideo(ffmpeg, dir + pattern, fps, dir + "demo.mp4", dir + "ffmpeg.log"); !s) {
+    if (Status s = encodeVideo(ffmpeg, dir + pattern, fps, dir + "demo.mp4", dir + "ffmpeg.log");
+        !s) {
         return report(s.error());
     }
     std::error_code ec;
@@ -205,22 +214,31 @@ int runDemo(DemoArgs& a) {
 }
 
 #else
-int runDemo(DemoArgs&) { return report(builtWithoutGl("demo")); }
+int runDemo(DemoArgs&) {
+    return report(builtWithoutGl("demo"));
+}
 #endif
 }  // namespace
 
 void addDemoCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<DemoArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "demo", "Render the built-in drive (trees, buildings, tunnel, turn) with an occlusion-aware sun flare");
-    cmd->add_option("-o,--output", args->outDir, "output directory (created if missing)")->required();
+    CLI::App* cmd = app.add_subcommand("demo",
+                                       "Render the built-in drive (trees, buildings, tunnel, turn) "
+                                       "with an occlusion-aware sun flare");
+    cmd->add_option("-o,--output", args->outDir, "output directory (created if missing)")
+        ->required();
     addParamOption<DemoSettings>(cmd, kDemoParams, "frames", args->settings);
     cmd->add_option("--size", args->size, "frame size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--method", args->settings.method, "visibility method, one of " + visibilityMethodList() + " (raycast: CPU flare; the others: flare, smoothing and tone map on the GPU)")
+    cmd->add_option(
+           "--method", args->settings.method,
+           "visibility method, one of " + visibilityMethodList() +
+               " (raycast: CPU flare; the others: flare, smoothing and tone map on the GPU)")
         ->capture_default_str();
-    cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
-    cmd->add_flag("--conditional-render", args->settings.conditionalRender,
-                  "with --method query: draw the flare under glBeginConditionalRender on the sun's query");
+    cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")
+        ->capture_default_str();
+    cmd->add_flag(
+        "--conditional-render", args->settings.conditionalRender,
+        "with --method query: draw the flare under glBeginConditionalRender on the sun's query");
     addParamOption<DemoSettings>(cmd, kDemoParams, "samples", args->settings);
     addParamOption<DemoSettings>(cmd, kDemoParams, "msaa", args->settings);
     addParamOptions<TemporalParams>(cmd, kTemporalParams, args->settings.temporal);

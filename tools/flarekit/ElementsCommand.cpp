@@ -21,7 +21,10 @@ int runElements(const ElementsArgs& a) {
         if (!preset) return preset.error();
         auto sheet = renderContactSheet(*preset, a.cell);
         if (!sheet) return sheet.error();
-        if (!sheet->labelled) warn("no font found for the labels (install fonts-dejavu-core); sheet written without them");
+        if (!sheet->labelled)
+            warn(
+                "no font found for the labels (install fonts-dejavu-core); sheet written without "
+                "them");
         return ImageOutput{std::move(sheet->image), {}};
     });
 }
@@ -29,8 +32,10 @@ int runElements(const ElementsArgs& a) {
 
 void addElementsCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<ElementsArgs>();
-    CLI::App* cmd = app.add_subcommand("elements", "Render a preset's elements as a labelled contact sheet");
-    cmd->add_option("--preset", args->preset, "shipped preset name or a JSON file")->capture_default_str();
+    CLI::App* cmd =
+        app.add_subcommand("elements", "Render a preset's elements as a labelled contact sheet");
+    cmd->add_option("--preset", args->preset, "shipped preset name or a JSON file")
+        ->capture_default_str();
     cmd->add_option("-o,--output", args->out, "output image")->required();
     addParamOptions<ElementsArgs>(cmd, kElementsArgParams, *args);
     cmd->callback([args, &exitCode] { exitCode = runElements(*args); });

@@ -11,8 +11,10 @@
 namespace flarekit::cli {
 
 class JsonLine {
-public:
-    JsonLine& text(const char* key, const std::string& value) { return raw(key, nlohmann::json(value).dump()); }
+  public:
+    JsonLine& text(const char* key, const std::string& value) {
+        return raw(key, nlohmann::json(value).dump());
+    }
     JsonLine& number(const char* key, double value, int decimals) {
         char s[64];
         std::snprintf(s, sizeof s, "%.*f", decimals, value);
@@ -23,7 +25,7 @@ public:
     JsonLine& null(const char* key) { return raw(key, "null"); }
     std::string str() const { return "{" + m_body + "}"; }
 
-private:
+  private:
     JsonLine& raw(const char* key, const std::string& value) {
         m_body += (m_body.empty() ? "" : ", ") + nlohmann::json(key).dump() + ": " + value;
         return *this;

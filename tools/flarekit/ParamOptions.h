@@ -51,8 +51,8 @@ CLI::Option* addParamOption(CLI::App* cmd, const Param<Owner>& p, Owner& target)
 
 //! The parameter `key` of `table` as --key (a key missing from the table is a programming error).
 template <class Owner>
-CLI::Option* addParamOption(CLI::App* cmd, std::span<const Param<Owner>> table, std::string_view key,
-                            Owner& target) {
+CLI::Option* addParamOption(CLI::App* cmd, std::span<const Param<Owner>> table,
+                            std::string_view key, Owner& target) {
     const Param<Owner>* p = findParam(table, key);
     if (!p) throw std::logic_error("no parameter '" + std::string(key) + "'");
     return addParamOption(cmd, *p, target);
@@ -72,8 +72,7 @@ template <class Owner, class T>
 CLI::Option* addParamOverride(CLI::App* cmd, const std::string& flag, const Param<Owner>& p,
                               std::optional<T>& out, const std::string& defaultFrom) {
     auto* option = cmd->add_option_function<double>(
-        flag, [&out](double x) { out = T(x); },
-        paramHelp(p) + " (default: " + defaultFrom + ")");
+        flag, [&out](double x) { out = T(x); }, paramHelp(p) + " (default: " + defaultFrom + ")");
     option->check(paramValidator(p));
     return option;
 }

@@ -16,13 +16,15 @@ namespace flarekit::cli {
 
 namespace {
 struct PostFxArgs {
-    std::string in, out, preset = kDefaultPostFxPreset, backend = "cpu", layersDir, tonemap = "preset";
+    std::string in, out, preset = kDefaultPostFxPreset, backend = "cpu", layersDir,
+                         tonemap = "preset";
     std::optional<float> exposure, threshold, knee;
     int repeat = 1;
     bool verbose = false;
 };
 inline constexpr Param<PostFxArgs> kPostFxArgParams[] = {
-    param<&PostFxArgs::repeat>("repeat", 1, 1000, "runs",
+    param<&PostFxArgs::repeat>(
+        "repeat", 1, 1000, "runs",
         "run the chain N times and print the mean time of the warm runs (benchmarking)"),
 };
 
@@ -32,7 +34,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 //! Runs the chain `repeat` times (buffers kept, as in a video) and, when repeating, prints the
 //! mean time of the runs after the first: the figure bench/peers/run_blender_peer.sh compares.
-Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const PostFxParams& params, const PostFxOptions& options) {
+Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const PostFxParams& params,
+                                const PostFxOptions& options) {
     PostFxResult result;
     double warmSeconds = 0;
     if (a.backend == "cpu") {
@@ -61,8 +64,9 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
 #endif
     }
     if (a.repeat > 1) {
-        std::printf("flarekit-postfx %dx%d %s %s: %.4f s per run (mean of %d after the first)\n", image.width(), image.height(),
-                    a.backend.c_str(), params.name.c_str(), warmSeconds / (a.repeat - 1), a.repeat - 1);
+        std::printf("flarekit-postfx %dx%d %s %s: %.4f s per run (mean of %d after the first)\n",
+                    image.width(), image.height(), a.backend.c_str(), params.name.c_str(),
+                    warmSeconds / (a.repeat - 1), a.repeat - 1);
     }
     return result;
 }
@@ -70,9 +74,11 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
 Status writeLayers(const std::string& dir, const PostFxResult& r) {
     if (Status s = makeOutputDirectory(dir); !s) return s;
     const int w = r.final.width(), h = r.final.height();
-    for (auto [name, layer] : {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
-                               std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}}) {
-        const std::string path = (std::filesystem::path(dir) / (std::string(name) + ".exr")).string();
+    for (auto [name, layer] :
+         {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
+          std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}}) {
+        const std::string path =
+            (std::filesystem::path(dir) / (std::string(name) + ".exr")).string();
         if (Status s = writeImage(path, resizeBilinear(*layer, w, h)); !s) return s;
     }
     return writeImage((std::filesystem::path(dir) / "final.exr").string(), r.final);
@@ -81,7 +87,10 @@ Status writeLayers(const std::string& dir, const PostFxResult& r) {
 Result<ImageOutput> runChain(const PostFxArgs& a) {
     auto params = loadPostFxPreset(a.preset);
     if (!params) return params.error();
-    if (a.tonemap != "preset") params->tone.op = a.tonemap == "aces" ? ToneOperator::Aces : a.tonemap == "filmic" ? ToneOperator::Filmic : ToneOperator::None;
+    if (a.tonemap != "preset")
+        params->tone.op = a.tonemap == "aces"     ? ToneOperator::Aces
+                          : a.tonemap == "filmic" ? ToneOperator::Filmic
+                                                  : ToneOperator::None;
     if (a.exposure) params->tone.exposure = *a.exposure;
     if (a.threshold) params->bright.threshold = *a.threshold;
     if (a.knee) params->bright.knee = *a.knee;
@@ -96,9 +105,11 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
     if (!result) return result.error();
     if (a.verbose) {
         // Wall time (with glFinish around each GL pass): llvmpipe's timer queries are not usable.
-        std::printf("%-10s %9s %9s %9s\n", "pass", "wall ms", "MP/s", a.backend == "gl" ? "GPU ms" : "");
+        std::printf("%-10s %9s %9s %9s\n", "pass", "wall ms", "MP/s",
+                    a.backend == "gl" ? "GPU ms" : "");
         for (const PassTime& t : times) {
-            std::printf("%-10s %9.2f %9.1f", t.pass.c_str(), t.wallMilliseconds, t.megapixels / (t.wallMilliseconds * 1e-3));
+            std::printf("%-10s %9.2f %9.1f", t.pass.c_str(), t.wallMilliseconds,
+                        t.megapixels / (t.wallMilliseconds * 1e-3));
             if (a.backend == "gl") std::printf(" %9.3f", t.milliseconds);
             std::printf("\n");
         }
@@ -118,23 +129,38 @@ int runPostFx(const PostFxArgs& a) {
 
 void addPostFxCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<PostFxArgs>();
-    CLI::App* cmd = app.add_subcommand("postfx", "Image-based lens flare (Killzone 2 / Kawase ghosts, bloom, halo, streaks, dirt) on any image");
-    cmd->add_option("input", args->in, "input image (EXR kept linear; 8-bit files are sRGB-decoded; grey and grey+alpha promoted)")->required();
-    cmd->add_option("-o,--output", args->out, "output image; format and bit depth follow the extension")->required();
-    cmd->add_option("--preset", args->preset, "shipped post-process preset (killzone2, modern, anamorphic, subtle) or a JSON file")
+    CLI::App* cmd = app.add_subcommand("postfx",
+                                       "Image-based lens flare (Killzone 2 / Kawase ghosts, bloom, "
+                                       "halo, streaks, dirt) on any image");
+    cmd->add_option("input", args->in,
+                    "input image (EXR kept linear; 8-bit files are sRGB-decoded; grey and "
+                    "grey+alpha promoted)")
+        ->required();
+    cmd->add_option("-o,--output", args->out,
+                    "output image; format and bit depth follow the extension")
+        ->required();
+    cmd->add_option(
+           "--preset", args->preset,
+           "shipped post-process preset (killzone2, modern, anamorphic, subtle) or a JSON file")
         ->capture_default_str();
     cmd->add_option("--backend", args->backend, "cpu, or gl (OpenGL 4.5 through headless EGL)")
         ->check(CLI::IsMember({"cpu", "gl"}))
         ->capture_default_str();
-    cmd->add_option("--save-layers", args->layersDir, "also write bloom, ghosts, halo, streaks, lens and final (linear EXR) into DIR");
-    cmd->add_option("--tonemap", args->tonemap, "display curve: preset (the preset's), none, aces, filmic")
+    cmd->add_option(
+        "--save-layers", args->layersDir,
+        "also write bloom, ghosts, halo, streaks, lens and final (linear EXR) into DIR");
+    cmd->add_option("--tonemap", args->tonemap,
+                    "display curve: preset (the preset's), none, aces, filmic")
         ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
         ->capture_default_str();
-    addParamOverride(cmd, "--exposure", *findParam<ToneParams>(kToneParams, "exposure"), args->exposure, "the preset's");
-    addParamOverride(cmd, "--threshold", *findParam<BrightParams>(kBrightParams, "threshold"), args->threshold,
-                     "the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9");
-    addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee, "the preset's");
-    cmd->add_flag("-v,--verbose", args->verbose, "print each pass's time (summed over --repeat runs)");
+    addParamOverride(cmd, "--exposure", *findParam<ToneParams>(kToneParams, "exposure"),
+                     args->exposure, "the preset's");
+    addParamOverride(cmd, "--threshold", *findParam<BrightParams>(kBrightParams, "threshold"),
+                     args->threshold, "the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9");
+    addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee,
+                     "the preset's");
+    cmd->add_flag("-v,--verbose", args->verbose,
+                  "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxArgs>(cmd, kPostFxArgParams, *args);
     cmd->callback([args, &exitCode] { exitCode = runPostFx(*args); });
 }

@@ -28,7 +28,8 @@ int runPostFxPresets(const PresetsArgs& a) {
     for (const std::string& name : shippedPostFxPresetNames()) {
         auto preset = loadPostFxPreset(name);
         if (!preset) return report(preset.error());
-        std::printf("%-18s %2zu ghosts  %s\n", name.c_str(), preset->ghosts.size(), preset->description.c_str());
+        std::printf("%-18s %2zu ghosts  %s\n", name.c_str(), preset->ghosts.size(),
+                    preset->description.c_str());
     }
     return kExitOk;
 }
@@ -48,7 +49,8 @@ int runPresets(const PresetsArgs& a) {
     for (const std::string& name : shippedPresetNames()) {
         auto preset = loadPreset(name);
         if (!preset) return report(preset.error());
-        std::printf("%-18s %2zu elements  %s\n", name.c_str(), preset->elements.size(), preset->description.c_str());
+        std::printf("%-18s %2zu elements  %s\n", name.c_str(), preset->elements.size(),
+                    preset->description.c_str());
     }
     return kExitOk;
 }
@@ -56,10 +58,12 @@ int runPresets(const PresetsArgs& a) {
 
 void addPresetsCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<PresetsArgs>();
-    CLI::App* cmd = app.add_subcommand("presets", "List shipped presets, check a preset file, or print the parameter reference");
+    CLI::App* cmd = app.add_subcommand(
+        "presets", "List shipped presets, check a preset file, or print the parameter reference");
     cmd->add_flag("--params", args->params, "print every element parameter (Markdown table)");
     cmd->add_option("--check", args->check, "validate a preset (name or file) and report");
-    cmd->add_flag("--postfx", args->postfx, "the same for the post-process presets of `flarekit postfx`");
+    cmd->add_flag("--postfx", args->postfx,
+                  "the same for the post-process presets of `flarekit postfx`");
     cmd->callback([args, &exitCode] { exitCode = runPresets(*args); });
 }
 

@@ -8,12 +8,12 @@
 namespace flarekit::cli {
 
 class Progress {
-public:
+  public:
     Progress(std::string label, int total);
     void update(int done);  //!< done items so far (monotonic)
     void finish();          //!< ends the bar's line
 
-private:
+  private:
     std::string m_label;
     int m_total;
     int m_lastDecile = -1;

@@ -42,7 +42,9 @@ std::string jsonLine(psp::PspTrick trick, bool naive, const psp::PspFrameResult&
 
 int runPsp(psp::PspTrick trick, const PspArgs& a) {
     const auto sun = parsePoint(a.sun);
-    if (!sun) return report(invalidInput("--sun: expected X,Y in screen pixels, e.g. 240,100, got '" + a.sun + "'"));
+    if (!sun)
+        return report(invalidInput("--sun: expected X,Y in screen pixels, e.g. 240,100, got '" +
+                                   a.sun + "'"));
     auto mask = readQuietly(readImage8, a.occluders);
     if (!mask) return report(mask.error());
     auto occluders = psp::occludersFromMask(*mask, a.occluders);
@@ -61,7 +63,9 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     if (!r) return report(r.error());
     if (Status s = writeImage8(a.out, r->frame); !s) return report(s.error());
     for (const psp::PspStep& step : r->steps)
-        if (Status s = writeImage8((std::filesystem::path(a.dumpDir) / (step.name + ".png")).string(), step.image); !s)
+        if (Status s = writeImage8(
+                (std::filesystem::path(a.dumpDir) / (step.name + ".png")).string(), step.image);
+            !s)
             return report(s.error());
     if (!a.traceFile.empty()) {
         std::string text;
@@ -71,10 +75,13 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     if (a.json) {
         std::printf("%s\n", jsonLine(trick, a.naive, *r).c_str());
     } else if (!r->sunInFrame) {
-        std::printf("psp: the sun (%d, %d) is outside the 480x272 screen: no mask, no flare\n", in.sunX, in.sunY);
+        std::printf("psp: the sun (%d, %d) is outside the 480x272 screen: no mask, no flare\n",
+                    in.sunX, in.sunY);
     } else {
-        std::printf("psp %s (%s): %d of %d mask pixels visible, coverage byte %d", trick == psp::PspTrick::Burnout ? "burnout" : "ridge-racer",
-                    a.naive ? "naive" : "correct", r->visiblePixels, r->maskPixels, r->coverageByte);
+        std::printf("psp %s (%s): %d of %d mask pixels visible, coverage byte %d",
+                    trick == psp::PspTrick::Burnout ? "burnout" : "ridge-racer",
+                    a.naive ? "naive" : "correct", r->visiblePixels, r->maskPixels,
+                    r->coverageByte);
         if (trick == psp::PspTrick::Burnout) std::printf(", flare CLUT alpha %d", r->clutAlpha);
         std::printf("\n");
     }
@@ -83,9 +90,12 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
 
 //! Side by side: the correct frame left, the naive one right.
 Image8 sideBySide(const Image8& left, const Image8& right) {
-    Image8 out{left.width + right.width, left.height, 3, std::vector<std::uint8_t>(std::size_t((left.width + right.width) * left.height * 3))};
+    Image8 out{
+        left.width + right.width, left.height, 3,
+        std::vector<std::uint8_t>(std::size_t((left.width + right.width) * left.height * 3))};
     for (int y = 0; y < left.height; ++y) {
-        std::copy_n(&left.pixels[std::size_t(y * left.width * 3)], left.width * 3, &out.pixels[std::size_t(y * out.width * 3)]);
+        std::copy_n(&left.pixels[std::size_t(y * left.width * 3)], left.width * 3,
+                    &out.pixels[std::size_t(y * out.width * 3)]);
         std::copy_n(&right.pixels[std::size_t(y * right.width * 3)], right.width * 3,
                     &out.pixels[std::size_t((y * out.width + left.width) * 3)]);
     }
@@ -95,7 +105,9 @@ Image8 sideBySide(const Image8& left, const Image8& right) {
 int runPspDemo(const PspDemoArgs& a) {
     if (Status s = makeOutputDirectory(a.outDir); !s) return report(s.error());
     const std::string dir = std::filesystem::path(a.outDir).string() + "/";
-    std::string csv = "frame,t,sun_x,sun_y,sun_in_frame,visible_pixels,coverage_byte,clut_alpha_correct,clut_alpha_naive\n";
+    std::string csv =
+        "frame,t,sun_x,sun_y,sun_in_frame,visible_pixels,coverage_byte,clut_alpha_correct,clut_"
+        "alpha_naive\n";
     Progress progress("psp demo", a.frames);
     for (int i = 0; i < a.frames; ++i) {
         const double t = a.frames > 1 ? double(i) / (a.frames - 1) : 0.0;
@@ -108,43 +120,60 @@ int runPspDemo(const PspDemoArgs& a) {
         if (!naive) return report(naive.error());
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i + 1);
-        if (Status s = writeImage8(dir + name, sideBySide(correct->frame, naive->frame)); !s) return report(s.error());
+        if (Status s = writeImage8(dir + name, sideBySide(correct->frame, naive->frame)); !s)
+            return report(s.error());
         char row[160];
-        std::snprintf(row, sizeof row, "%d,%.4f,%d,%d,%d,%d,%d,%d,%d\n", i + 1, t, in->sunX, in->sunY, correct->sunInFrame ? 1 : 0,
-                      correct->visiblePixels, correct->coverageByte, correct->clutAlpha, naive->clutAlpha);
+        std::snprintf(row, sizeof row, "%d,%.4f,%d,%d,%d,%d,%d,%d,%d\n", i + 1, t, in->sunX,
+                      in->sunY, correct->sunInFrame ? 1 : 0, correct->visiblePixels,
+                      correct->coverageByte, correct->clutAlpha, naive->clutAlpha);
         csv += row;
         progress.update(i + 1);
     }
     progress.finish();
     if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
-    std::printf("psp demo: %d frames (correct left, naive right) in %s, log %scoverage.csv\n", a.frames, dir.c_str(), dir.c_str());
+    std::printf("psp demo: %d frames (correct left, naive right) in %s, log %scoverage.csv\n",
+                a.frames, dir.c_str(), dir.c_str());
     return kExitOk;
 }
 
-void addTrick(CLI::App& psp, const char* name, psp::PspTrick trick, const char* about, int& exitCode) {
+void addTrick(CLI::App& psp, const char* name, psp::PspTrick trick, const char* about,
+              int& exitCode) {
     auto args = std::make_shared<PspArgs>();
     CLI::App* cmd = psp.add_subcommand(name, about);
-    cmd->add_option("--occluders", args->occluders, "480x272 mask image, non-zero = occluder in front of the sun")->required();
-    cmd->add_option("--sun", args->sun, "the sun's centre X,Y in screen pixels (outside the screen: no flare)")->required();
+    cmd->add_option("--occluders", args->occluders,
+                    "480x272 mask image, non-zero = occluder in front of the sun")
+        ->required();
+    cmd->add_option("--sun", args->sun,
+                    "the sun's centre X,Y in screen pixels (outside the screen: no flare)")
+        ->required();
     cmd->add_option("-o,--output", args->out, "the final frame (PNG)")->required();
-    cmd->add_flag("--naive", args->naive, "run as a naive emulator: render targets kept apart from CLUT memory");
+    cmd->add_flag("--naive", args->naive,
+                  "run as a naive emulator: render targets kept apart from CLUT memory");
     cmd->add_option("--dump", args->dumpDir, "write every step as a PNG into this directory");
-    cmd->add_option("--trace", args->traceFile, "write one line per executed GE command to this file");
-    cmd->add_flag("--json", args->json, "print one JSON object: coverage_byte, clut_alpha, visible_pixels, ...");
+    cmd->add_option("--trace", args->traceFile,
+                    "write one line per executed GE command to this file");
+    cmd->add_flag("--json", args->json,
+                  "print one JSON object: coverage_byte, clut_alpha, visible_pixels, ...");
     cmd->callback([args, trick, &exitCode] { exitCode = runPsp(trick, *args); });
 }
 }  // namespace
 
 void addPspCommand(CLI::App& app, int& exitCode) {
-    CLI::App* psp = app.add_subcommand("psp", "the Burnout Dominator lens flare on an emulated PSP GE (bit-exact)");
+    CLI::App* psp = app.add_subcommand(
+        "psp", "the Burnout Dominator lens flare on an emulated PSP GE (bit-exact)");
     psp->require_subcommand(1);
     addTrick(*psp, "burnout", psp::PspTrick::Burnout,
-             "Burnout Dominator: 14x14 mask, bilinear chain, coverage into the flare CLUT's alpha", exitCode);
-    addTrick(*psp, "ridge-racer", psp::PspTrick::RidgeRacer,
-             "Ridge Racer: 16x16 mask summed by blending, coverage as a texture on gouraud hexagons", exitCode);
+             "Burnout Dominator: 14x14 mask, bilinear chain, coverage into the flare CLUT's alpha",
+             exitCode);
+    addTrick(
+        *psp, "ridge-racer", psp::PspTrick::RidgeRacer,
+        "Ridge Racer: 16x16 mask summed by blending, coverage as a texture on gouraud hexagons",
+        exitCode);
     auto demo = std::make_shared<PspDemoArgs>();
-    CLI::App* cmd = psp->add_subcommand("demo", "the demo drive through the emulator, correct and naive side by side");
-    cmd->add_option("-o,--output", demo->outDir, "output directory (frames + coverage.csv)")->required();
+    CLI::App* cmd = psp->add_subcommand(
+        "demo", "the demo drive through the emulator, correct and naive side by side");
+    cmd->add_option("-o,--output", demo->outDir, "output directory (frames + coverage.csv)")
+        ->required();
     addParamOptions<PspDemoArgs>(cmd, kPspDemoParams, *demo);
     cmd->callback([demo, &exitCode] { exitCode = runPspDemo(*demo); });
 }

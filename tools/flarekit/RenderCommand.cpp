@@ -6,9 +6,9 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
-#include "flarekit/PostFxParams.h"
 #include "flarekit/FramePipeline.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/PostFxParams.h"
 #include "flarekit/Render.h"
 #include "flarekit/Tonemap.h"
 #if FLAREKIT_HAS_GL
@@ -28,7 +28,8 @@ struct RenderArgs {
 #if FLAREKIT_HAS_GL
 Result<ImageOutput> renderStill(const RenderArgs& a) {
     if (a.method != "raycast" && !isGpuVisibilityMethod(a.method)) {
-        return invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" + a.method + "'");
+        return invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" +
+                            a.method + "'");
     }
     auto scene = loadScene(a.scene);
     if (!scene) return scene.error();
@@ -52,10 +53,12 @@ Result<ImageOutput> renderStill(const RenderArgs& a) {
     auto frame = pipeline->run(*scene, 0.0);
     if (!frame) return frame.error();
     if (a.verbose) {
-        std::printf("%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare intensity %.3f\n",
-                    (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->rawCoverage, a.method.c_str(),
-                    frame->inFrame, double(frame->sunPixel.x), double(frame->sunPixel.y),
-                    frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
+        std::printf(
+            "%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare intensity "
+            "%.3f\n",
+            (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->rawCoverage,
+            a.method.c_str(), frame->inFrame, double(frame->sunPixel.x), double(frame->sunPixel.y),
+            frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
     }
     if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.tone.exposure);
     return ImageOutput{std::move(frame->image), {}};
@@ -65,22 +68,29 @@ int runRender(const RenderArgs& a) {
     return runImageJob(a.out, [&] { return renderStill(a); });
 }
 #else
-int runRender(const RenderArgs&) { return report(builtWithoutGl("render")); }
+int runRender(const RenderArgs&) {
+    return report(builtWithoutGl("render"));
+}
 #endif
 }  // namespace
 
 void addRenderCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<RenderArgs>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a scene (headless OpenGL) with a sun flare scaled by its visibility");
-    cmd->add_option("scene", args->scene, "scene JSON (see architecture.md)")->required();
-    cmd->add_option("-o,--output", args->out, "output image: EXR stays linear HDR, 8/16-bit outputs are tone-mapped")
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a scene (headless OpenGL) with a sun flare scaled by its visibility");
+    cmd->add_option("scene", args->scene, "scene JSON (docs/architecture.md)")->required();
+    cmd->add_option("-o,--output", args->out,
+                    "output image: EXR stays linear HDR, 8/16-bit outputs are tone-mapped")
         ->required();
-    cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")->capture_default_str();
+    cmd->add_option("--preset", args->preset, "sprite flare preset (name or JSON file)")
+        ->capture_default_str();
     cmd->add_option("--method", args->method,
                     "visibility method, one of " + visibilityMethodList() +
-                        " (raycast: flare drawn on the CPU; the others: the flare reads its coverage on the GPU)")
+                        " (raycast: flare drawn on the CPU; the others: the flare reads its "
+                        "coverage on the GPU)")
         ->capture_default_str();
-    cmd->add_option("--variant", args->variant, "texture-mask sampling: square (16x16, 256 points), circle, bilinear")
+    cmd->add_option("--variant", args->variant,
+                    "texture-mask sampling: square (16x16, 256 points), circle, bilinear")
         ->check(CLI::IsMember({"square", "circle", "bilinear"}))
         ->capture_default_str();
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);

@@ -32,7 +32,8 @@ int runLogged(const std::vector<std::string>& args, const std::string& logPath) 
     argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND,
+                                     0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     pid_t pid = 0;
@@ -45,18 +46,31 @@ int runLogged(const std::vector<std::string>& args, const std::string& logPath) 
 }
 }  // namespace
 
-Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double fps, const std::string& output,
-                   const std::string& logPath) {
+Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double fps,
+                   const std::string& output, const std::string& logPath) {
     const std::string temp = output + ".partial.mp4";
     char rate[32];
     std::snprintf(rate, sizeof rate, "%.6g", fps);
     // CRF 18: visually lossless for H.264; yuv420p so every player opens it; faststart so it
     // streams. Frame sizes must be even for 4:2:0, so odd sizes are padded by one pixel.
-    const std::vector<std::string> common = {ffmpeg, "-y", "-nostdin", "-loglevel", "error", "-framerate", rate,
-                                             "-i", pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                                             "-pix_fmt", "yuv420p", "-movflags", "+faststart"};
+    const std::vector<std::string> common = {ffmpeg,
+                                             "-y",
+                                             "-nostdin",
+                                             "-loglevel",
+                                             "error",
+                                             "-framerate",
+                                             rate,
+                                             "-i",
+                                             pattern,
+                                             "-vf",
+                                             "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                             "-pix_fmt",
+                                             "yuv420p",
+                                             "-movflags",
+                                             "+faststart"};
     std::vector<std::string> h264 = common, mpeg4 = common;
-    for (const char* a : {"-c:v", "libx264", "-preset", "medium", "-crf", "18"}) h264.emplace_back(a);
+    for (const char* a : {"-c:v", "libx264", "-preset", "medium", "-crf", "18"})
+        h264.emplace_back(a);
     for (const char* a : {"-c:v", "mpeg4", "-q:v", "3"}) mpeg4.emplace_back(a);
     h264.push_back(temp);
     mpeg4.push_back(temp);
@@ -65,7 +79,8 @@ Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double
     std::error_code ec;
     if (rc != 0) {
         std::filesystem::remove(temp, ec);
-        return ioError(output + ": ffmpeg failed (exit " + std::to_string(rc) + "); see " + logPath);
+        return ioError(output + ": ffmpeg failed (exit " + std::to_string(rc) + "); see " +
+                       logPath);
     }
     std::filesystem::rename(temp, output, ec);
     if (ec) {

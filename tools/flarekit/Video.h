@@ -13,7 +13,7 @@ std::string findFfmpeg();
 //! Runs ffmpeg on `pattern` (e.g. DIR/frame_%04d.png) at `fps` into `output` (H.264 yuv420p,
 //! or MPEG-4 part 2 when this ffmpeg has no libx264), through a temporary file renamed at the
 //! end. ffmpeg's messages go to `logPath`.
-Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double fps, const std::string& output,
-                   const std::string& logPath);
+Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double fps,
+                   const std::string& output, const std::string& logPath);
 
 }  // namespace flarekit::cli

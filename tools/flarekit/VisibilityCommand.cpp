@@ -44,7 +44,8 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     r.method = a.method;
     r.coverage = *coverage;
     r.inFrame = sunInFrameFraction(scene);
-    r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    r.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
 
@@ -67,12 +68,16 @@ int runVisibility(const VisibilityArgs& a) {
     if (!r) return report(r.error());
     if (a.json) {
         JsonLine j;
-        j.text("method", r->method).number("coverage", r->coverage, 6).number("in_frame", r->inFrame, 6);
-        j.integer("samples", (long long)r->samples).integer("latency_frames", latency).number("cpu_ms", r->milliseconds, 3);
+        j.text("method", r->method)
+            .number("coverage", r->coverage, 6)
+            .number("in_frame", r->inFrame, 6);
+        j.integer("samples", (long long)r->samples)
+            .integer("latency_frames", latency)
+            .number("cpu_ms", r->milliseconds, 3);
         std::printf("%s\n", j.str().c_str());
     } else {
-        std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame", r->method.c_str(),
-                    r->coverage, 100 * r->coverage, 100 * r->inFrame);
+        std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame",
+                    r->method.c_str(), r->coverage, 100 * r->coverage, 100 * r->inFrame);
         if (r->samples) std::printf(", %zu rays", r->samples);
         if (latency) std::printf(", result %d frame%s late", latency, latency > 1 ? "s" : "");
         std::printf(", %.1f ms\n", r->milliseconds);
@@ -83,20 +88,26 @@ int runVisibility(const VisibilityArgs& a) {
 
 void addVisibilityCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<VisibilityArgs>();
-    CLI::App* cmd = app.add_subcommand("visibility", "Fraction of the sun's disc visible from a scene's camera");
-    cmd->add_option("scene", args->scene, "scene JSON (see architecture.md)")->required();
+    CLI::App* cmd = app.add_subcommand("visibility",
+                                       "Fraction of the sun's disc visible from a scene's camera");
+    cmd->add_option("scene", args->scene, "scene JSON (docs/architecture.md)")->required();
     std::vector<std::string> methods = {"raycast"};
     for (const std::string& m : gpuVisibilityMethods()) methods.push_back(m);
-    cmd->add_option("--method", args->method, "one of " + visibilityMethodList() + " (raycast: the CPU ground truth; the others run on the GPU)")
+    cmd->add_option("--method", args->method,
+                    "one of " + visibilityMethodList() +
+                        " (raycast: the CPU ground truth; the others run on the GPU)")
         ->check(CLI::IsMember(methods))
         ->capture_default_str();
-    cmd->add_option("--variant", args->variant, "texture-mask sampling: square (16x16, 256 points), circle, bilinear (64 points)")
+    cmd->add_option(
+           "--variant", args->variant,
+           "texture-mask sampling: square (16x16, 256 points), circle, bilinear (64 points)")
         ->check(CLI::IsMember({"square", "circle", "bilinear"}))
         ->capture_default_str();
     addParamOptions<RaycastOptions>(cmd, kRaycastParams, args->raycast);
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
-    cmd->add_flag("--json", args->json,
-                  "print one JSON object: method, coverage, in_frame, samples, latency_frames, cpu_ms");
+    cmd->add_flag(
+        "--json", args->json,
+        "print one JSON object: method, coverage, in_frame, samples, latency_frames, cpu_ms");
     cmd->callback([args, &exitCode] { exitCode = runVisibility(*args); });
 }
 

@@ -50,17 +50,19 @@ std::array<double, kGrid> chainWeights() {
 }
 
 class BurnoutMethod final : public GpuMethod {
-public:
+  public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
         auto m = std::unique_ptr<BurnoutMethod>(new BurnoutMethod());
-        auto white = FrameDepthProgram::link({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                              {GL_FRAGMENT_SHADER, "burnout_white.frag", shaders::burnout_white_frag}});
+        auto white = FrameDepthProgram::link(
+            {{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+             {GL_FRAGMENT_SHADER, "burnout_white.frag", shaders::burnout_white_frag}});
         if (!white) return white.error();
         m->m_white = std::move(*white);
         auto black = linkFullscreen("burnout_black.frag", shaders::burnout_black_frag);
         if (!black) return black.error();
-        auto combine = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                     {GL_FRAGMENT_SHADER, "burnout_combine.frag", shaders::burnout_combine_frag}});
+        auto combine = linkWithDisc(
+            {{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+             {GL_FRAGMENT_SHADER, "burnout_combine.frag", shaders::burnout_combine_frag}});
         if (!combine) return combine.error();
         auto down = linkFullscreen("burnout_downsample.frag", shaders::burnout_downsample_frag);
         if (!down) return down.error();
@@ -70,7 +72,8 @@ public:
         const std::array<double, kGrid> weights = chainWeights();
         const double lightest = *std::min_element(weights.begin(), weights.end());
         std::array<float, kGrid> compensation{};
-        for (int k = 0; k < kGrid; ++k) compensation[std::size_t(k)] = float(lightest / weights[std::size_t(k)]);
+        for (int k = 0; k < kGrid; ++k)
+            compensation[std::size_t(k)] = float(lightest / weights[std::size_t(k)]);
         const GLuint c = m->m_combine.get();
         glProgramUniform1fv(c, gl::uniformLocation(c, "compensation"), kGrid, compensation.data());
         glProgramUniform1i(c, gl::uniformLocation(c, "subCells"), kSubCells);
@@ -94,7 +97,8 @@ public:
         const GLuint w = m_white.forFrame(renderer);
         setSunDiscUniforms(w, v);
         glProgramUniform2f(w, gl::uniformLocation(w, "regionOrigin"), originX, originY);
-        glProgramUniform1f(w, gl::uniformLocation(w, "subCellSize"), float(side / (kGrid * kSubCells)));
+        glProgramUniform1f(w, gl::uniformLocation(w, "subCellSize"),
+                           float(side / (kGrid * kSubCells)));
         const GLuint c = m_combine.get();
         setSunDiscUniforms(c, v);
         glProgramUniform2f(c, gl::uniformLocation(c, "regionOrigin"), originX, originY);
@@ -136,7 +140,8 @@ public:
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
         if (m_coverageAttached != coverageName()) {
-            glNamedFramebufferTexture(m_coverageTarget.get(), GL_COLOR_ATTACHMENT0, coverageName(), 0);
+            glNamedFramebufferTexture(m_coverageTarget.get(), GL_COLOR_ATTACHMENT0, coverageName(),
+                                      0);
             m_coverageAttached = coverageName();
         }
         glBindFramebuffer(GL_FRAMEBUFFER, m_coverageTarget.get());
@@ -149,7 +154,7 @@ public:
         return gl::checkError("burnout: chain");
     }
 
-private:
+  private:
     struct Level {
         int size;
         gl::Texture texture;
@@ -164,7 +169,8 @@ private:
     }
     Status makeTargets() {
         m_mask = gl::makeTexture2D(GL_RGBA8, kGrid * kSubCells, kGrid * kSubCells);
-        m_maskDepth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, kGrid * kSubCells, kGrid * kSubCells);
+        m_maskDepth =
+            gl::makeTexture2D(GL_DEPTH_COMPONENT32F, kGrid * kSubCells, kGrid * kSubCells);
         auto target = gl::makeFramebuffer(m_mask, &m_maskDepth);
         if (!target) return target.error();
         m_maskTarget = std::move(*target);
@@ -190,6 +196,8 @@ private:
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makeBurnoutMethod() { return BurnoutMethod::create(); }
+Result<std::unique_ptr<GpuVisibility>> makeBurnoutMethod() {
+    return BurnoutMethod::create();
+}
 
 }  // namespace flarekit::occlusion

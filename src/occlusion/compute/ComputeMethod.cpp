@@ -3,24 +3,28 @@
 // sky pixels' weights and all weights per 16x16 work group in shared memory, and a second
 // one-group dispatch reduces the partials and writes the ratio into the 1x1 coverage texture.
 // With an MSAA scene pass it reads every depth sample instead, for sub-pixel occluders.
-#include "scene/SceneTargets.h"
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit::occlusion {
 
 namespace {
 class ComputeMethod final : public GpuMethod {
-public:
+  public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
-        auto reduce = linkWithDisc({{GL_COMPUTE_SHADER, "disc_reduce.comp", shaders::disc_reduce_comp}});
+        auto reduce =
+            linkWithDisc({{GL_COMPUTE_SHADER, "disc_reduce.comp", shaders::disc_reduce_comp}});
         if (!reduce) return reduce.error();
-        auto reduceMs = linkWithDisc({{GL_COMPUTE_SHADER, "disc_reduce.comp", shaders::disc_reduce_comp}},
-                                     "#define MULTISAMPLE\n");
+        auto reduceMs =
+            linkWithDisc({{GL_COMPUTE_SHADER, "disc_reduce.comp", shaders::disc_reduce_comp}},
+                         "#define MULTISAMPLE\n");
         if (!reduceMs) return reduceMs.error();
-        auto finish = linkWithDisc({{GL_COMPUTE_SHADER, "disc_finish.comp", shaders::disc_finish_comp}});
+        auto finish =
+            linkWithDisc({{GL_COMPUTE_SHADER, "disc_finish.comp", shaders::disc_finish_comp}});
         if (!finish) return finish.error();
-        auto m = std::unique_ptr<ComputeMethod>(new ComputeMethod(std::move(*reduce), std::move(*finish)));
+        auto m = std::unique_ptr<ComputeMethod>(
+            new ComputeMethod(std::move(*reduce), std::move(*finish)));
         m->m_reduceMs = std::move(*reduceMs);
         return std::unique_ptr<GpuVisibility>(std::move(m));
     }
@@ -43,11 +47,13 @@ public:
         const bool multisample = renderer.msaaSamples() > 1;
         const GLuint r = multisample ? m_reduceMs.get() : m_reduce.get(), f = m_finish.get();
         setSunDiscUniforms(r, v);
-        if (multisample) glProgramUniform1i(r, gl::uniformLocation(r, "sampleCount"), renderer.msaaSamples());
+        if (multisample)
+            glProgramUniform1i(r, gl::uniformLocation(r, "sampleCount"), renderer.msaaSamples());
         glProgramUniform2i(r, gl::uniformLocation(r, "boxOrigin"), v.x0, v.y0);
         glProgramUniform2i(r, gl::uniformLocation(r, "boxSize"), w, h);
         glProgramUniform1i(f, gl::uniformLocation(f, "partialCount"), GLint(groupsX * groupsY));
-        glBindTextureUnit(0, multisample ? sceneTargets(renderer).multisampleDepth : sceneTargets(renderer).depth);
+        glBindTextureUnit(0, multisample ? sceneTargets(renderer).multisampleDepth
+                                         : sceneTargets(renderer).depth);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, m_partials.get());
         glUseProgram(r);
         glDispatchCompute(groupsX, groupsY, 1);
@@ -61,8 +67,9 @@ public:
         return gl::checkError("compute: disc reduction");
     }
 
-private:
-    ComputeMethod(gl::Program reduce, gl::Program finish) : m_reduce(std::move(reduce)), m_finish(std::move(finish)) {
+  private:
+    ComputeMethod(gl::Program reduce, gl::Program finish)
+        : m_reduce(std::move(reduce)), m_finish(std::move(finish)) {
         GLuint b = 0;
         glCreateBuffers(1, &b);
         m_partials = gl::Buffer(b);
@@ -73,6 +80,8 @@ private:
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makeComputeMethod() { return ComputeMethod::create(); }
+Result<std::unique_ptr<GpuVisibility>> makeComputeMethod() {
+    return ComputeMethod::create();
+}
 
 }  // namespace flarekit::occlusion

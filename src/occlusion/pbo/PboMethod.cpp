@@ -5,16 +5,16 @@
 // multisampled frame the copy is of the per-pixel sky fraction (SkyFraction), as in readback.
 #include <vector>
 
-#include "scene/SceneTargets.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/SkyFraction.h"
 #include "occlusion/readback/DepthCoverage.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit::occlusion {
 
 namespace {
 class PboMethod final : public GpuMethod {
-public:
+  public:
     static Result<std::unique_ptr<GpuVisibility>> create(int ring) {
         auto sky = SkyFraction::create();
         if (!sky) return sky.error();
@@ -65,7 +65,8 @@ public:
         glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(slot.view.x0, slot.view.y0, w, h, slot.skyFraction ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT,
+        glReadPixels(slot.view.x0, slot.view.y0, w, h,
+                     slot.skyFraction ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT,
                      nullptr);  // async
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -79,12 +80,12 @@ public:
         return GpuMethod::latestCoverage();
     }
 
-private:
+  private:
     struct Slot {
         gl::Buffer buffer;
         GLsizeiptr capacity = 0;
         GLsync fence = nullptr;
-        bool knownEmpty = false;  //!< the disc was off screen: coverage 0 without a read
+        bool knownEmpty = false;   //!< the disc was off screen: coverage 0 without a read
         bool skyFraction = false;  //!< holds sky fractions (MSAA frame), not depth
         SunDiscView view;
         long frame = 0;
@@ -116,11 +117,12 @@ private:
         glDeleteSync(s.fence);
         s.fence = nullptr;
         const int w = s.view.x1 - s.view.x0, h = s.view.y1 - s.view.y0;
-        const auto* depth = static_cast<const float*>(
-            glMapNamedBufferRange(s.buffer.get(), 0, GLsizeiptr(w) * h * GLsizeiptr(sizeof(float)), GL_MAP_READ_BIT));
+        const auto* depth = static_cast<const float*>(glMapNamedBufferRange(
+            s.buffer.get(), 0, GLsizeiptr(w) * h * GLsizeiptr(sizeof(float)), GL_MAP_READ_BIT));
         if (!depth) return;
-        const double coverage = s.skyFraction ? coverageFromSkyFraction(s.view, depth, s.view.x0, s.view.y0, w, h)
-                                              : coverageFromDepth(s.view, depth, s.view.x0, s.view.y0, w, h);
+        const double coverage =
+            s.skyFraction ? coverageFromSkyFraction(s.view, depth, s.view.x0, s.view.y0, w, h)
+                          : coverageFromDepth(s.view, depth, s.view.x0, s.view.y0, w, h);
         glUnmapNamedBuffer(s.buffer.get());
         publish(coverage);
         m_latency = int(m_frame - s.frame);
@@ -133,6 +135,8 @@ private:
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makePboMethod(int ring) { return PboMethod::create(ring); }
+Result<std::unique_ptr<GpuVisibility>> makePboMethod(int ring) {
+    return PboMethod::create(ring);
+}
 
 }  // namespace flarekit::occlusion

@@ -7,9 +7,9 @@
 // counts samples, so a pixel half covered by an occluder counts half.
 #include <vector>
 
-#include "scene/SceneTargets.h"
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit::occlusion {
 
@@ -17,10 +17,11 @@ namespace {
 constexpr int kRing = 3;  //!< query pairs in flight
 
 class QueryMethod final : public GpuMethod {
-public:
+  public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
-        auto program = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                     {GL_FRAGMENT_SHADER, "disc_at_far.frag", shaders::disc_at_far_frag}});
+        auto program =
+            linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                          {GL_FRAGMENT_SHADER, "disc_at_far.frag", shaders::disc_at_far_frag}});
         if (!program) return program.error();
         return std::unique_ptr<GpuVisibility>(new QueryMethod(std::move(*program)));
     }
@@ -79,7 +80,7 @@ public:
         return GpuMethod::latestCoverage();
     }
 
-private:
+  private:
     struct Pair {
         gl::Query visible, total;
         bool pending = false;
@@ -157,6 +158,8 @@ private:
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makeQueryMethod() { return QueryMethod::create(); }
+Result<std::unique_ptr<GpuVisibility>> makeQueryMethod() {
+    return QueryMethod::create();
+}
 
 }  // namespace flarekit::occlusion

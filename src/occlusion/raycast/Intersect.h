@@ -24,7 +24,8 @@ inline bool sphere(Vec3 o, Vec3 d, const Sphere& s) {
 }
 
 //! Slab test against [lo, hi]; invDir = 1/dir per component (infinities allowed).
-inline bool slabs(Vec3 o, Vec3 invDir, Vec3 lo, Vec3 hi, double tMax = std::numeric_limits<double>::infinity()) {
+inline bool slabs(Vec3 o, Vec3 invDir, Vec3 lo, Vec3 hi,
+                  double tMax = std::numeric_limits<double>::infinity()) {
     double t0 = kMinT, t1 = tMax;
     for (int i = 0; i < 3; ++i) {
         double a = (lo[i] - o[i]) * invDir[i], b = (hi[i] - o[i]) * invDir[i];

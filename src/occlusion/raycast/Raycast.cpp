@@ -38,7 +38,8 @@ Frame cameraFrame(const Scene& s) {
 bool inFrame(const Frame& f, Vec3 d) {
     const double z = dot(d, f.basis.forward);
     if (z <= 0) return false;
-    return std::abs(dot(d, f.basis.right)) <= f.tanHalfX * z && std::abs(dot(d, f.basis.up)) <= f.tanHalfY * z;
+    return std::abs(dot(d, f.basis.right)) <= f.tanHalfX * z &&
+           std::abs(dot(d, f.basis.up)) <= f.tanHalfY * z;
 }
 
 }  // namespace
@@ -50,7 +51,10 @@ double sunInFrameFraction(const Scene& scene, int samplesPerSide) {
     std::size_t framed = 0;
     for (int row = 0; row < n; ++row) {
         for (int col = 0; col < n; ++col) {
-            framed += inFrame(frame, cone.fromSquare(2.0 * (col + 0.5) / n - 1.0, 2.0 * (row + 0.5) / n - 1.0)) ? 1 : 0;
+            framed += inFrame(frame, cone.fromSquare(2.0 * (col + 0.5) / n - 1.0,
+                                                     2.0 * (row + 0.5) / n - 1.0))
+                          ? 1
+                          : 0;
         }
     }
     return double(framed) / double(std::size_t(n) * std::size_t(n));
@@ -66,18 +70,23 @@ RaycastCaster::RaycastCaster(const Scene& geometry) : m(std::make_unique<Impl>(g
 RaycastCaster::~RaycastCaster() = default;
 RaycastCaster::RaycastCaster(RaycastCaster&&) noexcept = default;
 RaycastCaster& RaycastCaster::operator=(RaycastCaster&&) noexcept = default;
-std::size_t RaycastCaster::primitiveCount() const { return m->bvh.primitiveCount(); }
+std::size_t RaycastCaster::primitiveCount() const {
+    return m->bvh.primitiveCount();
+}
 
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     auto result = RaycastCaster(scene).measure(scene, options);
     if (result) {  // include the BVH build, as before
-        result->milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        result->milliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
     }
     return result;
 }
 
-Result<VisibilityResult> RaycastCaster::measure(const Scene& scene, const RaycastOptions& options) const {
+Result<VisibilityResult> RaycastCaster::measure(const Scene& scene,
+                                                const RaycastOptions& options) const {
     if (options.samplesPerSide < 1 || options.samplesPerSide > 4096) {
         return invalidInput("raycast samples per side: expected an integer in [1, 4096], got " +
                             std::to_string(options.samplesPerSide));
@@ -92,9 +101,11 @@ Result<VisibilityResult> RaycastCaster::measure(const Scene& scene, const Raycas
     parallelFor(0, n, 4, [&](int row0, int row1) {
         std::size_t vis = 0, fr = 0;
         for (int row = row0; row < row1; ++row) {
-            SplitMix64 rng(options.seed * 0x9E3779B97F4A7C15ull + std::uint64_t(row));  // per row: thread-count independent
+            SplitMix64 rng(options.seed * 0x9E3779B97F4A7C15ull +
+                           std::uint64_t(row));  // per row: thread-count independent
             for (int col = 0; col < n; ++col) {
-                const double a = 2.0 * (double(col) + rng.nextFloat()) / n - 1.0, b = 2.0 * (double(row) + rng.nextFloat()) / n - 1.0;
+                const double a = 2.0 * (double(col) + rng.nextFloat()) / n - 1.0,
+                             b = 2.0 * (double(row) + rng.nextFloat()) / n - 1.0;
                 const Vec3 d = cone.fromSquare(a, b);
                 vis += bvh.occluded(scene.camera.position, d) ? 0 : 1;
                 fr += inFrame(frame, d) ? 1 : 0;
@@ -108,7 +119,8 @@ Result<VisibilityResult> RaycastCaster::measure(const Scene& scene, const Raycas
     r.samples = std::size_t(n) * std::size_t(n);
     r.coverage = double(visible) / double(r.samples);
     r.inFrame = double(framed) / double(r.samples);
-    r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    r.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
 

@@ -8,8 +8,12 @@ namespace flarekit {
 
 namespace {
 constexpr std::uint32_t kLeafSize = 4;  //!< primitives per leaf: cheap tests, shallow tree
-Vec3 vmin(Vec3 a, Vec3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
-Vec3 vmax(Vec3 a, Vec3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
+Vec3 vmin(Vec3 a, Vec3 b) {
+    return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+}
+Vec3 vmax(Vec3 a, Vec3 b) {
+    return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+}
 }  // namespace
 
 SceneBvh::SceneBvh(const Scene& scene) : m_scene(scene) {
@@ -42,14 +46,17 @@ std::uint32_t SceneBvh::build(std::uint32_t first, std::uint32_t count) {
         chi = vmax(chi, m_prims[i].centre);
     }
     const Vec3 extent = chi - clo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
     if (count <= kLeafSize || extent[axis] <= 0) {
         m_nodes[at] = {lo, hi, first, count, 0};
         return at;
     }
     const std::uint32_t half = count / 2;
-    std::nth_element(m_prims.begin() + first, m_prims.begin() + first + half, m_prims.begin() + first + count,
-                     [axis](const Prim& a, const Prim& b) { return a.centre[axis] < b.centre[axis]; });
+    std::nth_element(
+        m_prims.begin() + first, m_prims.begin() + first + half, m_prims.begin() + first + count,
+        [axis](const Prim& a, const Prim& b) { return a.centre[axis] < b.centre[axis]; });
     build(first, half);
     const std::uint32_t right = build(first + half, count - half);
     m_nodes[at] = {lo, hi, first, 0, right};
@@ -58,9 +65,13 @@ std::uint32_t SceneBvh::build(std::uint32_t first, std::uint32_t count) {
 
 bool SceneBvh::hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir) const {
     switch (p.kind) {
-        case Kind::Sphere: return intersect::sphere(o, d, m_scene.spheres[p.index]);
-        case Kind::Box: return intersect::slabs(o, invDir, m_scene.boxes[p.index].min, m_scene.boxes[p.index].max);
-        case Kind::Triangle: return intersect::triangle(o, d, m_scene.triangles[p.index]);
+        case Kind::Sphere:
+            return intersect::sphere(o, d, m_scene.spheres[p.index]);
+        case Kind::Box:
+            return intersect::slabs(o, invDir, m_scene.boxes[p.index].min,
+                                    m_scene.boxes[p.index].max);
+        case Kind::Triangle:
+            return intersect::triangle(o, d, m_scene.triangles[p.index]);
     }
     return false;
 }

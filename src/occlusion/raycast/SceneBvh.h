@@ -11,13 +11,13 @@
 namespace flarekit {
 
 class SceneBvh {
-public:
+  public:
     explicit SceneBvh(const Scene& scene);
     //! True when the ray origin + t*dir (t > 0) hits any object.
     bool occluded(Vec3 origin, Vec3 dir) const;
     std::size_t primitiveCount() const { return m_prims.size(); }
 
-private:
+  private:
     enum class Kind : std::uint8_t { Sphere, Box, Triangle };
     struct Prim {
         Kind kind;

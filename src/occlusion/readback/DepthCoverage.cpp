@@ -4,7 +4,8 @@ namespace flarekit::occlusion {
 
 namespace {
 template <typename SkyOf>
-double weightedCoverage(const SunDiscView& v, const float* values, int x0, int y0, int w, int h, SkyOf skyOf) {
+double weightedCoverage(const SunDiscView& v, const float* values, int x0, int y0, int w, int h,
+                        SkyOf skyOf) {
     double visible = 0, total = 0;
     for (int j = 0; j < h; ++j) {
         for (int i = 0; i < w; ++i) {
@@ -21,7 +22,8 @@ double coverageFromDepth(const SunDiscView& v, const float* depth, int x0, int y
     return weightedCoverage(v, depth, x0, y0, w, h, [](float d) { return d >= 1.0f ? 1.0 : 0.0; });
 }
 
-double coverageFromSkyFraction(const SunDiscView& v, const float* sky, int x0, int y0, int w, int h) {
+double coverageFromSkyFraction(const SunDiscView& v, const float* sky, int x0, int y0, int w,
+                               int h) {
     return weightedCoverage(v, sky, x0, y0, w, h, [](float s) { return double(s); });
 }
 

@@ -12,6 +12,7 @@ namespace flarekit::occlusion {
 double coverageFromDepth(const SunDiscView& v, const float* depth, int x0, int y0, int w, int h);
 //! The same from per-pixel sky fractions in [0, 1] (SkyFraction, for multisampled frames):
 //! each pixel adds its weight x its fraction.
-double coverageFromSkyFraction(const SunDiscView& v, const float* sky, int x0, int y0, int w, int h);
+double coverageFromSkyFraction(const SunDiscView& v, const float* sky, int x0, int y0, int w,
+                               int h);
 
 }  // namespace flarekit::occlusion

@@ -5,16 +5,16 @@
 // more small pass), so occluder edges count to the sample.
 #include <vector>
 
-#include "scene/SceneTargets.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/SkyFraction.h"
 #include "occlusion/readback/DepthCoverage.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit::occlusion {
 
 namespace {
 class ReadbackMethod final : public GpuMethod {
-public:
+  public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
         auto sky = SkyFraction::create();
         if (!sky) return sky.error();
@@ -39,7 +39,8 @@ public:
         }
         glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(v.x0, v.y0, w, h, multisampled ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT, m_depth.data());  // waits
+        glReadPixels(v.x0, v.y0, w, h, multisampled ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT,
+                     m_depth.data());  // waits
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
         if (Status s = gl::checkError("readback: glReadPixels"); !s) return s;
         publish(multisampled ? coverageFromSkyFraction(v, m_depth.data(), v.x0, v.y0, w, h)
@@ -47,13 +48,15 @@ public:
         return Ok{};
     }
 
-private:
+  private:
     explicit ReadbackMethod(SkyFraction sky) : m_sky(std::move(sky)) {}
     SkyFraction m_sky;
     std::vector<float> m_depth;  // depth, or sky fractions with MSAA
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makeReadbackMethod() { return ReadbackMethod::create(); }
+Result<std::unique_ptr<GpuVisibility>> makeReadbackMethod() {
+    return ReadbackMethod::create();
+}
 
 }  // namespace flarekit::occlusion

@@ -28,10 +28,14 @@ Result<SunMapLayout> sunMapLayout(const std::string& variant, int samples, bool 
         if (l.bilinear) {
             l.unit = 4.f / 255.f;
             for (int j = 0; j < 8; ++j)
-                for (int i = 0; i < 8; ++i) l.samples.insert(l.samples.end(), {float(2 * i + 1) / 16.f, float(2 * j + 1) / 16.f});
+                for (int i = 0; i < 8; ++i)
+                    l.samples.insert(l.samples.end(),
+                                     {float(2 * i + 1) / 16.f, float(2 * j + 1) / 16.f});
         } else {
             for (int j = 0; j < 16; ++j)
-                for (int i = 0; i < 16; ++i) l.samples.insert(l.samples.end(), {(float(i) + 0.5f) / 16.f, (float(j) + 0.5f) / 16.f});
+                for (int i = 0; i < 16; ++i)
+                    l.samples.insert(l.samples.end(),
+                                     {(float(i) + 0.5f) / 16.f, (float(j) + 0.5f) / 16.f});
         }
         return l;
     }
@@ -40,7 +44,8 @@ Result<SunMapLayout> sunMapLayout(const std::string& variant, int samples, bool 
         if (l.fractional) {  // partial rim texels count by their G share: sum them all
             for (int j = 0; j < l.size; ++j)
                 for (int i = 0; i < l.size; ++i)
-                    l.samples.insert(l.samples.end(), {(float(i) + 0.5f) / float(l.size), (float(j) + 0.5f) / float(l.size)});
+                    l.samples.insert(l.samples.end(), {(float(i) + 0.5f) / float(l.size),
+                                                       (float(j) + 0.5f) / float(l.size)});
             return l;
         }
         // The texels whose centre ray is in the disc, found with the shaders' own test on a
@@ -52,11 +57,13 @@ Result<SunMapLayout> sunMapLayout(const std::string& variant, int samples, bool 
         for (int j = 0; j < l.size; ++j)
             for (int i = 0; i < l.size; ++i)
                 if (inSunDisc(v, rayThrough(v, i + 0.5, j + 0.5)))
-                    l.samples.insert(l.samples.end(), {(float(i) + 0.5f) / float(l.size), (float(j) + 0.5f) / float(l.size)});
+                    l.samples.insert(l.samples.end(), {(float(i) + 0.5f) / float(l.size),
+                                                       (float(j) + 0.5f) / float(l.size)});
         if (l.samples.size() / 2 > 255) l.samples.resize(255 * 2);  // never past the 8-bit range
         return l;
     }
-    return invalidInput("texture-mask variant: expected square, circle or bilinear, got '" + variant + "'");
+    return invalidInput("texture-mask variant: expected square, circle or bilinear, got '" +
+                        variant + "'");
 }
 
 Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
@@ -89,7 +96,8 @@ Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
     s.m_coverageTarget = gl::Framebuffer(names[0]);
     glCreateBuffers(1, names);
     s.m_samples = gl::Buffer(names[0]);
-    glNamedBufferStorage(names[0], GLsizeiptr(s.m_layout.samples.size() * sizeof(float)), s.m_layout.samples.data(), 0);
+    glNamedBufferStorage(names[0], GLsizeiptr(s.m_layout.samples.size() * sizeof(float)),
+                         s.m_layout.samples.data(), 0);
     glCreateVertexArrays(1, names);
     s.m_vao = gl::VertexArray(names[0]);
     auto sum = gl::linkProgram({{GL_VERTEX_SHADER, "sum_points.vert", shaders::sum_points_vert},
@@ -107,7 +115,8 @@ Result<SunMapSum> SunMapSum::create(SunMapLayout layout) {
 Status SunMapSum::sumInto(GLuint coverage) {
     const int n = m_layout.size;
     if (m_layout.msaaSamples > 1)  // the multisample resolve averages each texel's samples
-        glBlitNamedFramebuffer(m_msTarget.get(), m_mapTarget.get(), 0, 0, n, n, 0, 0, n, n, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(m_msTarget.get(), m_mapTarget.get(), 0, 0, n, n, 0, 0, n, n,
+                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
     // Sum: every sample adds into the one texel of the intensity map.
     glBindFramebuffer(GL_FRAMEBUFFER, m_intensityTarget.get());
     glViewport(0, 0, 1, 1);

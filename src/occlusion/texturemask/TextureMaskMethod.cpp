@@ -12,23 +12,25 @@
 #include <optional>
 #include <vector>
 
-#include "scene/SceneTargets.h"
 #include "flarekit_shaders.h"
 #include "occlusion/GpuMethod.h"
 #include "occlusion/texturemask/SunMapSum.h"
 #include "scene/CameraMath.h"
 #include "scene/SceneMesh.h"
+#include "scene/SceneTargets.h"
 
 namespace flarekit::occlusion {
 
 namespace {
 class TextureMaskMethod final : public GpuMethod {
-public:
-    static Result<std::unique_ptr<GpuVisibility>> create(const Scene& world, const std::string& variant) {
+  public:
+    static Result<std::unique_ptr<GpuVisibility>> create(const Scene& world,
+                                                         const std::string& variant) {
         auto m = std::unique_ptr<TextureMaskMethod>(new TextureMaskMethod(variant));
         if (Status s = m->prepare(1); !s) return s.error();  // checks the variant too
-        auto black = gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
-                                      {GL_FRAGMENT_SHADER, "occluder_black.frag", shaders::occluder_black_frag}});
+        auto black = gl::linkProgram(
+            {{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
+             {GL_FRAGMENT_SHADER, "occluder_black.frag", shaders::occluder_black_frag}});
         if (!black) return black.error();
         m->m_black = std::move(*black);
         m->m_ranges = sceneMeshRanges(world);
@@ -58,12 +60,14 @@ public:
         if (!m_firsts.empty()) {
             const Mat4 vp = multiply(perspectiveMatrix(camera, 1.0), lookAtMatrix(camera));
             const auto vpf = toFloat(vp);
-            glProgramUniformMatrix4fv(m_black.get(), gl::uniformLocation(m_black.get(), "viewProjection"), 1, GL_FALSE,
-                                      vpf.data());
+            glProgramUniformMatrix4fv(m_black.get(),
+                                      gl::uniformLocation(m_black.get(), "viewProjection"), 1,
+                                      GL_FALSE, vpf.data());
             glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);  // occluders blacken R only
             glBindVertexArray(sceneTargets(renderer).meshVertexArray);
             glUseProgram(m_black.get());
-            glMultiDrawArrays(GL_TRIANGLES, m_firsts.data(), m_counts.data(), GLsizei(m_firsts.size()));
+            glMultiDrawArrays(GL_TRIANGLES, m_firsts.data(), m_counts.data(),
+                              GLsizei(m_firsts.size()));
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         if (Status s = sum.sumInto(coverageName()); !s) return s;
@@ -71,7 +75,7 @@ public:
         return Ok{};
     }
 
-private:
+  private:
     explicit TextureMaskMethod(std::string variant) : m_variant(std::move(variant)) {
         m_emptyVao = gl::makeVertexArray();
     }
@@ -84,9 +88,10 @@ private:
         if (!layout) return layout.error();
         auto sum = SunMapSum::create(std::move(*layout));
         if (!sum) return sum.error();
-        auto disc = linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                  {GL_FRAGMENT_SHADER, "sunmap_disc.frag", shaders::sunmap_disc_frag}},
-                                 samples > 1 ? "#define PER_SAMPLE\n" : "");
+        auto disc =
+            linkWithDisc({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+                          {GL_FRAGMENT_SHADER, "sunmap_disc.frag", shaders::sunmap_disc_frag}},
+                         samples > 1 ? "#define PER_SAMPLE\n" : "");
         if (!disc) return disc.error();
         m_sum = std::move(*sum);
         m_disc = std::move(*disc);
@@ -108,7 +113,8 @@ private:
                 continue;
             }
             const double angle = std::acos(std::clamp(dot(toObject, s) / distance, -1.0, 1.0));
-            if (r.solidRadius > 0 && angle + alpha <= std::asin(r.solidRadius / distance)) return false;
+            if (r.solidRadius > 0 && angle + alpha <= std::asin(r.solidRadius / distance))
+                return false;
             if (angle <= alpha + std::asin(r.boundRadius / distance)) {
                 m_firsts.push_back(r.first), m_counts.push_back(r.count);
             }
@@ -126,7 +132,8 @@ private:
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makeTextureMaskMethod(const Scene& world, const std::string& variant) {
+Result<std::unique_ptr<GpuVisibility>> makeTextureMaskMethod(const Scene& world,
+                                                             const std::string& variant) {
     return TextureMaskMethod::create(world, variant);
 }
 

@@ -16,16 +16,18 @@ namespace flarekit::occlusion {
 
 namespace {
 class TextureMaskScreenMethod final : public GpuMethod {
-public:
+  public:
     static Result<std::unique_ptr<GpuVisibility>> create() {
         auto layout = sunMapLayout("circle", 1, true);
         if (!layout) return layout.error();
         auto sum = SunMapSum::create(std::move(*layout));
         if (!sum) return sum.error();
-        auto fromDepth = FrameDepthProgram::link({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
-                                                  {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}});
+        auto fromDepth = FrameDepthProgram::link(
+            {{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
+             {GL_FRAGMENT_SHADER, "sunmap_from_depth.frag", shaders::sunmap_from_depth_frag}});
         if (!fromDepth) return fromDepth.error();
-        return std::unique_ptr<GpuVisibility>(new TextureMaskScreenMethod(std::move(*sum), std::move(*fromDepth)));
+        return std::unique_ptr<GpuVisibility>(
+            new TextureMaskScreenMethod(std::move(*sum), std::move(*fromDepth)));
     }
     std::string name() const override { return "texture-mask-screen"; }
     int latencyFrames() const override { return 0; }
@@ -54,8 +56,9 @@ public:
         return Ok{};
     }
 
-private:
-    TextureMaskScreenMethod(SunMapSum sum, FrameDepthProgram fromDepth) : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
+  private:
+    TextureMaskScreenMethod(SunMapSum sum, FrameDepthProgram fromDepth)
+        : m_sum(std::move(sum)), m_fromDepth(std::move(fromDepth)) {
         m_vao = gl::makeVertexArray();
     }
     SunMapSum m_sum;
@@ -64,6 +67,8 @@ private:
 };
 }  // namespace
 
-Result<std::unique_ptr<GpuVisibility>> makeTextureMaskScreenMethod() { return TextureMaskScreenMethod::create(); }
+Result<std::unique_ptr<GpuVisibility>> makeTextureMaskScreenMethod() {
+    return TextureMaskScreenMethod::create();
+}
 
 }  // namespace flarekit::occlusion

@@ -17,7 +17,8 @@ struct UpsampleUniforms {
     float scale = 1.f;  //!< 1, or norm on the last step
 };
 
-inline F4 upsamplePixel(const UpsampleUniforms& u, const Tex& fine, const Tex& coarse, int x, int y) {
+inline F4 upsamplePixel(const UpsampleUniforms& u, const Tex& fine, const Tex& coarse, int x,
+                        int y) {
     const Vec2 uv = pixelUv(x, y, u.invOutSize);
     const auto at = [&](float dx, float dy) {
         return bilinear(coarse, {uv.x + dx * u.coarseTexel.x, uv.y + dy * u.coarseTexel.y});
@@ -30,10 +31,13 @@ inline F4 upsamplePixel(const UpsampleUniforms& u, const Tex& fine, const Tex& c
 
 //! The pass unit: its pixel over (the level's downsample, the coarser upsample) and its
 //! uniforms by upsample.frag's names.
-inline F4 passPixel(const UpsampleUniforms& u, const Tex* in, int x, int y) { return upsamplePixel(u, in[0], in[1], x, y); }
+inline F4 passPixel(const UpsampleUniforms& u, const Tex* in, int x, int y) {
+    return upsamplePixel(u, in[0], in[1], x, y);
+}
 template <class Sink>
 void bindUniforms(const UpsampleUniforms& u, Sink& s) {
-    s.set("invOutSize", u.invOutSize), s.set("coarseTexel", u.coarseTexel), s.set("spread", u.spread), s.set("scale", u.scale);
+    s.set("invOutSize", u.invOutSize), s.set("coarseTexel", u.coarseTexel),
+        s.set("spread", u.spread), s.set("scale", u.scale);
 }
 
 }  // namespace flarekit::postfx

@@ -7,6 +7,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<UpsampleUniforms>) { return {"upsample.frag", {shaders::upsample_frag}}; }
+inline PassShader passShader(std::type_identity<UpsampleUniforms>) {
+    return {"upsample.frag", {shaders::upsample_frag}};
+}
 
 }  // namespace flarekit::postfx

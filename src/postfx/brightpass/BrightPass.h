@@ -3,8 +3,8 @@
 // the one Unity's post-processing stack uses for its bloom prefilter: zero below
 // threshold - knee, a quadratic ease-in up to threshold + knee, then colour x (br - T) / br, so
 // above the knee the output grows linearly with the light's value above the threshold (what
-// the energy test asserts). NaN and Inf input pixels read as 0. The seed's own threshold (0.1) is the ghosts' one.
-// Twin: shaders/bright_pass.frag.
+// the energy test asserts). NaN and Inf input pixels read as 0. The seed's own threshold
+// (0.1) is the ghosts' one. Twin: shaders/bright_pass.frag.
 #pragma once
 
 #include "postfx/Kernel.h"
@@ -23,7 +23,8 @@ inline F4 softThreshold(F4 color, float threshold, float knee) {
     const float brightness = std::max(color[0], std::max(color[1], color[2]));
     float soft = std::clamp(brightness - threshold + knee, 0.f, 2.f * knee);
     soft = soft * soft / (4.f * knee + kBrightEpsilon);
-    const float weight = std::max(soft, brightness - threshold) / std::max(brightness, kBrightEpsilon);
+    const float weight =
+        std::max(soft, brightness - threshold) / std::max(brightness, kBrightEpsilon);
     return rgbOnly(color * weight);
 }
 
@@ -33,7 +34,9 @@ inline F4 brightPixel(const BrightUniforms& u, const Tex& input, int x, int y) {
 
 //! The pass unit: its pixel over the chain's inputs (the input image) and its uniforms by the
 //! names bright_pass.frag declares.
-inline F4 passPixel(const BrightUniforms& u, const Tex* in, int x, int y) { return brightPixel(u, in[0], x, y); }
+inline F4 passPixel(const BrightUniforms& u, const Tex* in, int x, int y) {
+    return brightPixel(u, in[0], x, y);
+}
 template <class Sink>
 void bindUniforms(const BrightUniforms& u, Sink& s) {
     s.set("threshold", u.threshold), s.set("knee", u.knee), s.set("invOutSize", u.invOutSize);

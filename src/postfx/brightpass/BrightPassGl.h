@@ -1,4 +1,5 @@
-// The GLSL of the BrightPass pass (included by the GL chain only): bright_pass.frag and what it needs.
+// The GLSL of the BrightPass pass (included by the GL chain only): bright_pass.frag and what it
+// needs.
 #pragma once
 
 #include "flarekit_shaders.h"
@@ -7,6 +8,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<BrightUniforms>) { return {"bright_pass.frag", {shaders::bright_pass_frag}}; }
+inline PassShader passShader(std::type_identity<BrightUniforms>) {
+    return {"bright_pass.frag", {shaders::bright_pass_frag}};
+}
 
 }  // namespace flarekit::postfx

@@ -14,16 +14,20 @@ struct CompositeUniforms {
     float exposure = 1.f;
 };
 
-inline F4 compositePixel(const CompositeUniforms& u, const Tex& input, const Tex& lens, int x, int y) {
+inline F4 compositePixel(const CompositeUniforms& u, const Tex& input, const Tex& lens, int x,
+                         int y) {
     const F4 color = input.texel(x, y) + rgbOnly(bilinear(lens, pixelUv(x, y, u.invOutSize)));
     return toneMap(color, u.toneOperator, u.exposure);
 }
 
 //! The pass unit: its pixel over (input, lens buffer) and its uniforms by composite.frag's names.
-inline F4 passPixel(const CompositeUniforms& u, const Tex* in, int x, int y) { return compositePixel(u, in[0], in[1], x, y); }
+inline F4 passPixel(const CompositeUniforms& u, const Tex* in, int x, int y) {
+    return compositePixel(u, in[0], in[1], x, y);
+}
 template <class Sink>
 void bindUniforms(const CompositeUniforms& u, Sink& s) {
-    s.set("invOutSize", u.invOutSize), s.set("toneOperator", u.toneOperator), s.set("exposure", u.exposure);
+    s.set("invOutSize", u.invOutSize), s.set("toneOperator", u.toneOperator),
+        s.set("exposure", u.exposure);
 }
 
 }  // namespace flarekit::postfx

@@ -7,6 +7,9 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<CompositeUniforms>) { return {"composite.frag", {shaders::tone_curves_glsl, shaders::tone_map_glsl, shaders::composite_frag}}; }
+inline PassShader passShader(std::type_identity<CompositeUniforms>) {
+    return {"composite.frag",
+            {shaders::tone_curves_glsl, shaders::tone_map_glsl, shaders::composite_frag}};
+}
 
 }  // namespace flarekit::postfx

@@ -28,7 +28,8 @@ struct LensInputs {
 
 inline F4 lensPixel(const LensUniforms& u, const LensInputs& in, int x, int y) {
     const Vec2 uv = pixelUv(x, y, u.invOutSize);
-    const F4 flare = chromaticFlare(in.ghosts, in.halo, uv, u.chromatic) * starburstModulation(u.star, uv, u.aspect) +
+    const F4 flare = chromaticFlare(in.ghosts, in.halo, uv, u.chromatic) *
+                         starburstModulation(u.star, uv, u.aspect) +
                      in.streaks.texel(x, y);
     F4 lens = in.bloom.texel(x, y) * u.bloomIntensity + flare;
     if (u.dirtIntensity > 0.f) lens = lens * (1.f + u.dirtIntensity * in.dirt.texel(x, y)[0]);
@@ -42,9 +43,11 @@ inline F4 passPixel(const LensUniforms& u, const Tex* in, int x, int y) {
 }
 template <class Sink>
 void bindUniforms(const LensUniforms& u, Sink& s) {
-    s.set("invOutSize", u.invOutSize), s.set("aspect", u.aspect), s.set("bloomIntensity", u.bloomIntensity);
+    s.set("invOutSize", u.invOutSize), s.set("aspect", u.aspect),
+        s.set("bloomIntensity", u.bloomIntensity);
     s.set("chromatic", u.chromatic), s.set("dirtIntensity", u.dirtIntensity);
-    s.set("starIntensity", u.star.intensity), s.set("starWidth", u.star.width), s.set("starSpokes", u.star.spokes);
+    s.set("starIntensity", u.star.intensity), s.set("starWidth", u.star.width),
+        s.set("starSpokes", u.star.spokes);
     s.set("starRays", std::span<const float>(u.star.rays));
 }
 

@@ -7,6 +7,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<LensUniforms>) { return {"lens.frag", {shaders::chromatic_glsl, shaders::starburst_glsl, shaders::lens_frag}}; }
+inline PassShader passShader(std::type_identity<LensUniforms>) {
+    return {"lens.frag", {shaders::chromatic_glsl, shaders::starburst_glsl, shaders::lens_frag}};
+}
 
 }  // namespace flarekit::postfx

@@ -22,15 +22,19 @@ struct Spot {
 constexpr int kSpecksPerSmudge = 10;
 
 void splat(Image& dirt, const Spot& s) {
-    const int x0 = std::max(0, int(std::floor(s.x - s.radius))), x1 = std::min(dirt.width() - 1, int(std::ceil(s.x + s.radius)));
-    const int y0 = std::max(0, int(std::floor(s.y - s.radius))), y1 = std::min(dirt.height() - 1, int(std::ceil(s.y + s.radius)));
+    const int x0 = std::max(0, int(std::floor(s.x - s.radius))),
+              x1 = std::min(dirt.width() - 1, int(std::ceil(s.x + s.radius)));
+    const int y0 = std::max(0, int(std::floor(s.y - s.radius))),
+              y1 = std::min(dirt.height() - 1, int(std::ceil(s.y + s.radius)));
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
-            const float dx = (float(x) + 0.5f - s.x) / s.radius, dy = (float(y) + 0.5f - s.y) / s.radius;
+            const float dx = (float(x) + 0.5f - s.x) / s.radius,
+                        dy = (float(y) + 0.5f - s.y) / s.radius;
             const float d2 = dx * dx + dy * dy;
             if (d2 >= 1.f) continue;
-            const float body = (1.f - d2) * (1.f - d2);                 // soft disc
-            const float rim = std::exp(-(1.f - d2) * 12.f) * (1.f - d2) * 4.f;  // bright edge near d = 1
+            const float body = (1.f - d2) * (1.f - d2);  // soft disc
+            const float rim =
+                std::exp(-(1.f - d2) * 12.f) * (1.f - d2) * 4.f;  // bright edge near d = 1
             Rgba& p = dirt.at(x, y);
             p.r += s.brightness * (body + s.rim * rim);
         }
@@ -50,8 +54,10 @@ Image makeLensDirt(int width, int height, const DirtParams& params) {
         s.x = random.nextFloat() * float(dirt.width());
         s.y = random.nextFloat() * float(dirt.height());
         // Specks 0.4-3% of the frame's long side, smudges 8-20%: dust vs fingerprints.
-        s.radius = size * (smudge ? 0.08f + 0.12f * random.nextFloat() : 0.004f + 0.026f * random.nextFloat());
-        s.brightness = smudge ? 0.05f + 0.1f * random.nextFloat() : 0.2f + 0.8f * random.nextFloat();
+        s.radius = size * (smudge ? 0.08f + 0.12f * random.nextFloat()
+                                  : 0.004f + 0.026f * random.nextFloat());
+        s.brightness =
+            smudge ? 0.05f + 0.1f * random.nextFloat() : 0.2f + 0.8f * random.nextFloat();
         s.rim = smudge ? 0.f : random.nextFloat();
         s.radius = std::max(s.radius, 1.f);
         splat(dirt, s);

@@ -7,11 +7,12 @@
 namespace flarekit::postfx {
 
 class LensDirtCache {
-public:
-    //! True when the texture was (re)generated for this size and params (the GL chain uploads it then).
+  public:
+    //! True when the texture was (re)generated for this size and params (the GL chain uploads it
+    //! then).
     bool update(int width, int height, const DirtParams& params) {
-        if (m_valid && m_key.seed == params.seed && m_key.spots == params.spots && m_image.width() == width &&
-            m_image.height() == height) {
+        if (m_valid && m_key.seed == params.seed && m_key.spots == params.spots &&
+            m_image.width() == width && m_image.height() == height) {
             return false;
         }
         m_image = makeLensDirt(width, height, params);
@@ -22,7 +23,7 @@ public:
     void invalidate() { m_valid = false; }
     const Image& image() const { return m_image; }
 
-private:
+  private:
     Image m_image;
     DirtParams m_key;
     bool m_valid = false;

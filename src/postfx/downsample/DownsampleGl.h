@@ -1,4 +1,5 @@
-// The GLSL of the Downsample pass (included by the GL chain only): downsample.frag and what it needs.
+// The GLSL of the Downsample pass (included by the GL chain only): downsample.frag and what it
+// needs.
 #pragma once
 
 #include "flarekit_shaders.h"
@@ -7,6 +8,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<DownsampleUniforms>) { return {"downsample.frag", {shaders::downsample_frag}}; }
+inline PassShader passShader(std::type_identity<DownsampleUniforms>) {
+    return {"downsample.frag", {shaders::downsample_frag}};
+}
 
 }  // namespace flarekit::postfx

@@ -67,18 +67,24 @@ inline F4 ghostsPixel(const GhostsUniforms& u, const Tex& bloom, int x, int y) {
 
 //! The pass unit: its pixel over the bloom buffer and its uniforms by ghosts.frag's names (one
 //! array element per ghost).
-inline F4 passPixel(const GhostsUniforms& u, const Tex* in, int x, int y) { return ghostsPixel(u, in[0], x, y); }
+inline F4 passPixel(const GhostsUniforms& u, const Tex* in, int x, int y) {
+    return ghostsPixel(u, in[0], x, y);
+}
 template <class Sink>
 void bindUniforms(const GhostsUniforms& u, Sink& s) {
-    s.set("invOutSize", u.invOutSize), s.set("sourceTexel", u.sourceTexel), s.set("intensity", u.intensity);
+    s.set("invOutSize", u.invOutSize), s.set("sourceTexel", u.sourceTexel),
+        s.set("intensity", u.intensity);
     s.set("ghostCount", int(u.ghosts.size()));
     for (std::size_t i = 0; i < u.ghosts.size(); ++i) {
         const GhostParams& g = u.ghosts[i];
-        const auto at = [i](const char* array) { return std::string(array) + "[" + std::to_string(i) + "]"; };
+        const auto at = [i](const char* array) {
+            return std::string(array) + "[" + std::to_string(i) + "]";
+        };
         s.set(at("tints").c_str(), g.tint), s.set(at("scales").c_str(), g.scale);
         s.set(at("blurs").c_str(), g.blur), s.set(at("thresholds").c_str(), g.threshold);
         s.set(at("falloffs").c_str(), g.falloff), s.set(at("sampleCounts").c_str(), g.samples);
-        s.set(at("centered").c_str(), int(g.centered)), s.set(at("useBilinear").c_str(), int(g.linearFilter));
+        s.set(at("centered").c_str(), int(g.centered)),
+            s.set(at("useBilinear").c_str(), int(g.linearFilter));
     }
 }
 

@@ -7,6 +7,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<GhostsUniforms>) { return {"ghosts.frag", {shaders::ghosts_frag}}; }
+inline PassShader passShader(std::type_identity<GhostsUniforms>) {
+    return {"ghosts.frag", {shaders::ghosts_frag}};
+}
 
 }  // namespace flarekit::postfx

@@ -29,11 +29,13 @@ inline F4 haloPixel(const HaloUniforms& u, const Tex& bloom, int x, int y) {
     const float len = std::sqrt(m.x * m.x + m.y * m.y);
     const Vec2 dir = len > 0.f ? Vec2{m.x / len, m.y / len} : Vec2{0.f, 0.f};
     // Weighed once, at the mid-radius point (a pow per sample would cost more than the taps).
-    const float weight = centreFalloff({(m.x - dir.x * u.halo.radius) / u.aspect, m.y - dir.y * u.halo.radius}, u.halo.falloff);
+    const float weight = centreFalloff(
+        {(m.x - dir.x * u.halo.radius) / u.aspect, m.y - dir.y * u.halo.radius}, u.halo.falloff);
     const F4 tint{u.halo.tint[0] * weight, u.halo.tint[1] * weight, u.halo.tint[2] * weight, 0.f};
     F4 sum = splat(0.f);
     for (int i = 0; i < kHaloSamples; ++i) {
-        const float r = u.halo.radius + u.halo.thickness * ((float(i) + 0.5f) / float(kHaloSamples) - 0.5f);
+        const float r =
+            u.halo.radius + u.halo.thickness * ((float(i) + 0.5f) / float(kHaloSamples) - 0.5f);
         const Vec2 p{(m.x - dir.x * r) / u.aspect, m.y - dir.y * r};  // back to [-1, 1]
         const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
         if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
@@ -44,11 +46,14 @@ inline F4 haloPixel(const HaloUniforms& u, const Tex& bloom, int x, int y) {
 }
 
 //! The pass unit: its pixel over the bloom buffer and its uniforms by halo.frag's names.
-inline F4 passPixel(const HaloUniforms& u, const Tex* in, int x, int y) { return haloPixel(u, in[0], x, y); }
+inline F4 passPixel(const HaloUniforms& u, const Tex* in, int x, int y) {
+    return haloPixel(u, in[0], x, y);
+}
 template <class Sink>
 void bindUniforms(const HaloUniforms& u, Sink& s) {
     s.set("invOutSize", u.invOutSize), s.set("aspect", u.aspect), s.set("radius", u.halo.radius);
-    s.set("thickness", u.halo.thickness), s.set("threshold", u.halo.threshold), s.set("falloff", u.halo.falloff);
+    s.set("thickness", u.halo.thickness), s.set("threshold", u.halo.threshold),
+        s.set("falloff", u.halo.falloff);
     s.set("intensity", u.intensity), s.set("tint", u.halo.tint);
 }
 

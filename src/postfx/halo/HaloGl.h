@@ -7,6 +7,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<HaloUniforms>) { return {"halo.frag", {shaders::halo_frag}}; }
+inline PassShader passShader(std::type_identity<HaloUniforms>) {
+    return {"halo.frag", {shaders::halo_frag}};
+}
 
 }  // namespace flarekit::postfx

@@ -39,10 +39,11 @@ inline float starburstModulation(const StarburstUniforms& u, Vec2 uv, float aspe
     if (u.intensity == 0.f) return 1.f;
     const Vec2 q{(uv.x * 2.f - 1.f) * aspect, uv.y * 2.f - 1.f};
     const float angle = (q.x == 0.f && q.y == 0.f) ? 0.f : std::atan2(q.y, q.x);
-    const float t = (angle * (0.5f / std::numbers::pi_v<float>) + 0.5f) * float(u.spokes);
+    const float t = (angle * (0.5f / std::numbers::pi_v<float>)+0.5f) * float(u.spokes);
     const float k = std::floor(t), f = t - k;
     const int ray = int(k) % u.spokes, next = (int(k) + 1) % u.spokes;
-    const float star = u.rays[std::size_t(ray)] * rayProfile(f, u.width) + u.rays[std::size_t(next)] * rayProfile(1.f - f, u.width);
+    const float star = u.rays[std::size_t(ray)] * rayProfile(f, u.width) +
+                       u.rays[std::size_t(next)] * rayProfile(1.f - f, u.width);
     return std::max(0.f, 1.f - u.intensity + 2.f * u.intensity * star);
 }
 

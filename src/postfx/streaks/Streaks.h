@@ -12,10 +12,10 @@
 // streak's brightness is set by `intensity`. Twin: shaders/streaks.frag.
 #pragma once
 
-#include <span>
-#include <string>
 #include <array>
 #include <cmath>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "flarekit/PostFx.h"
@@ -23,15 +23,15 @@
 
 namespace flarekit::postfx {
 
-inline constexpr int kStreakTaps = 4;        //!< taps 0..3: base-4 digits (Oat's b = 4)
-inline constexpr int kStreakMaxPasses = 8;   //!< 4^8 texels: longer than any image
+inline constexpr int kStreakTaps = 4;       //!< taps 0..3: base-4 digits (Oat's b = 4)
+inline constexpr int kStreakMaxPasses = 8;  //!< 4^8 texels: longer than any image
 
 struct StreakUniforms {
-    int step = 1;                           //!< signed texels between taps: +-4^pass
+    int step = 1;                              //!< signed texels between taps: +-4^pass
     std::array<float, kStreakTaps> weights{};  //!< normalised, tap 0 .. 3
-    float threshold = 0.f;                  //!< subtracted on each chain's first pass only
-    bool addOther = false;                  //!< the left chain's last pass: + the right chain's result
-    F4 outScale = F4{1.f, 1.f, 1.f, 0.f};   //!< tint x intensity / 2 on that last pass
+    float threshold = 0.f;                     //!< subtracted on each chain's first pass only
+    bool addOther = false;  //!< the left chain's last pass: + the right chain's result
+    F4 outScale = F4{1.f, 1.f, 1.f, 0.f};  //!< tint x intensity / 2 on that last pass
 };
 
 struct StreakPlan {
@@ -52,7 +52,8 @@ inline StreakPlan streakPasses(const StreakParams& params, int width, float inte
             const int spacing = 1 << (2 * p);
             u.step = direction * spacing;
             double w[kStreakTaps], sum = 0;
-            for (int k = 0; k < kStreakTaps; ++k) sum += (w[k] = std::pow(perTexel, double(k * spacing)));
+            for (int k = 0; k < kStreakTaps; ++k)
+                sum += (w[k] = std::pow(perTexel, double(k * spacing)));
             for (int k = 0; k < kStreakTaps; ++k) u.weights[std::size_t(k)] = float(w[k] / sum);
             u.threshold = p == 0 ? params.threshold : 0.f;
             chain.push_back(u);
@@ -69,7 +70,8 @@ inline F4 streakPixel(const StreakUniforms& u, const Tex& src, const Tex& other,
     F4 sum = splat(0.f);
     for (int k = 0; k < kStreakTaps; ++k) {
         const int sx = x + k * u.step;
-        if (sx >= 0 && sx < src.width) sum += max0(src.texel(sx, y) - u.threshold) * u.weights[std::size_t(k)];
+        if (sx >= 0 && sx < src.width)
+            sum += max0(src.texel(sx, y) - u.threshold) * u.weights[std::size_t(k)];
     }
     if (u.addOther) sum += other.texel(x, y);
     return rgbOnly(sum * u.outScale);

@@ -7,6 +7,8 @@
 
 namespace flarekit::postfx {
 
-inline PassShader passShader(std::type_identity<StreakUniforms>) { return {"streaks.frag", {shaders::streaks_frag}}; }
+inline PassShader passShader(std::type_identity<StreakUniforms>) {
+    return {"streaks.frag", {shaders::streaks_frag}};
+}
 
 }  // namespace flarekit::postfx
