@@ -17,4 +17,14 @@ std::vector<std::string> presetNamesIn(const std::string& subdir);
 Result<std::string> readPresetText(const std::string& nameOrPath, const std::string& subdir,
                                    std::string& path);
 
+//! A preset by name (in `subdir`) or path, through `parse(text, path)`: the load of every kind.
+template <class Parse>
+auto loadPresetFile(const std::string& nameOrPath, const std::string& subdir, Parse parse)
+    -> decltype(parse(std::string(), std::string())) {
+    std::string path;
+    auto text = readPresetText(nameOrPath, subdir, path);
+    if (!text) return text.error();
+    return parse(*text, path);
+}
+
 }  // namespace flarekit

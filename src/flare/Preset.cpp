@@ -109,10 +109,7 @@ std::vector<std::string> shippedPresetNames() {
 }
 
 Result<Preset> loadPreset(const std::string& nameOrPath) {
-    std::string path;
-    auto text = readPresetText(nameOrPath, "", path);
-    if (!text) return text.error();
-    return parsePreset(*text, path);
+    return loadPresetFile(nameOrPath, "", parsePreset);
 }
 
 std::string presetParameterReference() {

@@ -21,8 +21,7 @@ Image& ensure(Image& image, Size s) {
 }  // namespace
 
 struct CpuPostFx::Impl {
-    std::vector<Image> mips, ups;
-    Image ghosts, halo, streaks, right, ping, lens;
+    ChainBuffers<Image> buffers;
     LensDirtCache dirt;
     const Image* input = nullptr;
     Image* final = nullptr;
@@ -33,32 +32,7 @@ struct CpuPostFx::Impl {
         return write(id);
     }
     //! A buffer a step writes (never the input or the dirt texture).
-    Image& write(BufferId id) {
-        switch (id.kind) {
-            case BufferKind::Mip:
-                return mips[id.level];
-            case BufferKind::Up:
-                return ups[id.level];
-            case BufferKind::Ghosts:
-                return ghosts;
-            case BufferKind::Halo:
-                return halo;
-            case BufferKind::Streaks:
-                return streaks;
-            case BufferKind::Right:
-                return right;
-            case BufferKind::Ping:
-                return ping;
-            case BufferKind::Lens:
-                return lens;
-            case BufferKind::Final:
-                return *final;
-            case BufferKind::Input:
-            case BufferKind::Dirt:
-                break;
-        }
-        return lens;
-    }
+    Image& write(BufferId id) { return id.kind == BufferKind::Final ? *final : *buffers.find(id); }
 
     //! One step: its pass's kernel over every output pixel, reading its inputs as textures.
     void execute(const ChainPlan& plan, const Step& step) {
@@ -89,7 +63,7 @@ Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResu
     const ChainPlan& plan = *planned;
     Impl& b = *m;
     b.input = &input, b.final = &result.final;
-    b.mips.resize(plan.levels.size()), b.ups.resize(plan.levels.size());
+    b.buffers.mips.resize(plan.levels.size()), b.buffers.ups.resize(plan.levels.size());
     if (plan.dirtOn)
         b.dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on
     PassClock clock(options.times);
@@ -103,8 +77,9 @@ Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResu
     if (options.keepLayers) {
         result.bloom = b.read(plan.bloom);
         result.bloom.scale(params.bloom.intensity);
-        result.ghosts = b.ghosts, result.halo = b.halo, result.streaks = b.streaks,
-        result.lens = b.lens;
+        const ChainBuffers<Image>& l = b.buffers;
+        result.ghosts = l.ghosts, result.halo = l.halo, result.streaks = l.streaks,
+        result.lens = l.lens;
     }
     return Ok{};
 }

@@ -40,6 +40,38 @@ struct Step {
     BufferId output;
 };
 
+//! The buffers an executor owns, of its kind (CPU images, GL targets), looked up by BufferId.
+//! Input, Dirt and Final are the executor's own: find() gives nullptr for them.
+template <class T>
+struct ChainBuffers {
+    std::vector<T> mips, ups;
+    T ghosts, halo, streaks, right, ping, lens;
+
+    T* find(BufferId id) {
+        switch (id.kind) {
+            case BufferKind::Mip:
+                return &mips[id.level];
+            case BufferKind::Up:
+                return &ups[id.level];
+            case BufferKind::Ghosts:
+                return &ghosts;
+            case BufferKind::Halo:
+                return &halo;
+            case BufferKind::Streaks:
+                return &streaks;
+            case BufferKind::Right:
+                return &right;
+            case BufferKind::Ping:
+                return &ping;
+            case BufferKind::Lens:
+                return &lens;
+            default:
+                return nullptr;
+        }
+    }
+    const T* find(BufferId id) const { return const_cast<ChainBuffers*>(this)->find(id); }
+};
+
 struct ChainPlan {
     Size input;
     std::vector<Size> levels;  //!< levels[0] = 1/2 (bright pass) ... levels.back() the coarsest

@@ -132,8 +132,8 @@ struct GpuPostFx::Impl {
     Size input;
     std::size_t levelCount = 0;
     gl::Texture source;
-    Target final, ghosts, halo, streaks, right, ping, lens, dirtT;
-    std::vector<Target> mips, ups;
+    Target final, dirtT;
+    ChainBuffers<Target> buffers;
     LensDirtCache dirt;
 
     Status allocate(const ChainPlan& plan);
@@ -178,15 +178,16 @@ Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
         return Ok{};
     };
     if (Status s = make(plan.input, final); !s) return s;
-    mips.clear(), ups.clear();
-    mips.resize(plan.levels.size()), ups.resize(plan.levels.size());
+    ChainBuffers<Target>& b = buffers;
+    b.mips.clear(), b.ups.clear();
+    b.mips.resize(plan.levels.size()), b.ups.resize(plan.levels.size());
     for (std::size_t i = 0; i < plan.levels.size(); ++i) {
-        if (Status s = make(plan.levels[i], mips[i]); !s) return s;
+        if (Status s = make(plan.levels[i], b.mips[i]); !s) return s;
         if (i >= kWorkLevel && i + 1 < plan.levels.size()) {
-            if (Status s = make(plan.levels[i], ups[i]); !s) return s;
+            if (Status s = make(plan.levels[i], b.ups[i]); !s) return s;
         }
     }
-    for (Target* t : {&ghosts, &halo, &streaks, &right, &ping, &lens, &dirtT}) {
+    for (Target* t : {&b.ghosts, &b.halo, &b.streaks, &b.right, &b.ping, &b.lens, &dirtT}) {
         if (Status s = make(plan.work(), *t); !s) return s;
     }
     input = plan.input, levelCount = plan.levels.size();
@@ -195,30 +196,9 @@ Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
 }
 
 const Target& GpuPostFx::Impl::target(BufferId id) const {
-    switch (id.kind) {
-        case BufferKind::Mip:
-            return mips[id.level];
-        case BufferKind::Up:
-            return ups[id.level];
-        case BufferKind::Ghosts:
-            return ghosts;
-        case BufferKind::Halo:
-            return halo;
-        case BufferKind::Streaks:
-            return streaks;
-        case BufferKind::Right:
-            return right;
-        case BufferKind::Ping:
-            return ping;
-        case BufferKind::Lens:
-            return lens;
-        case BufferKind::Dirt:
-            return dirtT;
-        case BufferKind::Final:
-        case BufferKind::Input:
-            break;
-    }
-    return final;
+    if (id.kind == BufferKind::Dirt) return dirtT;
+    if (const Target* t = buffers.find(id)) return *t;
+    return final;  // Final (Input is read as the source texture)
 }
 
 GLuint GpuPostFx::Impl::texture(BufferId id) const {
@@ -283,9 +263,10 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
     };
     if (Status s = read(g.final, result.final); !s) return s.error();
     if (options.keepLayers) {
+        const ChainBuffers<Target>& l = g.buffers;
         for (auto [t, out] :
-             {std::pair{&g.ghosts, &result.ghosts}, std::pair{&g.halo, &result.halo},
-              std::pair{&g.streaks, &result.streaks}, std::pair{&g.lens, &result.lens}}) {
+             {std::pair{&l.ghosts, &result.ghosts}, std::pair{&l.halo, &result.halo},
+              std::pair{&l.streaks, &result.streaks}, std::pair{&l.lens, &result.lens}}) {
             if (Status s = read(*t, *out); !s) return s.error();
         }
         if (Status s = read(g.target(plan.bloom), result.bloom); !s) return s.error();

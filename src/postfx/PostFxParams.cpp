@@ -160,10 +160,7 @@ std::vector<std::string> shippedPostFxPresetNames() {
 }
 
 Result<PostFxParams> loadPostFxPreset(const std::string& nameOrPath) {
-    std::string path;
-    auto text = readPresetText(nameOrPath, "postfx", path);
-    if (!text) return text.error();
-    return parsePostFxPreset(*text, path);
+    return loadPresetFile(nameOrPath, "postfx", parsePostFxPreset);
 }
 
 std::string postFxParameterReference() {
