@@ -1,6 +1,8 @@
 // The CPU executor of the post-process chain: every step of the plan is its pass's pixel
 // kernel run over the output image in parallel (runPass). The wiring is ChainPlan.cpp's
 // wireChain; GpuChain.cpp executes the same steps with GL draws.
+#include <array>
+
 #include "flarekit/PostFx.h"
 #include "postfx/ChainPlan.h"
 #include "postfx/PassClock.h"
@@ -37,14 +39,19 @@ struct CpuPostFx::Impl {
     //! One step: its pass's kernel over every output pixel, reading its inputs as textures.
     void execute(const ChainPlan& plan, const Step& step) {
         Image& out = ensure(write(step.output), plan.sizeOf(step.output));
-        std::vector<Tex> in;
-        for (BufferId id : step.inputs) in.emplace_back(read(id));
+        // The inputs by value in the kernel's closure (as the uniforms are its own copy): the
+        // compiler then knows the output rows cannot alias them and keeps them in registers.
+        std::array<Tex, kMaxStepInputs> in{};
+        for (std::size_t i = 0; i < step.inputs.size(); ++i) in[i] = Tex(read(step.inputs[i]));
         std::visit(
-            [&](const auto& u) {
-                if constexpr (std::is_same_v<std::decay_t<decltype(u)>, ClearStep>) {
+            [&, in](const auto& stepUniforms) {
+                using U = std::decay_t<decltype(stepUniforms)>;
+                if constexpr (std::is_same_v<U, ClearStep>) {
                     out.fill({});
                 } else {
-                    runPass(out, [&](int x, int y) { return passPixel(u, in.data(), x, y); });
+                    runPass(out, [u = stepUniforms, in](int x, int y) {
+                        return passPixel(u, in.data(), x, y);
+                    });
                 }
             },
             step.uniforms);

@@ -30,6 +30,9 @@ struct BufferId {
     bool operator==(const BufferId&) const = default;
 };
 
+//! Most inputs a step reads (the lens pass: bloom, ghosts, halo, streaks, dirt).
+inline constexpr std::size_t kMaxStepInputs = 5;
+
 //! One step of the chain: `uniforms` says which pass (and with what), reading `inputs` in the
 //! order its kernel takes them, writing `output`. Consecutive steps of one `label` are timed
 //! together (`postfx -v`).

@@ -37,6 +37,7 @@ struct Vec2 {
 struct Tex {
     const float* data = nullptr;
     int width = 0, height = 0;
+    Tex() = default;
     explicit Tex(const Image& image)
         : data(image.data()), width(image.width()), height(image.height()) {}
 
