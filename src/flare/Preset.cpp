@@ -1,5 +1,6 @@
-// Preset JSON: parsed with nlohmann-json, validated field by field against ParamTable so
-// every message names the file, the field and what was expected.
+// Preset JSON: parsed with nlohmann-json, read field by field through kElementParams and
+// kPresetParams (flarekit/Elements.h, flarekit/Flare.h) so every message names the file, the
+// field and what was expected.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
