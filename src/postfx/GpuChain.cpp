@@ -11,15 +11,8 @@
 #include "gl/GlObjects.h"
 #include "postfx/ChainPlan.h"
 #include "postfx/PassClock.h"
-#include "postfx/blur/UpsampleGl.h"
-#include "postfx/brightpass/BrightPassGl.h"
-#include "postfx/composite/CompositeGl.h"
-#include "postfx/composite/LensGl.h"
+#include "postfx/PassShaders.h"
 #include "postfx/dirt/LensDirtCache.h"
-#include "postfx/downsample/DownsampleGl.h"
-#include "postfx/ghosts/GhostsGl.h"
-#include "postfx/halo/HaloGl.h"
-#include "postfx/streaks/StreaksGl.h"
 
 namespace flarekit {
 

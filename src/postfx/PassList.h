@@ -1,7 +1,8 @@
 // Every pass of the post-process chain, as the type of its uniforms. A pass is one unit in its
 // folder (uniforms, CPU pixel kernel passPixel, GLSL, uniform binding bindUniforms, and in
-// *Gl.h the shader to link); adding one = its folder + one line here + its step in wireChain
-// (ChainPlan.cpp). Both executors (Chain.cpp, GpuChain.cpp) dispatch on this list.
+// *Gl.h the shader to link); adding one = its folder + its line here (and its include), its
+// *Gl.h include in PassShaders.h and its steps in wireChain (ChainPlan.cpp). Both executors
+// (Chain.cpp, GpuChain.cpp) dispatch on this list and do not change.
 #pragma once
 
 #include <variant>
