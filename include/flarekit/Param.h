@@ -17,6 +17,7 @@
 #include <type_traits>
 
 #include "flarekit/Result.h"
+#include "flarekit/Vec3.h"
 
 namespace flarekit {
 
@@ -30,7 +31,11 @@ enum class ParamType {
     Color,          //!< Rgb, each component in [min, max]
     OptionalColor,  //!< std::optional<Rgb>: absent means "derived" (see the help)
     Choice,         //!< an enum (or bool) picked by name from `choices`, in value order
+    Vector,         //!< Vec3 (double), each component in [min, max]: positions, directions
 };
+
+//! A bound past any sensible value: a range reaching it reads "a positive number" in messages.
+inline constexpr double kParamUnbounded = 1e12;
 
 //! A parameter's value in one shape for every type: number (Choice: the index, Bool: 0 or 1)
 //! or colour (`hasColor` false: an absent optional colour).
@@ -38,6 +43,7 @@ struct ParamValue {
     double number = 0;
     Rgb color{};
     bool hasColor = true;
+    Vec3 vector{};
 };
 
 template <class Owner>
@@ -53,6 +59,8 @@ struct Param {
     //! A float member (or Rgb): ranges compare in float, so 0.01 read into a float (0.0099999998)
     //! still meets a minimum of 0.01.
     bool singlePrecision = false;
+    bool openMin = false;   //!< (min, max]: min itself is refused (a radius, a field of view)
+    bool required = false;  //!< the JSON reader refuses an object without it
     ParamValue (*get)(const Owner&) = nullptr;
     void (*set)(Owner&, const ParamValue&) = nullptr;
 
@@ -89,8 +97,10 @@ constexpr ParamType typeOf() {
         return ParamType::Color;
     else if constexpr (std::is_same_v<T, std::optional<Rgb>>)
         return ParamType::OptionalColor;
+    else if constexpr (std::is_same_v<T, Vec3>)
+        return ParamType::Vector;
     else {
-        static_assert(std::is_enum_v<T>, "a parameter is a number, bool, colour or enum");
+        static_assert(std::is_enum_v<T>, "a parameter is a number, bool, colour, vector or enum");
         return ParamType::Choice;
     }
 }
@@ -99,12 +109,16 @@ template <auto M>
 ParamValue get(const OwnerOf<M>& owner) {
     using T = FieldOf<M>;
     const T& v = owner.*M;
+    ParamValue out;
     if constexpr (std::is_same_v<T, Rgb>)
-        return {0, v, true};
-    else if constexpr (std::is_same_v<T, std::optional<Rgb>>)
-        return {0, v.value_or(Rgb{}), v.has_value()};
+        out.color = v;
+    else if constexpr (std::is_same_v<T, std::optional<Rgb>>) {
+        out.color = v.value_or(Rgb{}), out.hasColor = v.has_value();
+    } else if constexpr (std::is_same_v<T, Vec3>)
+        out.vector = v;
     else
-        return {double(v), {}, true};
+        out.number = double(v);
+    return out;
 }
 
 template <auto M>
@@ -115,7 +129,9 @@ void set(OwnerOf<M>& owner, const ParamValue& value) {
         v = value.color;
     else if constexpr (std::is_same_v<T, std::optional<Rgb>>) {
         v = value.hasColor ? std::optional<Rgb>(value.color) : std::nullopt;
-    } else if constexpr (std::is_same_v<T, bool>)
+    } else if constexpr (std::is_same_v<T, Vec3>)
+        v = value.vector;
+    else if constexpr (std::is_same_v<T, bool>)
         v = value.number != 0;
     else if constexpr (std::is_enum_v<T>)
         v = T(int(value.number));
@@ -123,30 +139,32 @@ void set(OwnerOf<M>& owner, const ParamValue& value) {
         v = T(value.number);
 }
 
+//! The parts every factory sets: key, help, the member's type and its accessors.
+template <auto Member>
+constexpr Param<OwnerOf<Member>> base(std::string_view key, std::string_view help,
+                                      std::uint32_t appliesTo) {
+    using T = FieldOf<Member>;
+    Param<OwnerOf<Member>> p;
+    p.key = key, p.help = help, p.appliesTo = appliesTo;
+    p.type = typeOf<T>();
+    p.singlePrecision =
+        std::is_same_v<T, float> || std::is_same_v<T, Rgb> || std::is_same_v<T, std::optional<Rgb>>;
+    p.get = &get<Member>, p.set = &set<Member>;
+    return p;
+}
+
 }  // namespace param_detail
 
-//! A number, integer, seed, bool or colour member: `param<&BloomParams::levels>("levels", 2, 12,
-//! "mips", "downsample levels")`. The type comes from the member.
+//! A number, integer, seed, bool, colour or vector member: `param<&BloomParams::levels>("levels",
+//! 2, 12, "mips", "downsample levels")`. The type comes from the member.
 template <auto Member>
 constexpr Param<param_detail::OwnerOf<Member>> param(std::string_view key, double min, double max,
                                                      std::string_view unit, std::string_view help,
                                                      std::uint32_t appliesTo = ~0u) {
-    using T = param_detail::FieldOf<Member>;
-    static_assert(!std::is_enum_v<T>, "an enum member is a choice<>()");
-    constexpr bool single =
-        std::is_same_v<T, float> || std::is_same_v<T, Rgb> || std::is_same_v<T, std::optional<Rgb>>;
-    return {key,
-            param_detail::typeOf<T>(),
-            min,
-            max,
-            unit,
-            help,
-            {},
-            {},
-            appliesTo,
-            single,
-            &param_detail::get<Member>,
-            &param_detail::set<Member>};
+    static_assert(!std::is_enum_v<param_detail::FieldOf<Member>>, "an enum member is a choice<>()");
+    auto p = param_detail::base<Member>(key, help, appliesTo);
+    p.min = min, p.max = max, p.unit = unit;
+    return p;
 }
 
 //! An enum (or bool) member picked by name; names[i] is the value i.
@@ -155,18 +173,10 @@ constexpr Param<param_detail::OwnerOf<Member>> choice(std::string_view key,
                                                       std::span<const std::string_view> names,
                                                       std::string_view help,
                                                       std::uint32_t appliesTo = ~0u) {
-    return {key,
-            ParamType::Choice,
-            0,
-            double(names.size()) - 1,
-            {},
-            help,
-            names,
-            {},
-            appliesTo,
-            false,
-            &param_detail::get<Member>,
-            &param_detail::set<Member>};
+    auto p = param_detail::base<Member>(key, help, appliesTo);
+    p.type = ParamType::Choice, p.singlePrecision = false;
+    p.min = 0, p.max = double(names.size()) - 1, p.choices = names;
+    return p;
 }
 
 //! An integer member that takes only the listed values (MSAA sample counts).
@@ -177,6 +187,20 @@ constexpr Param<param_detail::OwnerOf<Member>> oneOf(std::string_view key,
     Param<param_detail::OwnerOf<Member>> p =
         param<Member>(key, double(values.front()), double(values.back()), unit, help);
     p.only = values;
+    return p;
+}
+
+//! The same parameter, required in JSON objects.
+template <class Owner>
+constexpr Param<Owner> required(Param<Owner> p) {
+    p.required = true;
+    return p;
+}
+
+//! The same parameter with its minimum excluded: (min, max].
+template <class Owner>
+constexpr Param<Owner> aboveMin(Param<Owner> p) {
+    p.openMin = true;
     return p;
 }
 
@@ -212,11 +236,19 @@ inline std::string formatParamRange(double lo, double hi) {
 //! What a message says was expected: "a number in [0, 4]", "one of \"add\", \"screen\"", ...
 template <class Owner>
 std::string expectedText(const Param<Owner>& p) {
-    const std::string range = formatParamRange(p.min, p.max);
+    std::string range = formatParamRange(p.min, p.max);
+    if (p.openMin) range[0] = '(';
+    const bool unbounded = p.max >= kParamUnbounded;
     auto quoted = [&](std::size_t i) { return joinText("\"", p.choices[i], "\""); };
     switch (p.type) {
         case ParamType::Number:
+            if (unbounded && p.min == 0)
+                return p.openMin ? "a positive number" : "a non-negative number";
             return joinText("a number in ", range);
+        case ParamType::Vector:
+            if (unbounded && p.min == 0 && !p.openMin) return "an array of 3 non-negative numbers";
+            if (unbounded && p.min <= -kParamUnbounded) return "an array of 3 numbers";
+            return joinText("an array of 3 numbers in ", range);
         case ParamType::Integer:
         case ParamType::Seed:
             if (!p.only.empty()) {
@@ -248,11 +280,12 @@ bool numberFits(const Param<Owner>& p, double x) {
     if (!std::isfinite(x)) return false;
     if (p.singlePrecision) {
         if (float(x) < float(p.min) || float(x) > float(p.max)) return false;
-    } else if (x < p.min || x > p.max) {
+        if (p.openMin && float(x) == float(p.min)) return false;
+    } else if (x < p.min || x > p.max || (p.openMin && x == p.min)) {
         return false;
     }
     if (p.type == ParamType::Number || p.type == ParamType::Color ||
-        p.type == ParamType::OptionalColor) {
+        p.type == ParamType::OptionalColor || p.type == ParamType::Vector) {
         return true;
     }
     if (x != std::floor(x)) return false;
@@ -272,6 +305,9 @@ bool valueFits(const Param<Owner>& p, const ParamValue& v) {
         }
         return true;
     }
+    if (p.type == ParamType::Vector) {
+        return numberFits(p, v.vector.x) && numberFits(p, v.vector.y) && numberFits(p, v.vector.z);
+    }
     if (p.type == ParamType::Bool) return v.number == 0 || v.number == 1;
     return numberFits(p, v.number);
 }
@@ -285,6 +321,9 @@ std::string valueText(const Param<Owner>& p, const ParamValue& v) {
             if (!v.hasColor) return "";
             return joinText("[", formatParamNumber(v.color[0]), ", ", formatParamNumber(v.color[1]),
                             ", ", formatParamNumber(v.color[2]), "]");
+        case ParamType::Vector:
+            return joinText("[", formatParamNumber(v.vector.x), ", ", formatParamNumber(v.vector.y),
+                            ", ", formatParamNumber(v.vector.z), "]");
         case ParamType::Bool:
             return v.number != 0 ? "true" : "false";
         case ParamType::Choice: {
@@ -299,10 +338,13 @@ std::string valueText(const Param<Owner>& p, const ParamValue& v) {
 //! The range column of the docs: "[0, 4]", "3 x [0, 64]", "`add`, `screen`", "true, false".
 template <class Owner>
 std::string rangeText(const Param<Owner>& p) {
+    std::string range = formatParamRange(p.min, p.max);
+    if (p.openMin) range[0] = '(';
     switch (p.type) {
         case ParamType::Color:
         case ParamType::OptionalColor:
-            return joinText("3 x ", formatParamRange(p.min, p.max));
+        case ParamType::Vector:
+            return joinText("3 x ", range);
         case ParamType::Bool:
             return "true, false";
         case ParamType::Choice: {
@@ -320,7 +362,7 @@ std::string rangeText(const Param<Owner>& p) {
                 }
                 return list;
             }
-            return formatParamRange(p.min, p.max);
+            return range;
     }
 }
 

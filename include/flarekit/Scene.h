@@ -1,10 +1,12 @@
-// The Scene JSON contract of architecture.md: a gluLookAt camera, a sun at infinity with an
+// The Scene JSON contract of docs/architecture.md: a gluLookAt camera, a sun at infinity with an
 // angular radius, and opaque spheres, boxes and triangles.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "flarekit/Image.h"
+#include "flarekit/Param.h"
 #include "flarekit/Result.h"
 #include "flarekit/Vec3.h"
 
@@ -17,6 +19,21 @@ struct SceneCamera {
     double fovYDeg = 60;  //!< vertical field of view, degrees
     double nearPlane = 0.1, farPlane = 2000;
 };
+inline constexpr double kSceneAnyCoordinate = -kParamUnbounded;
+inline constexpr Param<SceneCamera> kSceneCameraParams[] = {
+    required(param<&SceneCamera::position>("position", kSceneAnyCoordinate, kParamUnbounded, "m",
+                                           "eye point")),
+    required(param<&SceneCamera::lookAt>("look_at", kSceneAnyCoordinate, kParamUnbounded, "m",
+                                         "the point looked at")),
+    param<&SceneCamera::up>("up", kSceneAnyCoordinate, kParamUnbounded, "",
+                            "up direction (not parallel to the view)"),
+    aboveMin(
+        param<&SceneCamera::fovYDeg>("fov_y_deg", 0, 179, "degrees", "vertical field of view")),
+    aboveMin(
+        param<&SceneCamera::nearPlane>("near", 0, kParamUnbounded, "m", "near clipping distance")),
+    aboveMin(param<&SceneCamera::farPlane>("far", 0, kParamUnbounded, "m",
+                                           "far clipping distance (> near)")),
+};
 
 struct SceneSun {
     Vec3 direction{0.2, 0.3, -1};  //!< from the camera toward the sun; normalised on load
@@ -24,21 +41,49 @@ struct SceneSun {
     Vec3 color{1.0, 0.95, 0.85};
     double intensity = 50.0;
 };
+inline constexpr Param<SceneSun> kSceneSunParams[] = {
+    required(param<&SceneSun::direction>("direction", kSceneAnyCoordinate, kParamUnbounded, "",
+                                         "from the camera toward the sun (non-zero; normalised)")),
+    aboveMin(
+        param<&SceneSun::angularRadiusDeg>("angular_radius_deg", 0, 45, "degrees", "disc radius")),
+    param<&SceneSun::color>("color", 0, kParamUnbounded, "linear RGB", "sun colour"),
+    param<&SceneSun::intensity>("intensity", 0, kParamUnbounded, "", "multiplies the colour"),
+};
 
 struct Sphere {
     Vec3 center;
     double radius = 1;
     Vec3 color{0.5, 0.5, 0.5};
 };
+inline constexpr Param<Sphere> kSphereParams[] = {
+    required(param<&Sphere::center>("center", kSceneAnyCoordinate, kParamUnbounded, "m", "centre")),
+    required(aboveMin(param<&Sphere::radius>("radius", 0, kParamUnbounded, "m", "radius"))),
+    param<&Sphere::color>("color", 0, kParamUnbounded, "linear RGB", "albedo"),
+};
 
 struct Box {
     Vec3 min, max;
     Vec3 color{0.5, 0.5, 0.5};
 };
+inline constexpr Param<Box> kBoxParams[] = {
+    required(param<&Box::min>("min", kSceneAnyCoordinate, kParamUnbounded, "m", "lowest corner")),
+    required(param<&Box::max>("max", kSceneAnyCoordinate, kParamUnbounded, "m",
+                              "highest corner (each component > min's)")),
+    param<&Box::color>("color", 0, kParamUnbounded, "linear RGB", "albedo"),
+};
 
 struct Triangle {
     Vec3 a, b, c;  //!< double-sided
     Vec3 color{0.5, 0.5, 0.5};
+};
+
+//! Triangles' shared colour ("vertices" is read apart: an array of 3N points).
+struct TrianglesColor {
+    Vec3 color{0.5, 0.5, 0.5};
+};
+inline constexpr Param<TrianglesColor> kTrianglesParams[] = {
+    param<&TrianglesColor::color>("color", 0, kParamUnbounded, "linear RGB",
+                                  "albedo of every triangle"),
 };
 
 struct Scene {
@@ -48,6 +93,11 @@ struct Scene {
     std::vector<Sphere> spheres;
     std::vector<Box> boxes;
     std::vector<Triangle> triangles;
+};
+//! The "image" section of the Scene JSON.
+inline constexpr Param<Scene> kSceneImageParams[] = {
+    required(param<&Scene::width>("width", 1, kMaxImageSide, "pixels", "frame width")),
+    required(param<&Scene::height>("height", 1, kMaxImageSide, "pixels", "frame height")),
 };
 
 //! Parses and validates; errors name the field: "scene.json: objects[4].radius: expected a

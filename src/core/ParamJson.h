@@ -67,6 +67,17 @@ Result<ParamValue> readParamValue(const Param<Owner>& p, const nlohmann::json& v
                 out.color[c] = float(*d);
             }
             return out;
+        case ParamType::Vector: {
+            if (!v.is_array() || v.size() != 3) return bad();
+            double c[3];
+            for (std::size_t i = 0; i < 3; ++i) {
+                const auto d = number(v[i]);
+                if (!d) return bad();
+                c[i] = *d;
+            }
+            out.vector = {c[0], c[1], c[2]};
+            return out;
+        }
         case ParamType::Bool:
             if (!v.is_boolean()) return bad();
             out.number = v.get<bool>() ? 1 : 0;
@@ -112,6 +123,11 @@ std::optional<Error> readParams(const nlohmann::json& v, std::span<const Param<O
         auto read = readParamValue(*p, value, place / key);
         if (!read) return read.error();
         p->set(owner, *read);
+    }
+    for (const Param<Owner>& p : table) {
+        if (p.required && (p.appliesTo & mask) && !v.contains(std::string(p.key))) {
+            return (place / p.key).fail("missing; expected " + expectedText(p));
+        }
     }
     return std::nullopt;
 }

@@ -7,6 +7,7 @@
 #include "flarekit/Demo.h"
 #include "flarekit/Flare.h"
 #include "flarekit/PostFx.h"
+#include "flarekit/Scene.h"
 #include "flarekit/Temporal.h"
 
 using namespace flarekit;
@@ -171,4 +172,41 @@ TEST(Params, ChoicesReadByNameAndPrintedAsTheDocsShowThem) {
     EXPECT_EQ(valueText(op, op.get(tone)), "`filmic`");
     const Param<StarburstParams>& seed = *findParam<StarburstParams>(kStarburstParams, "seed");
     EXPECT_EQ(rangeText(seed), "[0, 2147483647]");
+}
+
+TEST(Params, SceneJsonReadsThroughTheSameTables) {
+    const auto error = [](const std::string& objectsAndMore) {
+        const std::string text =
+            R"({"image": {"width": 64, "height": 32}, "camera": {"position": [0,0,0], )"
+            R"("look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}, )" +
+            objectsAndMore + "}";
+        auto r = parseScene(text, "s.json");
+        return r.ok() ? std::string("(ok)") : r.error().message;
+    };
+    EXPECT_EQ(error(R"("objects": [{"type": "sphere", "radius": 1}])"),
+              "s.json: objects[0].center: missing; expected an array of 3 numbers");
+    EXPECT_EQ(error(R"("objects": [{"type": "sphere", "center": [0,0,-5], "radius": 0}])"),
+              "s.json: objects[0].radius: expected a positive number, got 0");
+    EXPECT_EQ(
+        error(R"("objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "color": [1,-1,0]}])"),
+        "s.json: objects[0].color: expected an array of 3 non-negative numbers, got [1,-1,0]");
+    EXPECT_EQ(
+        error(R"("objects": [{"type": "triangles", "vertices": [[0,0,0],[1,0,0],[0,"x",0]]}])"),
+        R"(s.json: objects[0].vertices[2]: expected an array of 3 numbers, got [0,"x",0])");
+    EXPECT_EQ(error(R"("objects": [], "lights": [])"),
+              "s.json: lights: unknown key (expected one of: image, camera, sun, objects)");
+    const Param<SceneCamera>& fov = *findParam<SceneCamera>(kSceneCameraParams, "fov_y_deg");
+    EXPECT_EQ(expectedText(fov), "a number in (0, 179]");
+    SceneCamera camera;
+    camera.fovYDeg = 0;
+    EXPECT_EQ(validateParams<SceneCamera>(camera, kSceneCameraParams, "camera.").error().message,
+              "camera.fov_y_deg: expected a number in (0, 179], got 0");
+    auto ok = parseScene(
+        R"({"image": {"width": 64, "height": 32}, "camera": {"position": [0,0,0], "look_at": [0,0,-1],
+        "fov_y_deg": 179}, "sun": {"direction": [0,0,-2], "intensity": 0},
+        "objects": [{"type": "triangles", "vertices": [[0,0,-1],[1,0,-1],[0,1,-1]], "color": [0,0,0]}]})",
+        "s.json");
+    ASSERT_TRUE(ok.ok()) << ok.error().message;
+    EXPECT_DOUBLE_EQ(ok->sun.direction.z, -1.0);  // normalised on load
+    EXPECT_EQ(ok->triangles.size(), 1u);
 }
