@@ -12,12 +12,13 @@ using namespace flarekit;
 
 namespace {
 
-//! The shipped HDR sunset at 320x180 (bilinear, the library's own resize: deterministic).
+//! The golden input: the HDR sample sunset at 320x180, shipped as tests/golden/input/
+//! sunset-hdr-320x180.exr (made once with `oiiotool samples/sunset-hdr.exr --resize 320x180`),
+//! so no library code sits between the file and the path under test.
 const Image& sunset() {
     static const Image image = [] {
-        auto loaded = readImage(std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr");
-        if (!loaded) return Image(320, 180);
-        return resizeBilinear(loaded->image, 320, 180);
+        auto loaded = readImage(std::string(FLAREKIT_GOLDEN_INPUT) + "/sunset-hdr-320x180.exr");
+        return loaded ? loaded->image : Image(320, 180);
     }();
     return image;
 }
