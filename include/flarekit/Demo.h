@@ -36,7 +36,7 @@ struct DemoSettings {
 inline constexpr Param<DemoSettings> kDemoParams[] = {
     param<&DemoSettings::frames>("frames", 1, 100000, "",
                                  "frames over the 8 s drive (240 = 30 fps)"),
-    param<&DemoSettings::raycastSamplesPerSide>("samples", 1, 4096, "per side",
+    param<&DemoSettings::raycastSamplesPerSide>("samples", 1, 4096, "",
                                                 "raycast: strata per side (N^2 rays a frame)"),
     oneOf<&DemoSettings::msaaSamples>("msaa", kMsaaSampleCounts, "samples",
                                       "samples per pixel for the scene pass"),

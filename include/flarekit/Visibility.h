@@ -30,7 +30,7 @@ struct RaycastOptions {
     std::uint64_t seed = 1;  //!< jitter seed: the same seed gives the same estimate
 };
 inline constexpr Param<RaycastOptions> kRaycastParams[] = {
-    param<&RaycastOptions::samplesPerSide>("samples", 1, 4096, "per side",
+    param<&RaycastOptions::samplesPerSide>("samples", 1, 4096, "",
                                            "raycast: strata per side (N^2 rays)"),
 };
 

@@ -45,6 +45,7 @@ CLI::Option* addParamOption(CLI::App* cmd, const Param<Owner>& p, Owner& target)
         },
         paramHelp(p));
     option->check(paramValidator(p));
+    option->type_name(p.type == ParamType::Number ? "FLOAT" : "INT");
     option->default_str(valueText(p, p.get(target)));
     return option;
 }
@@ -74,6 +75,7 @@ CLI::Option* addParamOverride(CLI::App* cmd, const std::string& flag, const Para
     auto* option = cmd->add_option_function<double>(
         flag, [&out](double x) { out = T(x); }, paramHelp(p) + " (default: " + defaultFrom + ")");
     option->check(paramValidator(p));
+    option->type_name(p.type == ParamType::Number ? "FLOAT" : "INT");
     return option;
 }
 
