@@ -1,4 +1,4 @@
-# Writes a header holding each shader file as a raw string literal (style.md habit 6: shaders
+# Writes a header holding each shader file as a raw string literal (shaders
 # are embedded at build time, never checked in as generated code).
 #   cmake -DOUTPUT=header.h -DINPUTS="a.vert|b.frag" -P EmbedShaders.cmake
 # The constant for src/scene/shaders/scene.vert is flarekit::shaders::scene_vert.

@@ -18,7 +18,7 @@ BufferId upAt(const ChainPlan& plan, std::size_t level) {
     return level + 1 == plan.levels.size() ? mip(level) : BufferId{BufferKind::Up, level};
 }
 
-//! The one wiring of the chain (style.md habit 4):
+//! The one wiring of the chain, in the order it runs:
 //!   input -> bright (1/2) -> downsample chain -> tent upsample -> bloom (1/4)
 //!   bloom -> ghosts, halo;  bright 1/4 -> streaks;  all -> lens (chromatic, starburst, dirt)
 //!   input + lens -> composite (+ tone curve)

@@ -2,7 +2,7 @@
 // a 4-wide float vector per RGBA pixel (one SSE register: the SIMD of the CPU chain), texel
 // fetches clamped to the edge, and bilinear filtering written out by hand. Hardware filtering
 // would round its weights to 8 bits on most GPUs; doing it the same way on both sides is what
-// lets the CPU and GL chains agree to 1e-3 (style.md habit 3).
+// lets the CPU and GL chains agree to 1e-3.
 #pragma once
 
 #include <algorithm>
