@@ -100,6 +100,12 @@ inline constexpr Param<Scene> kSceneImageParams[] = {
     required(param<&Scene::height>("height", 1, kMaxImageSide, "pixels", "frame height")),
 };
 
+//! Every field against the tables above, plus what no single field can say (the camera looks
+//! somewhere, up is not the view direction, far > near, the sun has a direction, each box's
+//! max > min, at most 4 Mi triangles): the check of parsed scenes and of scenes built in code
+//! (raycastVisibility, SceneRenderer::create, FramePipeline::create). "camera.far: expected ...".
+Status validateScene(const Scene& scene);
+
 //! Parses and validates; errors name the field: "scene.json: objects[4].radius: expected a
 //! positive number, got -1".
 Result<Scene> parseScene(const std::string& jsonText, const std::string& source);

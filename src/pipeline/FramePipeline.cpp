@@ -52,6 +52,7 @@ Result<FramePipeline> FramePipeline::create(const Scene& world, const Preset& pr
                             settings.method + "'");
     }
     if (Status s = validateTemporalParams(settings.temporalParams); !s) return s.error();
+    if (Status s = validateScene(world); !s) return invalidInput("scene: " + s.error().message);
     auto renderer = SceneRenderer::create(world, settings.render);
     if (!renderer) return renderer.error();
     auto impl = std::make_unique<Impl>(settings, preset, world, std::move(*renderer));

@@ -16,23 +16,6 @@ constexpr std::size_t kMaxTriangles = std::size_t(4) << 20;
 #define FK_TRY(expr) \
     if (auto fk_err = (expr)) return *fk_err
 
-//! The checks no single field can make: the camera must look somewhere, up must not be the
-//! view direction, the far plane must lie past the near one, the sun must have a direction.
-std::optional<Error> checkCameraAndSun(Scene& s, const JsonPlace& top) {
-    if (s.camera.farPlane <= s.camera.nearPlane)
-        return (top / "camera" / "far").fail("expected a number greater than camera.near");
-    const Vec3 view = s.camera.lookAt - s.camera.position;
-    if (length(view) < 1e-12)
-        return (top / "camera" / "look_at").fail("expected a point different from camera.position");
-    if (length(cross(normalize(view), s.camera.up)) < 1e-9)
-        return (top / "camera" / "up")
-            .fail("expected a direction not parallel to the view direction");
-    if (length(s.sun.direction) < 1e-12)
-        return (top / "sun" / "direction").fail("expected a non-zero direction");
-    s.sun.direction = normalize(s.sun.direction);
-    return std::nullopt;
-}
-
 std::optional<Error> readTriangles(const json& o, const JsonPlace& at, Scene& s) {
     TrianglesColor c;
     FK_TRY(readParams<TrianglesColor>(o, kTrianglesParams, c, at, {"type", "vertices"}));
@@ -99,7 +82,6 @@ Result<Scene> readScene(const json& doc, const JsonPlace& top) {
     FK_TRY(readParams<Scene>(doc["image"], kSceneImageParams, s, top / "image"));
     FK_TRY(readParams<SceneCamera>(doc["camera"], kSceneCameraParams, s.camera, top / "camera"));
     FK_TRY(readParams<SceneSun>(doc["sun"], kSceneSunParams, s.sun, top / "sun"));
-    FK_TRY(checkCameraAndSun(s, top));
     const auto objects = doc.find("objects");
     if (objects == doc.end()) return s;
     if (!objects->is_array())
@@ -110,14 +92,59 @@ Result<Scene> readScene(const json& doc, const JsonPlace& top) {
     return s;
 }
 
+//! What no single field can say, in the order the reader used to check it.
+Status checkAcrossFields(const Scene& s) {
+    if (s.camera.farPlane <= s.camera.nearPlane)
+        return invalidInput("camera.far: expected a number greater than camera.near");
+    const Vec3 view = s.camera.lookAt - s.camera.position;
+    if (length(view) < 1e-12)
+        return invalidInput("camera.look_at: expected a point different from camera.position");
+    if (length(cross(normalize(view), s.camera.up)) < 1e-9) {
+        return invalidInput("camera.up: expected a direction not parallel to the view direction");
+    }
+    if (length(s.sun.direction) < 1e-12)
+        return invalidInput("sun.direction: expected a non-zero direction");
+    return Ok{};
+}
+
 #undef FK_TRY
 
 }  // namespace
 
+Status validateScene(const Scene& s) {
+    if (Status st = validateParams<Scene>(s, kSceneImageParams, "image."); !st) return st;
+    if (Status st = validateParams<SceneCamera>(s.camera, kSceneCameraParams, "camera."); !st)
+        return st;
+    if (Status st = validateParams<SceneSun>(s.sun, kSceneSunParams, "sun."); !st) return st;
+    if (Status st = checkAcrossFields(s); !st) return st;
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+        const std::string at = "spheres[" + std::to_string(i) + "].";
+        if (Status st = validateParams<Sphere>(s.spheres[i], kSphereParams, at); !st) return st;
+    }
+    for (std::size_t i = 0; i < s.boxes.size(); ++i) {
+        const std::string at = "boxes[" + std::to_string(i) + "].";
+        if (Status st = validateParams<Box>(s.boxes[i], kBoxParams, at); !st) return st;
+        const Box& b = s.boxes[i];
+        if (!(b.min.x < b.max.x && b.min.y < b.max.y && b.min.z < b.max.z)) {
+            return invalidInput(at + "max: expected every component greater than min's");
+        }
+    }
+    if (s.triangles.size() > kMaxTriangles) {
+        return invalidInput("triangles: expected at most " + std::to_string(kMaxTriangles) +
+                            " triangles in a scene");
+    }
+    return Ok{};
+}
+
 Result<Scene> parseScene(const std::string& jsonText, const std::string& source) {
     auto doc = parseJsonText(jsonText, source);
     if (!doc) return doc.error();
-    return readScene(*doc, JsonPlace(source));
+    auto scene = readScene(*doc, JsonPlace(source));
+    if (!scene) return scene.error();
+    if (Status st = checkAcrossFields(*scene); !st)
+        return invalidInput(source + ": " + st.error().message);
+    scene->sun.direction = normalize(scene->sun.direction);
+    return scene;
 }
 
 Result<Scene> loadScene(const std::string& path) {

@@ -9,6 +9,7 @@
 #include "flarekit/PostFx.h"
 #include "flarekit/Scene.h"
 #include "flarekit/Temporal.h"
+#include "flarekit/Visibility.h"
 
 using namespace flarekit;
 
@@ -209,4 +210,24 @@ TEST(Params, SceneJsonReadsThroughTheSameTables) {
     ASSERT_TRUE(ok.ok()) << ok.error().message;
     EXPECT_DOUBLE_EQ(ok->sun.direction.z, -1.0);  // normalised on load
     EXPECT_EQ(ok->triangles.size(), 1u);
+}
+
+TEST(Params, ScenesBuiltInCodeAreCheckedLikeJsonOnes) {
+    Scene s;
+    EXPECT_TRUE(validateScene(s).ok());
+    s.spheres.push_back({{0, 0, -5}, 0, {1, 1, 1}});
+    auto r = raycastVisibility(s);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message, "scene: spheres[0].radius: expected a positive number, got 0");
+    s.spheres[0].radius = 1;
+    s.sun.direction = {0, 0, 0};
+    EXPECT_EQ(validateScene(s).error().message, "sun.direction: expected a non-zero direction");
+    s.sun.direction = {0, 0, -1};
+    s.camera.fovYDeg = 180;
+    EXPECT_EQ(validateScene(s).error().message,
+              "camera.fov_y_deg: expected a number in (0, 179], got 180");
+    s.camera.fovYDeg = 60;
+    s.boxes.push_back({{0, 0, 0}, {1, 0, 1}, {0.5, 0.5, 0.5}});
+    EXPECT_EQ(validateScene(s).error().message,
+              "boxes[0].max: expected every component greater than min's");
 }

@@ -75,6 +75,7 @@ std::size_t RaycastCaster::primitiveCount() const {
 }
 
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options) {
+    if (Status s = validateScene(scene); !s) return invalidInput("scene: " + s.error().message);
     const auto start = std::chrono::steady_clock::now();
     auto result = RaycastCaster(scene).measure(scene, options);
     if (result) {  // include the BVH build, as before
