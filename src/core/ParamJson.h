@@ -48,7 +48,18 @@ Result<ParamValue> readParamValue(const Param<Owner>& p, const nlohmann::json& v
         if (!numberFits(p, d)) return std::nullopt;
         return d;
     };
+    //! The three components of a colour or vector, each through `number`.
+    const auto triple = [&](double c[3]) {
+        if (!v.is_array() || v.size() != 3) return false;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const auto d = number(v[i]);
+            if (!d) return false;
+            c[i] = *d;
+        }
+        return true;
+    };
     ParamValue out;
+    double c[3];
     switch (p.type) {
         case ParamType::Number:
         case ParamType::Integer:
@@ -60,24 +71,13 @@ Result<ParamValue> readParamValue(const Param<Owner>& p, const nlohmann::json& v
         }
         case ParamType::Color:
         case ParamType::OptionalColor:
-            if (!v.is_array() || v.size() != 3) return bad();
-            for (std::size_t c = 0; c < 3; ++c) {
-                const auto d = number(v[c]);
-                if (!d) return bad();
-                out.color[c] = float(*d);
-            }
+            if (!triple(c)) return bad();
+            out.color = {float(c[0]), float(c[1]), float(c[2])};
             return out;
-        case ParamType::Vector: {
-            if (!v.is_array() || v.size() != 3) return bad();
-            double c[3];
-            for (std::size_t i = 0; i < 3; ++i) {
-                const auto d = number(v[i]);
-                if (!d) return bad();
-                c[i] = *d;
-            }
+        case ParamType::Vector:
+            if (!triple(c)) return bad();
             out.vector = {c[0], c[1], c[2]};
             return out;
-        }
         case ParamType::Bool:
             if (!v.is_boolean()) return bad();
             out.number = v.get<bool>() ? 1 : 0;

@@ -13,10 +13,14 @@ Scene demoScene(int width, int height, double t) {
 }
 
 Status validateDemoSettings(const DemoSettings& settings) {
-    if (settings.width < 16 || settings.height < 16 || settings.width > 16384 ||
-        settings.height > 16384) {
-        return invalidInput("size: expected each side in [16, 16384], got " +
-                            std::to_string(settings.width) + "x" + std::to_string(settings.height));
+    // Width and height are one "--size" to the user: one message naming both, with the range of
+    // their kDemoParams rows.
+    const Param<DemoSettings>& side = *findParam<DemoSettings>(kDemoParams, "width");
+    const Param<DemoSettings>& height = *findParam<DemoSettings>(kDemoParams, "height");
+    if (!numberFits(side, settings.width) || !numberFits(height, settings.height)) {
+        return invalidInput("size: expected each side in " + formatParamRange(side.min, side.max) +
+                            ", got " + std::to_string(settings.width) + "x" +
+                            std::to_string(settings.height));
     }
     if (Status s = validateParams<DemoSettings>(settings, kDemoParams, ""); !s) return s;
     if (settings.method != "raycast" && !isGpuVisibilityMethod(settings.method)) {

@@ -14,6 +14,11 @@ namespace flarekit {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+//! A still's "temporal state": no smoothing, no edge fade, no adaptation; the flare weighs the raw
+//! coverage.
+TemporalState stillState(double coverage) {
+    return {coverage, 1, 1, coverage};
+}
 double ms(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
@@ -111,7 +116,7 @@ Status FramePipeline::Impl::cpuHalf(const Scene& view, PipelineFrame& frame, dou
         frame.temporal = filter.update(frame.rawCoverage, frame.sunPixel, frame.sunInFront,
                                        view.width, view.height, dt);
     } else {
-        frame.temporal = {frame.rawCoverage, 1, 1, frame.rawCoverage};
+        frame.temporal = stillState(frame.rawCoverage);
     }
     if (settings.flare) {
         frame.flareIntensity =
@@ -178,7 +183,7 @@ Status FramePipeline::Impl::gpuHalf(const Scene& view, PipelineFrame& frame, dou
         frame.temporal = *state;
     } else {
         frame.rawCoverage = stillCoverage;
-        frame.temporal = {frame.rawCoverage, 1, 1, frame.rawCoverage};
+        frame.temporal = stillState(frame.rawCoverage);
     }
     frame.flareIntensity *= float(frame.temporal.flareWeight);
     frame.visibilityMs = ms(t0, t1);

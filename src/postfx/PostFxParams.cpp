@@ -138,9 +138,7 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
                 const JsonPlace at = (top / key).index(i);
                 GhostParams g;
                 if (auto e = readParams<GhostParams>(value[i], kGhostParams, g, at)) return *e;
-                if (Status s = checkGhost(g, at.at()); !s)
-                    return invalidInput(source + ": " + s.error().message);
-                p.ghosts.push_back(g);
+                p.ghosts.push_back(g);  // |scale| is checked with the rest, below
             }
         } else if (key == "ghost_series") {
             if (auto e = readSeries(value, top / key, p)) return *e;

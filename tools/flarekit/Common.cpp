@@ -101,20 +101,25 @@ Status makeOutputDirectory(const std::string& dir) {
     return Ok{};
 }
 
-int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {
+namespace {
+template <class T, class Write>
+int runWriteJob(const std::string& out, const std::function<Result<T>()>& work,
+                const Write& write) {
     if (Status s = checkOutputPath(out); !s) return report(s.error());
     auto result = work();
     if (!result) return report(result.error());
-    if (Status s = writeImage(out, result->image, result->options); !s) return report(s.error());
+    if (Status s = write(*result); !s) return report(s.error());
     return kExitOk;
+}
+}  // namespace
+
+int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {
+    return runWriteJob(out, work,
+                       [&](const ImageOutput& o) { return writeImage(out, o.image, o.options); });
 }
 
 int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work) {
-    if (Status s = checkOutputPath(out); !s) return report(s.error());
-    auto result = work();
-    if (!result) return report(result.error());
-    if (Status s = writeImage8(out, *result); !s) return report(s.error());
-    return kExitOk;
+    return runWriteJob(out, work, [&](const Image8& image) { return writeImage8(out, image); });
 }
 
 Error builtWithoutGl(const std::string& what) {
