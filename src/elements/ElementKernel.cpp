@@ -42,7 +42,8 @@ ElementKernel prepareElement(const ElementParams& params, float radiusPx) {
     k.sinRot = std::sin(rot);
     if (params.type == ElementType::Streaks || params.type == ElementType::Rays) {
         k.spikes = makeSpikes(params);
-        k.maxHalfWidth = 0.5f * params.thickness + 0.5f * k.pixel;
+        k.spikeProfile = makeSpikeProfile(params.thickness, k.pixel);
+        k.maxHalfWidth = spikeSupport(k.spikeProfile);
     }
     // Support: an ellipse of semi-axes (R*aspect, R) rotated, plus the antialiasing band.
     const float a = radiusPx * params.aspect, b = radiusPx;

@@ -14,6 +14,18 @@ struct Spike {
     float weight;  //!< brightness multiplier
 };
 
+//! Brightness across a spike at perpendicular distance u (local units): a Gaussian core plus a
+//! soft exponential wing, both widened to at least a pixel-sized footprint (with their peak
+//! lowered to keep their energy) so a thin spike is antialiased instead of aliased.
+struct SpikeProfile {
+    float coreSigma = 1.f, coreAmp = 1.f;  //!< Gaussian core: exp(-u^2 / (2 sigma^2)) * amp
+    float wingScale = 1.f, wingAmp = 0.f;  //!< wing: exp(-|u| / scale) * amp
+};
+float spikeAcross(const SpikeProfile& profile, float u);
+SpikeProfile makeSpikeProfile(float thickness, float pixel);
+//! Distance past which the profile is taken as zero.
+float spikeSupport(const SpikeProfile& profile);
+
 struct ElementKernel {
     ElementParams params;
     Rgb outer{}, inner{};  //!< colour x intensity at the rim and at the centre
@@ -21,7 +33,8 @@ struct ElementKernel {
     float pixel = 1.f;     //!< one pixel in local units (fractions of R), for antialiasing
     float cosRot = 1.f, sinRot = 0.f;
     std::vector<Spike> spikes;                   //!< streaks/rays, sorted by angle
-    float maxHalfWidth = 0.f;                    //!< widest spike half-width plus half a pixel
+    SpikeProfile spikeProfile;                   //!< streaks/rays: brightness across a spike
+    float maxHalfWidth = 0.f;                    //!< where the spike profile ends (local units)
     float halfExtentX = 0.f, halfExtentY = 0.f;  //!< support half-size in pixels (bounding box)
 };
 

@@ -1,14 +1,15 @@
 // Streaks and rays (Tanczos 1999): thin antialiased spikes radiating from the centre. Streaks are
 // "evenly spaced" (4 streaks are 90 degrees apart) and full length; rays are "lines of random
 // length". A spike is the half-strip along its angle, `thickness` wide, whose brightness fades
-// as (1 - along/length)^falloff; across it, coverage is box-filtered over one pixel.
+// as (1 - along/length)^falloff. Across it the profile is a thin Gaussian core (`thickness` is
+// its full width at half maximum) with a soft exponential wing, like the streaks of a real
+// lens's diffraction spikes or of Blender's Glare node, never the hard-edged bar of a box.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/FastMath.h"
 #include "core/Random.h"
-#include "elements/Coverage.h"
 #include "elements/ElementKernel.h"
 
 namespace flarekit {
@@ -17,7 +18,48 @@ namespace {
 constexpr float kTwoPi = 2.f * std::numbers::pi_v<float>;
 //! Ray brightness is uniform in [kRayMinWeight, 1]: varied, never invisible.
 constexpr float kRayMinWeight = 0.4f;
+//! A Gaussian's full width at half maximum is 2 sqrt(2 ln 2) = 2.3548 sigma.
+constexpr float kFwhmPerSigma = 2.3548f;
+//! Narrowest core, in pixels. A Gaussian sampled at pixel centres steps most steeply on its
+//! flank, about peak * exp(-1/2) / sigma per pixel near u = sigma; for no step above a quarter
+//! of the peak (a smooth line, not a stair, at any resolution) the core needs sigma >= 2.5 px
+//! (largest step 0.24 of the core's peak: exp(-2^2/12.5) - exp(-3^2/12.5)). Thinner spikes are
+//! widened to it with their peak lowered, so they keep their energy.
+constexpr float kMinCoreSigmaPx = 2.5f;
+//! Share of the peak in the wing, and the wing's 1/e width in thicknesses: a faint glow a few
+//! line widths wide around the crisp core.
+constexpr float kWingShare = 0.15f;
+constexpr float kWingScalePerThickness = 1.f;
+//! The profile is cut where it is below 1/512 of its peak (under one 8-bit level at peak 1):
+//! 3.5 sigma for the core, ln(512 * kWingShare) = 4.34 scales for the wing.
+constexpr float kCoreCutSigmas = 3.5f, kWingCutScales = 4.34f;
+//! Peak that gives the profile the energy of a box `thickness` wide (so a preset's streaks
+//! carry the same light as before the profile existed): the core integrates to
+//! (1 - share) sqrt(2 pi) sigma, the wing to 2 share scale.
+constexpr float kProfilePeak = 1.f / ((1.f - kWingShare) * 2.5066283f / kFwhmPerSigma +
+                                      2.f * kWingShare * kWingScalePerThickness);
 }  // namespace
+
+SpikeProfile makeSpikeProfile(float thickness, float pixel) {
+    SpikeProfile p;
+    const float sigma = thickness / kFwhmPerSigma;
+    p.coreSigma = std::max(sigma, kMinCoreSigmaPx * pixel);
+    p.coreAmp = kProfilePeak * (1.f - kWingShare) * sigma / p.coreSigma;
+    const float scale = kWingScalePerThickness * thickness;
+    p.wingScale = std::max(scale, kMinCoreSigmaPx * pixel);
+    p.wingAmp = kProfilePeak * kWingShare * scale / p.wingScale;
+    return p;
+}
+
+float spikeSupport(const SpikeProfile& p) {
+    return std::max(kCoreCutSigmas * p.coreSigma, kWingCutScales * p.wingScale);
+}
+
+float spikeAcross(const SpikeProfile& p, float u) {
+    const float a = std::abs(u);
+    const float c = a / p.coreSigma;
+    return p.coreAmp * std::exp(-0.5f * c * c) + p.wingAmp * std::exp(-a / p.wingScale);
+}
 
 std::vector<Spike> makeSpikes(const ElementParams& p) {
     std::vector<Spike> spikes;
@@ -43,7 +85,6 @@ Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
     const float d = std::sqrt(x * x + y * y);
     float theta = fastAtan2(y, x);
     if (theta < 0.f) theta += kTwoPi;
-    const float halfWidth = 0.5f * k.params.thickness;
 
     // Only spikes within this angle can reach the pixel: perp = d*sin(delta) <= maxHalfWidth.
     const std::size_t n = k.spikes.size();
@@ -65,9 +106,9 @@ Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
         const float along = d * std::cos(delta);
         if (along <= 0.f || along >= s.length) continue;
         const float perp = d * std::sin(delta);
-        const float cover = coverage::interval(perp, -halfWidth, halfWidth, k.pixel);
-        if (cover > 0.f)
-            sum += s.weight * cover * std::pow(1.f - along / s.length, k.params.falloff);
+        if (std::abs(perp) >= k.maxHalfWidth) continue;
+        sum += s.weight * spikeAcross(k.spikeProfile, perp) *
+               std::pow(1.f - along / s.length, k.params.falloff);
     }
     return gradient(k, std::min(d, 1.f), sum);
 }

@@ -8,6 +8,7 @@
 
 #include "elements/ElementKernel.h"
 #include "flarekit/Elements.h"
+#include "flarekit/Flare.h"
 
 using namespace flarekit;
 
@@ -221,4 +222,56 @@ TEST(Elements, GradientRunsFromInnerToOuterColour) {
     EXPECT_LT(centre.r, 0.02f);
     EXPECT_GT(nearRim.r, 0.95f);
     EXPECT_LT(nearRim.b, 0.05f);
+}
+
+// Across a streak the brightness rises and falls smoothly at any resolution: between
+// neighbouring pixels it never steps by more than a quarter of the profile's peak. Checked on
+// every streak and ray element of every shipped preset, laid horizontal, at 1080p and 4K, with
+// the spike's centre on a pixel centre (the worst case) and between two pixel centres.
+TEST(Elements, StreakProfileIsSmoothAcrossItsWidthAtAnyResolution) {
+    std::size_t checked = 0;
+    for (const std::string& name : shippedPresetNames()) {
+        const Result<Preset> preset = loadPreset(name);
+        ASSERT_TRUE(preset.ok()) << name;
+        for (ElementParams e : preset->elements) {
+            if (e.type != ElementType::Streaks && e.type != ElementType::Rays) continue;
+            e.type = ElementType::Streaks;  // one spike along +x: the profile is a column
+            e.count = 1;
+            e.rotationDeg = 0.f;
+            for (int height : {1080, 2160}) {
+                const float radius = e.size * float(height);
+                const ElementKernel k = prepareElement(e, radius);
+                for (float centre : {0.f, 0.5f}) {
+                    float peak = 0.f, step = 0.f, previous = 0.f;
+                    for (int j = -200; j <= 200; ++j) {
+                        const float v =
+                            shadeElement(k, 0.3f * radius * e.aspect, float(j) + centre).r;
+                        peak = std::max(peak, v);
+                        if (j > -200) step = std::max(step, std::abs(v - previous));
+                        previous = v;
+                    }
+                    ASSERT_GT(peak, 0.f) << name;
+                    EXPECT_LE(step, 0.25f * peak)
+                        << name << " thickness " << e.thickness << " at " << height << "p";
+                    ++checked;
+                }
+            }
+        }
+    }
+    EXPECT_GE(checked, 8u);  // anamorphic, hexagon-ghosts, starburst, sun-wide, tanczos-classic
+}
+
+// A wide streak is a Gaussian core, not a box: it has no flat top and no hard edge.
+TEST(Elements, WideStreakHasAGaussianCoreNotAFlatBar) {
+    ElementParams p = plain(ElementType::Streaks);
+    p.count = 1;
+    p.thickness = 0.05f;  // 15 px full width at half maximum at radius 300
+    p.falloff = 0.f;
+    const ElementKernel k = prepareElement(p, 300.f);
+    const float peak = shadeElement(k, 150.f, 0.f).r;
+    // Half maximum of the core at half the thickness (the wing adds its own small share).
+    const float half = shadeElement(k, 150.f, 7.5f).r;
+    EXPECT_NEAR(half / peak, 0.85f * 0.5f + 0.15f * std::exp(-7.5f / 15.f), 0.01f);
+    EXPECT_LT(shadeElement(k, 150.f, 3.f).r, 0.95f * peak);  // no flat top
+    EXPECT_GT(shadeElement(k, 150.f, 15.f).r, 0.f);          // a soft tail past the width
 }
