@@ -1,5 +1,5 @@
 // Generates the shipped sample images: a sunset over hills with trees, as an 8-bit PNG and as
-// a linear HDR EXR whose sun disc has the value 50 (the scene scale of the later issues).
+// a linear HDR EXR whose sun disc has the value kHdrSunValue.
 // Usage: flarekit_make_sample OUT_DIR   (writes sunset.png and sunset-hdr.exr)
 #include <algorithm>
 #include <cmath>
@@ -14,6 +14,14 @@ namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
 constexpr float kSunX = 930.f, kSunY = 250.f, kSunRadius = 16.f;
+//! The HDR sun: a core of radius 5 px at 6,400 (flux 0.97 frame heights squared, the
+//! reference flux of the energy model in flarekit/Flare.h, so presets show their designed look)
+//! inside the 16-pixel disc at 50. The 8-bit sample clips both to 1.
+constexpr float kHdrSunValue = 6400.f, kHdrDiscValue = 50.f, kSunCoreRadius = 5.f;
+//! The lens's veiling glare around the sun, kGlarePeak / (1 + (d / kSunRadius)^2): the 1/d^2
+//! tail of a real lens's point spread, which clips the sky to white out to ~140 px in the
+//! 8-bit sample, as a phone photo of a low sun does.
+constexpr float kGlarePeak = 50.f;
 
 float smooth(float e0, float e1, float x) {
     const float t = std::clamp((x - e0) / (e1 - e0), 0.f, 1.f);
@@ -55,11 +63,13 @@ Image render(float sunValue) {
                           cg = 0.07f + 0.35f * smooth(0.2f, 0.85f, h),
                           cb = 0.25f - 0.15f * smooth(0.3f, 0.9f, h);
                     const float ds = std::hypot(px - kSunX, py - kSunY);
-                    const float halo = 0.5f * std::exp(-ds / 90.f);
+                    const float glare = kGlarePeak / (1.f + (ds / kSunRadius) * (ds / kSunRadius));
+                    const float halo = 0.5f * std::exp(-ds / 90.f) + glare;
                     cr += halo;
                     cg += halo * 0.7f;
                     cb += halo * 0.35f;
-                    if (ds < kSunRadius) cr = cg = cb = sunValue;
+                    if (ds < kSunRadius) cr = cg = cb = std::min(sunValue, kHdrDiscValue);
+                    if (ds < kSunCoreRadius) cr = cg = cb = sunValue;
                     if (py > float(kHeight) - hill(px) || inTree(px, py)) {
                         cr = 0.02f;
                         cg = 0.018f;
@@ -70,8 +80,7 @@ Image render(float sunValue) {
                     b += cb;
                 }
             }
-            img.at(x, y) = {std::min(r / 16.f, 64.f), std::min(g / 16.f, 64.f),
-                            std::min(b / 16.f, 64.f), 1.f};
+            img.at(x, y) = {r / 16.f, g / 16.f, b / 16.f, 1.f};
         }
     }
     return img;
@@ -85,7 +94,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string dir = argv[1];
-    for (auto [name, sun] : {std::pair{"sunset.png", 1.f}, std::pair{"sunset-hdr.exr", 50.f}}) {
+    for (auto [name, sun] :
+         {std::pair{"sunset.png", 1.f}, std::pair{"sunset-hdr.exr", kHdrSunValue}}) {
         if (Status s = writeImage(dir + "/" + name, render(sun)); !s) {
             std::fprintf(stderr, "%s\n", s.error().message.c_str());
             return 1;

@@ -3,6 +3,7 @@
 // a linear-light image.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -67,14 +68,45 @@ struct FlareStats {
 //! elements cover, never the whole image per element.
 FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity);
 
+// The energy model. A lens spreads a fixed share of the light that enters it into each ghost,
+// ring and streak, so a flare's brightness follows the source's flux (its luminance summed
+// over its area), not its peak: a 31,000 sun of 4 pixels and a 200,000-pixel clipped white
+// disc carry comparable energy, a 4-pixel specular glint almost none. Flux is measured in
+// units of the frame height squared (a flux of 1 is display white over an area of H x H
+// pixels), so the same light gives the same flare at any resolution. A preset's element
+// intensities are its look at kReferenceFlux; docs/energy.md lists each element's share.
+
+//! The flux a preset is designed for: one frame-height squared of display white, the flux of
+//! a real HDR sun in a 640x360 frame of a ~70 degree field of view (the blender-data sunrise
+//! HDRI: 4 pixels of 31,000, 126,000 in all, 0.97 H^2). A ghost of that preset, a disc of
+//! radius 0.05-0.1 H at intensity 0.2-0.35, then carries 0.2-1% of the flux, as the ghosts
+//! of real multi-coated lenses do.
+inline constexpr double kReferenceFlux = 1.0;
+
+//! The flare intensity for a light of `flux` (sum of linear luminance over its pixels) in an
+//! image `height` pixels tall: flux / height^2 / kReferenceFlux, linear like real optics.
+float flareScaleForFlux(double flux, int height);
+
 struct LightSearchOptions {
     //! No light unless the peak linear luminance reaches this. 0.5 linear is sRGB code 188: a
     //! light source in an 8-bit photo is near 255, while the brightest pixel of an overcast or
     //! indoor frame without a light is usually well below.
     float minLuminance = 0.5f;
-    //! A light's pixels are those >= nearPeak * peak ("the pixels near the maximum");
-    //! 0.9 keeps a clipped sun's disc and its hottest halo, not the whole sky.
+    //! A light's core is the pixels >= nearPeak * its peak; 0.9 keeps a clipped sun's disc and
+    //! its hottest halo, not the whole sky.
     float nearPeak = 0.9f;
+    //! Most lights to flare, brightest flux first.
+    int maxLights = 1;
+    //! A light is at least this many times brighter than the ring around it (2 to 4 radii out).
+    //! A sun, a lamp or a glint is a peak (HDR suns: 100-10,000x; a clipped sun in an 8-bit
+    //! photo: 2-4x its sky); white walls, clouds and shirts are plateaus (1-1.6x).
+    float minProminence = 2.f;
+    //! Display-referred (8/16-bit) input clips every light at 1.0, so its energy cannot be
+    //! measured directly. A lens spreads a light's flux F into veiling glare falling as
+    //! F c / r^2, which clips a disc of area pi c F: the clipped area grows in proportion to
+    //! the flux, and a clipped pixel stands for 1 / (pi c) of it. 4 (c = 0.08) matches the
+    //! blender-data sunrise HDRI against its own 8-bit rendering within a factor of 2.
+    float clippedGain = 4.f;
 };
 inline constexpr Param<LightSearchOptions> kLightSearchParams[] = {
     param<&LightSearchOptions::minLuminance>(
@@ -82,26 +114,53 @@ inline constexpr Param<LightSearchOptions> kLightSearchParams[] = {
         "--light auto: smallest peak linear luminance that counts as a light"),
     param<&LightSearchOptions::nearPeak>(
         "near-peak", 0, 1, "of the peak",
-        "--light auto: a light's pixels are those at least this fraction of the peak"),
+        "--light auto: a light's core is the pixels at least this fraction of its peak"),
+    param<&LightSearchOptions::maxLights>("max-lights", 1, 64, "",
+                                          "--light auto: most lights to flare, most flux first"),
+    param<&LightSearchOptions::minProminence>(
+        "min-prominence", 1, 1e6, "x surroundings",
+        "--light auto: a light is this many times brighter than the ring 2-4 radii around it"),
+    param<&LightSearchOptions::clippedGain>(
+        "clipped-gain", 1, 1e6, "x white",
+        "--light auto on 8/16-bit input: assumed brightness of a clipped pixel"),
 };
 
-struct FoundLight {
-    bool found = false;
-    Point position;          //!< luminance-weighted centroid of the light's pixels
-    float peak = 0.f;        //!< peak linear luminance in the image
-    float brightness = 0.f;  //!< mean linear luminance of the light's pixels
-    std::size_t pixels = 0;  //!< size of the light's connected region
-    float flareScale =
-        0.f;  //!< intensity for the flare: brightness up to 1, 1 + ln(brightness) above
+//! One bright region `--light auto` considered.
+struct LightCandidate {
+    Point position;             //!< luminance-weighted centroid of its pixels
+    float radius = 0.f;         //!< sqrt(pixels / pi)
+    std::size_t pixels = 0;     //!< size of the connected region
+    float peak = 0.f;           //!< its brightest pixel (linear luminance)
+    float meanLuminance = 0.f;  //!< mean linear luminance of its pixels (as stored)
+    double flux = 0.0;          //!< summed luminance (clipped pixels x clippedGain)
+    float prominence = 0.f;     //!< mean luminance / mean luminance of the ring around it
+    float compactness = 0.f;    //!< share of its pixels within 1.25 radii of it: 1 for a disc
+    float halo = 0.f;           //!< mean luminance just outside it (R+1 to 1.5R+2) / its mean
+    bool clipped = false;       //!< display-referred input and its peak at the clip point
+    float flareScale = 0.f;     //!< flareScaleForFlux(flux)
+    bool accepted = false;      //!< convincing as a light source
+    std::string verdict;        //!< "light", or why not ("1.3x its surroundings, needs 2x")
 };
 
-//! The flare intensity for a light of this linear luminance: linear up to display white, then
-//! 1 + ln(brightness), so an HDR sun of 50 gives a strong flare without washing out the frame.
-float flareScaleForBrightness(float brightness);
+struct LightSearch {
+    float peak = 0.f;              //!< peak linear luminance of the image
+    bool displayReferred = false;  //!< no pixel above 1: 8/16-bit data, lights are clipped
+    float frameKey = 0.f;          //!< median linear luminance (HDR lights stand 100x above)
+    std::vector<LightCandidate> candidates;  //!< every region considered, brightest peak first
+    std::vector<LightCandidate> lights;      //!< the accepted ones, most flux first, <= maxLights
+    std::string whyNone;                     //!< when `lights` is empty: one line saying why
+};
 
-//! `--light auto`: the brightest region, as the connected region (4-neighbours) of pixels
-//! near the peak with the largest summed luminance.
-FoundLight findLight(const Image& image, const LightSearchOptions& options = {});
+//! `--light auto`: finds bright regions (each grown from its own peak, so a sun's halo is not
+//! a second light) and keeps those convincing as light sources: prominent against the ring
+//! around them, compact and clipped where the input is display-referred, with enough flux to
+//! show a flare. Bounded work: one luminance pass, a sort of the pixels above minLuminance and
+//! flood fills that visit each pixel at most once.
+LightSearch findLights(const Image& image, const LightSearchOptions& options = {});
+
+//! The preset's flare on every light of `search`, each scaled by its own flux x intensity.
+FlareStats flareLights(Image& image, const Preset& preset, const LightSearch& search,
+                       float intensity = 1.f);
 
 }  // namespace flarekit
 

@@ -39,7 +39,7 @@ struct SceneSun {
     Vec3 direction{0.2, 0.3, -1};  //!< from the camera toward the sun; normalised on load
     double angularRadiusDeg = 1.5;
     Vec3 color{1.0, 0.95, 0.85};
-    double intensity = 50.0;
+    double intensity = 2400.0;  //!< radiance of the disc: a low sun is 10^3-10^5 x its sky
 };
 inline constexpr Param<SceneSun> kSceneSunParams[] = {
     required(param<&SceneSun::direction>("direction", kSceneAnyCoordinate, kParamUnbounded, "",
@@ -47,7 +47,9 @@ inline constexpr Param<SceneSun> kSceneSunParams[] = {
     aboveMin(
         param<&SceneSun::angularRadiusDeg>("angular_radius_deg", 0, 45, "degrees", "disc radius")),
     param<&SceneSun::color>("color", 0, kParamUnbounded, "linear RGB", "sun colour"),
-    param<&SceneSun::intensity>("intensity", 0, kParamUnbounded, "", "multiplies the colour"),
+    param<&SceneSun::intensity>("intensity", 0, kParamUnbounded, "linear",
+                                "radiance of the disc (colour x intensity); lights surfaces by "
+                                "its solid angle and sets the flare by its flux"),
 };
 
 struct Sphere {

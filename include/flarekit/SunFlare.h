@@ -14,9 +14,10 @@ struct FlaredFrame {
     float flareIntensity = 0;  //!< coverage x the sun's brightness scale
 };
 
-//! The flare's brightness for a fully visible sun: flareScaleForBrightness of the luminance of
-//! colour x intensity.
-float sunFlareScale(const SceneSun& sun);
+//! The flare's brightness for a fully visible sun, by the energy model of flarekit/Flare.h: the
+//! luminance of colour x intensity over the sun's disc on screen (its angular radius against
+//! the camera's field of view), in frame-height-squared units, over kReferenceFlux.
+float sunFlareScale(const Scene& scene);
 
 //! Adds the preset's flare for the scene's sun, scaled by `coverage` (0..1), to `frame`.
 FlaredFrame addSunFlare(Image& frame, const Scene& scene, const Preset& preset, double coverage);

@@ -20,4 +20,20 @@ void tonemapAcesFitted(Image& image, float exposure) {
     });
 }
 
+void toneMapImage(Image& image, ToneOperator op, float exposure) {
+    if (op == ToneOperator::None && exposure == 1.f) return;
+    parallelFor(0, image.height(), 16, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* p = image.row(y);
+            for (int i = 0; i < image.width() * 4; ++i) {
+                if (i % 4 == 3) continue;  // alpha untouched
+                const float x = std::max(0.f, p[i] * exposure);
+                p[i] = op == ToneOperator::Aces     ? acesFitted(x)
+                       : op == ToneOperator::Filmic ? hableFilmic(x)
+                                                    : x;
+            }
+        }
+    });
+}
+
 }  // namespace flarekit

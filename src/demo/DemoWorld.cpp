@@ -201,7 +201,7 @@ SceneSun demoSun() {
     sun.direction = normalize(Vec3{0.30, 0.13, -1});
     sun.angularRadiusDeg = 1.5;
     sun.color = {1.0, 0.92, 0.8};
-    sun.intensity = 50;
+    sun.intensity = 2400;  // a low sun: 5 on a lit surface, a flare scale of 3.7 (Flare.h)
     return sun;
 }
 

@@ -81,4 +81,16 @@ FlareStats renderFlare(Image& image, const Preset& preset, Point light, float in
     return stats;
 }
 
+FlareStats flareLights(Image& image, const Preset& preset, const LightSearch& search,
+                       float intensity) {
+    FlareStats total;
+    for (const LightCandidate& light : search.lights) {
+        const FlareStats s =
+            renderFlare(image, preset, light.position, intensity * light.flareScale);
+        total.elementsDrawn += s.elementsDrawn;
+        total.pixelsShaded += s.pixelsShaded;
+    }
+    return total;
+}
+
 }  // namespace flarekit

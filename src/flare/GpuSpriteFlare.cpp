@@ -108,7 +108,7 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     }
     FlaredFrame result;
     result.sunInFront = projectDirection(view, view.sun.direction, result.sunPixel);
-    result.flareIntensity = sunFlareScale(view.sun);
+    result.flareIntensity = sunFlareScale(view);
     if (!result.sunInFront || !std::isfinite(result.sunPixel.x) ||
         !std::isfinite(result.sunPixel.y))
         return result;

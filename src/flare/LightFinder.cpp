@@ -1,7 +1,10 @@
-// `--light auto`: find the brightest region of an image. Luminance is computed once; only
-// pixels near the peak are visited by the flood fill, so the cost is one pass over the image.
+// `--light auto`: find the light sources of an image and measure their flux. Luminance is
+// computed once; each candidate is grown from its own peak by a flood fill that visits only
+// pixels near that peak, and judged against the ring of pixels around it.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <vector>
 
 #include "core/Parallel.h"
@@ -10,68 +13,299 @@
 
 namespace flarekit {
 
-float flareScaleForBrightness(float brightness) {
-    return brightness <= 1.f ? brightness : 1.f + std::log(brightness);
+namespace {
+
+//! Regions examined at most: far more lights than any flare shows, few enough that the ring
+//! sampling (kRingSamples each) stays a small fraction of one pass over a 1080p frame.
+constexpr std::size_t kMaxCandidates = 256;
+//! A display-referred pixel is clipped to white when its luminance reaches this (sRGB grey 243
+//! is 0.90 linear): a light burns out all three channels, with JPEG noise and a warm cast
+//! just under 255, while a saturated orange leaf or a pink sky clips one channel only.
+constexpr float kClipLevel = 0.9f;
+//! In HDR data a light's flux is summed over the pixels above this fraction of its peak: the
+//! disc and its brightest fringe (a real sun falls from 31,000 to the sky's 50 within two
+//! pixels), not the sky around it.
+constexpr float kSourceFraction = 0.25f;
+//! The ring judged for prominence: from max(2R, R + 2 px) to max(4R, R + 6 px); the rim
+//! judged for a halo: from R + 1 px to 1.5R + 2 px; each sampled on 4 circles of 64 points.
+constexpr int kRingCircles = 4, kRingAngles = 64;
+//! Display-referred shape limits: a light is a compact blob (most of a sun's clipped glare lies
+//! within 1.25 radii of its centre, even cut by branches; a cloud or a lit edge spreads out), no
+//! smaller than 0.4% of the frame height in radius (a 4-pixel glint on a boat is not a light at
+//! 720p) and no more than a quarter of the frame (a low sun's clipped glare in a phone photo can be
+//! a tenth of it; beyond a quarter it is sky).
+constexpr float kMinCompactness = 0.6f;
+constexpr float kMinRadiusOfHeight = 0.004f;
+constexpr float kMaxFrameShare = 0.25f;
+//! Where the clip hides the peak, a light still shows its glare: the rim just outside the
+//! clipped region keeps at least this share of its brightness (a sun's sky, a lamp's bloom:
+//! 0.5-0.9), while a white object ends at a hard edge (a petal, a shirt, a wall: 0.1-0.35).
+constexpr float kMinHaloShare = 0.45f;
+//! Regions up to this share of the frame keep their surroundings out of later candidates.
+constexpr float kSuppressFrameShare = 0.04f;
+//! In scene-referred (HDR) data a light stands far above the frame's exposure: its peak is at
+//! least this many times the frame's median luminance. Real suns and lamps are 10^3-10^6 x
+//! (blender-data HDRIs: suns of 950-33,000 over medians of 0.1-0.25, 8,000-300,000 x; night
+//! lamps of 4,000 over 0.013); a bright sky through an arch, a sun's broken fringe or a lit
+//! cloud 5-250 x.
+constexpr float kMinKeyContrast = 1000.f;
+//! A light whose flare would be this faint (ghosts at 2% of the preset's look) is not flared.
+constexpr float kMinFlareScale = 0.02f;
+
+std::string format(const char* fmt, double a, double b = 0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, fmt, a, b);
+    return buf;
 }
 
-FoundLight findLight(const Image& image, const LightSearchOptions& options) {
-    FoundLight result;
-    if (image.empty()) return result;
-    const int w = image.width(), h = image.height();
-    std::vector<float> lum(image.pixelCount());
-    parallelFor(0, h, 32, [&](int y0, int y1) {
+struct LuminanceMap {
+    int w = 0, h = 0;
+    std::vector<float> lum;
+    std::vector<std::uint8_t> clipped;
+    float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
+};
+
+LuminanceMap luminanceMap(const Image& image) {
+    LuminanceMap m{image.width(), image.height(), std::vector<float>(image.pixelCount()),
+                   std::vector<std::uint8_t>(image.pixelCount())};
+    parallelFor(0, m.h, 32, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const Rgba* row = &image.at(0, y);
-            for (int x = 0; x < w; ++x) {
+            for (int x = 0; x < m.w; ++x) {
+                const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
                 const float l = luminance(row[x].r, row[x].g, row[x].b);
-                lum[std::size_t(y) * std::size_t(w) + std::size_t(x)] = std::isfinite(l) ? l : 0.f;
+                m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
+                m.clipped[i] = m.lum[i] >= kClipLevel;
             }
         }
     });
-    result.peak = *std::max_element(lum.begin(), lum.end());
-    if (!(result.peak >= options.minLuminance)) return result;
-    const float threshold = options.nearPeak * result.peak;
+    return m;
+}
 
-    // Connected regions (4-neighbours) above the threshold; keep the one with the most light.
-    std::vector<std::uint8_t> seen(lum.size(), 0);
-    std::vector<std::size_t> stack;
-    double bestSum = -1.0;
-    for (std::size_t start = 0; start < lum.size(); ++start) {
-        if (seen[start] || lum[start] < threshold) continue;
-        double sum = 0, sx = 0, sy = 0;
-        std::size_t count = 0;
-        seen[start] = 1;
-        stack.push_back(start);
-        while (!stack.empty()) {
-            const std::size_t i = stack.back();
-            stack.pop_back();
-            const int x = int(i % std::size_t(w)), y = int(i / std::size_t(w));
-            sum += lum[i];
-            sx += lum[i] * (x + 0.5);
-            sy += lum[i] * (y + 0.5);
-            ++count;
-            auto visit = [&](int nx, int ny) {
-                if (nx < 0 || ny < 0 || nx >= w || ny >= h) return;
-                const std::size_t j = std::size_t(ny) * std::size_t(w) + std::size_t(nx);
-                if (!seen[j] && lum[j] >= threshold) {
-                    seen[j] = 1;
-                    stack.push_back(j);
-                }
-            };
-            visit(x - 1, y);
-            visit(x + 1, y);
-            visit(x, y - 1);
-            visit(x, y + 1);
-        }
-        if (sum > bestSum) {
-            bestSum = sum;
-            result.position = {float(sx / sum), float(sy / sum)};
-            result.pixels = count;
-            result.brightness = float(sum / double(count));
+//! The frame's median luminance from a strided sample of at most ~64k pixels (exact enough for
+//! a contrast test, one cheap pass), floored at 1e-4 so a black frame still has a scale.
+float medianLuminance(const LuminanceMap& m) {
+    const std::size_t stride = std::max<std::size_t>(1, m.lum.size() / 65536);
+    std::vector<float> sample;
+    for (std::size_t i = 0; i < m.lum.size(); i += stride) sample.push_back(m.lum[i]);
+    std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(sample.size() / 2),
+                     sample.end());
+    return std::max(sample[sample.size() / 2], 1e-4f);
+}
+
+//! Mean luminance of the ring [inner, outer] around c (pixels inside the frame only; -1 if none).
+float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
+    double sum = 0;
+    int n = 0;
+    for (int i = 0; i < kRingCircles; ++i) {
+        const float r = inner + (outer - inner) * float(i) / float(kRingCircles - 1);
+        for (int a = 0; a < kRingAngles; ++a) {
+            const float angle = 2.f * std::numbers::pi_v<float> * (float(a) + 0.5f * float(i & 1)) /
+                                float(kRingAngles);
+            const int x = int(std::floor(c.x + r * std::cos(angle)));
+            const int y = int(std::floor(c.y + r * std::sin(angle)));
+            if (x < 0 || y < 0 || x >= m.w || y >= m.h) continue;
+            sum += m.at(x, y);
+            ++n;
         }
     }
-    result.found = true;
-    result.flareScale = flareScaleForBrightness(result.brightness);
+    return n ? float(sum / n) : -1.f;
+}
+
+//! Grows the region of `seed` over unseen pixels >= threshold and measures it.
+LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float threshold,
+                          float clippedGain, bool displayReferred, std::vector<std::uint8_t>& seen,
+                          std::vector<std::size_t>& stack, std::vector<std::size_t>& members) {
+    LightCandidate c;
+    c.peak = m.lum[seed];
+    double sum = 0, flux = 0, sx = 0, sy = 0;
+    members.clear();
+    seen[seed] = 1;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+        const std::size_t i = stack.back();
+        stack.pop_back();
+        members.push_back(i);
+        const int x = int(i % std::size_t(m.w)), y = int(i / std::size_t(m.w));
+        const double l = m.lum[i];
+        sum += l;
+        flux += displayReferred && m.clipped[i] ? double(clippedGain) : l;
+        sx += l * (x + 0.5);
+        sy += l * (y + 0.5);
+        auto visit = [&](int nx, int ny) {
+            if (nx < 0 || ny < 0 || nx >= m.w || ny >= m.h) return;
+            const std::size_t j = std::size_t(ny) * std::size_t(m.w) + std::size_t(nx);
+            if (!seen[j] && m.lum[j] >= threshold) {
+                seen[j] = 1;
+                stack.push_back(j);
+            }
+        };
+        visit(x - 1, y);
+        visit(x + 1, y);
+        visit(x, y - 1);
+        visit(x, y + 1);
+    }
+    c.pixels = members.size();
+    c.flux = flux;
+    c.meanLuminance = float(sum / double(c.pixels));
+    c.position = sum > 0 ? Point{float(sx / sum), float(sy / sum)}
+                         : Point{float(seed % std::size_t(m.w)) + 0.5f,
+                                 float(seed / std::size_t(m.w)) + 0.5f};
+    c.radius = std::sqrt(float(c.pixels) / std::numbers::pi_v<float>);
+    // Compactness: the share of its pixels within 1.25 radii of the centroid (1 for a disc or
+    // a square, low for a cloud, a branch or a lit edge however large its bounding circle).
+    const double reach2 = 1.5625 * double(c.radius) * double(c.radius) + 0.5;
+    std::size_t inside = 0;
+    for (std::size_t i : members) {
+        const double dx = double(i % std::size_t(m.w)) + 0.5 - c.position.x;
+        const double dy = double(i / std::size_t(m.w)) + 0.5 - c.position.y;
+        inside += dx * dx + dy * dy <= reach2;
+    }
+    c.compactness = float(double(inside) / double(c.pixels));
+    c.clipped = displayReferred && m.clipped[seed];
+    return c;
+}
+
+//! Marks the pixels within `radius` of c as seen, so a light's halo is not a second light.
+void suppressAround(const LuminanceMap& m, Point c, float radius, std::vector<std::uint8_t>& seen) {
+    const int x0 = std::max(0, int(std::floor(c.x - radius)));
+    const int x1 = std::min(m.w, int(std::ceil(c.x + radius)));
+    const int y0 = std::max(0, int(std::floor(c.y - radius)));
+    const int y1 = std::min(m.h, int(std::ceil(c.y + radius)));
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const float dx = float(x) + 0.5f - c.x, dy = float(y) + 0.5f - c.y;
+            if (dx * dx + dy * dy <= radius * radius)
+                seen[std::size_t(y) * std::size_t(m.w) + std::size_t(x)] = 1;
+        }
+    }
+}
+
+//! Judges a measured candidate; sets accepted and verdict.
+void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m,
+           bool displayReferred, float frameKey) {
+    c.flareScale = flareScaleForFlux(c.flux, m.h);
+    auto reject = [&](std::string why) { c.verdict = std::move(why); };
+    if (displayReferred && !c.clipped)
+        return reject("not clipped (a light in 8/16-bit data reaches white)");
+    if (!displayReferred && c.peak < kMinKeyContrast * frameKey)
+        return reject(format("only %.1fx the frame's median luminance (a light is %.0fx)",
+                             c.peak / frameKey, kMinKeyContrast));
+    if (c.prominence < o.minProminence)
+        return reject(
+            format("only %.2fx its surroundings (needs %.2fx)", c.prominence, o.minProminence));
+    if (displayReferred) {
+        if (c.radius < kMinRadiusOfHeight * float(m.h))
+            return reject(format("too small: radius %.1f px (needs %.1f)", c.radius,
+                                 kMinRadiusOfHeight * float(m.h)));
+        if (double(c.pixels) > kMaxFrameShare * double(m.w) * double(m.h))
+            return reject(format("too large: %.1f%% of the frame (at most %.0f%%)",
+                                 100.0 * double(c.pixels) / (double(m.w) * double(m.h)),
+                                 100.0 * kMaxFrameShare));
+        if (c.compactness < kMinCompactness)
+            return reject(format("not compact: %.2f of it near its centre (needs %.2f)",
+                                 c.compactness, kMinCompactness));
+        if (c.halo < kMinHaloShare)
+            return reject(format("a hard edge, no glare: its rim keeps %.2f of it (needs %.2f)",
+                                 c.halo, kMinHaloShare));
+    }
+    if (c.flareScale < kMinFlareScale)
+        return reject(
+            format("too faint: flare scale %.4f (needs %.2f)", c.flareScale, kMinFlareScale));
+    c.accepted = true;
+    c.verdict = "light";
+}
+
+//! A bright patch near a far brighter light is that light's glare (the fringe of a sun broken
+//! up by branches), not a light of its own: within kGlareReachOfHeight frame heights of a
+//! light kGlareContrast times brighter. Lamps in a row are of one brightness and all stay.
+constexpr float kGlareReachOfHeight = 0.15f, kGlareContrast = 10.f;
+
+void rejectGlareFragments(std::vector<LightCandidate>& candidates, float height) {
+    for (LightCandidate& c : candidates) {
+        if (!c.accepted) continue;
+        for (const LightCandidate& light : candidates) {
+            if (!light.accepted || light.peak < kGlareContrast * c.peak) continue;
+            const float dx = c.position.x - light.position.x, dy = c.position.y - light.position.y;
+            if (std::hypot(dx, dy) > kGlareReachOfHeight * height) continue;
+            c.accepted = false;
+            c.verdict =
+                format("glare of the light at %.0f,%.0f", light.position.x, light.position.y);
+            break;
+        }
+    }
+}
+
+}  // namespace
+
+float flareScaleForFlux(double flux, int height) {
+    if (height <= 0 || !(flux > 0)) return 0.f;
+    return float(flux / (double(height) * double(height)) / kReferenceFlux);
+}
+
+LightSearch findLights(const Image& image, const LightSearchOptions& options) {
+    LightSearch result;
+    if (image.empty()) {
+        result.whyNone = "empty image";
+        return result;
+    }
+    const LuminanceMap m = luminanceMap(image);
+    result.peak = *std::max_element(m.lum.begin(), m.lum.end());
+    result.displayReferred = result.peak <= 1.f + 1e-3f;
+    result.frameKey = medianLuminance(m);
+    if (!(result.peak >= options.minLuminance)) {
+        result.whyNone = format("peak luminance %.3f is below --light-threshold %.3f", result.peak,
+                                options.minLuminance);
+        return result;
+    }
+
+    // Seeds: every pixel above the threshold, brightest first (ties in raster order).
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < m.lum.size(); ++i)
+        if (m.lum[i] >= options.minLuminance) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return m.lum[a] > m.lum[b]; });
+
+    std::vector<std::uint8_t> seen(m.lum.size(), 0);
+    std::vector<std::size_t> stack, members;
+    for (std::size_t seed : order) {
+        if (seen[seed]) continue;
+        if (result.candidates.size() >= kMaxCandidates) break;
+        const float peak = m.lum[seed];
+        const float core = options.nearPeak * peak;
+        const float threshold =
+            result.displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
+        LightCandidate c = growRegion(m, seed, threshold, options.clippedGain,
+                                      result.displayReferred, seen, stack, members);
+        const float ring = ringMean(m, c.position, std::max(2.f * c.radius, c.radius + 2.f),
+                                    std::max(4.f * c.radius, c.radius + 6.f));
+        c.prominence = ring > 0.f ? c.meanLuminance / ring : 1e6f;
+        const float rim = ringMean(m, c.position, c.radius + 1.f, 1.5f * c.radius + 2.f);
+        c.halo = rim >= 0.f ? rim / c.meanLuminance : 0.f;
+        judge(c, options, m, result.displayReferred, result.frameKey);
+        // Small regions keep their halo out of the search; a huge one already holds it.
+        if (double(c.pixels) <= kSuppressFrameShare * double(m.w) * double(m.h))
+            suppressAround(m, c.position, std::max(2.f * c.radius, c.radius + 2.f), seen);
+        result.candidates.push_back(std::move(c));
+    }
+
+    rejectGlareFragments(result.candidates, float(m.h));
+    for (const LightCandidate& c : result.candidates)
+        if (c.accepted) result.lights.push_back(c);
+    std::stable_sort(
+        result.lights.begin(), result.lights.end(),
+        [](const LightCandidate& a, const LightCandidate& b) { return a.flux > b.flux; });
+    if (result.lights.size() > std::size_t(options.maxLights))
+        result.lights.resize(std::size_t(options.maxLights));
+    if (result.lights.empty()) {
+        // Name the candidate that came closest: the one with the most flux.
+        const auto best = std::max_element(
+            result.candidates.begin(), result.candidates.end(),
+            [](const LightCandidate& a, const LightCandidate& b) { return a.flux < b.flux; });
+        result.whyNone = "no convincing light: the strongest candidate, at " +
+                         format("%.0f,%.0f", best->position.x, best->position.y) + ", is " +
+                         best->verdict;
+    }
     return result;
 }
 

@@ -221,6 +221,9 @@ Status SceneRenderer::draw(const Scene& scene) {
         multiply(perspectiveMatrix(scene.camera, double(w) / h), lookAtMatrix(scene.camera));
     const auto vp = toFloat(viewProjection), inv = toFloat(inverse(viewProjection));
     const Vec3 sunRadiance = scene.sun.color * scene.sun.intensity;
+    // What lights a surface facing the sun: radiance x the disc's solid angle, pi sin^2(r).
+    const double sinRadius = std::sin(scene.sun.angularRadiusDeg * 3.14159265358979323846 / 180.0);
+    const Vec3 sunIrradiance = sunRadiance * (3.14159265358979323846 * sinRadius * sinRadius);
 
     glBindFramebuffer(GL_FRAMEBUFFER, m->samples > 1 ? m->msTarget.get() : m->target.get());
     glViewport(0, 0, w, h);
@@ -266,7 +269,7 @@ Status SceneRenderer::draw(const Scene& scene) {
                                   vp.data());
         gl::setUniform(o, "sunDirection", scene.sun.direction);
         gl::setUniform(o, "cameraPosition", scene.camera.position);
-        gl::setUniform(o, "sunRadiance", sunRadiance);
+        gl::setUniform(o, "sunIrradiance", sunIrradiance);
         const float ambient[3] = {kAmbientShare * 0.5f * (kHorizon[0] + kZenith[0]),
                                   kAmbientShare * 0.5f * (kHorizon[1] + kZenith[1]),
                                   kAmbientShare * 0.5f * (kHorizon[2] + kZenith[2])};

@@ -165,14 +165,17 @@ TEST(GpuSpriteFlare, ShippedPresetsMatchTheCpuFlare) {
 
 TEST(GpuSpriteFlare, SubPixelLightKeepsTheFlaresEnergy) {
     test::glContext();
-    const Scene scene = sceneWithSunAt(401.37, 97.81);
+    Scene scene = sceneWithSunAt(401.37, 97.81);
+    // A dim disc (50) with a strong flare (weight 60, scale 4.6): half-float rounding of a disc
+    // of thousands, and of a faint flare over the whole frame, would swamp the difference.
+    scene.sun.intensity = 50.0;
     auto renderer = SceneRenderer::create(scene, noShadows());
     ASSERT_TRUE(renderer.ok());
     ASSERT_TRUE(renderer->draw(scene).ok());
     const double base = energy(*renderer->readColor());
     auto preset = loadPreset("tanczos-classic");
     ASSERT_TRUE(preset.ok());
-    const FlarePair pair = drawBoth(*preset, scene, 1.f);
+    const FlarePair pair = drawBoth(*preset, scene, 60.f);
     // Bilinear sampling at a sub-pixel offset blurs thin streaks a little but keeps their light.
     EXPECT_NEAR((energy(pair.gpu) - base) / (energy(pair.cpu) - base), 1.0, 0.01);
 }
@@ -273,7 +276,9 @@ TEST(GpuSpriteFlare, ConditionalRenderOnTheQuerySkipsTheFlareOfAHiddenSun) {
         if (hidden) {
             EXPECT_EQ(after, base);
         } else {
-            EXPECT_GT(after, base * 1.05);
+            // The flare adds light across the frame: 0.05 per pixel on average at least (the
+            // sun disc's own thousands make a relative test meaningless).
+            EXPECT_GT(after - base, 0.05 * double(scene.width) * double(scene.height));
         }
     }
 }

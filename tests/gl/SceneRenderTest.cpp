@@ -36,10 +36,11 @@ TEST(SceneRender, SunDiscIsDrawnAtItsProjectionWithColourTimesIntensity) {
     Point sun;
     ASSERT_TRUE(projectDirection(s, s.sun.direction, sun));
     const Rgba& p = frame->at(int(sun.x), int(sun.y));
-    // RGBA16F keeps 11 significant bits: 47.5 is exact to within 0.03.
-    EXPECT_NEAR(p.r, 50 * 1.0, 0.05);
-    EXPECT_NEAR(p.g, 50 * 0.95, 0.05);
-    EXPECT_NEAR(p.b, 50 * 0.85, 0.05);
+    // RGBA16F keeps 11 significant bits: one part in 2048.
+    const double k = s.sun.intensity;
+    EXPECT_NEAR(p.r, k * 1.0, k / 1024);
+    EXPECT_NEAR(p.g, k * 0.95, k / 1024);
+    EXPECT_NEAR(p.b, k * 0.85, k / 1024);
     const Rgba& sky = frame->at(int(sun.x) + 40, int(sun.y));  // 40 px is ~10 deg away
     EXPECT_LT(sky.r, 2.f);
 }
@@ -160,8 +161,11 @@ TEST(SceneRender, BoxCastsItsShadowWhereTheSunRayPredicts) {
     noShadows.shadows = false;
     auto flat = renderScene(s, noShadows);
     ASSERT_TRUE(frame.ok() && flat.ok());
-    // Lambert: albedo x (sun x 0.1 x cos + ambient); in shadow the sun term is gone.
-    const double sunTerm = 0.5 * 50 * 0.1 * s.sun.direction.y;  // red channel, sun colour r = 1
+    // Lambert: albedo x (irradiance x cos + ambient), irradiance = radiance x the disc's solid
+    // angle pi sin^2(r); in shadow the sun term is gone. Red channel, sun colour r = 1.
+    const double sinR = std::sin(s.sun.angularRadiusDeg * 3.14159265358979323846 / 180.0);
+    const double sunTerm =
+        0.5 * s.sun.intensity * 3.14159265358979323846 * sinR * sinR * s.sun.direction.y;
     const float inShadow = frame->at(int(ps.x), int(ps.y)).r,
                 inSun = frame->at(int(pl.x), int(pl.y)).r;
     EXPECT_NEAR(inSun - inShadow, sunTerm, 0.02 * sunTerm);

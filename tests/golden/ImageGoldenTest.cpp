@@ -34,9 +34,9 @@ TEST(Golden, EverySpritePresetOnTheHdrSunset) {
         auto preset = loadPreset(name);
         ASSERT_TRUE(preset.ok()) << name;
         Image image = sunset();
-        const FoundLight light = findLight(image);
-        ASSERT_TRUE(light.found) << name;
-        renderFlare(image, *preset, light.position, light.flareScale);
+        const LightSearch search = findLights(image);
+        ASSERT_EQ(search.lights.size(), 1u) << name << ": " << search.whyNone;
+        flareLights(image, *preset, search);
         tonemapAcesFitted(image,
                           1.f);  // HDR to display range so the 8-bit reference keeps the flare
         golden::expectMatches("sprite-" + name, image);

@@ -1,3 +1,5 @@
+// --light auto: which regions are lights, where they are and how much flux they carry. Fluxes
+// are summed here from the images the tests draw, not taken from flarekit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,53 +9,175 @@
 using namespace flarekit;
 
 namespace {
-void blob(Image& img, float cx, float cy, float radius, float value) {
+
+//! A disc of `value`, plus (glare > 0) a glow around it falling as glare / (1 + 4 u^2), u the
+//! distance past the rim in radii, the way a lens's veiling glare spreads a clipped light.
+void blob(Image& img, float cx, float cy, float radius, float value, float glare = 0.f) {
     for (int y = 0; y < img.height(); ++y) {
         for (int x = 0; x < img.width(); ++x) {
-            if (std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy) < radius)
-                img.at(x, y) = {value, value, value, 1.f};
+            const float d = std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy);
+            Rgba& p = img.at(x, y);
+            const float u = d / radius - 1.f;
+            const float v = d < radius ? value : p.r + glare / (1.f + 4.f * u * u);
+            p = {v, v, v, 1.f};
         }
     }
 }
+
+Image background(int w, int h, float v) {
+    Image img(w, h);
+    img.fill({v, v, v, 1.f});
+    return img;
+}
+
+double discFlux(const Image& img, float cx, float cy, float radius) {
+    double sum = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x)
+            if (std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy) < radius)
+                sum += img.at(x, y).r;
+    return sum;
+}
+
 }  // namespace
 
-TEST(LightFinder, FindsTheCentroidOfTheBrightestRegion) {
-    Image img(400, 300);
-    img.fill({0.1f, 0.1f, 0.1f, 1.f});
-    blob(img, 250.5f, 80.25f, 9.f, 1.f);
-    const FoundLight light = findLight(img);
-    ASSERT_TRUE(light.found);
-    EXPECT_NEAR(light.position.x, 250.5f, 0.1f);
-    EXPECT_NEAR(light.position.y, 80.25f, 0.1f);
-    EXPECT_NEAR(light.brightness, 1.f, 1e-5f);
-    EXPECT_NEAR(light.flareScale, 1.f, 1e-5f);
+TEST(LightFinder, AnHdrSunIsFoundAtItsCentroidWithItsFlux) {
+    Image img = background(400, 300, 0.1f);
+    blob(img, 250.5f, 80.25f, 3.f, 5000.f);
+    const LightSearch search = findLights(img);
+    ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+    const LightCandidate& sun = search.lights[0];
+    EXPECT_FALSE(search.displayReferred);
+    EXPECT_NEAR(sun.position.x, 250.5f, 0.1f);
+    EXPECT_NEAR(sun.position.y, 80.25f, 0.3f);  // a 3-pixel disc is centred to a pixel grid
+    const double flux = discFlux(img, 250.5f, 80.25f, 3.f);
+    EXPECT_NEAR(sun.flux / flux, 1.0, 1e-6);
+    // The energy model: flux in frame heights squared over the reference flux, linear.
+    EXPECT_NEAR(sun.flareScale, flux / (300.0 * 300.0) / kReferenceFlux, 1e-6);
+    EXPECT_EQ(sun.verdict, "light");
 }
 
-TEST(LightFinder, PicksTheRegionWithTheMostLightNotTheMidpoint) {
-    Image img(400, 300);
-    blob(img, 60.f, 60.f, 4.f, 1.f);       // small
-    blob(img, 300.f, 200.f, 12.f, 0.98f);  // large, almost as bright
-    const FoundLight light = findLight(img);
-    ASSERT_TRUE(light.found);
-    EXPECT_NEAR(light.position.x, 300.f, 0.5f);
-    EXPECT_NEAR(light.position.y, 200.f, 0.5f);
+TEST(LightFinder, FlareScaleIsLinearInFluxAndIndependentOfResolution) {
+    float scale[2];
+    for (int k : {1, 2}) {
+        Image img = background(320 * k, 180 * k, 0.05f);
+        blob(img, 200.f * float(k), 60.f * float(k), 4.f * float(k), 3000.f);
+        const LightSearch search = findLights(img);
+        ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+        scale[k - 1] = search.lights[0].flareScale;
+    }
+    EXPECT_NEAR(scale[1] / scale[0], 1.f, 0.03f);  // same light, twice the pixels
+    Image brighter = background(320, 180, 0.05f);
+    blob(brighter, 200.f, 60.f, 4.f, 6000.f);
+    EXPECT_NEAR(findLights(brighter).lights.at(0).flareScale / scale[0], 2.f, 1e-3f);
 }
 
-TEST(LightFinder, NoLightInADimImage) {
-    Image img(64, 64);
-    img.fill({0.2f, 0.2f, 0.2f, 1.f});
-    EXPECT_FALSE(findLight(img).found);
-    EXPECT_FALSE(findLight(Image(64, 64)).found);  // black
+TEST(LightFinder, AClippedLightWithGlareInAPhotoCountsClippedPixelsAtTheGain) {
+    Image img = background(640, 360, 0.02f);
+    blob(img, 400.f, 100.f, 30.f, 1.f, 0.6f);  // clipped disc, soft glare around it
+    LightSearchOptions options;
+    const LightSearch search = findLights(img, options);
+    ASSERT_TRUE(search.displayReferred);
+    ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+    const LightCandidate& light = search.lights[0];
+    EXPECT_TRUE(light.clipped);
+    EXPECT_NEAR(light.position.x, 400.f, 0.5f);
+    // Clipped pixels (luminance >= 0.9) count clippedGain each; the light's region is the pixels
+    // within 90% of its peak, all of them clipped here.
+    EXPECT_NEAR(light.flux, double(light.pixels) * options.clippedGain, 1e-6);
+    EXPECT_GE(double(light.pixels), discFlux(img, 400.f, 100.f, 30.f));
 }
 
-TEST(LightFinder, HdrLightsScaleLogarithmicallyAboveWhite) {
-    Image img(64, 64);
-    blob(img, 32.f, 32.f, 5.f, 50.f);
-    const FoundLight light = findLight(img);
-    ASSERT_TRUE(light.found);
-    EXPECT_NEAR(light.brightness, 50.f, 1e-3f);
-    EXPECT_NEAR(light.flareScale, 1.f + std::log(50.f), 1e-4f);
-    Image dim(64, 64);
-    blob(dim, 32.f, 32.f, 5.f, 0.6f);
-    EXPECT_NEAR(findLight(dim).flareScale, 0.6f, 1e-5f);
+TEST(LightFinder, NoLightInADimOrBlackImageSaysWhy) {
+    const LightSearch dim = findLights(background(64, 64, 0.2f));
+    EXPECT_TRUE(dim.lights.empty());
+    EXPECT_NE(dim.whyNone.find("below --light-threshold"), std::string::npos) << dim.whyNone;
+    EXPECT_TRUE(findLights(Image(64, 64)).lights.empty());
+}
+
+TEST(LightFinder, WhiteObjectsWithHardEdgesAreNotLights) {
+    // A white wall: a clipped rectangle with a hard edge against a grey street.
+    Image wall = background(640, 360, 0.25f);
+    for (int y = 100; y < 220; ++y)
+        for (int x = 200; x < 330; ++x) wall.at(x, y) = {1.f, 1.f, 1.f, 1.f};
+    const LightSearch a = findLights(wall);
+    EXPECT_TRUE(a.lights.empty()) << a.candidates.at(0).verdict;
+    EXPECT_NE(a.whyNone.find("no convincing light"), std::string::npos) << a.whyNone;
+    // A 4-pixel glint on a boat's bow.
+    Image glint = background(1280, 720, 0.1f);
+    for (int y = 400; y < 402; ++y)
+        for (int x = 600; x < 602; ++x) glint.at(x, y) = {1.f, 1.f, 1.f, 1.f};
+    const LightSearch b = findLights(glint);
+    EXPECT_TRUE(b.lights.empty());
+    EXPECT_NE(b.whyNone.find("too small"), std::string::npos) << b.whyNone;
+    // An overcast sky: bright, flat, nothing stands out.
+    Image sky = background(640, 360, 0.6f);
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 640; ++x) sky.at(x, y) = {0.95f, 0.95f, 0.95f, 1.f};
+    EXPECT_TRUE(findLights(sky).lights.empty());
+}
+
+TEST(LightFinder, HdrPatchesFarBelowALightAreNot) {
+    // A bright window (40 x the median) is a region of sky, not a light.
+    Image img = background(640, 360, 0.2f);
+    blob(img, 300.f, 100.f, 40.f, 8.f);
+    const LightSearch search = findLights(img);
+    EXPECT_TRUE(search.lights.empty());
+    EXPECT_NE(search.whyNone.find("median"), std::string::npos) << search.whyNone;
+}
+
+TEST(LightFinder, MaxLightsFlaresEachLampByItsOwnFluxMostFirst) {
+    Image img = background(640, 360, 0.01f);
+    blob(img, 100.f, 200.f, 2.f, 2000.f);
+    blob(img, 300.f, 210.f, 3.f, 2000.f);
+    blob(img, 500.f, 190.f, 1.5f, 2000.f);
+    LightSearchOptions options;
+    options.maxLights = 8;
+    const LightSearch all = findLights(img, options);
+    ASSERT_EQ(all.lights.size(), 3u) << all.whyNone;
+    EXPECT_NEAR(all.lights[0].position.x, 300.f, 0.5f);
+    EXPECT_NEAR(all.lights[1].position.x, 100.f, 0.5f);
+    EXPECT_NEAR(all.lights[2].position.x, 500.f, 0.5f);
+    for (const LightCandidate& lamp : all.lights) {
+        const double flux = discFlux(img, lamp.position.x, lamp.position.y, 4.f);
+        EXPECT_NEAR(lamp.flux / flux, 1.0, 0.02);
+    }
+    options.maxLights = 1;
+    const LightSearch one = findLights(img, options);
+    ASSERT_EQ(one.lights.size(), 1u);
+    EXPECT_NEAR(one.lights[0].position.x, 300.f, 0.5f);
+}
+
+TEST(LightFinder, TheBrokenFringeOfASunIsItsGlareNotASecondLight) {
+    Image img = background(640, 360, 0.05f);
+    blob(img, 320.f, 100.f, 2.f, 30000.f);
+    blob(img, 350.f, 110.f, 6.f, 200.f);  // a bright gap in branches next to the sun
+    LightSearchOptions options;
+    options.maxLights = 4;
+    const LightSearch search = findLights(img, options);
+    ASSERT_EQ(search.lights.size(), 1u);
+    EXPECT_NEAR(search.lights[0].position.x, 320.f, 0.5f);
+    bool sawGlare = false;
+    for (const LightCandidate& c : search.candidates)
+        sawGlare |= c.verdict.find("glare of the light at 320,100") != std::string::npos;
+    EXPECT_TRUE(sawGlare);
+}
+
+TEST(LightFinder, FlareLightsDrawsOneFlarePerLight) {
+    Image img = background(320, 180, 0.01f);
+    blob(img, 80.f, 60.f, 2.f, 3000.f);
+    blob(img, 240.f, 60.f, 2.f, 3000.f);
+    LightSearchOptions options;
+    options.maxLights = 2;
+    const LightSearch search = findLights(img, options);
+    ASSERT_EQ(search.lights.size(), 2u);
+    Preset preset;
+    ElementParams glow = defaultElement(ElementType::Glow);
+    glow.size = 0.1f;
+    preset.elements = {glow};
+    const FlareStats stats = flareLights(img, preset, search);
+    EXPECT_EQ(stats.elementsDrawn, 2u);
+    // Both lights got a glow of the same strength: equal light 10 px out on either.
+    EXPECT_NEAR(img.at(90, 60).r, img.at(250, 60).r, 1e-4f);
+    EXPECT_GT(img.at(90, 60).r, 0.01f + 1e-3f);
 }

@@ -1,22 +1,53 @@
 // flarekit apply: composite a preset's sprite flare onto an image, in linear light.
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "Common.h"
 #include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/Tonemap.h"
 
 namespace flarekit::cli {
 
 namespace {
 struct ApplyArgs {
-    std::string in, out, preset = kDefaultSpritePreset, light = "auto", depth = "auto";
-    float intensity = 1.f;
+    std::string in, out, preset = kDefaultSpritePreset, light = "auto", depth = "auto",
+                         tonemap = "auto";
+    float intensity = 1.f, exposure = 1.f;
     LightSearchOptions lightSearch;
     bool verbose = false;
 };
 inline constexpr Param<ApplyArgs> kApplyArgParams[] = {
     param<&ApplyArgs::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
+    param<&ApplyArgs::exposure>("exposure", 0, 1000, "",
+                                "multiplies the image (flare included) before the display curve"),
 };
+
+//! --tonemap auto: HDR (float) input written to an 8/16-bit file goes through Hable's filmic
+//! curve, which rolls a sun of 30,000 and its flare off into white over several stops instead
+//! of clipping everything above 1 to a flat disc; its toe keeps the shadows of the photograph.
+//! Float outputs stay linear and unclamped, and 8-bit input is already display-referred.
+ToneOperator displayCurve(const std::string& choice, bool hdrInput, SampleFormat output) {
+    if (choice == "none") return ToneOperator::None;
+    if (choice == "aces") return ToneOperator::Aces;
+    if (choice == "filmic") return ToneOperator::Filmic;
+    return hdrInput && !isFloatFormat(output) ? ToneOperator::Filmic : ToneOperator::None;
+}
+
+//! Integer samples where the extension only holds integers would be a silent downgrade.
+Status checkDepthFits(const std::string& out, SampleFormat requested) {
+    if (!isFloatFormat(requested)) return Ok{};
+    const SampleFormat fromExtension = outputSampleFormat(out);
+    const std::string ext = std::filesystem::path(out).extension().string();
+    if (isFloatFormat(fromExtension) || ext == ".tif" || ext == ".tiff") return Ok{};
+    return invalidInput(out +
+                        ": --depth half/float needs a float format (.exr, .tif, .hdr, "
+                        ".pfm), not '" +
+                        ext + "'");
+}
 
 std::optional<SampleFormat> parseDepth(const std::string& s) {
     if (s == "auto") return SampleFormat::Auto;
@@ -27,45 +58,69 @@ std::optional<SampleFormat> parseDepth(const std::string& s) {
     return std::nullopt;
 }
 
+//! -v: every region --light auto considered, most flux first.
+void printCandidates(const LightSearch& search) {
+    std::vector<LightCandidate> sorted = search.candidates;
+    std::stable_sort(
+        sorted.begin(), sorted.end(),
+        [](const LightCandidate& a, const LightCandidate& b) { return a.flux > b.flux; });
+    std::printf(
+        "peak luminance %.4g, median %.4g, %s; %zu candidates (most flux first, at most 12 "
+        "listed):\n",
+        double(search.peak), double(search.frameKey),
+        search.displayReferred ? "display-referred (clipped pixels x clipped-gain)"
+                               : "scene-referred HDR",
+        sorted.size());
+    //! Candidates listed at most: the lights and the closest misses, not every speck of sky.
+    constexpr std::size_t kListed = 12;
+    if (sorted.size() > kListed) sorted.resize(kListed);
+    for (const LightCandidate& c : sorted)
+        std::printf(
+            "  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx surroundings, "
+            "compactness %.2f, halo %.2f, flare scale %.4f: %s\n",
+            double(c.position.x), double(c.position.y), double(c.radius), double(c.peak), c.flux,
+            double(c.prominence), double(c.compactness), double(c.halo), double(c.flareScale),
+            c.verdict.c_str());
+}
+
 Result<ImageOutput> applyFlare(const ApplyArgs& a) {
     const bool autoLight = a.light == "auto";
     const std::optional<Point> fixed = autoLight ? std::nullopt : parsePoint(a.light);
     if (!autoLight && !fixed)
         return invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'");
+    const SampleFormat depth = *parseDepth(a.depth);
+    if (Status s = checkDepthFits(a.out, depth); !s) return s.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
     auto loaded = readInputImage(a.in);
     if (!loaded) return loaded.error();
     Image& image = loaded->image;
-    Point light{};
-    float intensity = a.intensity;
+    std::vector<std::pair<Point, float>> flares;  // position, intensity
     if (fixed) {
-        light = *fixed;
+        flares.push_back({*fixed, a.intensity});
     } else {
-        const FoundLight found = findLight(image, a.lightSearch);
-        if (!found.found) {
-            warn(a.in + ": no light found (peak luminance " + std::to_string(found.peak) + " < " +
-                 std::to_string(a.lightSearch.minLuminance) + "); image written unchanged");
-            intensity = 0.f;
-        } else {
-            light = found.position;
-            intensity *= found.flareScale;
-            if (a.verbose) {
-                std::printf("light at %.1f,%.1f: %zu pixels, brightness %.3f, flare scale %.3f\n",
-                            double(light.x), double(light.y), found.pixels,
-                            double(found.brightness), double(found.flareScale));
-            }
-        }
+        const LightSearch search = findLights(image, a.lightSearch);
+        if (a.verbose) printCandidates(search);
+        if (search.lights.empty())
+            warn(a.in + ": " + search.whyNone +
+                 "; image written unchanged (--light X,Y places one)");
+        for (const LightCandidate& light : search.lights)
+            flares.push_back({light.position, a.intensity * light.flareScale});
     }
-    if (intensity > 0.f) {
+    for (const auto& [light, intensity] : flares) {
+        if (!(intensity > 0.f)) continue;
         const FlareStats stats = renderFlare(image, *preset, light, intensity);
         if (a.verbose)
-            std::printf("%zu elements, %zu pixels shaded\n", stats.elementsDrawn,
+            std::printf("flare at %.1f,%.1f, intensity %.4f: %zu elements, %zu pixels shaded\n",
+                        double(light.x), double(light.y), double(intensity), stats.elementsDrawn,
                         stats.pixelsShaded);
     }
+    const ToneOperator curve =
+        displayCurve(a.tonemap, loaded->wasFloat, outputSampleFormat(a.out, depth));
+    toneMapImage(image, curve, a.exposure);
     ImageOutput out{std::move(image), {}};
     out.options.alpha = loaded->hasAlpha;
-    out.options.format = *parseDepth(a.depth);
+    out.options.format = depth;
     return out;
 }
 
@@ -98,7 +153,13 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "output samples: auto (from the extension), 8, 16, half, float")
         ->check(CLI::IsMember({"auto", "8", "16", "half", "float"}))
         ->capture_default_str();
-    cmd->add_flag("-v,--verbose", args->verbose, "print the light found and the work done");
+    cmd->add_option("--tonemap", args->tonemap,
+                    "display curve: auto (filmic for HDR input to an 8/16-bit file, else none), "
+                    "none, aces, filmic")
+        ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
+        ->capture_default_str();
+    cmd->add_flag("-v,--verbose", args->verbose,
+                  "print every light candidate (position, radius, flux, score) and the work done");
     cmd->callback([args, &exitCode] { exitCode = runApply(*args); });
 }
 

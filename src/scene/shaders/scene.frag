@@ -1,13 +1,14 @@
 #version 450 core
-// Lambert lighting from the sun (its colour x a tenth of its intensity, so a sun of 50
-// lights surfaces to about 5) times its shadow-map visibility, plus a flat sky ambient.
+// Lambert lighting from the sun (its irradiance: radiance x the disc's solid angle, so a sun of
+// 2,400 and 1.5 degrees lights surfaces to about 5) times its shadow-map visibility, plus a
+// flat sky ambient.
 // Triangles are double-sided: a normal facing away from the eye is flipped. (Not
 // gl_FrontFacing: box and sphere windings are not kept consistent, their normals are.)
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec3 albedo;
 uniform vec3 sunDirection;
-uniform vec3 sunRadiance;
+uniform vec3 sunIrradiance;
 uniform vec3 ambient;
 uniform vec3 cameraPosition;
 uniform bool shadowsEnabled;
@@ -33,6 +34,6 @@ void main() {
     if (dot(n, cameraPosition - worldPosition) < 0.0) n = -n;
     float facing = max(dot(n, sunDirection), 0.0);
     float visible = (shadowsEnabled && facing > 0.0) ? sunVisibility(worldPosition, n) : 1.0;
-    vec3 light = sunRadiance * 0.1 * facing * visible + ambient;
+    vec3 light = sunIrradiance * facing * visible + ambient;
     fragColor = vec4(albedo * light, 1.0);
 }
