@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "flarekit/Image.h"
 #include "flarekit/Param.h"
 #include "flarekit/Result.h"
 
@@ -22,10 +23,16 @@ inline constexpr int kMaxSpokes = 64;
 inline constexpr double kPostFxBig = 1e4;
 inline constexpr double kPostFxSeedMax = 2147483647.0;
 
-//! Soft-knee threshold on linear HDR (Unity's bloom prefilter curve).
+//! Soft-knee threshold on linear HDR (Unity's bloom prefilter curve), after an optional
+//! highlight compression (FlareSim's "highlight compression": a soft ceiling, so a sun of
+//! 30,000 lights the chain like a bright lamp instead of washing the frame).
 struct BrightParams {
     float threshold = 1.0f;  //!< linear value where the flare starts
     float knee = 0.5f;       //!< width of the quadratic ease-in below the threshold
+    float ceiling = 0.f;     //!< soft ceiling C: brightness b becomes C tanh(b / C); 0: off
+    //! Threshold, knee, ceiling and the ghost, halo and streak thresholds are multiples of the
+    //! frame's white (frameWhite) instead of absolute linear values.
+    bool exposureRelative = false;
 };
 inline constexpr Param<BrightParams> kBrightParams[] = {
     param<&BrightParams::threshold>("threshold", 0, kPostFxBig, "linear",
@@ -33,6 +40,13 @@ inline constexpr Param<BrightParams> kBrightParams[] = {
     param<&BrightParams::knee>(
         "knee", 0, kPostFxBig, "linear",
         "soft knee half width: quadratic ease-in over [threshold - knee, threshold + knee]"),
+    param<&BrightParams::ceiling>("ceiling", 0, kPostFxBig, "linear",
+                                  "highlight compression: brightness b enters the chain as "
+                                  "C tanh(b / C); 0 turns it off"),
+    param<&BrightParams::exposureRelative>(
+        "exposure_relative", 0, 1, "",
+        "threshold, knee, ceiling and the ghost, halo and streak thresholds are multiples of "
+        "the frame's white (5.5 x its median luminance for HDR, 1 for 8/16-bit data)"),
 };
 
 //! Downsample (13-tap dual filter) and progressive tent upsample into the 1/4-res bloom buffer.
@@ -221,6 +235,15 @@ inline constexpr Param<PostFxParams> kPostFxTopParams[] = {
 //! Every field against the tables above, plus at most kMaxGhosts ghosts of |scale| >= 0.05:
 //! the one check of JSON presets and of params built in code ("bloom.levels: expected ...").
 Status validatePostFxParams(const PostFxParams& params);
+
+//! The frame's white, the luminance its exposure maps to display white: 1 for display-referred
+//! data (no pixel above 1), else the median luminance / 0.18, middle grey's share of white, so
+//! an HDR frame exposed anywhere gets the same flare.
+float frameWhite(const Image& image);
+
+//! `params` with every threshold and the ceiling multiplied by frameWhite(input) when
+//! bright.exposure_relative is set; `params` itself otherwise.
+PostFxParams relativeToExposure(const PostFxParams& params, const Image& input);
 
 //! Parses and validates a preset; messages read "source: field: expected ..., got ...".
 Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::string& source);

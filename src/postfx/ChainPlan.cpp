@@ -28,7 +28,7 @@ void add(ChainPlan& plan, const char* label, PassUniforms u, std::vector<BufferI
 //! divides by 1 + spread + spread^2 + ... so a flat field stays flat.
 void addBloom(ChainPlan& plan, const PostFxParams& p) {
     add(plan, "bright",
-        BrightUniforms{p.bright.threshold, p.bright.knee,
+        BrightUniforms{p.bright.threshold, p.bright.knee, p.bright.ceiling,
                        inverseSize(plan.levels[0].width, plan.levels[0].height)},
         {named(BufferKind::Input)}, mip(0));
     for (std::size_t i = 0; i + 1 < plan.levels.size(); ++i) {

@@ -221,7 +221,7 @@ void GpuPostFx::Impl::execute(const Step& step) const {
 
 Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& params,
                                     const PostFxOptions& options) {
-    auto planned = planChain(input.width(), input.height(), params);
+    auto planned = planChain(input.width(), input.height(), relativeToExposure(params, input));
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
     if (Status s = m->allocate(plan); !s) return s.error();

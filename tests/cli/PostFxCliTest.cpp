@@ -41,7 +41,7 @@ int channelsOf(const std::string& path) {
 
 FLAREKIT_GL_TEST(PostFxCli, EveryPresetOnBothBackendsAgreesWithinOneLevel) {
     TempDir dir;
-    for (const char* preset : {"killzone2", "modern", "anamorphic", "subtle"}) {
+    for (const char* preset : {"killzone2", "modern", "anamorphic", "subtle", "photo"}) {
         const std::string cpu = dir.file(std::string(preset) + "-cpu.png"),
                           gl = dir.file(std::string(preset) + "-gl.png");
         auto r = runCli({"postfx", kSunsetHdr, "-o", cpu, "--preset", preset, "--tonemap", "aces"});
@@ -129,7 +129,7 @@ TEST(PostFxCli, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {{"postfx", corrupt, "-o", dir.file("o.png")}, "corrupt.png"},
         {{"postfx", dir.file("missing.exr"), "-o", dir.file("o.png")}, "missing.exr"},
         {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", "nope"},
-         "expected a JSON file or one of: anamorphic, killzone2, modern, subtle"},
+         "expected a JSON file or one of: anamorphic, killzone2, modern, photo, subtle"},
         {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", badPreset},
          "ghosts[0].samples: expected an integer in [1, 64], got 0"},
         {{"postfx", kSunset, "-o", dir.file("no/such/dir/o.png")}, "no/such/dir"},

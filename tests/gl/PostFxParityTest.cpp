@@ -62,7 +62,7 @@ TEST(PostFxParity, EveryPresetOnEveryImageCpuMatchesGl) {
     ASSERT_TRUE(gpu.ok()) << gpu.error().message;
     double worst = 0;
     int worst8 = 0;
-    for (const std::string preset : {"killzone2", "modern", "anamorphic", "subtle"}) {
+    for (const std::string preset : {"killzone2", "modern", "anamorphic", "subtle", "photo"}) {
         auto params = loadPostFxPreset(preset);
         ASSERT_TRUE(params.ok()) << params.error().message;
         for (ToneOperator op : {ToneOperator::None, ToneOperator::Aces}) {

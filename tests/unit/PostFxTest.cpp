@@ -269,6 +269,8 @@ TEST(PostFxGeometry, FlareEnergyIsLinearInTheLightAboveTheThreshold) {
         PostFxParams p = load(name);
         for (GhostParams& g : p.ghosts) g.threshold = 0.f;
         p.halo.threshold = p.streaks.threshold = 0.f;
+        p.bright.ceiling = 0.f;  // highlight compression bends the curve on purpose
+        p.bright.exposureRelative = false;
         const float t = p.bright.threshold, k = p.bright.knee;
         double perUnit[3];
         const float values[3] = {2.f * (t + k), 5.f * (t + k), 40.f * (t + k)};
@@ -287,6 +289,60 @@ TEST(PostFxGeometry, FlareEnergyIsLinearInTheLightAboveTheThreshold) {
         EXPECT_NEAR(perUnit[1] / perUnit[0], 1.0, 1e-4) << name;
         EXPECT_NEAR(perUnit[2] / perUnit[0], 1.0, 1e-4) << name;
     }
+}
+
+// With exposure_relative, the chain follows the frame's exposure: the same HDR frame two stops
+// brighter gives exactly four times the flare (every threshold and the ceiling move with the
+// frame's white, median / 0.18), and the sun's flare is bounded by the ceiling.
+TEST(PostFxExposure, AnExposureRelativeChainScalesWithTheFrame) {
+    PostFxParams p = load("photo");
+    ASSERT_TRUE(p.bright.exposureRelative);
+    Image frame(320, 180);
+    for (int y = 0; y < 180; ++y)
+        for (int x = 0; x < 320; ++x) {
+            const float v = 0.05f + 0.3f * float(x) / 320.f;  // median about 0.2
+            frame.at(x, y) = {v, v, v, 1.f};
+        }
+    for (int y = 40; y < 44; ++y)
+        for (int x = 200; x < 204; ++x) frame.at(x, y) = {30000.f, 30000.f, 30000.f, 1.f};
+    Image brighter = frame;
+    for (std::size_t i = 0; i < brighter.pixelCount() * 4; ++i)
+        if (i % 4 != 3) brighter.data()[i] *= 4.f;
+    EXPECT_NEAR(frameWhite(brighter) / frameWhite(frame), 4.f, 1e-5f);
+    EXPECT_NEAR(frameWhite(frame), 0.2f / 0.18f, 0.01f);
+    auto a = runLayers(frame, p), b = runLayers(brighter, p);
+    ASSERT_TRUE(a.ok() && b.ok());
+    const double lensA = moments(a->lens).sum, lensB = moments(b->lens).sum;
+    EXPECT_GT(lensA, 0.0);
+    EXPECT_NEAR(lensB / lensA, 4.0, 4e-3);
+    // 8-bit data (nothing above 1) is its own exposure.
+    Image photo(64, 64);
+    photo.fill({0.6f, 0.6f, 0.6f, 1.f});
+    EXPECT_EQ(frameWhite(photo), 1.f);
+}
+
+TEST(PostFxExposure, TheCeilingBoundsWhatASunFeedsTheChain) {
+    PostFxParams p = load("killzone2");
+    p.bright.ceiling = 8.f;
+    double lens[2];
+    const float suns[2] = {1000.f, 100000.f};
+    for (int i = 0; i < 2; ++i) {
+        Image frame(320, 180);
+        for (int y = 80; y < 84; ++y)
+            for (int x = 100; x < 104; ++x) frame.at(x, y) = {suns[i], suns[i], suns[i], 1.f};
+        auto r = runLayers(frame, p);
+        ASSERT_TRUE(r.ok());
+        lens[i] = moments(r->lens).sum;
+    }
+    // 8 tanh(1000 / 8) and 8 tanh(100000 / 8) are both 8: a hundred times the sun, one flare.
+    EXPECT_NEAR(lens[1] / lens[0], 1.0, 1e-4);
+    p.bright.ceiling = 0.f;
+    Image frame(320, 180);
+    for (int y = 80; y < 84; ++y)
+        for (int x = 100; x < 104; ++x) frame.at(x, y) = {1000.f, 1000.f, 1000.f, 1.f};
+    auto uncompressed = runLayers(frame, p);
+    ASSERT_TRUE(uncompressed.ok());
+    EXPECT_GT(moments(uncompressed->lens).sum, 50.0 * lens[0]);
 }
 
 TEST(PostFxEdgeCases, TheExactCentreOfAnOddBufferStaysFinite) {

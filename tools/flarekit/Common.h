@@ -46,7 +46,7 @@ auto readQuietly(Reader reader, const std::string& path) {
 
 //! The presets a subcommand uses when --preset is not given.
 inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
-inline constexpr const char* kDefaultPostFxPreset = "killzone2";
+inline constexpr const char* kDefaultPostFxPreset = "photo";
 
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);

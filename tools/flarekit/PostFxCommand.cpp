@@ -96,6 +96,11 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
     if (a.knee) params->bright.knee = *a.knee;
     auto loaded = readInputImage(a.in);
     if (!loaded) return loaded.error();
+    // HDR input written to an 8/16-bit file: a preset without a curve gets Hable's filmic one
+    // (as `apply --tonemap auto` does), so a sun rolls off into white instead of clipping.
+    if (a.tonemap == "preset" && params->tone.op == ToneOperator::None && loaded->wasFloat &&
+        !isFloatFormat(outputSampleFormat(a.out)))
+        params->tone.op = ToneOperator::Filmic;
 
     std::vector<PassTime> times;
     PostFxOptions options;
@@ -150,7 +155,8 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
         "--save-layers", args->layersDir,
         "also write bloom, ghosts, halo, streaks, lens and final (linear EXR) into DIR");
     cmd->add_option("--tonemap", args->tonemap,
-                    "display curve: preset (the preset's), none, aces, filmic")
+                    "display curve: preset (the preset's; filmic for HDR input to an 8/16-bit file "
+                    "when the preset has none), none, aces, filmic")
         ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
         ->capture_default_str();
     addParamOverride(cmd, "--exposure", *findParam<ToneParams>(kToneParams, "exposure"),

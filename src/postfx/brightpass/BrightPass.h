@@ -12,7 +12,7 @@
 namespace flarekit::postfx {
 
 struct BrightUniforms {
-    float threshold = 1.f, knee = 0.5f;
+    float threshold = 1.f, knee = 0.5f, ceiling = 0.f;
     Vec2 invOutSize;
 };
 
@@ -28,8 +28,20 @@ inline F4 softThreshold(F4 color, float threshold, float knee) {
     return rgbOnly(color * weight);
 }
 
+//! Highlight compression: brightness b (the largest channel) becomes C tanh(b / C), hue kept;
+//! tanh written with exp so both twins evaluate the same expression.
+inline F4 compressHighlights(F4 color, float ceiling) {
+    if (ceiling <= 0.f) return color;
+    const float brightness = std::max(color[0], std::max(color[1], color[2]));
+    const float e = std::exp(-2.f * brightness / ceiling);
+    const float compressed = ceiling * (1.f - e) / (1.f + e);
+    return color * (compressed / std::max(brightness, kBrightEpsilon));
+}
+
 inline F4 brightPixel(const BrightUniforms& u, const Tex& input, int x, int y) {
-    return softThreshold(bilinearFinite(input, pixelUv(x, y, u.invOutSize)), u.threshold, u.knee);
+    const F4 color =
+        compressHighlights(bilinearFinite(input, pixelUv(x, y, u.invOutSize)), u.ceiling);
+    return softThreshold(color, u.threshold, u.knee);
 }
 
 //! The pass unit: its pixel over the chain's inputs (the input image) and its uniforms by the
@@ -39,7 +51,8 @@ inline F4 passPixel(const BrightUniforms& u, const Tex* in, int x, int y) {
 }
 template <class Sink>
 void bindUniforms(const BrightUniforms& u, Sink& s) {
-    s.set("threshold", u.threshold), s.set("knee", u.knee), s.set("invOutSize", u.invOutSize);
+    s.set("threshold", u.threshold), s.set("knee", u.knee), s.set("ceiling", u.ceiling),
+        s.set("invOutSize", u.invOutSize);
 }
 
 }  // namespace flarekit::postfx

@@ -1,6 +1,6 @@
 // Twin of src/postfx/brightpass/BrightPass.h (read that for the why).
 layout(binding = 0) uniform sampler2D inputImage;
-uniform float threshold, knee;
+uniform float threshold, knee, ceiling;
 uniform vec2 invOutSize;
 out vec4 result;
 
@@ -14,6 +14,15 @@ vec4 softThreshold(vec4 color, float threshold, float knee) {
     return rgbOnly(color * weight);
 }
 
+vec4 compressHighlights(vec4 color, float ceiling) {
+    if (ceiling <= 0.0) return color;
+    float brightness = max(color.r, max(color.g, color.b));
+    precise float e = exp(-2.0 * brightness / ceiling);
+    precise float compressed = ceiling * (1.0 - e) / (1.0 + e);
+    return color * (compressed / max(brightness, kBrightEpsilon));
+}
+
 void main() {
-    result = softThreshold(bilinearFinite(inputImage, pixelUv(invOutSize)), threshold, knee);
+    vec4 color = compressHighlights(bilinearFinite(inputImage, pixelUv(invOutSize)), ceiling);
+    result = softThreshold(color, threshold, knee);
 }
