@@ -4,6 +4,9 @@
 // (rounding at an encode boundary) with a mean far below one.
 #include "GoldenImage.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "flarekit/Flare.h"
 #include "flarekit/PostFx.h"
 #include "flarekit/Tonemap.h"
@@ -54,4 +57,82 @@ TEST(Golden, EveryPostFxPresetOnTheHdrSunset) {
         ASSERT_TRUE(result.ok()) << name << ": " << result.error().message;
         golden::expectMatches("postfx-" + name, result->final);
     }
+}
+
+namespace {
+
+//! Real material: a 320x180 crop of the CC0 "sunrise" HDR environment photograph of Debian's
+//! blender-data package (studiolights/world/sunrise.exr, its 640x360 region at 194,113 with the
+//! sun at 31,000, box-filtered down by oiiotool).
+const Image& realSunrise() {
+    static const Image image = [] {
+        auto loaded =
+            readImage(std::string(FLAREKIT_GOLDEN_INPUT) + "/sunrise-blender-320x180.exr");
+        return loaded ? loaded->image : Image(320, 180);
+    }();
+    return image;
+}
+
+//! sRGB code of a linear value clipped to [0, 1]: the plain "clipped sRGB view" of an EXR.
+int clippedSrgb(float v) {
+    v = std::clamp(v, 0.f, 1.f);
+    const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.f / 2.4f) - 0.055f;
+    return int(std::lround(s * 255.f));
+}
+
+struct ViewChange {
+    double newlyClipped = 0;  //!< share of pixels with a channel newly at or above 1
+    double changed30 = 0;     //!< share of pixels whose clipped sRGB view moved > 30 levels
+};
+ViewChange viewChange(const Image& before, const Image& after) {
+    ViewChange c;
+    for (std::size_t i = 0; i < before.pixelCount(); ++i) {
+        const float *a = before.data() + 4 * i, *b = after.data() + 4 * i;
+        bool wasClipped = false, isClipped = false;
+        int step = 0;
+        for (int k = 0; k < 3; ++k) {
+            wasClipped |= a[k] >= 1.f;
+            isClipped |= b[k] >= 1.f;
+            step = std::max(step, std::abs(clippedSrgb(b[k]) - clippedSrgb(a[k])));
+        }
+        c.newlyClipped += isClipped && !wasClipped;
+        c.changed30 += step > 30;
+    }
+    c.newlyClipped /= double(before.pixelCount());
+    c.changed30 /= double(before.pixelCount());
+    return c;
+}
+
+}  // namespace
+
+// On a real HDR sun the defaults give a strong but contained flare: `apply`'s (the default
+// sprite preset, its light found and scaled by its flux) newly clips at most 2% of the frame,
+// the default postfx preset changes less than 15% of it by more than 30 levels, both in a plain
+// clipped sRGB view of the linear result; and the pictures are held as goldens.
+TEST(Golden, DefaultsOnARealHdrSunAreStrongButContained) {
+    ASSERT_GT(realSunrise().at(0, 0).b, 0.f) << "the real sunrise crop did not load";
+    Image sprite = realSunrise();
+    const LightSearch search = findLights(sprite);
+    ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+    EXPECT_NEAR(search.lights[0].position.x, 210.f, 2.f);  // the sun, at 420,120 in the crop
+    auto preset = loadPreset("tanczos-classic");
+    ASSERT_TRUE(preset.ok());
+    flareLights(sprite, *preset, search);
+    const ViewChange a = viewChange(realSunrise(), sprite);
+    EXPECT_LE(a.newlyClipped, 0.02);
+    EXPECT_GT(a.changed30, 0.005);  // and there is a flare to see
+
+    auto params = loadPostFxPreset("photo");
+    ASSERT_TRUE(params.ok());
+    auto post = postFxCpu(realSunrise(), *params);
+    ASSERT_TRUE(post.ok()) << post.error().message;
+    const ViewChange b = viewChange(realSunrise(), post->final);
+    EXPECT_LT(b.changed30, 0.15);
+    EXPECT_GT(b.changed30, 0.01);
+
+    toneMapImage(sprite, ToneOperator::Filmic, 1.f);
+    golden::expectMatches("real-sunrise-apply", sprite);
+    Image filmic = post->final;
+    toneMapImage(filmic, ToneOperator::Filmic, 1.f);
+    golden::expectMatches("real-sunrise-postfx", filmic);
 }

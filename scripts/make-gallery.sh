@@ -1,0 +1,29 @@
+#!/bin/sh
+# Regenerates docs/images/gallery/ from the CC0 HDR environment photographs of Debian's
+# blender-data package (studiolights/world: 1024x512 equirectangular EXRs): 640x360 crops with
+# the sun off centre, every sprite and postfx preset on them at the defaults, 8-bit JPEGs.
+# Usage: scripts/make-gallery.sh [build dir]   (needs blender-data and oiiotool)
+set -eu
+build=${1:-build}
+world=/usr/share/blender/datafiles/studiolights/world
+out=docs/images/gallery
+crops=$(mktemp -d)
+trap 'rm -rf "$crops"' EXIT
+mkdir -p "$out"
+# name x y: the crop's top-left corner in the HDRI
+for c in "sunrise 194 113" "city 180 20" "night 40 80" "forest 400 60"; do
+    set -- $c
+    oiiotool "$world/$1.exr" --cut "640x360+$2+$3" --origin +0+0 --fullpixels -d half \
+        -o "$crops/$1.exr"
+    oiiotool "$crops/$1.exr" --colorconvert linear sRGB -d uint8 -o "$out/$1-input.jpg"
+done
+for p in $("$build/flarekit" presets | awk '{print $1}'); do
+    "$build/flarekit" apply "$crops/sunrise.exr" -o "$out/sunrise-apply-$p.jpg" --preset "$p"
+done
+for p in anamorphic killzone2 modern photo subtle; do
+    "$build/flarekit" postfx "$crops/sunrise.exr" -o "$out/sunrise-postfx-$p.jpg" --preset "$p"
+done
+for s in city night forest; do
+    "$build/flarekit" apply "$crops/$s.exr" -o "$out/$s-apply.jpg" --max-lights 4
+    "$build/flarekit" postfx "$crops/$s.exr" -o "$out/$s-postfx.jpg"
+done
