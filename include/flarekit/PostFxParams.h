@@ -3,8 +3,10 @@
 // CLI's override flags and docs/postfx.md all read these tables.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flarekit/Image.h"
@@ -18,6 +20,8 @@ namespace flarekit {
 inline constexpr int kMaxGhosts = 32;
 //! Most starburst spokes (the spoke table's size, also a GLSL #define).
 inline constexpr int kMaxSpokes = 64;
+//! Most bright sources a starburst radiates from (a GLSL #define too): the strongest lights.
+inline constexpr int kMaxStarCentres = 4;
 
 //! "Any sensible HDR value": 10^4 x diffuse white.
 inline constexpr double kPostFxBig = 1e4;
@@ -172,11 +176,22 @@ inline constexpr Param<ChromaticParams> kChromaticParams[] = {
 };
 
 //! Procedural starburst modulation of ghosts and halo (angle about the screen centre).
+enum class StarCentre { Lights, Frame };
+inline constexpr std::string_view kStarCentreNames[] = {"lights", "frame"};
+
 struct StarburstParams {
     float intensity = 0.f;   //!< 0 off, 1 full modulation
     int spokes = 12;         //!< number of rays
     float width = 0.15f;     //!< ray half width, fraction of the spoke spacing
     std::uint32_t seed = 1;  //!< per-ray random brightness
+    //! lights: rays radiate from each of the frame's brightest sources (findLights, at most
+    //! kMaxStarCentres; the brightest pixel when none convinces), so the star sits on the sun
+    //! instead of reading as a second sun at the centre; frame: from the frame centre (Chapman).
+    StarCentre centre = StarCentre::Lights;
+    //! Where the rays radiate from, in uv (x right, y up from the bottom-left, as the passes
+    //! sample): filled per frame by fitToFrame, not read from JSON.
+    std::array<float, 2 * kMaxStarCentres> centresUv{0.5f, 0.5f};
+    int centreCount = 1;
 };
 inline constexpr Param<StarburstParams> kStarburstParams[] = {
     param<&StarburstParams::intensity>("intensity", 0, 1, "",
@@ -184,6 +199,9 @@ inline constexpr Param<StarburstParams> kStarburstParams[] = {
     param<&StarburstParams::spokes>("spokes", 2, kMaxSpokes, "", "number of rays"),
     param<&StarburstParams::width>("width", 0.01, 1, "spoke spacings", "ray half width"),
     param<&StarburstParams::seed>("seed", 0, kPostFxSeedMax, "", "per-ray random brightness"),
+    choice<&StarburstParams::centre>("centre", kStarCentreNames,
+                                     "`lights`: rays from each bright source (up to 4); "
+                                     "`frame`: from the frame centre"),
 };
 
 //! Procedural lens dirt: soft random specks and smudges that multiply bloom and flare.
@@ -241,9 +259,10 @@ Status validatePostFxParams(const PostFxParams& params);
 //! an HDR frame exposed anywhere gets the same flare.
 float frameWhite(const Image& image);
 
-//! `params` with every threshold and the ceiling multiplied by frameWhite(input) when
-//! bright.exposure_relative is set; `params` itself otherwise.
-PostFxParams relativeToExposure(const PostFxParams& params, const Image& input);
+//! `params` fitted to one frame: with bright.exposure_relative every threshold and the ceiling
+//! multiplied by frameWhite(input); with a starburst centred on `lights`, its centres at the
+//! frame's strongest lights. What both executors run.
+PostFxParams fitToFrame(const PostFxParams& params, const Image& input);
 
 //! Parses and validates a preset; messages read "source: field: expected ..., got ...".
 Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::string& source);

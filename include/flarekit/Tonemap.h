@@ -16,4 +16,14 @@ void tonemapAcesFitted(Image& image, float exposure);
 //! alpha untouched.
 void toneMapImage(Image& image, ToneOperator op, float exposure);
 
+//! Where highlight expansion starts: the largest channel of a display-referred pixel above
+//! 0.8 linear (sRGB 231), the shoulder a camera's tone curve compresses hardest.
+inline constexpr float kExpandKnee = 0.8f;
+//! `postfx --expand-highlights`: an inverse tone curve for 8/16-bit input, whose lights are
+//! clipped at 1. A pixel's colour is multiplied by 1 + (gain - 1) s^2, s the position of its
+//! largest channel between kExpandKnee and 1, so values below the knee are untouched, the curve
+//! leaves the knee smoothly and a clipped pixel becomes `gain` x white: what the light likely
+//! was before the camera clipped it.
+void expandHighlights(Image& image, float gain);
+
 }  // namespace flarekit

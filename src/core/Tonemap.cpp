@@ -20,6 +20,20 @@ void tonemapAcesFitted(Image& image, float exposure) {
     });
 }
 
+void expandHighlights(Image& image, float gain) {
+    parallelFor(0, image.height(), 16, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* p = image.row(y);
+            for (int x = 0; x < image.width(); ++x, p += 4) {
+                const float m = std::max({p[0], p[1], p[2]});
+                const float s = std::clamp((m - kExpandKnee) / (1.f - kExpandKnee), 0.f, 1.f);
+                const float factor = 1.f + (gain - 1.f) * s * s;
+                p[0] *= factor, p[1] *= factor, p[2] *= factor;
+            }
+        }
+    });
+}
+
 void toneMapImage(Image& image, ToneOperator op, float exposure) {
     if (op == ToneOperator::None && exposure == 1.f) return;
     parallelFor(0, image.height(), 16, [&](int y0, int y1) {

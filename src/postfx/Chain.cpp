@@ -65,7 +65,7 @@ CpuPostFx& CpuPostFx::operator=(CpuPostFx&&) noexcept = default;
 
 Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResult& result,
                       const PostFxOptions& options) {
-    auto planned = planChain(input.width(), input.height(), relativeToExposure(params, input));
+    auto planned = planChain(input.width(), input.height(), fitToFrame(params, input));
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
     Impl& b = *m;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "flarekit/Color.h"
+#include "flarekit/Flare.h"
 #include "flarekit/PostFxParams.h"
 
 namespace flarekit {
@@ -38,10 +39,43 @@ float frameWhite(const Image& image) {
     return std::clamp(sample[sample.size() / 2] / kMiddleGrey, kMinWhite, kMaxWhite);
 }
 
-PostFxParams relativeToExposure(const PostFxParams& params, const Image& input) {
-    if (!params.bright.exposureRelative) return params;
-    const float white = frameWhite(input);
+namespace {
+
+//! The starburst's centres: the strongest lights `--light auto` would flare, else the
+//! brightest pixel (an 8-bit photo's clipped highlight still has a place rays come from).
+void placeStarCentres(StarburstParams& star, const Image& input) {
+    LightSearchOptions options;
+    options.maxLights = kMaxStarCentres;
+    const LightSearch search = findLights(input, options);
+    std::vector<Point> centres;
+    for (const LightCandidate& light : search.lights) centres.push_back(light.position);
+    if (centres.empty()) {
+        std::size_t best = 0;
+        float peak = -1.f;
+        for (std::size_t i = 0; i < input.pixelCount(); ++i) {
+            const float* p = input.data() + 4 * i;
+            const float l = luminance(p[0], p[1], p[2]);
+            if (l > peak) peak = l, best = i;
+        }
+        centres.push_back({float(best % std::size_t(input.width())) + 0.5f,
+                           float(best / std::size_t(input.width())) + 0.5f});
+    }
+    star.centreCount = int(centres.size());
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+        // Pixels (y down from the top) to the passes' uv (y up from the bottom).
+        star.centresUv[2 * i] = centres[i].x / float(input.width());
+        star.centresUv[2 * i + 1] = 1.f - centres[i].y / float(input.height());
+    }
+}
+
+}  // namespace
+
+PostFxParams fitToFrame(const PostFxParams& params, const Image& input) {
     PostFxParams p = params;
+    if (p.starburst.intensity > 0.f && p.starburst.centre == StarCentre::Lights && !input.empty())
+        placeStarCentres(p.starburst, input);
+    if (!p.bright.exposureRelative) return p;
+    const float white = frameWhite(input);
     p.bright.threshold *= white;
     p.bright.knee *= white;
     p.bright.ceiling *= white;

@@ -37,7 +37,8 @@ Result<Target> makeTarget(Size size) {
 //! The sizes C++ and GLSL share, defined once in C++ and handed to every pass shader.
 std::string sharedSizeDefines() {
     return "#define FK_MAX_GHOSTS " + std::to_string(kMaxGhosts) + "\n#define FK_MAX_SPOKES " +
-           std::to_string(kMaxSpokes) + "\n#define FK_HALO_SAMPLES " +
+           std::to_string(kMaxSpokes) + "\n#define FK_MAX_STAR_CENTRES " +
+           std::to_string(kMaxStarCentres) + "\n#define FK_HALO_SAMPLES " +
            std::to_string(kHaloSamples) + "\n#define FK_STREAK_TAPS " +
            std::to_string(kStreakTaps) + "\n";
 }
@@ -66,6 +67,10 @@ struct GlUniforms {
     }
     void set(const char* name, std::span<const float> v) const {
         glProgramUniform1fv(p, at(name), GLsizei(v.size()), v.data());
+    }
+    void set(const char* name, std::span<const Vec2> v) const {
+        static_assert(sizeof(Vec2) == 2 * sizeof(float));
+        glProgramUniform2fv(p, at(name), GLsizei(v.size()), &v.data()->x);
     }
 };
 
@@ -221,7 +226,7 @@ void GpuPostFx::Impl::execute(const Step& step) const {
 
 Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& params,
                                     const PostFxOptions& options) {
-    auto planned = planChain(input.width(), input.height(), relativeToExposure(params, input));
+    auto planned = planChain(input.width(), input.height(), fitToFrame(params, input));
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
     if (Status s = m->allocate(plan); !s) return s.error();

@@ -145,3 +145,37 @@ TEST(PostFxCli, BadInputExitsTwoWithOneLineAndWritesNothing) {
     auto r = runCli({"postfx", kSunset, "-o", dir.file("o.png"), "--backend", "vulkan"});
     EXPECT_NE(r.exitCode, 0);
 }
+
+namespace {
+//! Share of pixels whose 8-bit value moved by more than `levels` in any channel.
+double shareChanged(const flarekit::Image8& a, const flarekit::Image8& b, int levels) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        n += i % std::size_t(a.channels) < 3 &&
+             std::abs(int(a.pixels[i]) - int(b.pixels[i])) > levels;
+    return double(n) / double(a.pixels.size() / std::size_t(a.channels));
+}
+}  // namespace
+
+// An 8-bit photo's sun is clipped at 1, barely above the threshold: the default chain hardly
+// touches it. --expand-highlights gives the clipped light back its energy, so it flares, while
+// the output keeps the photo's own pixels where nothing flares (the expansion is taken back off).
+TEST(PostFxCli, ExpandHighlightsMakesAnEightBitSunFlare) {
+    TempDir dir;
+    const std::string plain = dir.file("plain.png"), expanded = dir.file("expanded.png");
+    ASSERT_EQ(runCli({"postfx", kSunset, "-o", plain}).exitCode, 0);
+    const CliResult r = runCli({"postfx", kSunset, "-o", expanded, "--expand-highlights"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto in = readImage8(kSunset), a = readImage8(plain), b = readImage8(expanded);
+    ASSERT_TRUE(in.ok() && a.ok() && b.ok());
+    EXPECT_LT(shareChanged(*in, *a, 30), 0.001);
+    EXPECT_GT(shareChanged(*in, *b, 30), 0.02);
+    // The clipped sun disc itself stays white, not pushed past it.
+    const std::size_t sun = (std::size_t(250) * 1280 + 930) * std::size_t(b->channels);
+    EXPECT_EQ(b->pixels[sun], 255);
+    // HDR input has its own highlights: a warning, and the same picture as without the flag.
+    const CliResult h =
+        runCli({"postfx", kSunsetHdr, "-o", dir.file("h.exr"), "--expand-highlights"});
+    EXPECT_EQ(h.exitCode, 0);
+    EXPECT_NE(h.err.find("--expand-highlights is for 8/16-bit input"), std::string::npos) << h.err;
+}

@@ -7,6 +7,7 @@
 #include "PostFxImages.h"
 #include "flarekit/PostFx.h"
 #include "postfx/brightpass/BrightPass.h"
+#include "postfx/starburst/Starburst.h"
 #include "postfx/streaks/Streaks.h"
 
 namespace flarekit {
@@ -424,6 +425,38 @@ TEST(PostFxDirt, IsAPureFunctionOfItsParamsInZeroOne) {
     }
     EXPECT_GT(sumA, 0.0);
     EXPECT_GT(diff, 0.0);
+}
+
+// The starburst radiates from the frame's bright source, not the frame centre: fitToFrame puts
+// its centre on the light (in the passes' uv, y up), and along any ray from that centre the
+// modulation is the same at every distance.
+TEST(PostFxStarburst, RaysRadiateFromTheLight) {
+    PostFxParams p = load("modern");
+    ASSERT_GT(p.starburst.intensity, 0.f);
+    ASSERT_EQ(p.starburst.centre, StarCentre::Lights);
+    Image frame(320, 180);
+    frame.fill({0.05f, 0.05f, 0.05f, 1.f});
+    for (int y = 38; y < 42; ++y)
+        for (int x = 238; x < 242; ++x) frame.at(x, y) = {5000.f, 5000.f, 5000.f, 1.f};
+    const PostFxParams fitted = fitToFrame(p, frame);
+    ASSERT_EQ(fitted.starburst.centreCount, 1);
+    EXPECT_NEAR(fitted.starburst.centresUv[0], 240.f / 320.f, 1e-4f);
+    EXPECT_NEAR(fitted.starburst.centresUv[1], 1.f - 40.f / 180.f, 1e-4f);
+    const postfx::StarburstUniforms u = postfx::starburstUniforms(fitted.starburst);
+    const float aspect = 320.f / 180.f;
+    const postfx::Vec2 c{fitted.starburst.centresUv[0], fitted.starburst.centresUv[1]};
+    for (float angle : {0.3f, 1.1f, 2.5f, 4.0f}) {
+        auto at = [&](float r) {
+            const postfx::Vec2 uv{c.x + r * std::cos(angle) / aspect, c.y + r * std::sin(angle)};
+            return postfx::starburstModulation(u, uv, aspect);
+        };
+        EXPECT_NEAR(at(0.05f), at(0.4f), 1e-4f) << angle;
+    }
+    // "frame" keeps Chapman's centre.
+    p.starburst.centre = StarCentre::Frame;
+    const postfx::StarburstUniforms f = postfx::starburstUniforms(fitToFrame(p, frame).starburst);
+    EXPECT_EQ(f.centres[0].x, 0.5f);
+    EXPECT_EQ(f.centres[0].y, 0.5f);
 }
 
 }  // namespace

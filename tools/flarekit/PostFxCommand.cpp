@@ -8,6 +8,7 @@
 #include "ParamOptions.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFx.h"
+#include "flarekit/Tonemap.h"
 #if FLAREKIT_HAS_GL
 #include "flarekit/HeadlessGl.h"
 #endif
@@ -19,6 +20,7 @@ struct PostFxArgs {
     std::string in, out, preset = kDefaultPostFxPreset, backend = "cpu", layersDir,
                          tonemap = "preset";
     std::optional<float> exposure, threshold, knee;
+    float expandGain = 0.f;  //!< --expand-highlights: 0 off
     int repeat = 1;
     bool verbose = false;
 };
@@ -106,8 +108,24 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
     PostFxOptions options;
     options.keepLayers = !a.layersDir.empty();
     options.times = a.verbose ? &times : nullptr;
-    auto result = runBackend(a, loaded->image, *params, options);
+    // --expand-highlights: the chain sees the expanded image, the output keeps the original
+    // pixels (the expansion is taken back off the additive composite).
+    const bool expand = a.expandGain > 0.f && !loaded->wasFloat;
+    if (a.expandGain > 0.f && loaded->wasFloat)
+        warn(a.in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
+    Image expanded;
+    if (expand) {
+        expanded = loaded->image;
+        expandHighlights(expanded, a.expandGain);
+    }
+    auto result = runBackend(a, expand ? expanded : loaded->image, *params, options);
     if (!result) return result.error();
+    if (expand && params->tone.op == ToneOperator::None) {
+        float* f = result->final.data();
+        const float *e = expanded.data(), *o = loaded->image.data();
+        for (std::size_t i = 0; i < result->final.pixelCount() * 4; ++i)
+            if (i % 4 != 3) f[i] = std::max(0.f, f[i] - (e[i] - o[i]));
+    }
     if (a.verbose) {
         // Wall time (with glFinish around each GL pass): llvmpipe's timer queries are not usable.
         std::printf("%-10s %9s %9s %9s\n", "pass", "wall ms", "MP/s",
@@ -165,6 +183,11 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                      args->threshold, "the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9");
     addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee,
                      "the preset's");
+    cmd->add_flag("--expand-highlights{6}", args->expandGain,
+                  "8/16-bit input: an inverse tone curve on near-clipped pixels (clipped ones "
+                  "become GAIN x white, 6 by default; --expand-highlights=4 sets it) so the "
+                  "lights of an 8-bit photo flare")
+        ->check(CLI::Range(1.0, 1e4));
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxArgs>(cmd, kPostFxArgParams, *args);

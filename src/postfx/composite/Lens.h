@@ -49,6 +49,8 @@ void bindUniforms(const LensUniforms& u, Sink& s) {
     s.set("starIntensity", u.star.intensity), s.set("starWidth", u.star.width),
         s.set("starSpokes", u.star.spokes);
     s.set("starRays", std::span<const float>(u.star.rays));
+    s.set("starCentreCount", u.star.centreCount);
+    s.set("starCentres", std::span<const Vec2>(u.star.centres));
 }
 
 }  // namespace flarekit::postfx
