@@ -2,6 +2,7 @@
 // angular radius, and opaque spheres, boxes and triangles.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,18 @@ inline constexpr Param<TrianglesColor> kTrianglesParams[] = {
                                   "albedo of every triangle"),
 };
 
+//! An optional ground plane y = height, as far as the camera sees (a square of half side
+//! camera.far around it): it occludes like any object, so a sun below the horizon is hidden.
+struct Ground {
+    double height = 0;
+    Vec3 color{0.25, 0.3, 0.2};
+};
+inline constexpr Param<Ground> kGroundParams[] = {
+    param<&Ground::height>("height", kSceneAnyCoordinate, kParamUnbounded, "m",
+                           "the plane y = height"),
+    param<&Ground::color>("color", 0, kParamUnbounded, "linear RGB", "albedo"),
+};
+
 struct Scene {
     int width = 640, height = 360;
     SceneCamera camera;
@@ -95,7 +108,11 @@ struct Scene {
     std::vector<Sphere> spheres;
     std::vector<Box> boxes;
     std::vector<Triangle> triangles;
+    std::optional<Ground> ground;
 };
+
+//! The ground as the two triangles every renderer and the ray caster draw (none without one).
+std::vector<Triangle> groundTriangles(const Scene& scene);
 //! The "image" section of the Scene JSON.
 inline constexpr Param<Scene> kSceneImageParams[] = {
     required(param<&Scene::width>("width", 1, kMaxImageSide, "pixels", "frame width")),

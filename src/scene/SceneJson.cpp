@@ -73,8 +73,10 @@ Result<Scene> readScene(const json& doc, const JsonPlace& top) {
     Scene s;
     if (!doc.is_object()) return top.fail("expected an object, got " + jsonExcerpt(doc));
     for (const auto& [key, value] : doc.items()) {
-        if (key != "image" && key != "camera" && key != "sun" && key != "objects")
-            return (top / key).fail("unknown key (expected one of: image, camera, sun, objects)");
+        if (key != "image" && key != "camera" && key != "sun" && key != "objects" &&
+            key != "ground")
+            return (top / key).fail(
+                "unknown key (expected one of: image, camera, sun, ground, objects)");
     }
     for (const char* section : {"image", "camera", "sun"}) {
         if (!doc.contains(section)) return (top / section).fail("missing; expected an object");
@@ -82,6 +84,11 @@ Result<Scene> readScene(const json& doc, const JsonPlace& top) {
     FK_TRY(readParams<Scene>(doc["image"], kSceneImageParams, s, top / "image"));
     FK_TRY(readParams<SceneCamera>(doc["camera"], kSceneCameraParams, s.camera, top / "camera"));
     FK_TRY(readParams<SceneSun>(doc["sun"], kSceneSunParams, s.sun, top / "sun"));
+    if (const auto ground = doc.find("ground"); ground != doc.end()) {
+        Ground g;
+        FK_TRY(readParams<Ground>(*ground, kGroundParams, g, top / "ground"));
+        s.ground = g;
+    }
     const auto objects = doc.find("objects");
     if (objects == doc.end()) return s;
     if (!objects->is_array())
@@ -133,7 +140,19 @@ Status validateScene(const Scene& s) {
         return invalidInput("triangles: expected at most " + std::to_string(kMaxTriangles) +
                             " triangles in a scene");
     }
+    if (s.ground) {
+        if (Status st = validateParams<Ground>(*s.ground, kGroundParams, "ground."); !st) return st;
+    }
     return Ok{};
+}
+
+std::vector<Triangle> groundTriangles(const Scene& scene) {
+    if (!scene.ground) return {};
+    const double r = scene.camera.farPlane, y = scene.ground->height;
+    const double cx = scene.camera.position.x, cz = scene.camera.position.z;
+    const Vec3 a{cx - r, y, cz - r}, b{cx + r, y, cz - r}, c{cx + r, y, cz + r},
+        d{cx - r, y, cz + r};
+    return {{a, b, c, scene.ground->color}, {a, c, d, scene.ground->color}};
 }
 
 Result<Scene> parseScene(const std::string& jsonText, const std::string& source) {

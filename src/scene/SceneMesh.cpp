@@ -18,6 +18,12 @@ Vec3 unitSphere(int slice, int stack) {
                  phi = 2 * std::numbers::pi * slice / kSphereSlices;
     return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
 }
+//! The scene's triangles and its ground's, in the order both mesh functions walk them.
+std::vector<Triangle> allTriangles(const Scene& scene) {
+    std::vector<Triangle> all = scene.triangles;
+    for (const Triangle& t : groundTriangles(scene)) all.push_back(t);
+    return all;
+}
 }  // namespace
 
 std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
@@ -55,7 +61,7 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
             }
         }
     }
-    for (const Triangle& t : scene.triangles) {
+    for (const Triangle& t : allTriangles(scene)) {
         const Vec3 c = cross(t.b - t.a, t.c - t.a);
         const Vec3 n = length(c) > 0 ? normalize(c) : Vec3{0, 1, 0};
         push(out, t.a, n, t.color);
@@ -79,7 +85,7 @@ std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene) {
         out.push_back({first, 36, b.min + half, length(half), std::min({half.x, half.y, half.z})});
         first += 36;
     }
-    for (const Triangle& t : scene.triangles) {
+    for (const Triangle& t : allTriangles(scene)) {
         const Vec3 c = (t.a + t.b + t.c) * (1.0 / 3.0);
         out.push_back(
             {first, 3, c, std::max({length(t.a - c), length(t.b - c), length(t.c - c)}), 0.0});

@@ -406,3 +406,24 @@ TEST(CliDemo, BadOptionsExitTwoWithOneLine) {
     }
     EXPECT_FALSE(std::filesystem::exists(dir.file("a")));  // nothing created on bad input
 }
+
+// The shipped sample scenes show occlusion on the first try: a sun low through tree crowns
+// (partly hidden), half behind a building's edge, and below the horizon (hidden by the ground).
+TEST(CliScenes, SampleScenesShowOcclusion) {
+    const std::string dir = std::string(FLAREKIT_SAMPLES) + "/scenes/";
+    struct Expect {
+        const char* scene;
+        double lo, hi;
+    };
+    for (const Expect& e : {Expect{"sun-behind-trees.json", 0.1, 0.5},
+                            Expect{"sun-at-building-edge.json", 0.45, 0.55},
+                            Expect{"sun-below-horizon.json", 0.0, 0.0}}) {
+        const CliResult r = runCli({"visibility", dir + e.scene, "--json"});
+        ASSERT_EQ(r.exitCode, 0) << e.scene << ": " << r.err;
+        const auto at = r.out.find("\"coverage\": ");
+        ASSERT_NE(at, std::string::npos) << r.out;
+        const double coverage = std::stod(r.out.substr(at + 12));
+        EXPECT_GE(coverage, e.lo) << e.scene;
+        EXPECT_LE(coverage, e.hi) << e.scene;
+    }
+}

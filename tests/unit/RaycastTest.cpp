@@ -170,3 +170,36 @@ TEST(Raycast, CameraInsideABoxOrSphereIsOccluded) {
     t.spheres.push_back({{0, 0, 0}, 2, {}});
     EXPECT_EQ(coverage(t), 0.0);
 }
+
+// The ground occludes like any object. With the eye at the ground and the ground reaching far
+// away, the horizon is a straight line through eye level, so a sun of angular radius r whose
+// centre is at elevation e (|e| < r) keeps the circular segment above it: a share
+// (theta - sin theta cos theta) / pi of the disc, cos theta = -e / r. Wholly below the
+// horizon it is hidden, wholly above it is not.
+TEST(Raycast, GroundHidesASunBelowTheHorizon) {
+    Scene s;
+    s.camera.position = {0, 0.001, 0};  // eye at the ground: the horizon is the eye level
+    s.camera.lookAt = {0, 0, -10};
+    s.camera.farPlane = 1e6;  // the ground reaches out to camera.far
+    s.sun.angularRadiusDeg = 1.0;
+    s.ground = Ground{0.0, {0.2, 0.2, 0.2}};
+    RaycastOptions o;
+    o.samplesPerSide = 256;
+    auto at = [&](double elevationDeg) {
+        const double e = elevationDeg * 3.14159265358979323846 / 180.0;
+        s.sun.direction = {0, std::sin(e), -std::cos(e)};
+        auto r = raycastVisibility(s, o);
+        EXPECT_TRUE(r.ok());
+        return r ? r->coverage : -1.0;
+    };
+    EXPECT_EQ(at(-3.0), 0.0);
+    EXPECT_NEAR(at(3.0), 1.0, 1e-9);
+    // Centred on the horizon: half the disc (the ground's far edge is 1e6 m away, 1e-9 rad down).
+    EXPECT_NEAR(at(0.0), 0.5, 0.01);
+    // Half a radius above: the circular segment above the line y = -r/2.
+    const double theta = std::acos(-0.5);
+    EXPECT_NEAR(at(0.5), (theta - std::sin(theta) * std::cos(theta)) / 3.14159265358979323846,
+                0.01);
+    s.ground.reset();
+    EXPECT_NEAR(at(-3.0), 1.0, 1e-9);  // no ground, nothing in the way
+}

@@ -78,7 +78,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand(
         "render", "Render a scene (headless OpenGL) with a sun flare scaled by its visibility");
-    cmd->add_option("scene", args->scene, "scene JSON (docs/architecture.md)")->required();
+    cmd->add_option("scene", args->scene, "scene JSON (docs/scenes.md)")->required();
     cmd->add_option("-o,--output", args->out,
                     "output image: EXR stays linear HDR, 8/16-bit outputs are tone-mapped")
         ->required();

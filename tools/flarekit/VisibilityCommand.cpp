@@ -90,7 +90,7 @@ void addVisibilityCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<VisibilityArgs>();
     CLI::App* cmd = app.add_subcommand("visibility",
                                        "Fraction of the sun's disc visible from a scene's camera");
-    cmd->add_option("scene", args->scene, "scene JSON (docs/architecture.md)")->required();
+    cmd->add_option("scene", args->scene, "scene JSON (docs/scenes.md)")->required();
     std::vector<std::string> methods = {"raycast"};
     for (const std::string& m : gpuVisibilityMethods()) methods.push_back(m);
     cmd->add_option("--method", args->method,

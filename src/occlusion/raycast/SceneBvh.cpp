@@ -16,7 +16,8 @@ Vec3 vmax(Vec3 a, Vec3 b) {
 }
 }  // namespace
 
-SceneBvh::SceneBvh(const Scene& scene) : m_scene(scene) {
+SceneBvh::SceneBvh(const Scene& scene) : m_scene(scene), m_triangles(scene.triangles) {
+    for (const Triangle& t : groundTriangles(scene)) m_triangles.push_back(t);
     for (std::uint32_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         const Vec3 r{s.radius, s.radius, s.radius};
@@ -26,8 +27,8 @@ SceneBvh::SceneBvh(const Scene& scene) : m_scene(scene) {
         const Box& b = scene.boxes[i];
         m_prims.push_back({Kind::Box, i, b.min, b.max, 0.5 * (b.min + b.max)});
     }
-    for (std::uint32_t i = 0; i < scene.triangles.size(); ++i) {
-        const Triangle& t = scene.triangles[i];
+    for (std::uint32_t i = 0; i < m_triangles.size(); ++i) {
+        const Triangle& t = m_triangles[i];
         const Vec3 lo = vmin(t.a, vmin(t.b, t.c)), hi = vmax(t.a, vmax(t.b, t.c));
         m_prims.push_back({Kind::Triangle, i, lo, hi, 0.5 * (lo + hi)});
     }
@@ -71,7 +72,7 @@ bool SceneBvh::hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir) const {
             return intersect::slabs(o, invDir, m_scene.boxes[p.index].min,
                                     m_scene.boxes[p.index].max);
         case Kind::Triangle:
-            return intersect::triangle(o, d, m_scene.triangles[p.index]);
+            return intersect::triangle(o, d, m_triangles[p.index]);
     }
     return false;
 }

@@ -33,6 +33,7 @@ class SceneBvh {
     bool hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir) const;
 
     const Scene& m_scene;
+    std::vector<Triangle> m_triangles;  //!< the scene's triangles, then its ground's
     std::vector<Prim> m_prims;
     std::vector<Node> m_nodes;
 };
