@@ -13,11 +13,12 @@
 namespace flarekit::test {
 
 inline bool writeRaw(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type,
-                     const void* data) {
+                     const void* data, int orientation = 1) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) return false;
     OIIO::ImageSpec spec(w, h, channels, type);
     spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (orientation != 1) spec.attribute("Orientation", orientation);  // EXIF, as phones write
     return out->open(path, spec) && out->write_image(type, data) && out->close();
 }
 

@@ -37,7 +37,9 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
 //! A shipped preset by name (see presetSearchPath) or a JSON file by path.
 Result<Preset> loadPreset(const std::string& nameOrPath);
 //! Directories searched for shipped presets: $FLAREKIT_PRESET_PATH (colon-separated), then
-//! the install's share/flarekit/presets, then the source tree's presets/.
+//! share/flarekit/presets beside the running executable's bin/ (an install at any prefix),
+//! then the configured install's, then the source tree's presets/. A preset is found by its
+//! file name (NAME.json); its "name" field is the title `flarekit presets` prints.
 std::vector<std::string> presetSearchPath();
 //! Names of every preset found on the search path, sorted.
 std::vector<std::string> shippedPresetNames();

@@ -55,7 +55,56 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
                             std::to_string(kMaxImagePixels) + " pixels");
     }
     if (spec.nchannels < 1) return invalidInput(path + ": image has no channels");
+    // OIIO reads a movie as one subimage per frame; taking the first one silently would hide
+    // that the rest were ignored.
+    if (std::string(in->format_name()).rfind("FFmpeg", 0) == 0) {  // OIIO's "FFmpeg movie"
+        return invalidInput(path +
+                            ": is a video; flarekit reads still images (take a frame out with "
+                            "`ffmpeg -i " +
+                            path + " -frames:v 1 frame.png`)");
+    }
     return in;
+}
+
+//! The image as it is meant to be seen: EXIF orientation (1-8, as a phone stores a portrait
+//! sideways with orientation 6) applied by moving pixels; 1 or an unknown value: unchanged.
+Image reoriented(const Image& src, int orientation) {
+    if (orientation < 2 || orientation > 8) return src;
+    const int w = src.width(), h = src.height();
+    const bool swap = orientation >= 5;
+    Image dst(swap ? h : w, swap ? w : h);
+    parallelFor(0, h, 16, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            for (int x = 0; x < w; ++x) {
+                int dx = x, dy = y;
+                switch (orientation) {
+                    case 2:
+                        dx = w - 1 - x;
+                        break;  // mirrored left-right
+                    case 3:
+                        dx = w - 1 - x, dy = h - 1 - y;
+                        break;  // upside down
+                    case 4:
+                        dy = h - 1 - y;
+                        break;  // mirrored top-bottom
+                    case 5:
+                        dx = y, dy = x;
+                        break;  // transposed
+                    case 6:
+                        dx = h - 1 - y, dy = x;
+                        break;  // turned 90 degrees CW
+                    case 7:
+                        dx = h - 1 - y, dy = w - 1 - x;
+                        break;  // transversed
+                    case 8:
+                        dx = y, dy = w - 1 - x;
+                        break;  // turned 90 degrees CCW
+                }
+                dst.at(dx, dy) = src.at(x, y);
+            }
+        }
+    });
+    return dst;
 }
 
 //! fn(i) for every i in [0, count), spread over the cores in chunks.
@@ -137,6 +186,7 @@ Result<LoadedImage> readImage(const std::string& path) {
         nonFinite += bad;
     });
     out.nonFinite = nonFinite;
+    out.image = reoriented(out.image, spec.get_int_attribute("Orientation", 1));
     return out;
 }
 

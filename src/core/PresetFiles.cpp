@@ -28,8 +28,17 @@ std::vector<std::string> presetSearchPath() {
             if (!dir.empty()) dirs.push_back(dir);
         }
     }
+    // An install moved to another prefix (`cmake --install build --prefix /opt/flarekit`)
+    // keeps bin/ and share/ side by side: look beside the running executable first.
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec && exe.has_parent_path()) {
+        const fs::path beside = exe.parent_path().parent_path() / "share" / "flarekit" / "presets";
+        if (fs::is_directory(beside, ec)) dirs.push_back(beside.string());
+    }
     for (const char* dir : {FLAREKIT_INSTALL_PRESET_DIR, FLAREKIT_SOURCE_PRESET_DIR}) {
-        if (*dir) dirs.emplace_back(dir);
+        if (*dir && std::find(dirs.begin(), dirs.end(), std::string(dir)) == dirs.end())
+            dirs.emplace_back(dir);
     }
     return dirs;
 }

@@ -427,3 +427,31 @@ TEST(CliScenes, SampleScenesShowOcclusion) {
         EXPECT_LE(coverage, e.hi) << e.scene;
     }
 }
+
+// An install at any prefix finds its presets beside the executable: bin/flarekit and
+// share/flarekit/presets moved together somewhere else still work.
+TEST(CliPresets, FoundBesideTheExecutableAfterAnInstallElsewhere) {
+    TempDir dir;
+    namespace fs = std::filesystem;
+    fs::create_directories(dir.file("prefix/bin"));
+    fs::create_directories(dir.file("prefix/share/flarekit/presets"));
+    fs::copy_file(FLAREKIT_CLI, dir.file("prefix/bin/flarekit"));
+    std::ofstream(dir.file("prefix/share/flarekit/presets/only-here.json"))
+        << R"({"name": "only-here", "description": "installed beside the binary", "elements": [{"type": "glow"}]})";
+    const std::string cmd = quote(dir.file("prefix/bin/flarekit")) + " presets >" +
+                            quote(dir.file("out.txt")) + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    EXPECT_NE(slurp(dir.file("out.txt")).find("only-here"), std::string::npos)
+        << slurp(dir.file("out.txt"));
+}
+
+// --depth half or float into a format that only holds integers is refused, not downgraded.
+TEST(CliApply, FloatDepthIntoAnIntegerFormatIsRefused) {
+    TempDir dir;
+    const CliResult r = runCli({"apply", kSunsetHdr, "-o", dir.file("o.png"), "--depth", "half"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--depth half/float needs a float format"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
+    EXPECT_EQ(runCli({"apply", kSunsetHdr, "-o", dir.file("o.tif"), "--depth", "float"}).exitCode,
+              0);
+}

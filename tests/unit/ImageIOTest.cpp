@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 
@@ -139,4 +140,57 @@ TEST(ImageIO, MissingAndGarbageFilesAreErrorsNotCrashes) {
     ASSERT_FALSE(junk.ok());
     EXPECT_EQ(junk.error().code, ErrorCode::InvalidInput);
     EXPECT_NE(junk.error().message.find("junk.png"), std::string::npos);
+}
+
+// A phone stores a portrait sideways and says so in EXIF Orientation: the image is read the way
+// it is meant to be seen. Each of the eight orientations against the pixel it must move.
+TEST(ImageIO, ExifOrientationIsApplied) {
+    TempDir dir;
+    // 3 x 2 stored pixels with distinct grey levels: level = 40 * (1 + x + 3 y).
+    std::vector<unsigned char> px(3 * 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x)
+            px[std::size_t(y * 3 + x)] = (unsigned char)(40 * (1 + x + 3 * y));
+    auto stored = [&](int x, int y) {
+        return srgb8ToLinear((unsigned char)(40 * (1 + x + 3 * y)));
+    };
+    // For each orientation: the displayed size and which stored pixel lands at displayed (0, 0)
+    // and (1, 0).
+    struct Case {
+        int o, w, h, x00, y00, x10, y10;
+    };
+    for (const Case c :
+         {Case{1, 3, 2, 0, 0, 1, 0}, Case{2, 3, 2, 2, 0, 1, 0}, Case{3, 3, 2, 2, 1, 1, 1},
+          Case{4, 3, 2, 0, 1, 1, 1}, Case{5, 2, 3, 0, 0, 0, 1}, Case{6, 2, 3, 0, 1, 0, 0},
+          Case{7, 2, 3, 2, 1, 2, 0}, Case{8, 2, 3, 2, 0, 2, 1}}) {
+        std::string name = "o";  // appended, not concatenated: GCC 12's -Wrestrict false alarm
+        name += std::to_string(c.o);
+        name += ".tif";
+        const std::string path = dir.file(name);
+        ASSERT_TRUE(test::writeRaw(path, 3, 2, 1, OIIO::TypeDesc::UINT8, px.data(), c.o));
+        auto img = readImage(path);
+        ASSERT_TRUE(img.ok()) << img.error().message;
+        ASSERT_EQ(img->image.width(), c.w) << c.o;
+        ASSERT_EQ(img->image.height(), c.h) << c.o;
+        EXPECT_FLOAT_EQ(img->image.at(0, 0).r, stored(c.x00, c.y00)) << "orientation " << c.o;
+        EXPECT_FLOAT_EQ(img->image.at(1, 0).r, stored(c.x10, c.y10)) << "orientation " << c.o;
+    }
+}
+
+// A movie would read as its first frame; flarekit says it reads still images instead.
+TEST(ImageIO, AVideoIsRefusedNotReadAsItsFirstFrame) {
+    TempDir dir;
+    const std::string mp4 = dir.file("clip.mp4");
+    std::string make =
+        "ffmpeg -loglevel error -y -f lavfi -i testsrc=size=64x48:rate=10 -t 1 "
+        "-pix_fmt yuv420p '";
+    make += mp4;
+    make += "'";
+    ASSERT_EQ(std::system(make.c_str()), 0) << "ffmpeg (scripts/install-deps.sh) is needed";
+    auto img = readImage(mp4);
+    ASSERT_FALSE(img.ok());
+    EXPECT_EQ(img.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(img.error().message.find("is a video; flarekit reads still images"),
+              std::string::npos)
+        << img.error().message;
 }
