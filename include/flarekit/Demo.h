@@ -15,8 +15,9 @@
 
 namespace flarekit {
 
-//! The drive takes 8 s of animation time whatever the frame count: 231 m at 28.9 m/s
-//! (104 km/h); frame i shows time 8 i / frames, so --frames sets the frame rate (240: 30 fps).
+//! The drive takes 8 s: 231 m at 28.9 m/s (104 km/h). Frame i shows time i / fps, so
+//! --frames 240 at 30 fps is the whole drive and fewer frames a shorter one, at the same speed;
+//! frames past the 8 s hold the drive's last position.
 inline constexpr double kDemoDurationSeconds = 8.0;
 
 //! The demo world with the camera at `t` (0 = start, 1 = end of the drive).
@@ -25,6 +26,7 @@ Scene demoScene(int width, int height, double t);
 struct DemoSettings {
     int width = 1280, height = 720;
     int frames = 240;
+    double fps = 30.0;               //!< frames per second of drive time (and of the MP4)
     std::string method = "raycast";  //!< visibility method
     int raycastSamplesPerSide = 64;  //!< 4096 rays a frame; the temporal filter absorbs the noise
     int msaaSamples = 1;
@@ -35,7 +37,9 @@ struct DemoSettings {
 };
 inline constexpr Param<DemoSettings> kDemoParams[] = {
     param<&DemoSettings::frames>("frames", 1, 100000, "",
-                                 "frames over the 8 s drive (240 = 30 fps)"),
+                                 "frames from the start of the 8 s drive, at --fps (240 at 30 fps: "
+                                 "the whole drive; fewer: a shorter one)"),
+    param<&DemoSettings::fps>("fps", 1, 240, "frames/s", "frame rate of the drive and its MP4"),
     param<&DemoSettings::raycastSamplesPerSide>("samples", 1, 4096, "",
                                                 "raycast: strata per side (N^2 rays a frame)"),
     oneOf<&DemoSettings::msaaSamples>("msaa", kMsaaSampleCounts, "samples",

@@ -1,5 +1,7 @@
 // The demo's frame loop: the camera along the road, each frame through the frame pipeline
 // (scene pass, sun visibility, temporal filter, sprite flare, tone map).
+#include <algorithm>
+
 #include "demo/DemoWorld.h"
 #include "flarekit/Demo.h"
 #include "flarekit/FramePipeline.h"
@@ -46,16 +48,18 @@ Result<DemoFrame> DemoAnimation::next() {
     Impl& d = *m;
     if (d.nextFrame >= d.settings.frames) return invalidInput("demo: no frame after the last");
     const int index = d.nextFrame++;
-    // Frame i shows time i x dt with dt = duration / frames: 240 frames are 30 fps for 8 s.
-    const double t = double(index) / d.settings.frames;
-    const double dt = index == 0 ? 0.0 : kDemoDurationSeconds / d.settings.frames;
+    // Frame i shows time i / fps (240 frames at 30 fps: the 8 s drive); past its end the
+    // camera stays at the last position.
+    const double time = double(index) / d.settings.fps;
+    const double t = std::min(1.0, time / kDemoDurationSeconds);
+    const double dt = index == 0 ? 0.0 : 1.0 / d.settings.fps;
     d.view.camera = demo::cameraAt(t);
     // A fresh raycast jitter each frame: the noise averages out over time.
     auto frame = d.pipeline.run(d.view, dt, std::uint64_t(index) + 1);
     if (!frame) return frame.error();
     DemoFrame out;
     static_cast<PipelineFrame&>(out) = std::move(*frame);
-    out.time = t * kDemoDurationSeconds;
+    out.time = time;
     return out;
 }
 

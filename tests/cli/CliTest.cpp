@@ -342,8 +342,8 @@ FLAREKIT_GL_TEST(CliRender, GpuMethodsDrawTheFlareTheRaycastPathDraws) {
 FLAREKIT_GL_TEST(CliDemo, GpuMethodRunsFlareFilterAndToneMapOnTheGpu) {
     TempDir dir;
     const std::string out = dir.file("demo");
-    CliResult r = runCli({"demo", "-o", out, "--frames", "24", "--size", "160x90", "--method",
-                          "compute", "--no-video"});
+    CliResult r = runCli({"demo", "-o", out, "--frames", "24", "--fps", "3", "--size", "160x90",
+                          "--method", "compute", "--no-video"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("method compute"), std::string::npos) << r.out;
     const std::string csv = slurp(out + "/coverage.csv");

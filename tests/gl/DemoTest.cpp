@@ -21,6 +21,7 @@ TEST(Demo, RendersEveryFrameInOrderThenStops) {
     settings.width = 160;
     settings.height = 90;
     settings.frames = 8;
+    settings.fps = 1;  // the first 8 s: the whole drive, a frame a second
     settings.temporal.attackSeconds = settings.temporal.releaseSeconds = 0;  // smoothed == raw
     auto demo = DemoAnimation::create(settings, classic());
     ASSERT_TRUE(demo.ok()) << demo.error().message;
@@ -30,7 +31,7 @@ TEST(Demo, RendersEveryFrameInOrderThenStops) {
         ASSERT_TRUE(frame.ok()) << frame.error().message;
         EXPECT_EQ(frame->image.width(), 160);
         EXPECT_EQ(frame->image.height(), 90);
-        EXPECT_DOUBLE_EQ(frame->time, i * kDemoDurationSeconds / 8);
+        EXPECT_DOUBLE_EQ(frame->time, double(i));
         EXPECT_DOUBLE_EQ(frame->temporal.coverage, frame->rawCoverage);
         for (std::size_t k = 0; k < frame->image.pixelCount() * 4; ++k) {
             const float v = frame->image.data()[k];
@@ -56,4 +57,23 @@ TEST(Demo, BadSettingsAreRejected) {
     s = {};
     s.temporal.guardBand = -1;
     EXPECT_FALSE(DemoAnimation::create(s, classic()).ok());
+}
+
+// --frames at the demo's frame rate shortens the drive instead of squeezing it: 12 frames at
+// 30 fps are the first 0.4 s, at the speed of the full drive.
+TEST(Demo, FewerFramesAreAShorterDriveAtTheSameFrameRate) {
+    test::glContext();
+    DemoSettings settings;
+    settings.width = 64;
+    settings.height = 36;
+    settings.frames = 12;
+    auto demo = DemoAnimation::create(settings, classic());
+    ASSERT_TRUE(demo.ok()) << demo.error().message;
+    double last = -1;
+    for (int i = 0; i < 12; ++i) {
+        auto frame = demo->next();
+        ASSERT_TRUE(frame.ok());
+        last = frame->time;
+    }
+    EXPECT_DOUBLE_EQ(last, 11.0 / 30.0);
 }

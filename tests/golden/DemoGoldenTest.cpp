@@ -14,6 +14,7 @@ namespace {
 void checkDrive(const std::string& method, std::initializer_list<int> frames) {
     DemoSettings settings;
     settings.width = 320, settings.height = 180, settings.frames = 24, settings.method = method;
+    settings.fps = 3;  // 24 frames over the whole 8 s drive
     settings.raycastSamplesPerSide = 32;
     auto preset = loadPreset("tanczos-classic");
     ASSERT_TRUE(preset.ok());

@@ -200,7 +200,7 @@ int runDemo(DemoArgs& a) {
         warn("ffmpeg is not installed: no MP4 (the PNG frames are written)");
         return kExitOk;
     }
-    const double fps = n / kDemoDurationSeconds;
+    const double fps = a.settings.fps;
     char pattern[64];
     std::snprintf(pattern, sizeof pattern, "frame_%%0%dd.png", digits);
     if (Status s = encodeVideo(ffmpeg, dir + pattern, fps, dir + "demo.mp4", dir + "ffmpeg.log");
@@ -228,6 +228,7 @@ void addDemoCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("-o,--output", args->outDir, "output directory (created if missing)")
         ->required();
     addParamOption<DemoSettings>(cmd, kDemoParams, "frames", args->settings);
+    addParamOption<DemoSettings>(cmd, kDemoParams, "fps", args->settings);
     cmd->add_option("--size", args->size, "frame size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option(
            "--method", args->settings.method,
