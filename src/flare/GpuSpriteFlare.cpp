@@ -53,6 +53,7 @@ struct GpuSpriteFlare::Impl {
 };
 
 Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) {
+    if (Status s = gl::requireCurrentContext("GpuSpriteFlare::create"); !s) return s.error();
     if (height < 1) return invalidInput("sprite flare: frame height must be positive");
     auto program =
         gl::linkProgram({{GL_VERTEX_SHADER, "sprite_flare.vert", shaders::sprite_flare_vert},

@@ -9,6 +9,9 @@
 #include <string>
 #include <utility>
 
+#include <dlfcn.h>
+#include <epoxy/egl.h>
+
 #include "core/FirstLine.h"
 
 namespace flarekit::gl {
@@ -156,6 +159,17 @@ Result<Program> linkProgram(std::initializer_list<ShaderSource> sources) {
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
     if (!ok) return internalError("OpenGL: link error: " + infoLog(program.get(), true));
     return program;
+}
+
+Status requireCurrentContext(const char* what) {
+    if (eglGetCurrentContext() != EGL_NO_CONTEXT) return Ok{};
+    // An application on GLX: ask libGL if the process has it (no link-time dependency).
+    using GetContext = void* (*)();
+    if (auto glx = reinterpret_cast<GetContext>(dlsym(RTLD_DEFAULT, "glXGetCurrentContext")))
+        if (glx()) return Ok{};
+    return invalidInput(std::string(what) +
+                        ": no OpenGL context is current on this thread (make one current, e.g. "
+                        "with flarekit::gl::HeadlessGl::create())");
 }
 
 }  // namespace flarekit::gl

@@ -95,6 +95,11 @@ inline Result<Framebuffer> makeFramebuffer(const Texture& color, const Texture* 
 //! Ok, or "OpenGL: <what> failed (error 0x0502)" when glGetError reports an error.
 Status checkError(const std::string& what);
 
+//! Ok when an OpenGL context (EGL, or GLX in a process that has it) is current on this thread;
+//! else an error naming `what`. Every GL class's create() asks first: a GL call without a
+//! context would end the process in libepoxy's assertion instead of returning an error.
+Status requireCurrentContext(const char* what);
+
 //! Level 0 of a width x height colour texture as float RGBA, top row first (GL rows are
 //! bottom-up; `flipRows` false keeps GL row 0 as image row 0, for textures uploaded that way).
 //! Waits for the GPU. Read in bands, so frames past 2 GiB need no GLsizei > 2^31.

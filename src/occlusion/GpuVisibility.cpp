@@ -1,5 +1,6 @@
 // The GPU method factory: contract names to implementations (one folder each).
 #include "flarekit/GpuVisibility.h"
+#include "gl/GlObjects.h"
 
 #include <algorithm>
 
@@ -84,6 +85,7 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
 Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(const std::string& method,
                                                            const Scene& world,
                                                            const GpuVisibilityOptions& options) {
+    if (Status s = gl::requireCurrentContext("createGpuVisibility"); !s) return s.error();
     for (const MethodEntry& m : kMethods) {
         if (method == m.name) return m.make(world, options);
     }

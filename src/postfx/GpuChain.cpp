@@ -141,6 +141,7 @@ struct GpuPostFx::Impl {
 };
 
 Result<GpuPostFx> GpuPostFx::create() {
+    if (Status s = gl::requireCurrentContext("GpuPostFx::create"); !s) return s.error();
     auto m = std::make_unique<Impl>();
     if (Status s =
             linkAll(m->programs, std::make_index_sequence<std::variant_size_v<PassUniforms>>{});

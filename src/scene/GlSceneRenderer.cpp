@@ -81,6 +81,7 @@ SceneTargets sceneTargets(const SceneRenderer& r) {
 
 Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOptions& options) {
     if (Status s = validateScene(scene); !s) return invalidInput("scene: " + s.error().message);
+    if (Status s = gl::requireCurrentContext("SceneRenderer::create"); !s) return s.error();
     const int samples = options.msaaSamples;
     if (samples != 1 && samples != 2 && samples != 4 && samples != 8) {
         return invalidInput("msaa: expected 1, 2, 4 or 8 samples, got " + std::to_string(samples));

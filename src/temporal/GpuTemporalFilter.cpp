@@ -20,6 +20,7 @@ struct GpuTemporalFilter::Impl {
 };
 
 Result<GpuTemporalFilter> GpuTemporalFilter::create(const TemporalParams& params) {
+    if (Status s = gl::requireCurrentContext("GpuTemporalFilter::create"); !s) return s.error();
     if (Status s = validateTemporalParams(params); !s) return s.error();
     auto program = gl::linkProgram(
         {{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},

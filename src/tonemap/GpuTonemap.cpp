@@ -16,6 +16,7 @@ struct GpuTonemap::Impl {
 };
 
 Result<GpuTonemap> GpuTonemap::create(int width, int height) {
+    if (Status s = gl::requireCurrentContext("GpuTonemap::create"); !s) return s.error();
     if (width < 1 || height < 1) return invalidInput("tonemap: empty frame");
     auto program = gl::linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", shaders::fullscreen_vert},
                                     {GL_FRAGMENT_SHADER, "tonemap_aces.frag",

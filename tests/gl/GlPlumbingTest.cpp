@@ -2,10 +2,15 @@
 // skip: a machine without a working headless GL fails them, loudly.
 #include <gtest/gtest.h>
 
+#include <thread>
 #include <vector>
 
 #include "GlTestContext.h"
+#include "flarekit/GpuFlare.h"
+#include "flarekit/GpuVisibility.h"
 #include "flarekit/HeadlessGl.h"
+#include "flarekit/PostFx.h"
+#include "flarekit/Render.h"
 #include "gl/GlObjects.h"
 
 using namespace flarekit;
@@ -112,4 +117,26 @@ void main() { color = vec4(used + weights[2]); })"}});
     ASSERT_FALSE(s.ok());
     EXPECT_EQ(s.error().message, "OpenGL: setting uniforms: the program has no uniform 'uesd'");
     EXPECT_TRUE(checkError("after").ok());  // reported once
+}
+
+// Every GL class asked to start without a current context says so: an error, not libepoxy's
+// abort. A fresh thread has no context current, whatever the test process made elsewhere.
+TEST(GlPlumbing, NoCurrentContextIsAnErrorNotAnAbort) {
+    std::vector<std::string> errors;
+    std::thread([&] {
+        auto note = [&](const auto& result) {
+            errors.push_back(result.ok() ? std::string("ok") : result.error().message);
+        };
+        note(GpuPostFx::create());
+        note(SceneRenderer::create(Scene{}));
+        note(GpuTonemap::create(64, 64));
+        note(GpuTemporalFilter::create());
+        Preset preset;
+        preset.elements = {defaultElement(ElementType::Glow)};
+        note(GpuSpriteFlare::create(preset, 64));
+        note(createGpuVisibility("query", Scene{}));
+    }).join();
+    ASSERT_EQ(errors.size(), 6u);
+    for (const std::string& e : errors)
+        EXPECT_NE(e.find("no OpenGL context is current on this thread"), std::string::npos) << e;
 }
