@@ -81,6 +81,32 @@ BENCHMARK(BM_ApplyInMemory)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// --light auto alone: the luminance pass, the sort of bright pixels and the candidates' flood
+// fills. args: height (1080 or 2160), kind (0: the HDR sky with one sun; 1: an 8-bit-like frame
+// whose upper third is clipped white, the worst case for the sort and the fills).
+void BM_FindLights(benchmark::State& state) {
+    const int h = int(state.range(0)), w = h * 16 / 9;
+    Image img = skyWithSun(w, h);
+    if (state.range(1) == 1) {
+        for (int y = 0; y < h / 3; ++y)
+            for (int x = 0; x < w; ++x) img.at(x, y) = {1.f, 1.f, 1.f, 1.f};
+    }
+    LightSearchOptions options;
+    options.maxLights = 4;
+    std::size_t candidates = 0;
+    for (auto _ : state) {
+        const LightSearch search = findLights(img, options);
+        candidates = search.candidates.size();
+        benchmark::DoNotOptimize(search.lights.data());
+    }
+    megapixels(state, double(w) * double(h));
+    state.counters["candidates"] = double(candidates);
+}
+BENCHMARK(BM_FindLights)
+    ->ArgsProduct({{1080, 2160}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // The flare alone (no light search), per preset, 1080p, 2 threads: cost follows coverage.
 void BM_RenderFlare(benchmark::State& state, const char* name) {
     ThreadLimit limit(2);

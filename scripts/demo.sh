@@ -13,19 +13,22 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 mkdir -p "$out/sheets"
 for preset in $("$flarekit" presets | awk '{print $1}'); do
   "$flarekit" apply "$here/samples/sunset.png" -o "$out/sunset-$preset.png" --preset "$preset" --light auto
+  "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-$preset.png" --preset "$preset"
   "$flarekit" elements --preset "$preset" -o "$out/sheets/$preset.png" --cell 192
   echo "demo: $out/sunset-$preset.png"
 done
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.exr" --preset sun-wide
 "$flarekit" apply "$here/samples/sunset-hdr.exr" -o "$out/sunset-hdr-sun-wide.png" --preset sun-wide
-"$flarekit" render "$here/samples/scenes/contract-example.json" -o "$out/contract-example.png"
+for scene in "$here"/samples/scenes/*.json; do
+  "$flarekit" render "$scene" -o "$out/scene-$(basename "$scene" .json).png"
+done
 "$flarekit" psp demo -o "$out/psp" --frames 48
 mkdir -p "$out/postfx"
 for preset in $("$flarekit" presets --postfx | awk '{print $1}'); do
   "$flarekit" postfx "$here/samples/sunset-hdr.exr" -o "$out/postfx/sunset-hdr-$preset.png" --preset "$preset" --tonemap aces \
     --save-layers "$out/postfx/layers-$preset"
   "$flarekit" postfx "$here/samples/sunset-hdr.exr" -o "$out/postfx/sunset-hdr-$preset-gl.png" --preset "$preset" --tonemap aces --backend gl
-  "$flarekit" postfx "$here/samples/sunset.png" -o "$out/postfx/sunset-$preset.png" --preset "$preset" --threshold 0.9 --knee 0.1
+  "$flarekit" postfx "$here/samples/sunset.png" -o "$out/postfx/sunset-$preset.png" --preset "$preset" --expand-highlights
   echo "demo: $out/postfx/sunset-hdr-$preset.png"
 done
 echo "demo: done: the drive is $out/drive/demo.mp4 (frames, coverage.csv and strip.png beside it); images in $out/, PSP frames in $out/psp/, post-process flares in $out/postfx/"

@@ -11,7 +11,7 @@ crops=$(mktemp -d)
 trap 'rm -rf "$crops"' EXIT
 mkdir -p "$out"
 # name x y: the crop's top-left corner in the HDRI
-for c in "sunrise 194 113" "city 180 20" "night 40 80" "forest 400 60"; do
+for c in "sunrise 194 113" "city 180 20" "night 40 80" "forest 380 60"; do
     set -- $c
     oiiotool "$world/$1.exr" --cut "640x360+$2+$3" --origin +0+0 --fullpixels -d half \
         -o "$crops/$1.exr"
@@ -23,6 +23,12 @@ done
 for p in anamorphic killzone2 modern photo subtle; do
     "$build/flarekit" postfx "$crops/sunrise.exr" -o "$out/sunrise-postfx-$p.jpg" --preset "$p"
 done
+# The 8-bit path: sunrise as a camera JPEG would store it (clipped sRGB), flared as a photo.
+oiiotool "$crops/sunrise.exr" --colorconvert linear sRGB -d uint8 -o "$crops/sunrise-8bit.png"
+"$build/flarekit" apply "$crops/sunrise-8bit.png" -o "$out/sunrise-8bit-apply.jpg"
+"$build/flarekit" postfx "$crops/sunrise-8bit.png" -o "$out/sunrise-8bit-postfx.jpg"
+"$build/flarekit" postfx "$crops/sunrise-8bit.png" -o "$out/sunrise-8bit-expanded.jpg" \
+    --expand-highlights
 for s in city night forest; do
     "$build/flarekit" apply "$crops/$s.exr" -o "$out/$s-apply.jpg" --max-lights 4
     "$build/flarekit" postfx "$crops/$s.exr" -o "$out/$s-postfx.jpg"

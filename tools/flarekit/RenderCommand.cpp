@@ -19,8 +19,9 @@ namespace flarekit::cli {
 
 namespace {
 struct RenderArgs {
-    std::string scene, out, preset = kDefaultSpritePreset, method = "raycast", variant = "circle";
-    ToneParams tone;  //!< only the exposure: 8/16-bit outputs get the ACES fit
+    std::string scene, out, preset = kDefaultSpritePreset, method = "raycast", variant = "circle",
+                            tonemap = "aces";
+    ToneParams tone;  //!< the exposure; the curve is --tonemap (8/16-bit outputs only)
     RenderOptions render;
     bool noFlare = false, noShadows = false, verbose = false;
 };
@@ -60,7 +61,13 @@ Result<ImageOutput> renderStill(const RenderArgs& a) {
             a.method.c_str(), frame->inFrame, double(frame->sunPixel.x), double(frame->sunPixel.y),
             frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
     }
-    if (!isFloatFormat(outputSampleFormat(a.out))) tonemapAcesFitted(frame->image, a.tone.exposure);
+    // The display curve for 8/16-bit files; float outputs stay linear (exposure applied).
+    const bool display = !isFloatFormat(outputSampleFormat(a.out));
+    const ToneOperator curve = !display                ? ToneOperator::None
+                               : a.tonemap == "filmic" ? ToneOperator::Filmic
+                               : a.tonemap == "none"   ? ToneOperator::None
+                                                       : ToneOperator::Aces;
+    toneMapImage(frame->image, curve, a.tone.exposure);
     return ImageOutput{std::move(frame->image), {}};
 }
 
@@ -94,6 +101,11 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::IsMember({"square", "circle", "bilinear"}))
         ->capture_default_str();
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);
+    cmd->add_option("--tonemap", args->tonemap,
+                    "display curve of 8/16-bit outputs: aces (the demo's), filmic, none (clipped); "
+                    "EXR stays linear")
+        ->check(CLI::IsMember({"aces", "filmic", "none"}))
+        ->capture_default_str();
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
     cmd->add_flag("--no-shadows", args->noShadows, "light every surface (no sun shadow map)");
     cmd->add_flag("--no-flare", args->noFlare, "the frame only");
