@@ -37,6 +37,9 @@ struct BrightParams {
     //! Threshold, knee, ceiling and the ghost, halo and streak thresholds are multiples of the
     //! frame's white (frameWhite) instead of absolute linear values.
     bool exposureRelative = false;
+    //! Set by a caller that knows the frame's white better than its pixels do (display-referred
+    //! input after --expand-highlights: 1); 0 measures it. Not read from JSON.
+    float knownWhite = 0.f;
 };
 inline constexpr Param<BrightParams> kBrightParams[] = {
     param<&BrightParams::threshold>("threshold", 0, kPostFxBig, "linear",
@@ -50,7 +53,7 @@ inline constexpr Param<BrightParams> kBrightParams[] = {
     param<&BrightParams::exposureRelative>(
         "exposure_relative", 0, 1, "",
         "threshold, knee, ceiling and the ghost, halo and streak thresholds are multiples of "
-        "the frame's white (5.5 x its median luminance for HDR, 1 for 8/16-bit data)"),
+        "the frame's white (its metered luminance / 0.18 for HDR, 1 for 8/16-bit data)"),
 };
 
 //! Downsample (13-tap dual filter) and progressive tent upsample into the 1/4-res bloom buffer.
@@ -255,7 +258,8 @@ inline constexpr Param<PostFxParams> kPostFxTopParams[] = {
 Status validatePostFxParams(const PostFxParams& params);
 
 //! The frame's white, the luminance its exposure maps to display white: 1 for display-referred
-//! data (no pixel above 1), else the median luminance / 0.18, middle grey's share of white, so
+//! data (no pixel above 1), else its metered luminance (the mean, highlights clipped at 8 x the
+//! median, as a camera's average meter reads a scene) / 0.18, middle grey's share of white, so
 //! an HDR frame exposed anywhere gets the same flare.
 float frameWhite(const Image& image);
 

@@ -15,6 +15,11 @@ namespace {
 constexpr float kMiddleGrey = 0.18f;
 //! Median from a strided sample of at most ~64k pixels: exact enough for an exposure, cheap.
 constexpr std::size_t kMedianSamples = 65536;
+//! Metering clips highlights at this many times the median (3 stops): a bright sky counts, the
+//! sun's few pixels do not. 8 keeps the default preset's flare on every blender-data HDRI with
+//! a sun under 15% of the frame changed (a backlit forest: 11%) and still visible on a clear
+//! sunrise (4%); 16 dims the sunrise to 2%, 4 lets the forest reach 14%.
+constexpr float kMeterClip = 8.f;
 //! The white is kept in [1/1024, 1e4]: a black frame still has one, a blown-out one is capped.
 constexpr float kMinWhite = 1.f / 1024.f, kMaxWhite = 1e4f;
 }  // namespace
@@ -36,7 +41,14 @@ float frameWhite(const Image& image) {
     if (!(peak > 1.f + 1e-3f)) return 1.f;  // display-referred: the display is the exposure
     std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(sample.size() / 2),
                      sample.end());
-    return std::clamp(sample[sample.size() / 2] / kMiddleGrey, kMinWhite, kMaxWhite);
+    const float median = sample[sample.size() / 2];
+    // Average metering, as a camera's meter reads the scene: the mean luminance with highlights
+    // clipped at kMeterClip x the median, so a sun of 30,000 does not set the exposure but a
+    // sky that fills a third of the frame does (a backlit forest, a courtyard's bright arch).
+    double sum = 0;
+    for (float l : sample) sum += std::min(l, kMeterClip * median);
+    const float metered = float(sum / double(sample.size()));
+    return std::clamp(metered / kMiddleGrey, kMinWhite, kMaxWhite);
 }
 
 namespace {
@@ -75,7 +87,7 @@ PostFxParams fitToFrame(const PostFxParams& params, const Image& input) {
     if (p.starburst.intensity > 0.f && p.starburst.centre == StarCentre::Lights && !input.empty())
         placeStarCentres(p.starburst, input);
     if (!p.bright.exposureRelative) return p;
-    const float white = frameWhite(input);
+    const float white = p.bright.knownWhite > 0.f ? p.bright.knownWhite : frameWhite(input);
     p.bright.threshold *= white;
     p.bright.knee *= white;
     p.bright.ceiling *= white;

@@ -294,7 +294,7 @@ TEST(PostFxGeometry, FlareEnergyIsLinearInTheLightAboveTheThreshold) {
 
 // With exposure_relative, the chain follows the frame's exposure: the same HDR frame two stops
 // brighter gives exactly four times the flare (every threshold and the ceiling move with the
-// frame's white, median / 0.18), and the sun's flare is bounded by the ceiling.
+// frame's white, its metered luminance / 0.18), and the sun's flare is bounded by the ceiling.
 TEST(PostFxExposure, AnExposureRelativeChainScalesWithTheFrame) {
     PostFxParams p = load("photo");
     ASSERT_TRUE(p.bright.exposureRelative);

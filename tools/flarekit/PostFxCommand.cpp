@@ -117,6 +117,7 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
     if (expand) {
         expanded = loaded->image;
         expandHighlights(expanded, a.expandGain);
+        params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
     auto result = runBackend(a, expand ? expanded : loaded->image, *params, options);
     if (!result) return result.error();
@@ -183,9 +184,9 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                      args->threshold, "the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9");
     addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee,
                      "the preset's");
-    cmd->add_flag("--expand-highlights{6}", args->expandGain,
+    cmd->add_flag("--expand-highlights{4}", args->expandGain,
                   "8/16-bit input: an inverse tone curve on near-clipped pixels (clipped ones "
-                  "become GAIN x white, 6 by default; --expand-highlights=4 sets it) so the "
+                  "become GAIN x white, 4 by default; --expand-highlights=8 sets it) so the "
                   "lights of an 8-bit photo flare")
         ->check(CLI::Range(1.0, 1e4));
     cmd->add_flag("-v,--verbose", args->verbose,
