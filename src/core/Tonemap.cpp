@@ -8,16 +8,7 @@
 namespace flarekit {
 
 void tonemapAcesFitted(Image& image, float exposure) {
-    parallelFor(0, image.height(), 16, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            float* p = image.row(y);
-            for (int i = 0; i < image.width() * 4; ++i) {
-                if (i % 4 == 3) continue;  // alpha untouched
-                const float x = std::max(0.f, p[i] * exposure);
-                p[i] = acesFitted(x);
-            }
-        }
-    });
+    toneMapImage(image, ToneOperator::Aces, exposure);
 }
 
 void expandHighlights(Image& image, float gain) {
@@ -35,7 +26,7 @@ void expandHighlights(Image& image, float gain) {
 }
 
 void toneMapImage(Image& image, ToneOperator op, float exposure) {
-    if (op == ToneOperator::None && exposure == 1.f) return;
+    if (op == ToneOperator::None && exposure == 1.f) return;  // nothing to do: skip the pass
     parallelFor(0, image.height(), 16, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             float* p = image.row(y);
