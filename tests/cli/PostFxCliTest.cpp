@@ -178,4 +178,17 @@ TEST(PostFxCli, ExpandHighlightsMakesAnEightBitSunFlare) {
         runCli({"postfx", kSunsetHdr, "-o", dir.file("h.exr"), "--expand-highlights"});
     EXPECT_EQ(h.exitCode, 0);
     EXPECT_NE(h.err.find("--expand-highlights is for 8/16-bit input"), std::string::npos) << h.err;
+    // A gain is a number, fractions kept (4.5 is not 4), in [1, 10000].
+    const CliResult bad =
+        runCli({"postfx", kSunset, "-o", dir.file("b.png"), "--expand-highlights=big"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--expand-highlights: expected a gain in [1, 10000], got 'big'"),
+              std::string::npos)
+        << bad.err;
+    const std::string g4 = dir.file("g4.png"), g45 = dir.file("g45.png");
+    ASSERT_EQ(runCli({"postfx", kSunset, "-o", g4, "--expand-highlights=4"}).exitCode, 0);
+    ASSERT_EQ(runCli({"postfx", kSunset, "-o", g45, "--expand-highlights=4.5"}).exitCode, 0);
+    auto i4 = readImage8(g4), i45 = readImage8(g45);
+    ASSERT_TRUE(i4.ok() && i45.ok());
+    EXPECT_GT(shareChanged(*i4, *i45, 2), 0.001);
 }

@@ -2,6 +2,7 @@
 // streaks, chromatic aberration, starburst, dirt) on any image, CPU or OpenGL.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "Common.h"
@@ -20,7 +21,9 @@ struct PostFxArgs {
     std::string in, out, preset = kDefaultPostFxPreset, backend = "cpu", layersDir,
                          tonemap = "preset";
     std::optional<float> exposure, threshold, knee;
-    float expandGain = 0.f;  //!< --expand-highlights: 0 off
+    //! --expand-highlights[=GAIN], as given ("" off): a flag with an optional value, which
+    //! CLI11 would round to an integer if it were bound to a number.
+    std::string expandHighlights;
     int repeat = 1;
     bool verbose = false;
 };
@@ -110,13 +113,22 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
     options.times = a.verbose ? &times : nullptr;
     // --expand-highlights: the chain sees the expanded image, the output keeps the original
     // pixels (the expansion is taken back off the additive composite).
-    const bool expand = a.expandGain > 0.f && !loaded->wasFloat;
-    if (a.expandGain > 0.f && loaded->wasFloat)
+    float gain = 0.f;
+    if (!a.expandHighlights.empty()) {
+        char* end = nullptr;
+        const double g = std::strtod(a.expandHighlights.c_str(), &end);
+        if (end == a.expandHighlights.c_str() || *end != '\0' || !(g >= 1.0 && g <= 1e4))
+            return invalidInput("--expand-highlights: expected a gain in [1, 10000], got '" +
+                                a.expandHighlights + "'");
+        gain = float(g);
+    }
+    const bool expand = gain > 0.f && !loaded->wasFloat;
+    if (gain > 0.f && loaded->wasFloat)
         warn(a.in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
     Image expanded;
     if (expand) {
         expanded = loaded->image;
-        expandHighlights(expanded, a.expandGain);
+        expandHighlights(expanded, gain);
         params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
     auto result = runBackend(a, expand ? expanded : loaded->image, *params, options);
@@ -184,11 +196,10 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                      args->threshold, "the preset's, 1 for HDR; 8-bit photos clip at 1, try 0.9");
     addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee,
                      "the preset's");
-    cmd->add_flag("--expand-highlights{4}", args->expandGain,
+    cmd->add_flag("--expand-highlights{4}", args->expandHighlights,
                   "8/16-bit input: an inverse tone curve on near-clipped pixels (clipped ones "
                   "become GAIN x white, 4 by default; --expand-highlights=8 sets it) so the "
-                  "lights of an 8-bit photo flare")
-        ->check(CLI::Range(1.0, 1e4));
+                  "lights of an 8-bit photo flare");
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxArgs>(cmd, kPostFxArgParams, *args);
