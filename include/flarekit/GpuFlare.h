@@ -59,7 +59,7 @@ class GpuSpriteFlare {
     GpuSpriteFlare& operator=(GpuSpriteFlare&&) noexcept;
 
     //! Adds the flare for `view`'s sun to `target`'s colour: every element scaled by
-    //! flareScaleForBrightness(sun) x `weight` (a method's coverage, or the temporal state's
+    //! sunFlareScale(scene) x `weight` (a method's coverage, or the temporal state's
     //! FlareWeight). Returns where the sun projects
     //! and the brightness scale (flareIntensity = that scale; the weight stays on the GPU).
     //! With `conditionQuery` (GpuVisibility::conditionalRenderQuery()) the draws are made

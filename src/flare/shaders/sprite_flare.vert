@@ -5,7 +5,7 @@
 // renderFlare skips elements with no intensity.
 layout(binding = 1) uniform sampler2D flareWeight;
 uniform int weightChannel;
-uniform float brightnessScale;  // flareScaleForBrightness of the sun
+uniform float brightnessScale;  // sunFlareScale of the sun (its flux, flarekit/SunFlare.h)
 uniform vec2 centre;            // element centre, GL pixels (origin bottom-left)
 uniform vec2 halfSize;          // half the quad, pixels
 uniform vec2 frameSize;
