@@ -34,6 +34,9 @@ SampleFormat outputSampleFormat(const std::string& path,
 inline bool isFloatFormat(SampleFormat f) {
     return f == SampleFormat::Half || f == SampleFormat::Float;
 }
+//! Whether `path`'s format holds half/float samples (.exr, .hdr, .pfm, .tif/.tiff); writeImage
+//! refuses a float SampleFormat for any other, rather than letting the writer downgrade it.
+bool holdsFloatSamples(const std::string& path);
 
 //! Writes atomically: to a temporary file beside `path`, renamed over it on success.
 //! Integer formats are sRGB-encoded; float formats are written linear.

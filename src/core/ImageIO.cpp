@@ -243,6 +243,11 @@ SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested)
     return resolveFormat(path, requested);
 }
 
+bool holdsFloatSamples(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".exr" || ext == ".hdr" || ext == ".pfm" || ext == ".tif" || ext == ".tiff";
+}
+
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     if (Status s = checkOutputPath(path); !s) return s;
     auto out = createOutput(path);
@@ -251,7 +256,13 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     const bool alpha = options.alpha && writer.supports("alpha");
     const int channels = alpha ? 4 : 3;
     const SampleFormat format = resolveFormat(path, options.format);
-    const bool isFloat = format == SampleFormat::Half || format == SampleFormat::Float;
+    const bool isFloat = isFloatFormat(format);
+    if (isFloat && !holdsFloatSamples(path)) {
+        return invalidInput(path +
+                            ": half/float samples need a float format (.exr, .tif, .hdr, "
+                            ".pfm), not '" +
+                            lowerExtension(path) + "'");
+    }
 
     OIIO::TypeDesc fileType = format == SampleFormat::U8     ? OIIO::TypeDesc::UINT8
                               : format == SampleFormat::U16  ? OIIO::TypeDesc::UINT16

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -193,4 +194,20 @@ TEST(ImageIO, AVideoIsRefusedNotReadAsItsFirstFrame) {
     EXPECT_NE(img.error().message.find("is a video; flarekit reads still images"),
               std::string::npos)
         << img.error().message;
+}
+
+// Half or float samples asked of a format that only holds integers are refused, not silently
+// written as 8-bit; nothing is left behind.
+TEST(ImageIO, FloatSamplesIntoAnIntegerFormatAreRefused) {
+    TempDir dir;
+    Image img(4, 4);
+    WriteOptions half;
+    half.format = SampleFormat::Half;
+    const Status s = writeImage(dir.file("o.png"), img, half);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(s.error().message.find("half/float samples need a float format"), std::string::npos)
+        << s.error().message;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
+    EXPECT_TRUE(writeImage(dir.file("o.TIF"), img, half).ok());  // extensions in any case
 }
