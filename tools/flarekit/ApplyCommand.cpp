@@ -26,27 +26,13 @@ inline constexpr Param<ApplyArgs> kApplyArgParams[] = {
                                 "multiplies the image (flare included) before the display curve"),
 };
 
-//! --tonemap auto: HDR (float) input written to an 8/16-bit file goes through Hable's filmic
-//! curve, which rolls a sun of 30,000 and its flare off into white over several stops instead
-//! of clipping everything above 1 to a flat disc; its toe keeps the shadows of the photograph.
-//! Float outputs stay linear and unclamped, and 8-bit input is already display-referred.
-ToneOperator displayCurve(const std::string& choice, bool hdrInput, SampleFormat output) {
-    if (choice == "none") return ToneOperator::None;
-    if (choice == "aces") return ToneOperator::Aces;
-    if (choice == "filmic") return ToneOperator::Filmic;
-    return hdrInput && !isFloatFormat(output) ? ToneOperator::Filmic : ToneOperator::None;
-}
-
-//! Integer samples where the extension only holds integers would be a silent downgrade.
+//! Checked before any work: writeImage would refuse at the end (holdsFloatSamples).
 Status checkDepthFits(const std::string& out, SampleFormat requested) {
-    if (!isFloatFormat(requested)) return Ok{};
-    const SampleFormat fromExtension = outputSampleFormat(out);
-    const std::string ext = std::filesystem::path(out).extension().string();
-    if (isFloatFormat(fromExtension) || ext == ".tif" || ext == ".tiff") return Ok{};
+    if (!isFloatFormat(requested) || holdsFloatSamples(out)) return Ok{};
     return invalidInput(out +
                         ": --depth half/float needs a float format (.exr, .tif, .hdr, "
                         ".pfm), not '" +
-                        ext + "'");
+                        std::filesystem::path(out).extension().string() + "'");
 }
 
 std::optional<SampleFormat> parseDepth(const std::string& s) {
@@ -115,8 +101,9 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a) {
                         double(light.x), double(light.y), double(intensity), stats.elementsDrawn,
                         stats.pixelsShaded);
     }
+    // --tonemap auto: defaultDisplayCurve (filmic for HDR input to an 8/16-bit file).
     const ToneOperator curve =
-        displayCurve(a.tonemap, loaded->wasFloat, outputSampleFormat(a.out, depth));
+        namedToneOperator(a.tonemap).value_or(defaultDisplayCurve(loaded->wasFloat, a.out, depth));
     toneMapImage(image, curve, a.exposure);
     ImageOutput out{std::move(image), {}};
     out.options.alpha = loaded->hasAlpha;

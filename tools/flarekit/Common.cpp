@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 
 namespace flarekit::cli {
 
@@ -136,6 +137,17 @@ Status writeText(const std::string& path, const std::string& text) {
         if (std::fclose(f) != 0 || !ok) return ioError(path + ": write failed");
         return Ok{};
     });
+}
+
+std::optional<ToneOperator> namedToneOperator(const std::string& name) {
+    for (std::size_t i = 0; i < std::size(kToneOperatorNames); ++i)
+        if (kToneOperatorNames[i] == name) return ToneOperator(i);
+    return std::nullopt;
+}
+
+ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out, SampleFormat requested) {
+    return hdrInput && !isFloatFormat(outputSampleFormat(out, requested)) ? ToneOperator::Filmic
+                                                                          : ToneOperator::None;
 }
 
 }  // namespace flarekit::cli

@@ -11,6 +11,7 @@
 
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/PostFxParams.h"
 #include "flarekit/Result.h"
 
 namespace flarekit::cli {
@@ -47,6 +48,18 @@ auto readQuietly(Reader reader, const std::string& path) {
 //! The presets a subcommand uses when --preset is not given.
 inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
 inline constexpr const char* kDefaultPostFxPreset = "photo";
+
+//! The curve a `--tonemap` value names (one of kToneOperatorNames), or nothing for a command's
+//! own default word (`auto`, `preset`).
+std::optional<ToneOperator> namedToneOperator(const std::string& name);
+
+//! The default display curve of HDR data: HDR (float) input written to an 8/16-bit file goes
+//! through Hable's filmic curve, which rolls a sun of 30,000 and its flare off into white over
+//! several stops instead of clipping everything above 1 to a flat disc; its toe keeps the
+//! shadows of the photograph. Float outputs stay linear and unclamped, and 8-bit input is
+//! already display-referred: none.
+ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out,
+                                 SampleFormat requested = SampleFormat::Auto);
 
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);

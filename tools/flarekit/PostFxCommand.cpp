@@ -92,20 +92,15 @@ Status writeLayers(const std::string& dir, const PostFxResult& r) {
 Result<ImageOutput> runChain(const PostFxArgs& a) {
     auto params = loadPostFxPreset(a.preset);
     if (!params) return params.error();
-    if (a.tonemap != "preset")
-        params->tone.op = a.tonemap == "aces"     ? ToneOperator::Aces
-                          : a.tonemap == "filmic" ? ToneOperator::Filmic
-                                                  : ToneOperator::None;
+    if (const auto op = namedToneOperator(a.tonemap)) params->tone.op = *op;
     if (a.exposure) params->tone.exposure = *a.exposure;
     if (a.threshold) params->bright.threshold = *a.threshold;
     if (a.knee) params->bright.knee = *a.knee;
     auto loaded = readInputImage(a.in);
     if (!loaded) return loaded.error();
-    // HDR input written to an 8/16-bit file: a preset without a curve gets Hable's filmic one
-    // (as `apply --tonemap auto` does), so a sun rolls off into white instead of clipping.
-    if (a.tonemap == "preset" && params->tone.op == ToneOperator::None && loaded->wasFloat &&
-        !isFloatFormat(outputSampleFormat(a.out)))
-        params->tone.op = ToneOperator::Filmic;
+    // --tonemap preset, and the preset has no curve: the default display curve, as `apply`'s.
+    if (a.tonemap == "preset" && params->tone.op == ToneOperator::None)
+        params->tone.op = defaultDisplayCurve(loaded->wasFloat, a.out);
 
     std::vector<PassTime> times;
     PostFxOptions options;

@@ -63,10 +63,8 @@ Result<ImageOutput> renderStill(const RenderArgs& a) {
     }
     // The display curve for 8/16-bit files; float outputs stay linear (exposure applied).
     const bool display = !isFloatFormat(outputSampleFormat(a.out));
-    const ToneOperator curve = !display                ? ToneOperator::None
-                               : a.tonemap == "filmic" ? ToneOperator::Filmic
-                               : a.tonemap == "none"   ? ToneOperator::None
-                                                       : ToneOperator::Aces;
+    const ToneOperator curve =
+        display ? namedToneOperator(a.tonemap).value_or(ToneOperator::Aces) : ToneOperator::None;
     toneMapImage(frame->image, curve, a.tone.exposure);
     return ImageOutput{std::move(frame->image), {}};
 }
