@@ -146,7 +146,8 @@ struct LightCandidate {
 
 struct LightSearch {
     float peak = 0.f;              //!< peak linear luminance of the image
-    bool displayReferred = false;  //!< no pixel above 1: 8/16-bit data, lights are clipped
+    Point peakAt;                  //!< where it is (the first such pixel in raster order)
+    bool displayReferred = false;  //!< no channel above 1: 8/16-bit data, lights are clipped
     float frameKey = 0.f;          //!< median linear luminance (HDR lights stand 100x above)
     std::vector<LightCandidate> candidates;  //!< every region considered, brightest peak first
     std::vector<LightCandidate> lights;      //!< the accepted ones, most flux first, <= maxLights

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/LuminanceSample.h"
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
 #include "flarekit/Flare.h"
@@ -65,35 +66,39 @@ struct LuminanceMap {
     int w = 0, h = 0;
     std::vector<float> lum;
     std::vector<std::uint8_t> clipped;
+    float brightestChannel = 0.f;  //!< of the whole frame: decides display- or scene-referred
     float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
 };
 
 LuminanceMap luminanceMap(const Image& image) {
     LuminanceMap m{image.width(), image.height(), std::vector<float>(image.pixelCount()),
                    std::vector<std::uint8_t>(image.pixelCount())};
+    std::vector<float> rowBrightest(std::size_t(m.h), 0.f);
     parallelFor(0, m.h, 32, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const Rgba* row = &image.at(0, y);
+            float brightest = 0.f;
             for (int x = 0; x < m.w; ++x) {
                 const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
                 const float l = luminance(row[x].r, row[x].g, row[x].b);
                 m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
                 m.clipped[i] = m.lum[i] >= kClipLevel;
+                brightest = std::max({brightest, row[x].r, row[x].g, row[x].b});
             }
+            rowBrightest[std::size_t(y)] = brightest;
         }
     });
+    m.brightestChannel = *std::max_element(rowBrightest.begin(), rowBrightest.end());
     return m;
 }
 
 //! The frame's median luminance from a strided sample of at most ~64k pixels (exact enough for
 //! a contrast test, one cheap pass), floored at 1e-4 so a black frame still has a scale.
 float medianLuminance(const LuminanceMap& m) {
-    const std::size_t stride = std::max<std::size_t>(1, m.lum.size() / 65536);
+    const std::size_t stride = luminanceSampleStride(m.lum.size());
     std::vector<float> sample;
     for (std::size_t i = 0; i < m.lum.size(); i += stride) sample.push_back(m.lum[i]);
-    std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(sample.size() / 2),
-                     sample.end());
-    return std::max(sample[sample.size() / 2], 1e-4f);
+    return std::max(medianOf(sample), 1e-4f);
 }
 
 //! Mean luminance of the ring [inner, outer] around c (pixels inside the frame only; -1 if none).
@@ -253,8 +258,12 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
         return result;
     }
     const LuminanceMap m = luminanceMap(image);
-    result.peak = *std::max_element(m.lum.begin(), m.lum.end());
-    result.displayReferred = result.peak <= 1.f + 1e-3f;
+    const auto brightest = std::max_element(m.lum.begin(), m.lum.end());
+    result.peak = *brightest;
+    const std::size_t peakIndex = std::size_t(brightest - m.lum.begin());
+    result.peakAt = {float(peakIndex % std::size_t(m.w)) + 0.5f,
+                     float(peakIndex / std::size_t(m.w)) + 0.5f};
+    result.displayReferred = isDisplayReferred(m.brightestChannel);
     result.frameKey = medianLuminance(m);
     if (!(result.peak >= options.minLuminance)) {
         result.whyNone = format("peak luminance %.3f is below --light-threshold %.3f", result.peak,

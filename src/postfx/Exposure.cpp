@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/LuminanceSample.h"
 #include "flarekit/Color.h"
 #include "flarekit/Flare.h"
 #include "flarekit/PostFxParams.h"
@@ -13,8 +14,6 @@ namespace flarekit {
 namespace {
 //! Middle grey's share of white (the 18% grey card): a frame's median maps to it.
 constexpr float kMiddleGrey = 0.18f;
-//! Median from a strided sample of at most ~64k pixels: exact enough for an exposure, cheap.
-constexpr std::size_t kMedianSamples = 65536;
 //! Metering clips highlights at this many times the median (3 stops): a bright sky counts, the
 //! sun's few pixels do not. 8 keeps the default preset's flare on every blender-data HDRI with
 //! a sun under 15% of the frame changed (a backlit forest: 11%) and still visible on a clear
@@ -27,7 +26,7 @@ constexpr float kMinWhite = 1.f / 1024.f, kMaxWhite = 1e4f;
 float frameWhite(const Image& image) {
     if (image.empty()) return 1.f;
     const std::size_t n = image.pixelCount();
-    const std::size_t stride = std::max<std::size_t>(1, n / kMedianSamples);
+    const std::size_t stride = luminanceSampleStride(n);
     std::vector<float> sample;
     float peak = 0.f;
     for (std::size_t i = 0; i < n; ++i) {
@@ -38,10 +37,8 @@ float frameWhite(const Image& image) {
             sample.push_back(std::isfinite(l) ? l : 0.f);
         }
     }
-    if (!(peak > 1.f + 1e-3f)) return 1.f;  // display-referred: the display is the exposure
-    std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(sample.size() / 2),
-                     sample.end());
-    const float median = sample[sample.size() / 2];
+    if (isDisplayReferred(peak)) return 1.f;  // the display is the exposure
+    const float median = medianOf(sample);
     // Average metering, as a camera's meter reads the scene: the mean luminance with highlights
     // clipped at kMeterClip x the median, so a sun of 30,000 does not set the exposure but a
     // sky that fills a third of the frame does (a backlit forest, a courtyard's bright arch).
@@ -61,17 +58,7 @@ void placeStarCentres(StarburstParams& star, const Image& input) {
     const LightSearch search = findLights(input, options);
     std::vector<Point> centres;
     for (const LightCandidate& light : search.lights) centres.push_back(light.position);
-    if (centres.empty()) {
-        std::size_t best = 0;
-        float peak = -1.f;
-        for (std::size_t i = 0; i < input.pixelCount(); ++i) {
-            const float* p = input.data() + 4 * i;
-            const float l = luminance(p[0], p[1], p[2]);
-            if (l > peak) peak = l, best = i;
-        }
-        centres.push_back({float(best % std::size_t(input.width())) + 0.5f,
-                           float(best / std::size_t(input.width())) + 0.5f});
-    }
+    if (centres.empty()) centres.push_back(search.peakAt);
     star.centreCount = int(centres.size());
     for (std::size_t i = 0; i < centres.size(); ++i) {
         // Pixels (y down from the top) to the passes' uv (y up from the bottom).

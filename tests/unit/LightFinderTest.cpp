@@ -181,3 +181,17 @@ TEST(LightFinder, FlareLightsDrawsOneFlarePerLight) {
     EXPECT_NEAR(img.at(90, 60).r, img.at(250, 60).r, 1e-4f);
     EXPECT_GT(img.at(90, 60).r, 0.01f + 1e-3f);
 }
+
+// The frame is display-referred only when no channel passes white (a saturated HDR red of 3
+// has a luminance of 0.64 but is no 8-bit pixel), the same test postfx's frameWhite makes; and
+// the search reports where its peak is.
+TEST(LightFinder, DisplayReferredIsJudgedOnTheBrightestChannelAndThePeakIsPlaced) {
+    Image img = background(64, 48, 0.1f);
+    img.at(20, 10) = {3.f, 0.f, 0.f, 1.f};
+    const LightSearch hdr = findLights(img);
+    EXPECT_FALSE(hdr.displayReferred);
+    EXPECT_FLOAT_EQ(hdr.peakAt.x, 20.5f);
+    EXPECT_FLOAT_EQ(hdr.peakAt.y, 10.5f);
+    img.at(20, 10) = {1.f, 0.f, 0.f, 1.f};
+    EXPECT_TRUE(findLights(img).displayReferred);
+}
