@@ -3,6 +3,7 @@
 #include "flarekit/SunFlare.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "flarekit/Color.h"
 #include "scene/CameraMath.h"
@@ -13,7 +14,7 @@ float sunFlareScale(const Scene& scene) {
     const Vec3 radiance = scene.sun.color * scene.sun.intensity;
     // The sun's disc on screen: its angular radius over the half field of view, in frame
     // heights, so its flux in H^2 units is luminance x pi x (that radius)^2.
-    const double pi = 3.14159265358979323846;
+    constexpr double pi = std::numbers::pi;
     const double toRad = pi / 180.0;
     const double radiusOfHeight = std::tan(scene.sun.angularRadiusDeg * toRad) /
                                   (2.0 * std::tan(0.5 * scene.camera.fovYDeg * toRad));

@@ -223,8 +223,8 @@ Status SceneRenderer::draw(const Scene& scene) {
     const auto vp = toFloat(viewProjection), inv = toFloat(inverse(viewProjection));
     const Vec3 sunRadiance = scene.sun.color * scene.sun.intensity;
     // What lights a surface facing the sun: radiance x the disc's solid angle, pi sin^2(r).
-    const double sinRadius = std::sin(scene.sun.angularRadiusDeg * 3.14159265358979323846 / 180.0);
-    const Vec3 sunIrradiance = sunRadiance * (3.14159265358979323846 * sinRadius * sinRadius);
+    const double sinRadius = std::sin(scene.sun.angularRadiusDeg * std::numbers::pi / 180.0);
+    const Vec3 sunIrradiance = sunRadiance * (std::numbers::pi * sinRadius * sinRadius);
 
     glBindFramebuffer(GL_FRAMEBUFFER, m->samples > 1 ? m->msTarget.get() : m->target.get());
     glViewport(0, 0, w, h);
