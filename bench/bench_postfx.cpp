@@ -6,6 +6,7 @@
 // The input is the HDR sky test image (sun 50) at the benchmark's size.
 #include <benchmark/benchmark.h>
 
+#include <iterator>
 #include <map>
 
 #include "PostFxImages.h"
@@ -16,7 +17,7 @@ using namespace flarekit;
 
 namespace {
 
-const char* kPresets[] = {"killzone2", "modern", "anamorphic", "subtle"};
+const char* kPresets[] = {"killzone2", "modern", "anamorphic", "subtle", "photo"};
 
 const Image& input(int w, int h) {
     static std::map<std::pair<int, int>, Image> cache;
@@ -86,7 +87,7 @@ void BM_PostFxGl(benchmark::State& state) {
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
-    for (int preset = 0; preset < 4; ++preset) {
+    for (int preset = 0; preset < int(std::size(kPresets)); ++preset) {
         for (auto [w, h] : {std::pair{1920, 1080}, std::pair{3840, 2160}}) {
             for (int timed : {0, 1}) b->Args({preset, w, h, timed});
         }
