@@ -1,5 +1,6 @@
-// The Scene JSON contract of docs/architecture.md: a gluLookAt camera, a sun at infinity with an
-// angular radius, and opaque spheres, boxes and triangles.
+// The Scene JSON contract of docs/architecture.md: a gluLookAt camera, lights (a sun at infinity
+// with an angular radius, directional lights like it and sphere-shaped point lights) and
+// spheres, boxes and triangles, opaque or partly transmitting (glass, foliage, fog cards).
 #pragma once
 
 #include <optional>
@@ -53,40 +54,54 @@ inline constexpr Param<SceneSun> kSceneSunParams[] = {
                                 "its solid angle and sets the flare by its flux"),
 };
 
+//! Opacity of an object: a ray through it keeps 1 - opacity of its light (once per object,
+//! however many of its surfaces it crosses; each triangle of a "triangles" object counts apart).
+inline constexpr double kOpaque = 1.0;
+
 struct Sphere {
     Vec3 center;
     double radius = 1;
     Vec3 color{0.5, 0.5, 0.5};
+    double opacity = kOpaque;
 };
 inline constexpr Param<Sphere> kSphereParams[] = {
     required(param<&Sphere::center>("center", kSceneAnyCoordinate, kParamUnbounded, "m", "centre")),
     required(aboveMin(param<&Sphere::radius>("radius", 0, kParamUnbounded, "m", "radius"))),
     param<&Sphere::color>("color", 0, kParamUnbounded, "linear RGB", "albedo"),
+    param<&Sphere::opacity>("opacity", 0, 1, "",
+                            "share of light a ray through it loses (1 opaque, 0 invisible)"),
 };
 
 struct Box {
     Vec3 min, max;
     Vec3 color{0.5, 0.5, 0.5};
+    double opacity = kOpaque;
 };
 inline constexpr Param<Box> kBoxParams[] = {
     required(param<&Box::min>("min", kSceneAnyCoordinate, kParamUnbounded, "m", "lowest corner")),
     required(param<&Box::max>("max", kSceneAnyCoordinate, kParamUnbounded, "m",
                               "highest corner (each component > min's)")),
     param<&Box::color>("color", 0, kParamUnbounded, "linear RGB", "albedo"),
+    param<&Box::opacity>("opacity", 0, 1, "",
+                         "share of light a ray through it loses (1 opaque, 0 invisible)"),
 };
 
 struct Triangle {
     Vec3 a, b, c;  //!< double-sided
     Vec3 color{0.5, 0.5, 0.5};
+    double opacity = kOpaque;
 };
 
-//! Triangles' shared colour ("vertices" is read apart: an array of 3N points).
+//! Triangles' shared colour and opacity ("vertices" is read apart: an array of 3N points).
 struct TrianglesColor {
     Vec3 color{0.5, 0.5, 0.5};
+    double opacity = kOpaque;
 };
 inline constexpr Param<TrianglesColor> kTrianglesParams[] = {
     param<&TrianglesColor::color>("color", 0, kParamUnbounded, "linear RGB",
                                   "albedo of every triangle"),
+    param<&TrianglesColor::opacity>("opacity", 0, 1, "",
+                                    "share of light a ray through a triangle loses"),
 };
 
 //! An optional ground plane y = height, as far as the camera sees (a square of half side
@@ -101,15 +116,60 @@ inline constexpr Param<Ground> kGroundParams[] = {
     param<&Ground::color>("color", 0, kParamUnbounded, "linear RGB", "albedo"),
 };
 
+enum class LightType { Directional = 0, Point = 1 };
+
+//! One light of the "lights" array. Directional: at infinity toward `direction`, a disc of
+//! `angularRadiusDeg` (the sun's model). Point: a sphere of `radius` at `position`.
+struct SceneLight {
+    LightType type = LightType::Directional;
+    Vec3 direction{0.2, 0.3, -1};  //!< directional: from the camera toward it; normalised on load
+    double angularRadiusDeg = 0.27;
+    Vec3 position{0, 0, 0};  //!< point: centre
+    double radius = 0.1;     //!< point: sphere radius
+    Vec3 color{1, 1, 1};
+    double intensity = 50;  //!< radiance of the disc or sphere, like the sun's
+    std::string preset = "tanczos-classic";  //!< the sprite flare it draws ("" draws none)
+};
+inline constexpr Param<SceneLight> kDirectionalLightParams[] = {
+    required(param<&SceneLight::direction>("direction", kSceneAnyCoordinate, kParamUnbounded, "",
+                                           "from the camera toward the light (non-zero)")),
+    aboveMin(param<&SceneLight::angularRadiusDeg>("angular_radius_deg", 0, 45, "degrees",
+                                                  "disc radius")),
+    param<&SceneLight::color>("color", 0, kParamUnbounded, "linear RGB", "light colour"),
+    param<&SceneLight::intensity>("intensity", 0, kParamUnbounded, "linear",
+                                  "radiance of the disc (colour x intensity)"),
+};
+inline constexpr Param<SceneLight> kPointLightParams[] = {
+    required(param<&SceneLight::position>("position", kSceneAnyCoordinate, kParamUnbounded, "m",
+                                          "centre of the sphere light")),
+    aboveMin(param<&SceneLight::radius>("radius", 0, kParamUnbounded, "m", "sphere radius")),
+    param<&SceneLight::color>("color", 0, kParamUnbounded, "linear RGB", "light colour"),
+    param<&SceneLight::intensity>("intensity", 0, kParamUnbounded, "linear",
+                                  "radiance of the sphere (colour x intensity)"),
+};
+
+SceneLight lightFromSun(const SceneSun& sun);
+
 struct Scene {
     int width = 640, height = 360;
     SceneCamera camera;
+    //! The first directional light, for the one-sun paths (renderer sky, GPU methods, flare).
+    //! With no directional light among `lights` its intensity is 0.
     SceneSun sun;
+    //! Every light in scene order. Empty means the sun is the only light (scenes built in
+    //! code, Scene JSON without "lights"); see sceneLights().
+    std::vector<SceneLight> lights;
     std::vector<Sphere> spheres;
     std::vector<Box> boxes;
     std::vector<Triangle> triangles;
     std::optional<Ground> ground;
 };
+
+//! The scene's lights in order: `lights`, or the sun alone when that is empty.
+std::vector<SceneLight> sceneLights(const Scene& scene);
+//! Largest number of lights in a scene: 65,536 keeps the ground truth of all of them within
+//! minutes and is past any engine's on-screen flare count.
+inline constexpr std::size_t kMaxSceneLights = 65536;
 
 //! The ground as the two triangles every renderer and the ray caster draw (none without one).
 std::vector<Triangle> groundTriangles(const Scene& scene);

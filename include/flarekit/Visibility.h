@@ -14,10 +14,20 @@
 
 namespace flarekit {
 
+//! One light's share: for a point light the cone is the one its sphere subtends from the
+//! camera (half-angle asin(radius / distance)); a ray keeps the transmittance of the objects
+//! it crosses before reaching the light, and coverage is the mean over the cone.
+struct LightVisibility {
+    double coverage = 0;  //!< 0..1
+    double inFrame = 0;   //!< fraction of the cone inside the camera's frame, 0..1
+};
+
 struct VisibilityResult {
     std::string method;
-    double coverage = 0;      //!< visible fraction of the disc, 0..1
-    double inFrame = 0;       //!< fraction of the disc inside the camera's frame, 0..1
+    double coverage = 0;      //!< visible fraction of the first light's disc, 0..1
+    double inFrame = 0;       //!< fraction of that disc inside the camera's frame, 0..1
+    //! Every light of the scene in scene order (sceneLights()); [0] is coverage and inFrame.
+    std::vector<LightVisibility> lights;
     std::size_t samples = 0;  //!< rays cast
     double milliseconds = 0;  //!< wall time of the estimate
 };
@@ -46,6 +56,8 @@ Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOpti
 //! The fraction of the sun's disc (uniform over its cone) inside the camera's frame, from
 //! samplesPerSide^2 stratified directions; no occlusion.
 double sunInFrameFraction(const Scene& scene, int samplesPerSide = 64);
+//! The same for any light of the scene (a point light's cone as in LightVisibility).
+double lightInFrameFraction(const Scene& scene, const SceneLight& light, int samplesPerSide = 64);
 
 //! Ray casting for many frames over the same objects (an animation): the BVH is built once
 //! from a copy of the scene's objects; each measure() takes the camera, sun and image size of

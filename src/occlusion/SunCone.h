@@ -12,9 +12,10 @@ namespace flarekit::occlusion {
 
 struct SunCone {
     explicit SunCone(const SceneSun& sun)
-        : axis(normalize(sun.direction)),
-          radius(sun.angularRadiusDeg * std::numbers::pi / 180.0),
-          oneMinusCos(1.0 - std::cos(radius)) {
+        : SunCone(sun.direction, sun.angularRadiusDeg * std::numbers::pi / 180.0) {}
+    //! The cone around `direction` (any length) of half-angle `radiusRadians`.
+    SunCone(Vec3 direction, double radiusRadians)
+        : axis(normalize(direction)), radius(radiusRadians), oneMinusCos(1.0 - std::cos(radius)) {
         const Vec3 helper = std::abs(axis.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
         t1 = normalize(cross(axis, helper));
         t2 = cross(axis, t1);

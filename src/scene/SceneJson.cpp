@@ -34,6 +34,7 @@ std::optional<Error> readTriangles(const json& o, const JsonPlace& at, Scene& s)
     for (std::size_t k = 0; k < v->size(); k += 3) {
         Triangle tri;
         tri.color = c.color;
+        tri.opacity = c.opacity;
         for (std::size_t j = 0; j < 3; ++j) {
             auto p = readParamValue(point, (*v)[k + j], (at / "vertices").index(k + j));
             if (!p) return p.error();
@@ -69,21 +70,82 @@ std::optional<Error> readObject(const json& o, const JsonPlace& at, Scene& s) {
     return std::nullopt;
 }
 
+std::optional<Error> readLight(const json& o, const JsonPlace& at, Scene& s) {
+    if (!o.is_object()) return at.fail("expected an object, got " + jsonExcerpt(o));
+    const auto type = o.find("type");
+    const std::string t = type != o.end() && type->is_string() ? type->get<std::string>() : "";
+    SceneLight light;
+    if (t == "directional") {
+        FK_TRY(readParams<SceneLight>(o, kDirectionalLightParams, light, at, {"type", "preset"}));
+        if (length(light.direction) < 1e-12)
+            return (at / "direction").fail("expected a non-zero direction");
+        light.direction = normalize(light.direction);
+    } else if (t == "point") {
+        light.type = LightType::Point;
+        FK_TRY(readParams<SceneLight>(o, kPointLightParams, light, at, {"type", "preset"}));
+    } else {
+        return (at / "type")
+            .fail(R"(expected "directional" or "point", got )" +
+                  (type == o.end() ? std::string("nothing") : jsonExcerpt(*type)));
+    }
+    if (const auto preset = o.find("preset"); preset != o.end()) {
+        if (!preset->is_string())
+            return (at / "preset").fail("expected a preset name or path, got " +
+                                        jsonExcerpt(*preset));
+        light.preset = preset->get<std::string>();
+    }
+    s.lights.push_back(light);
+    return std::nullopt;
+}
+
+//! "sun" and "lights" into Scene::lights (the sun first) and Scene::sun (the first directional
+//! light, or a dark sun when there is none).
+std::optional<Error> readLights(const json& doc, const JsonPlace& top, Scene& s) {
+    const auto lights = doc.find("lights");
+    if (doc.contains("sun")) {
+        FK_TRY(readParams<SceneSun>(doc["sun"], kSceneSunParams, s.sun, top / "sun"));
+        if (lights == doc.end()) return std::nullopt;
+        if (length(s.sun.direction) < 1e-12)
+            return (top / "sun" / "direction").fail("expected a non-zero direction");
+        s.sun.direction = normalize(s.sun.direction);
+        s.lights.push_back(lightFromSun(s.sun));
+    } else if (lights == doc.end()) {
+        return (top / "sun").fail("missing; expected an object (or a \"lights\" array)");
+    }
+    if (!lights->is_array() || lights->empty())
+        return (top / "lights").fail("expected a non-empty array, got " + jsonExcerpt(*lights));
+    if (lights->size() + s.lights.size() > kMaxSceneLights) {
+        return (top / "lights")
+            .fail("expected at most " + std::to_string(kMaxSceneLights) + " lights");
+    }
+    for (std::size_t i = 0; i < lights->size(); ++i)
+        FK_TRY(readLight((*lights)[i], JsonPlace(top.source(), "lights").index(i), s));
+    if (!doc.contains("sun")) {
+        s.sun.intensity = 0;  // no directional light: a sun nobody sees
+        for (const SceneLight& l : s.lights) {
+            if (l.type != LightType::Directional) continue;
+            s.sun = {l.direction, l.angularRadiusDeg, l.color, l.intensity};
+            break;
+        }
+    }
+    return std::nullopt;
+}
+
 Result<Scene> readScene(const json& doc, const JsonPlace& top) {
     Scene s;
     if (!doc.is_object()) return top.fail("expected an object, got " + jsonExcerpt(doc));
     for (const auto& [key, value] : doc.items()) {
-        if (key != "image" && key != "camera" && key != "sun" && key != "objects" &&
-            key != "ground")
+        if (key != "image" && key != "camera" && key != "sun" && key != "lights" &&
+            key != "objects" && key != "ground")
             return (top / key).fail(
-                "unknown key (expected one of: image, camera, sun, ground, objects)");
+                "unknown key (expected one of: image, camera, sun, lights, ground, objects)");
     }
-    for (const char* section : {"image", "camera", "sun"}) {
+    for (const char* section : {"image", "camera"}) {
         if (!doc.contains(section)) return (top / section).fail("missing; expected an object");
     }
     FK_TRY(readParams<Scene>(doc["image"], kSceneImageParams, s, top / "image"));
     FK_TRY(readParams<SceneCamera>(doc["camera"], kSceneCameraParams, s.camera, top / "camera"));
-    FK_TRY(readParams<SceneSun>(doc["sun"], kSceneSunParams, s.sun, top / "sun"));
+    FK_TRY(readLights(doc, top, s));
     if (const auto ground = doc.find("ground"); ground != doc.end()) {
         Ground g;
         FK_TRY(readParams<Ground>(*ground, kGroundParams, g, top / "ground"));
@@ -111,6 +173,23 @@ Status checkAcrossFields(const Scene& s) {
     }
     if (length(s.sun.direction) < 1e-12)
         return invalidInput("sun.direction: expected a non-zero direction");
+    if (s.lights.size() > kMaxSceneLights) {
+        return invalidInput("lights: expected at most " + std::to_string(kMaxSceneLights) +
+                            " lights");
+    }
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        const SceneLight& l = s.lights[i];
+        const std::string at = "lights[" + std::to_string(i) + "].";
+        const bool point = l.type == LightType::Point;
+        if (!point && l.type != LightType::Directional)
+            return invalidInput(at + "type: expected directional or point");
+        if (Status st = point ? validateParams<SceneLight>(l, kPointLightParams, at)
+                              : validateParams<SceneLight>(l, kDirectionalLightParams, at);
+            !st)
+            return st;
+        if (!point && length(l.direction) < 1e-12)
+            return invalidInput(at + "direction: expected a non-zero direction");
+    }
     return Ok{};
 }
 
@@ -140,10 +219,31 @@ Status validateScene(const Scene& s) {
         return invalidInput("triangles: expected at most " + std::to_string(kMaxTriangles) +
                             " triangles in a scene");
     }
+    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+        if (!(s.triangles[i].opacity >= 0 && s.triangles[i].opacity <= 1)) {
+            return invalidInput("triangles[" + std::to_string(i) +
+                                "].opacity: expected a number in [0, 1]");
+        }
+    }
     if (s.ground) {
         if (Status st = validateParams<Ground>(*s.ground, kGroundParams, "ground."); !st) return st;
     }
     return Ok{};
+}
+
+SceneLight lightFromSun(const SceneSun& sun) {
+    SceneLight l;
+    l.type = LightType::Directional;
+    l.direction = sun.direction;
+    l.angularRadiusDeg = sun.angularRadiusDeg;
+    l.color = sun.color;
+    l.intensity = sun.intensity;
+    return l;
+}
+
+std::vector<SceneLight> sceneLights(const Scene& scene) {
+    if (!scene.lights.empty()) return scene.lights;
+    return {lightFromSun(scene.sun)};
 }
 
 std::vector<Triangle> groundTriangles(const Scene& scene) {

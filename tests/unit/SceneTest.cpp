@@ -45,7 +45,7 @@ TEST(Scene, ErrorsNameTheField) {
               "[[0,0,0],[1,0,0]]");
     EXPECT_EQ(errorOf(R"([{"type":"sphere","center":[0,0,0],"radius":1,"colour":[1,0,0]}])"),
               "scene.json: objects[0].colour: unknown key (expected one of: type, center, radius, "
-              "color)");
+              "color, opacity)");
     EXPECT_EQ(errorOf("[]"), "(ok)");
 }
 

@@ -23,6 +23,8 @@ class JsonLine {
     JsonLine& integer(const char* key, long long value) { return raw(key, std::to_string(value)); }
     JsonLine& boolean(const char* key, bool value) { return raw(key, value ? "true" : "false"); }
     JsonLine& null(const char* key) { return raw(key, "null"); }
+    //! A value already in JSON (a nested object or an array of them).
+    JsonLine& json(const char* key, const std::string& value) { return raw(key, value); }
     std::string str() const { return "{" + m_body + "}"; }
 
   private:

@@ -27,6 +27,13 @@ struct VisibilityArgs {
 //! Draws the frame and runs the method until its result arrives; `latency` says how many
 //! extra frames a late method (pbo, query) took.
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
+    if (const auto lights = sceneLights(scene);
+        lights.size() > 1 || lights.front().type != LightType::Directional) {
+        return invalidInput(a.scene + ": lights: --method " + a.method +
+                            " measures one directional light (the sun); this scene has " +
+                            std::to_string(lights.size()) +
+                            " lights or a point light (use raycast or compute)");
+    }
     auto gl = gl::HeadlessGl::create();
     if (!gl) return gl.error();
     RenderOptions render = a.render;
@@ -44,6 +51,7 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     r.method = a.method;
     r.coverage = *coverage;
     r.inFrame = sunInFrameFraction(scene);
+    r.lights = {{r.coverage, r.inFrame}};
     r.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;
@@ -74,6 +82,14 @@ int runVisibility(const VisibilityArgs& a) {
         j.integer("samples", (long long)r->samples)
             .integer("latency_frames", latency)
             .number("cpu_ms", r->milliseconds, 3);
+        std::string lights = "[";
+        for (std::size_t i = 0; i < r->lights.size(); ++i) {
+            JsonLine light;
+            light.number("coverage", r->lights[i].coverage, 6)
+                .number("in_frame", r->lights[i].inFrame, 6);
+            lights += (i ? ", " : "") + light.str();
+        }
+        j.json("lights", lights + "]");
         std::printf("%s\n", j.str().c_str());
     } else {
         std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame",
@@ -81,6 +97,11 @@ int runVisibility(const VisibilityArgs& a) {
         if (r->samples) std::printf(", %zu rays", r->samples);
         if (latency) std::printf(", result %d frame%s late", latency, latency > 1 ? "s" : "");
         std::printf(", %.1f ms\n", r->milliseconds);
+        if (r->lights.size() > 1) {
+            for (std::size_t i = 0; i < r->lights.size(); ++i)
+                std::printf("  light %zu: coverage %.4f, %.1f%% in frame\n", i,
+                            r->lights[i].coverage, 100 * r->lights[i].inFrame);
+        }
     }
     return kExitOk;
 }

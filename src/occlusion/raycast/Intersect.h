@@ -14,13 +14,17 @@ namespace flarekit::intersect {
 //! occluded by it through rounding.
 inline constexpr double kMinT = 1e-9;
 
-inline bool sphere(Vec3 o, Vec3 d, const Sphere& s) {
+//! Whether the segment (kMinT, tMax) of the ray meets the solid ball.
+inline bool sphere(Vec3 o, Vec3 d, const Sphere& s,
+                   double tMax = std::numeric_limits<double>::infinity()) {
     const Vec3 oc = o - s.center;
     const double a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - s.radius * s.radius;
     const double disc = b * b - a * c;
     if (disc < 0) return false;
     const double root = std::sqrt(disc);
-    return (-b + root) / a > kMinT;  // the far hit is ahead: the near one or the camera is inside
+    // The far hit is ahead (the near one is, or the camera is inside) and the near one comes
+    // before tMax.
+    return (-b + root) / a > kMinT && (-b - root) / a < tMax;
 }
 
 //! Slab test against [lo, hi]; invDir = 1/dir per component (infinities allowed).
@@ -41,8 +45,9 @@ inline bool slabs(Vec3 o, Vec3 invDir, Vec3 lo, Vec3 hi,
     return true;
 }
 
-//! Möller-Trumbore, double-sided.
-inline bool triangle(Vec3 o, Vec3 d, const Triangle& tri) {
+//! Möller-Trumbore, double-sided; hits in (kMinT, tMax).
+inline bool triangle(Vec3 o, Vec3 d, const Triangle& tri,
+                     double tMax = std::numeric_limits<double>::infinity()) {
     const Vec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a;
     const Vec3 p = cross(d, e2);
     const double det = dot(e1, p);
@@ -54,7 +59,8 @@ inline bool triangle(Vec3 o, Vec3 d, const Triangle& tri) {
     const Vec3 q = cross(s, e1);
     const double v = dot(d, q) * inv;
     if (v < 0 || u + v > 1) return false;
-    return dot(e2, q) * inv > kMinT;
+    const double t = dot(e2, q) * inv;
+    return t > kMinT && t < tMax;
 }
 
 }  // namespace flarekit::intersect

@@ -4,7 +4,8 @@
 // and compact), and the disc to the cone by 1 - cos(theta) = rho^2 (1 - cos(alpha)), which is
 // equal-area on the sphere too. Rows of strata are cast in parallel.
 #include <algorithm>
-#include <atomic>
+#include <limits>
+#include <vector>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -42,11 +43,36 @@ bool inFrame(const Frame& f, Vec3 d) {
            std::abs(dot(d, f.basis.up)) <= f.tanHalfY * z;
 }
 
-}  // namespace
+//! A light as seen from the camera: its cone of directions and how far each ray goes before
+//! it reaches the light (infinity for a directional light, the near side of a point light's
+//! sphere). A camera inside a sphere light sees it in every direction at no distance.
+struct LightCone {
+    LightCone(const Scene& scene, const SceneLight& light)
+        : cone(light.direction, light.angularRadiusDeg * kPi / 180.0) {
+        if (light.type != LightType::Point) return;
+        point = true;
+        centre = light.position;
+        radius = light.radius;
+        const Vec3 toLight = centre - scene.camera.position;
+        const double distance = length(toLight);
+        inside = distance <= radius;
+        cone = occlusion::SunCone(inside ? scene.camera.lookAt - scene.camera.position : toLight,
+                                  inside ? kPi : std::asin(radius / distance));
+    }
+    double reach(Vec3 origin, Vec3 d) const {  // d is unit length
+        if (!point) return std::numeric_limits<double>::infinity();
+        if (inside) return 0;
+        const Vec3 oc = centre - origin;
+        const double b = dot(oc, d), c = dot(oc, oc) - radius * radius;
+        return b - std::sqrt(std::max(0.0, b * b - c));  // rim rays graze: the root is 0
+    }
+    occlusion::SunCone cone;
+    bool point = false, inside = false;
+    Vec3 centre;
+    double radius = 0;
+};
 
-double sunInFrameFraction(const Scene& scene, int samplesPerSide) {
-    const Frame frame = cameraFrame(scene);
-    const occlusion::SunCone cone(scene.sun);
+double inFrameFraction(const Frame& frame, const occlusion::SunCone& cone, int samplesPerSide) {
     const int n = std::max(1, samplesPerSide);
     std::size_t framed = 0;
     for (int row = 0; row < n; ++row) {
@@ -58,6 +84,16 @@ double sunInFrameFraction(const Scene& scene, int samplesPerSide) {
         }
     }
     return double(framed) / double(std::size_t(n) * std::size_t(n));
+}
+
+}  // namespace
+
+double sunInFrameFraction(const Scene& scene, int samplesPerSide) {
+    return inFrameFraction(cameraFrame(scene), occlusion::SunCone(scene.sun), samplesPerSide);
+}
+
+double lightInFrameFraction(const Scene& scene, const SceneLight& light, int samplesPerSide) {
+    return inFrameFraction(cameraFrame(scene), LightCone(scene, light).cone, samplesPerSide);
 }
 
 struct RaycastCaster::Impl {
@@ -95,31 +131,45 @@ Result<VisibilityResult> RaycastCaster::measure(const Scene& scene,
     const auto start = std::chrono::steady_clock::now();
     const SceneBvh& bvh = m->bvh;
     const Frame frame = cameraFrame(scene);
-    const occlusion::SunCone cone(scene.sun);
     const int n = options.samplesPerSide;
+    const Vec3 eye = scene.camera.position;
 
-    std::atomic<std::size_t> visible{0}, framed{0};
-    parallelFor(0, n, 4, [&](int row0, int row1) {
-        std::size_t vis = 0, fr = 0;
-        for (int row = row0; row < row1; ++row) {
-            SplitMix64 rng(options.seed * 0x9E3779B97F4A7C15ull +
-                           std::uint64_t(row));  // per row: thread-count independent
-            for (int col = 0; col < n; ++col) {
-                const double a = 2.0 * (double(col) + rng.nextFloat()) / n - 1.0,
-                             b = 2.0 * (double(row) + rng.nextFloat()) / n - 1.0;
-                const Vec3 d = cone.fromSquare(a, b);
-                vis += bvh.occluded(scene.camera.position, d) ? 0 : 1;
-                fr += inFrame(frame, d) ? 1 : 0;
-            }
-        }
-        visible += vis;
-        framed += fr;
-    });
     VisibilityResult r;
     r.method = "raycast";
-    r.samples = std::size_t(n) * std::size_t(n);
-    r.coverage = double(visible) / double(r.samples);
-    r.inFrame = double(framed) / double(r.samples);
+    const std::size_t rays = std::size_t(n) * std::size_t(n);
+    for (const SceneLight& light : sceneLights(scene)) {
+        const LightCone lightCone(scene, light);
+        // Per-row sums added in row order: the estimate does not depend on the thread count.
+        std::vector<double> rowVisible(std::size_t(n), 0.0);
+        std::vector<std::size_t> rowFramed(std::size_t(n), 0);
+        parallelFor(0, n, 4, [&](int row0, int row1) {
+            for (int row = row0; row < row1; ++row) {
+                double vis = 0;
+                std::size_t fr = 0;
+                SplitMix64 rng(options.seed * 0x9E3779B97F4A7C15ull +
+                               std::uint64_t(row));  // per row: thread-count independent
+                for (int col = 0; col < n; ++col) {
+                    const double a = 2.0 * (double(col) + rng.nextFloat()) / n - 1.0,
+                                 b = 2.0 * (double(row) + rng.nextFloat()) / n - 1.0;
+                    const Vec3 d = lightCone.cone.fromSquare(a, b);
+                    vis += bvh.transmittance(eye, d, lightCone.reach(eye, d));
+                    fr += inFrame(frame, d) ? 1 : 0;
+                }
+                rowVisible[std::size_t(row)] = vis;
+                rowFramed[std::size_t(row)] = fr;
+            }
+        });
+        double visible = 0;
+        std::size_t framed = 0;
+        for (int row = 0; row < n; ++row) {
+            visible += rowVisible[std::size_t(row)];
+            framed += rowFramed[std::size_t(row)];
+        }
+        r.lights.push_back({visible / double(rays), double(framed) / double(rays)});
+        r.samples += rays;
+    }
+    r.coverage = r.lights.front().coverage;
+    r.inFrame = r.lights.front().inFrame;
     r.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;

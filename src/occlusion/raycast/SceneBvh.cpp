@@ -64,38 +64,53 @@ std::uint32_t SceneBvh::build(std::uint32_t first, std::uint32_t count) {
     return at;
 }
 
-bool SceneBvh::hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir) const {
+bool SceneBvh::hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir, double tMax) const {
     switch (p.kind) {
         case Kind::Sphere:
-            return intersect::sphere(o, d, m_scene.spheres[p.index]);
+            return intersect::sphere(o, d, m_scene.spheres[p.index], tMax);
         case Kind::Box:
             return intersect::slabs(o, invDir, m_scene.boxes[p.index].min,
-                                    m_scene.boxes[p.index].max);
+                                    m_scene.boxes[p.index].max, tMax);
         case Kind::Triangle:
-            return intersect::triangle(o, d, m_triangles[p.index]);
+            return intersect::triangle(o, d, m_triangles[p.index], tMax);
     }
     return false;
 }
 
-bool SceneBvh::occluded(Vec3 o, Vec3 d) const {
-    if (m_nodes.empty()) return false;
+double SceneBvh::opacityOf(const Prim& p) const {
+    switch (p.kind) {
+        case Kind::Sphere:
+            return m_scene.spheres[p.index].opacity;
+        case Kind::Box:
+            return m_scene.boxes[p.index].opacity;
+        case Kind::Triangle:
+            return m_triangles[p.index].opacity;
+    }
+    return 1.0;
+}
+
+double SceneBvh::transmittance(Vec3 o, Vec3 d, double tMax) const {
+    if (m_nodes.empty()) return 1.0;
     const Vec3 invDir{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
     std::uint32_t stack[64];
     int top = 0;
     stack[top++] = 0;
+    double kept = 1.0;
     while (top > 0) {
         const Node& n = m_nodes[stack[--top]];
-        if (!intersect::slabs(o, invDir, n.lo, n.hi)) continue;
+        if (!intersect::slabs(o, invDir, n.lo, n.hi, tMax)) continue;
         if (n.count > 0) {
             for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
-                if (hitPrim(m_prims[i], o, d, invDir)) return true;
+                if (!hitPrim(m_prims[i], o, d, invDir, tMax)) continue;
+                kept *= 1.0 - opacityOf(m_prims[i]);
+                if (kept <= 0.0) return 0.0;  // an opaque object: nothing gets through
             }
         } else {
             stack[top++] = n.right;
             stack[top++] = std::uint32_t(&n - m_nodes.data()) + 1;
         }
     }
-    return false;
+    return kept;
 }
 
 }  // namespace flarekit

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "flarekit/Scene.h"
@@ -14,7 +15,11 @@ class SceneBvh {
   public:
     explicit SceneBvh(const Scene& scene);
     //! True when the ray origin + t*dir (t > 0) hits any object.
-    bool occluded(Vec3 origin, Vec3 dir) const;
+    bool occluded(Vec3 origin, Vec3 dir) const { return transmittance(origin, dir) < 1.0; }
+    //! The share of light the ray keeps between origin and origin + tMax*dir: the product of
+    //! 1 - opacity over the objects it meets there (0 at the first opaque one).
+    double transmittance(Vec3 origin, Vec3 dir,
+                         double tMax = std::numeric_limits<double>::infinity()) const;
     std::size_t primitiveCount() const { return m_prims.size(); }
 
   private:
@@ -30,7 +35,8 @@ class SceneBvh {
         std::uint32_t right;         //!< inner: right child (left child is this + 1)
     };
     std::uint32_t build(std::uint32_t first, std::uint32_t count);
-    bool hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir) const;
+    bool hitPrim(const Prim& p, Vec3 o, Vec3 d, Vec3 invDir, double tMax) const;
+    double opacityOf(const Prim& p) const;
 
     const Scene& m_scene;
     std::vector<Triangle> m_triangles;  //!< the scene's triangles, then its ground's
