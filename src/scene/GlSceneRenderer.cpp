@@ -1,5 +1,6 @@
-// The GL scene pass: sky and sun first (full-screen, no depth), then every object in one
-// draw with depth testing. Programs, targets and the mesh live as long as the SceneRenderer,
+// The GL scene pass: sky and sun first (full-screen, no depth), then every opaque object in
+// one draw with depth testing, then the translucent ones (opacity < 1) blended over without
+// writing depth, and multiplied into a transmittance target for the occlusion passes. Programs, targets and the mesh live as long as the SceneRenderer,
 // so a frame of an animation costs only its draw. Read back bottom-up and flipped to
 // flarekit's top-row-first order.
 #include <epoxy/gl.h>
@@ -55,6 +56,20 @@ struct SceneRenderer::Impl {
     gl::VertexArray vao;
     gl::Buffer vertices;
     GLsizei vertexCount = 0;
+    struct TranslucentRange {
+        GLint first;
+        GLsizei count;
+        float opacity;
+        bool closed;  //!< sphere or box: front faces only
+    };
+    gl::VertexArray translucentVao;
+    gl::Buffer translucentVertices;
+    std::vector<TranslucentRange> translucent;
+    gl::Texture transmittance;
+    gl::Framebuffer transmittanceTarget;
+    gl::Program transmittancePass;
+
+    void drawTranslucent(GLuint program) const;
 
     std::array<float, 16> drawShadowMap(const Scene& scene);
 };
@@ -76,7 +91,9 @@ int SceneRenderer::msaaSamples() const {
 
 SceneTargets sceneTargets(const SceneRenderer& r) {
     const SceneRenderer::Impl& m = *r.m;
-    return {m.color.get(), m.depth.get(), m.target.get(), m.msDepth.get(), m.vao.get(), m.samples};
+    return {m.color.get(),   m.depth.get(), m.target.get(),
+            m.msDepth.get(), m.vao.get(),   m.samples,
+            m.translucent.empty() ? 0u : m.transmittance.get()};
 }
 
 Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOptions& options) {
@@ -142,10 +159,58 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
                                     {GL_FRAGMENT_SHADER, "scene.frag", shaders::scene_frag}});
     if (!objects) return objects.error();
     impl->objects = std::move(*objects);
+    auto transmittancePass =
+        gl::linkProgram({{GL_VERTEX_SHADER, "scene.vert", shaders::scene_vert},
+                         {GL_FRAGMENT_SHADER, "transmittance.frag", shaders::transmittance_frag}});
+    if (!transmittancePass) return transmittancePass.error();
+    impl->transmittancePass = std::move(*transmittancePass);
+    impl->transmittance = gl::makeTexture2D(GL_R16F, scene.width, scene.height);
+    auto transmittanceTarget = gl::makeFramebuffer(impl->transmittance.get(), impl->depth.get());
+    if (!transmittanceTarget) return transmittanceTarget.error();
+    impl->transmittanceTarget = std::move(*transmittanceTarget);
     impl->vao = gl::makeVertexArray();
+    impl->translucentVao = gl::makeVertexArray();
     SceneRenderer renderer(std::move(impl));
     if (Status s = renderer.setGeometry(scene); !s) return s.error();
     return renderer;
+}
+
+namespace {
+//! Uploads `mesh` into a new buffer and points `vao`'s attributes 0-2 at it.
+Status uploadMesh(const std::vector<MeshVertex>& mesh, GLuint vao, gl::Buffer& vertices,
+                  GLsizei& count) {
+    vertices.reset();
+    count = GLsizei(mesh.size());
+    if (mesh.empty()) return Ok{};
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    vertices = gl::Buffer(buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
+    glVertexArrayVertexBuffer(vao, 0, buffer, 0, sizeof(MeshVertex));
+    for (GLuint attr = 0; attr < 3; ++attr) {
+        glEnableVertexArrayAttrib(vao, attr);
+        glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
+        glVertexArrayAttribBinding(vao, attr, 0);
+    }
+    return Ok{};
+}
+}  // namespace
+
+void SceneRenderer::Impl::drawTranslucent(GLuint program) const {
+    glBindVertexArray(translucentVao.get());
+    glUseProgram(program);
+    const GLint opacityAt = gl::uniformLocation(program, "opacity");
+    for (const TranslucentRange& r : translucent) {
+        glProgramUniform1f(program, opacityAt, r.opacity);
+        if (r.closed) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
+        glDrawArrays(GL_TRIANGLES, r.first, r.count);
+    }
+    glDisable(GL_CULL_FACE);
 }
 
 Status SceneRenderer::setGeometry(const Scene& scene) {
@@ -155,20 +220,32 @@ Status SceneRenderer::setGeometry(const Scene& scene) {
                             std::to_string(m->width) + "x" + std::to_string(m->height) +
                             " renderer");
     }
-    const std::vector<MeshVertex> mesh = buildSceneMesh(scene);
-    m->vertices.reset();
-    m->vertexCount = GLsizei(mesh.size());
-    if (mesh.empty()) return Ok{};
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    m->vertices = gl::Buffer(buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
-    const GLuint vao = m->vao.get();
-    glVertexArrayVertexBuffer(vao, 0, buffer, 0, sizeof(MeshVertex));
-    for (GLuint attr = 0; attr < 3; ++attr) {
-        glEnableVertexArrayAttrib(vao, attr);
-        glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
-        glVertexArrayAttribBinding(vao, attr, 0);
+    // Opaque objects (and the ground) in one mesh, translucent ones in another.
+    Scene opaque = scene, clear = scene;
+    opaque.spheres.clear(), opaque.boxes.clear(), opaque.triangles.clear();
+    clear.spheres.clear(), clear.boxes.clear(), clear.triangles.clear(), clear.ground.reset();
+    for (const Sphere& o : scene.spheres) (o.opacity < 1 ? clear : opaque).spheres.push_back(o);
+    for (const Box& o : scene.boxes) (o.opacity < 1 ? clear : opaque).boxes.push_back(o);
+    for (const Triangle& o : scene.triangles)
+        (o.opacity < 1 ? clear : opaque).triangles.push_back(o);
+    m->vertexCount = 0;
+    if (Status s = uploadMesh(buildSceneMesh(opaque), m->vao.get(), m->vertices, m->vertexCount);
+        !s)
+        return s;
+    GLsizei translucentCount = 0;
+    if (Status s = uploadMesh(buildSceneMesh(clear), m->translucentVao.get(),
+                              m->translucentVertices, translucentCount);
+        !s)
+        return s;
+    m->translucent.clear();
+    const std::vector<MeshObjectRange> ranges = sceneMeshRanges(clear);
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+        const std::size_t spheres = clear.spheres.size(), boxes = clear.boxes.size();
+        const double opacity = i < spheres           ? clear.spheres[i].opacity
+                               : i < spheres + boxes ? clear.boxes[i - spheres].opacity
+                                                     : clear.triangles[i - spheres - boxes].opacity;
+        m->translucent.push_back({ranges[i].first, ranges[i].count, float(opacity),
+                                  i < spheres + boxes});
     }
     return gl::checkError("mesh upload");
 }
@@ -251,7 +328,7 @@ Status SceneRenderer::draw(const Scene& scene) {
     glUseProgram(s);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    if (m->vertexCount > 0) {
+    if (m->vertexCount > 0 || !m->translucent.empty()) {
         const GLuint o = m->objects.get();
         glProgramUniform1i(o, gl::uniformLocation(o, "shadowsEnabled"), m->shadows ? 1 : 0);
         if (m->shadows) {
@@ -279,8 +356,18 @@ Status SceneRenderer::draw(const Scene& scene) {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glDisable(GL_CULL_FACE);  // triangles are double-sided
+        glProgramUniform1f(o, gl::uniformLocation(o, "opacity"), 1.f);
         glUseProgram(o);
-        glDrawArrays(GL_TRIANGLES, 0, m->vertexCount);
+        if (m->vertexCount > 0) glDrawArrays(GL_TRIANGLES, 0, m->vertexCount);
+    }
+    if (!m->translucent.empty()) {  // over the opaque objects, behind nothing it cannot see
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        m->drawTranslucent(m->objects.get());
+        glDisable(GL_BLEND);
     }
     if (m->samples > 1) {
         // Resolve: colour averages the samples; depth blits must use NEAREST (one sample).
@@ -288,6 +375,22 @@ Status SceneRenderer::draw(const Scene& scene) {
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBlitNamedFramebuffer(m->msTarget.get(), m->target.get(), 0, 0, w, h, 0, 0, w, h,
                                GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    }
+    if (!m->translucent.empty()) {
+        glBindFramebuffer(GL_FRAMEBUFFER, m->transmittanceTarget.get());
+        const float one[4] = {1.f, 1.f, 1.f, 1.f};
+        glClearNamedFramebufferfv(m->transmittanceTarget.get(), GL_COLOR, 0, one);
+        const GLuint t = m->transmittancePass.get();
+        glProgramUniformMatrix4fv(t, gl::uniformLocation(t, "viewProjection"), 1, GL_FALSE,
+                                  vp.data());
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ZERO, GL_SRC_COLOR);  // destination x (1 - opacity)
+        m->drawTranslucent(t);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return gl::checkError("scene render");

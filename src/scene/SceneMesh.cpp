@@ -57,7 +57,12 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
                 double nn[3] = {0, 0, 0};
                 nn[axis] = side ? 1 : -1;
                 const Vec3 n{nn[0], nn[1], nn[2]};
-                for (int k : {0, 1, 2, 0, 2, 3}) push(out, corner[k], n, b.color);
+                // Counter-clockwise seen from outside, as the spheres: culling back faces
+                // leaves each closed object's front once (translucent objects rely on it).
+                if (side)
+                    for (int k : {0, 1, 2, 0, 2, 3}) push(out, corner[k], n, b.color);
+                else
+                    for (int k : {0, 2, 1, 0, 3, 2}) push(out, corner[k], n, b.color);
             }
         }
     }

@@ -17,6 +17,9 @@ struct SceneTargets {
     GLuint meshVertexArray =
         0;  //!< the uploaded objects (positions, normals, colours at attributes 0-2)
     int msaaSamples = 1;
+    //! R16F, single-sample: the share of light let through by the translucent objects in front
+    //! of each pixel's opaque depth (0 when the scene has none).
+    GLuint transmittance = 0;
 };
 
 SceneTargets sceneTargets(const SceneRenderer& renderer);

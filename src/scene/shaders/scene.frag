@@ -14,6 +14,7 @@ uniform vec3 cameraPosition;
 uniform bool shadowsEnabled;
 uniform sampler2DShadow sunShadow;
 uniform mat4 shadowMatrix;   // world -> shadow map [0, 1]^3
+uniform float opacity;       // 1 for opaque objects; translucent ones are blended over
 uniform float shadowTexel;   // world size of one shadow-map texel, metres
 out vec4 fragColor;
 
@@ -35,5 +36,5 @@ void main() {
     float facing = max(dot(n, sunDirection), 0.0);
     float visible = (shadowsEnabled && facing > 0.0) ? sunVisibility(worldPosition, n) : 1.0;
     vec3 light = sunIrradiance * facing * visible + ambient;
-    fragColor = vec4(albedo * light, 1.0);
+    fragColor = vec4(albedo * light, opacity);
 }

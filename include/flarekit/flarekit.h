@@ -1,0 +1,129 @@
+/* flarekit's embedding API: lens flares for any OpenGL renderer, measured on the application's
+ * own depth buffer. A C ABI, so C#, Rust, Python ctypes and engine plug-ins can call it;
+ * flarekit/flarekit.hpp wraps it in a C++ class. Every call needs a current OpenGL 4.5 core
+ * context (the application's own) and leaves the application's GL state as it found it.
+ *
+ * A frame: fk_engine_occlusion measures every light's coverage (the visible share of its disc
+ * or sphere, uniform over solid angle, as `flarekit visibility --method raycast` defines it) in
+ * one batched compute dispatch per view, smooths it per light on the GPU, and fk_engine_draw
+ * adds every light's sprite flare, instanced and additive, in linear HDR, into the
+ * application's framebuffer before its tone map. Nothing is read back in the frame loop.
+ * Errors: calls return < 0 (or NULL) and fk_error says which argument was wrong and what was
+ * expected; nothing is drawn and no GL error is left. See docs/engine-api.md. */
+#ifndef FLAREKIT_FLAREKIT_H
+#define FLAREKIT_FLAREKIT_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#define FK_API __declspec(dllimport)
+#elif defined(__GNUC__)
+#define FK_API __attribute__((visibility("default")))
+#else
+#define FK_API
+#endif
+
+#define FK_VERSION_MAJOR 0
+#define FK_VERSION_MINOR 2
+/* Views (eyes, multiview layers) one engine measures: rows of fk_engine_coverage_texture. */
+#define FK_MAX_VIEWS 4
+/* Largest max_lights: the coverage texture is max_lights texels wide, and 16384 is the texture
+ * width every GL 4.5 implementation we know of allows (GL_MAX_TEXTURE_SIZE). */
+#define FK_MAX_LIGHTS 16384
+
+typedef struct fk_engine fk_engine;
+
+/* How the stored depth relates to `projection`. MINUS_ONE_TO_ONE: classic OpenGL, stored
+ * depth = (z_ndc + 1) / 2. ZERO_TO_ONE: glClipControl(..., GL_ZERO_TO_ONE), stored depth =
+ * z_ndc. REVERSED_Z: ZERO_TO_ONE with a projection that maps near to 1 and far (or infinity)
+ * to 0. A light is unoccluded along a ray where the stored depth is at or beyond the light's
+ * own depth (a point light behind a far wall stays hidden; one in front of it stays visible). */
+typedef enum {
+    FK_DEPTH_MINUS_ONE_TO_ONE = 0,
+    FK_DEPTH_ZERO_TO_ONE = 1,
+    FK_DEPTH_REVERSED_Z = 2
+} fk_depth_convention;
+
+typedef struct {
+    unsigned depth_texture; /* GL name: GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, any depth format */
+    int width, height;      /* size of that texture */
+    int viewport[4];        /* x, y, w, h of the view inside it, GL convention (origin bottom-left) */
+    fk_depth_convention depth_convention;
+    float view[16]; /* column-major, as glUniformMatrix4fv(..., GL_FALSE, ...) */
+    float projection[16];
+    float dt_seconds; /* time since the previous frame of this view, for the temporal filter */
+} fk_frame;
+
+typedef enum { FK_LIGHT_DIRECTIONAL = 0, FK_LIGHT_POINT = 1 } fk_light_type;
+
+typedef struct {
+    fk_light_type type;
+    float position[3];  /* point lights: world position */
+    float direction[3]; /* directional lights: from the camera toward the light */
+    float radius;       /* point: sphere radius, world units; directional: angular radius, degrees */
+    float color[3];
+    float intensity;
+    int preset; /* id from fk_engine_load_preset; -1 draws no flare for this light */
+} fk_light;
+
+/* An engine for up to max_lights lights per call (1..FK_MAX_LIGHTS). NULL on failure;
+ * fk_error(NULL) says why. */
+FK_API fk_engine* fk_engine_create(int max_lights);
+FK_API void fk_engine_destroy(fk_engine* e);
+/* The last error, "" if none. fk_error(NULL): the last failed fk_engine_create. */
+FK_API const char* fk_error(const fk_engine* e);
+
+/* A sprite preset by shipped name ("tanczos-classic", `flarekit presets`) or JSON path.
+ * >= 0 id, < 0 error. */
+FK_API int fk_engine_load_preset(fk_engine* e, const char* name_or_path);
+/* A visibility method name; default and, for now, only: "compute" (the batched pass). */
+FK_API int fk_engine_set_method(fk_engine* e, const char* method);
+
+/* Measures every light in `frame`'s depth: one dispatch, 0 ok, < 0 error. */
+FK_API int fk_engine_occlusion(fk_engine* e, const fk_frame* frame, const fk_light* lights,
+                               int count);
+/* Stereo / multiview: one frame per view (1..FK_MAX_VIEWS), each with its own coverage. */
+FK_API int fk_engine_occlusion_views(fk_engine* e, const fk_frame* frames, int views,
+                                     const fk_light* lights, int count);
+/* R32F, max_lights x FK_MAX_VIEWS: filtered coverage of light i in view v at texel (i, v), on
+ * the GPU, for the application's own shaders (texelFetch). */
+FK_API unsigned fk_engine_coverage_texture(const fk_engine* e);
+/* Raw coverage of the last occlusion call, view 0 (waits for the GPU); for tests and tools.
+ * Returns the number of values written (min(count, lights of that call)) or < 0. */
+FK_API int fk_engine_read_coverage(fk_engine* e, float* out, int count);
+
+/* Adds every light's flare for view 0 of the last occlusion call into `framebuffer` (0: the
+ * default one) inside frame->viewport: instanced, additive, each light scaled by its filtered
+ * coverage, its edge fade and its flux (intensity x colour over its disc on screen). */
+FK_API int fk_engine_draw(fk_engine* e, const fk_frame* frame, const fk_light* lights, int count,
+                          unsigned framebuffer);
+
+/* ---- Added beyond the first contract ---- */
+
+/* Raw coverage / in-frame share / filtered coverage of view `view` (waits for the GPU). */
+FK_API int fk_engine_read_view(fk_engine* e, int view, float* coverage, float* in_frame,
+                               float* filtered, int count);
+/* As fk_engine_draw, with view `view`'s coverage (the right eye of a stereo pair: 1). */
+FK_API int fk_engine_draw_view(fk_engine* e, int view, const fk_frame* frame,
+                               const fk_light* lights, int count, unsigned framebuffer);
+/* Translucency: a GL_TEXTURE_2D whose red channel is the share of light that gets through each
+ * pixel of view `view` (the application's foliage alpha, glass, fog cards); it multiplies every
+ * visible depth sample, sampled over the depth texture's extent. 0 removes it. */
+FK_API int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture);
+/* Directions sampled per light: samples_per_side^2 (1..64; default 32, 1,024 rays per light,
+ * a standard error near 0.004 on an edge across the disc). */
+FK_API int fk_engine_set_samples(fk_engine* e, int samples_per_side);
+/* The temporal filter (flarekit/Temporal.h): attack and release time constants in seconds
+ * (defaults 0.04, 0.12) and the edge-fade width in shorter sides of the viewport (0.08). */
+FK_API int fk_engine_set_temporal(fk_engine* e, float attack_seconds, float release_seconds,
+                                  float guard_band);
+/* Forgets the filtered coverage: the next call starts each light from its measurement. */
+FK_API int fk_engine_reset(fk_engine* e);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FLAREKIT_FLAREKIT_H */

@@ -1,0 +1,184 @@
+// The C ABI of flarekit.h over engine::Engine: every call catches what the implementation
+// might throw (allocation failure) and returns an error code instead; nothing unwinds into
+// the application.
+#include <exception>
+#include <span>
+#include <string>
+
+#include "engine/Engine.h"
+#include "flarekit/flarekit.h"
+
+struct fk_engine {
+    std::unique_ptr<flarekit::engine::Engine> engine;
+};
+
+namespace {
+
+//! fk_error(NULL): why the last fk_engine_create of this thread failed.
+thread_local std::string t_createError;
+
+constexpr int kInvalid = -1;   //!< a refused argument (fk_error says which)
+constexpr int kInternal = -2;  //!< a failure inside flarekit or the GL driver
+
+template <class Call>
+int guarded(fk_engine* e, const char* name, Call call) {
+    if (!e) {
+        t_createError = std::string(name) + ": expected an engine, got NULL";
+        return kInvalid;
+    }
+    try {
+        flarekit::Status s = call(*e->engine);
+        if (s) {
+            e->engine->lastError.clear();
+            return 0;
+        }
+        e->engine->lastError = std::string(name) + ": " + s.error().message;
+        return s.error().code == flarekit::ErrorCode::Internal ? kInternal : kInvalid;
+    } catch (const std::exception& ex) {
+        e->engine->lastError = std::string(name) + ": " + ex.what();
+    } catch (...) {
+        e->engine->lastError = std::string(name) + ": unexpected failure";
+    }
+    return kInternal;
+}
+
+}  // namespace
+
+extern "C" {
+
+fk_engine* fk_engine_create(int max_lights) {
+    try {
+        auto engine = flarekit::engine::Engine::create(max_lights);
+        if (!engine) {
+            t_createError = "fk_engine_create: " + engine.error().message;
+            return nullptr;
+        }
+        t_createError.clear();
+        return new fk_engine{std::move(*engine)};
+    } catch (const std::exception& ex) {
+        t_createError = std::string("fk_engine_create: ") + ex.what();
+    } catch (...) {
+        t_createError = "fk_engine_create: unexpected failure";
+    }
+    return nullptr;
+}
+
+void fk_engine_destroy(fk_engine* e) {
+    delete e;
+}
+
+const char* fk_error(const fk_engine* e) {
+    return e ? e->engine->lastError.c_str() : t_createError.c_str();
+}
+
+int fk_engine_load_preset(fk_engine* e, const char* name_or_path) {
+    int id = kInvalid;
+    const int rc = guarded(e, "fk_engine_load_preset", [&](flarekit::engine::Engine& en) {
+        if (!name_or_path)
+            return flarekit::Status(flarekit::invalidInput("name_or_path: expected a preset "
+                                                           "name or path, got NULL"));
+        auto loaded = en.loadPreset(name_or_path);
+        if (!loaded) return flarekit::Status(loaded.error());
+        id = *loaded;
+        return flarekit::Status(flarekit::Ok{});
+    });
+    return rc < 0 ? rc : id;
+}
+
+int fk_engine_set_method(fk_engine* e, const char* method) {
+    return guarded(e, "fk_engine_set_method", [&](flarekit::engine::Engine& en) {
+        return en.setMethod(method ? method : "(NULL)");
+    });
+}
+
+int fk_engine_occlusion(fk_engine* e, const fk_frame* frame, const fk_light* lights, int count) {
+    return guarded(e, "fk_engine_occlusion", [&](flarekit::engine::Engine& en) {
+        if (!frame)
+            return flarekit::Status(flarekit::invalidInput("frame: expected a frame, got NULL"));
+        return en.occlusion(std::span<const fk_frame>(frame, 1), lights, count);
+    });
+}
+
+int fk_engine_occlusion_views(fk_engine* e, const fk_frame* frames, int views,
+                              const fk_light* lights, int count) {
+    return guarded(e, "fk_engine_occlusion_views", [&](flarekit::engine::Engine& en) {
+        if (!frames)
+            return flarekit::Status(
+                flarekit::invalidInput("frames: expected an array of views, got NULL"));
+        if (views < 1 || views > FK_MAX_VIEWS) {
+            return flarekit::Status(flarekit::invalidInput(
+                "views: expected 1.." + std::to_string(FK_MAX_VIEWS) + ", got " +
+                std::to_string(views)));
+        }
+        return en.occlusion(std::span<const fk_frame>(frames, std::size_t(views)), lights,
+                            count);
+    });
+}
+
+unsigned fk_engine_coverage_texture(const fk_engine* e) {
+    return e ? e->engine->coverageTexture() : 0u;
+}
+
+int fk_engine_read_view(fk_engine* e, int view, float* coverage, float* in_frame,
+                        float* filtered, int count) {
+    int n = 0;
+    const int rc = guarded(e, "fk_engine_read_view", [&](flarekit::engine::Engine& en) {
+        auto r = en.readView(view, coverage, in_frame, filtered, count);
+        if (!r) return flarekit::Status(r.error());
+        n = *r;
+        return flarekit::Status(flarekit::Ok{});
+    });
+    return rc < 0 ? rc : n;
+}
+
+int fk_engine_read_coverage(fk_engine* e, float* out, int count) {
+    int n = 0;
+    const int rc = guarded(e, "fk_engine_read_coverage", [&](flarekit::engine::Engine& en) {
+        if (count > 0 && !out) {
+            return flarekit::Status(
+                flarekit::invalidInput("out: expected an array of count floats, got NULL"));
+        }
+        auto r = en.readView(0, out, nullptr, nullptr, count);
+        if (!r) return flarekit::Status(r.error());
+        n = *r;
+        return flarekit::Status(flarekit::Ok{});
+    });
+    return rc < 0 ? rc : n;
+}
+
+int fk_engine_draw(fk_engine* e, const fk_frame* frame, const fk_light* lights, int count,
+                   unsigned framebuffer) {
+    return guarded(e, "fk_engine_draw", [&](flarekit::engine::Engine& en) {
+        return en.draw(0, frame, lights, count, framebuffer);
+    });
+}
+
+int fk_engine_draw_view(fk_engine* e, int view, const fk_frame* frame, const fk_light* lights,
+                        int count, unsigned framebuffer) {
+    return guarded(e, "fk_engine_draw_view", [&](flarekit::engine::Engine& en) {
+        return en.draw(view, frame, lights, count, framebuffer);
+    });
+}
+
+int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture) {
+    return guarded(e, "fk_engine_set_transmittance",
+                   [&](flarekit::engine::Engine& en) { return en.setTransmittance(view, texture); });
+}
+
+int fk_engine_set_samples(fk_engine* e, int samples_per_side) {
+    return guarded(e, "fk_engine_set_samples",
+                   [&](flarekit::engine::Engine& en) { return en.setSamples(samples_per_side); });
+}
+
+int fk_engine_set_temporal(fk_engine* e, float attack_seconds, float release_seconds,
+                           float guard_band) {
+    return guarded(e, "fk_engine_set_temporal", [&](flarekit::engine::Engine& en) {
+        return en.setTemporal(attack_seconds, release_seconds, guard_band);
+    });
+}
+
+int fk_engine_reset(fk_engine* e) {
+    return guarded(e, "fk_engine_reset", [&](flarekit::engine::Engine& en) { return en.reset(); });
+}
+
+}  // extern "C"

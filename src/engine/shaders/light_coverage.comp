@@ -1,0 +1,87 @@
+#version 450 core
+// The engine's batched occlusion: one work group per light, 256 threads casting its
+// perSide^2 stratified, jittered directions (the ray caster's sampling) into the frame's
+// depth. A direction counts as seen where the stored depth is at or beyond the light's own
+// depth there (times the transmittance texture, if any); directions outside the view count
+// as unseen (a screen method reports what is in frame). Thread 0 writes the light's raw
+// coverage and in-frame share, steps its temporal filter (attack / release, as
+// TemporalFilter) and stores the filtered value in the coverage texture. Built twice: with
+// MULTISAMPLE defined a direction reads the depth sample of its pixel nearest to it.
+layout(local_size_x = 256) in;
+#ifdef MULTISAMPLE
+layout(binding = 15) uniform sampler2DMS depthSamples;
+uniform int sampleCount;
+uniform vec2 samplePositions[16];  // within the pixel, [0, 1)^2 (glGetMultisamplefv)
+float depthAt(vec2 p) {
+    vec2 inPixel = fract(p);
+    int nearest = 0;
+    float best = 4.0;
+    for (int i = 0; i < sampleCount; ++i) {
+        vec2 d = samplePositions[i] - inPixel;
+        if (dot(d, d) < best) best = dot(d, d), nearest = i;
+    }
+    return texelFetch(depthSamples, ivec2(p), nearest).r;
+}
+#else
+layout(binding = 15) uniform sampler2D depthTexture;
+float depthAt(vec2 p) { return texelFetch(depthTexture, ivec2(p), 0).r; }
+#endif
+layout(binding = 14) uniform sampler2D transmittance;
+uniform bool hasTransmittance;
+uniform vec2 depthSize;  // texels
+
+// Per light and view: raw coverage, filtered coverage, in-frame share, 1 once started.
+layout(std430, binding = 7) buffer State { vec4 state[]; };
+layout(r32f, binding = 7) uniform writeonly image2D filteredCoverage;
+uniform int viewIndex;
+uniform int stateBase;  // viewIndex x max lights
+uniform int perSide;
+uniform float attackStep, releaseStep;  // 1 - exp(-dt / tau), from the CPU
+
+shared vec2 sums[256];
+
+// A 32-bit integer hash (Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", pcg).
+uint pcgHash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void main() {
+    uint light = gl_WorkGroupID.x;
+    uint index = gl_LocalInvocationIndex;
+    LightView v = lightView(lights[light]);
+    vec3 helper = abs(v.axis.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+    vec3 t1 = normalize(cross(v.axis, helper));
+    vec3 t2 = cross(v.axis, t1);
+    int total = perSide * perSide;
+    vec2 s = vec2(0.0);  // seen (weighted by transmittance), in frame
+    for (int k = int(index); k < total && !v.inside; k += 256) {
+        uint h = pcgHash(uint(k) ^ pcgHash(light));
+        vec2 jitter = vec2(h & 0xffffu, h >> 16) / 65536.0;
+        vec2 ab = 2.0 * (vec2(k % perSide, k / perSide) + jitter) / float(perSide) - 1.0;
+        vec2 pixel;
+        float lightDepth;
+        if (!landsAt(v, coneDirection(v, t1, t2, ab), pixel, lightDepth)) continue;
+        float stored = depthAt(pixel);
+        bool seen = depthConvention == 2 ? stored <= lightDepth : stored >= lightDepth;
+        float kept = hasTransmittance ? texture(transmittance, pixel / depthSize).r : 1.0;
+        s += vec2(seen ? clamp(kept, 0.0, 1.0) : 0.0, 1.0);
+    }
+    sums[index] = s;
+    barrier();
+    for (uint stride = 128u; stride > 0u; stride >>= 1) {
+        if (index < stride) sums[index] += sums[index + stride];
+        barrier();
+    }
+    if (index != 0u) return;
+    vec2 share = v.inside ? vec2(1.0) : sums[0] / float(total);
+    vec4 previous = state[stateBase + int(light)];
+    float filtered = share.x;
+    if (previous.w > 0.5) {
+        float step = share.x > previous.y ? attackStep : releaseStep;
+        filtered = previous.y + step * (share.x - previous.y);
+    }
+    state[stateBase + int(light)] = vec4(share.x, filtered, share.y, 1.0);
+    imageStore(filteredCoverage, ivec2(int(light), viewIndex), vec4(filtered));
+}

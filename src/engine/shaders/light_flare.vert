@@ -1,0 +1,48 @@
+#version 450 core
+// One flare element of one preset, instanced over every light (gl_InstanceID): a quad on the
+// light's flare vector (flareVectorPoint: through the viewport's centre), collapsed for
+// lights of another preset, behind the camera or with no weight. Its brightness is the
+// light's filtered coverage (read here from the coverage texture, never by the CPU) x its
+// edge fade (edgeFade of flarekit/Temporal.h) x its flux in frame heights squared over
+// kReferenceFlux (sunFlareScale's model: luminance x pi x (tan(angular radius) / (2 tan(fov_y
+// / 2)))^2), tinted by the light's colour at unit luminance.
+layout(binding = 13) uniform sampler2D coverageTexture;
+uniform int viewIndex;
+uniform int presetId;
+uniform float t;         // position on the flare vector
+uniform vec2 halfSize;   // quad half size, pixels
+uniform float guardBand; // edge-fade width, shorter sides of the viewport
+uniform float referenceFlux;
+out vec2 uv;
+flat out vec3 tint;
+
+float edgeFade(vec2 p, vec2 size) {
+    float inside = min(min(p.x, size.x - p.x), min(p.y, size.y - p.y));
+    if (inside <= 0.0) return 0.0;
+    float band = guardBand * min(size.x, size.y);
+    return band <= 0.0 ? 1.0 : smoothstep(0.0, 1.0, inside / band);
+}
+
+void main() {
+    Light l = lights[gl_InstanceID];
+    LightView v = lightView(l);
+    vec4 clip = projectionMatrix * (v.point ? vec4(v.centre, 1.0) : vec4(v.axis, 0.0));
+    vec2 size = vec2(viewport.zw);
+    vec2 light = (clip.xy / clip.w * 0.5 + 0.5) * size;  // viewport pixels, bottom-left
+    vec3 radiance = l.colorIntensity.rgb * l.colorIntensity.a;
+    float lum = dot(radiance, vec3(0.2126, 0.7152, 0.0722));
+    float tanRadius = v.point ? v.radius / sqrt(max(1e-30, dot(v.centre, v.centre) - v.radius * v.radius))
+                              : tan(v.halfAngle);
+    float radiusOfHeight = tanRadius * projectionMatrix[1][1] / 2.0;
+    float flux = lum * kPi * radiusOfHeight * radiusOfHeight / referenceFlux;
+    float weight = texelFetch(coverageTexture, ivec2(gl_InstanceID, viewIndex), 0).r;
+    float intensity = clip.w > 0.0 && !v.inside ? weight * edgeFade(light, size) * flux : 0.0;
+    tint = lum > 0.0 ? radiance / lum * intensity : vec3(0.0);
+    bool drawn = int(l.presetPad.x) == presetId && intensity > 0.0 && !isinf(intensity) &&
+                 !isnan(intensity);
+    vec2 corner = vec2(gl_VertexID & 1, (gl_VertexID >> 1) & 1);
+    uv = vec2(corner.x, 1.0 - corner.y);  // element images are stored top row first
+    vec2 centre = size * 0.5 + t * (light - size * 0.5);
+    vec2 p = centre + (corner * 2.0 - 1.0) * halfSize;
+    gl_Position = drawn ? vec4(p / size * 2.0 - 1.0, 0.0, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
+}

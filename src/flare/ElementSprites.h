@@ -1,0 +1,27 @@
+// A preset's elements as GL textures for frames of one height: each element rendered once on
+// the CPU (renderElement, the kernels of renderFlare) at its size in pixels, Tanczos's sprite
+// textures. Shared by GpuSpriteFlare (one sun) and the engine API (every light, instanced).
+#pragma once
+
+#include <vector>
+
+#include "flarekit/Flare.h"
+#include "gl/GlObjects.h"
+
+namespace flarekit {
+
+//! renderFlare skips elements below half a pixel in radius (FlareRenderer.cpp); so do sprites.
+inline constexpr float kMinSpriteRadiusPx = 0.5f;
+
+struct ElementSprite {
+    float t;             //!< position on the flare vector
+    float halfW, halfH;  //!< quad half size, frame pixels
+    BlendMode blend;
+    gl::Texture texture;  //!< RGBA16F premultiplied, top row first, clamped to a clear border
+};
+
+//! The sprites of `preset` for frames `height` pixels tall (element sizes are fractions of the
+//! height); elements under half a pixel or without intensity get none.
+Result<std::vector<ElementSprite>> buildElementSprites(const Preset& preset, int height);
+
+}  // namespace flarekit
