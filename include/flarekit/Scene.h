@@ -127,7 +127,7 @@ struct SceneLight {
     Vec3 position{0, 0, 0};  //!< point: centre
     double radius = 0.1;     //!< point: sphere radius
     Vec3 color{1, 1, 1};
-    double intensity = 50;  //!< radiance of the disc or sphere, like the sun's
+    double intensity = 50;                   //!< radiance of the disc or sphere, like the sun's
     std::string preset = "tanczos-classic";  //!< the sprite flare it draws ("" draws none)
 };
 inline constexpr Param<SceneLight> kDirectionalLightParams[] = {

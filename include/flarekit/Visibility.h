@@ -24,8 +24,8 @@ struct LightVisibility {
 
 struct VisibilityResult {
     std::string method;
-    double coverage = 0;      //!< visible fraction of the first light's disc, 0..1
-    double inFrame = 0;       //!< fraction of that disc inside the camera's frame, 0..1
+    double coverage = 0;  //!< visible fraction of the first light's disc, 0..1
+    double inFrame = 0;   //!< fraction of that disc inside the camera's frame, 0..1
     //! Every light of the scene in scene order (sceneLights()); [0] is coverage and inFrame.
     std::vector<LightVisibility> lights;
     std::size_t samples = 0;  //!< rays cast

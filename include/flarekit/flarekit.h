@@ -47,9 +47,10 @@ typedef enum {
 } fk_depth_convention;
 
 typedef struct {
-    unsigned depth_texture; /* GL name: GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, any depth format */
-    int width, height;      /* size of that texture */
-    int viewport[4];        /* x, y, w, h of the view inside it, GL convention (origin bottom-left) */
+    unsigned
+        depth_texture; /* GL name: GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE, any depth format */
+    int width, height; /* size of that texture */
+    int viewport[4];   /* x, y, w, h of the view inside it, GL convention (origin bottom-left) */
     fk_depth_convention depth_convention;
     float view[16]; /* column-major, as glUniformMatrix4fv(..., GL_FALSE, ...) */
     float projection[16];
@@ -62,14 +63,15 @@ typedef struct {
     fk_light_type type;
     float position[3];  /* point lights: world position */
     float direction[3]; /* directional lights: from the camera toward the light */
-    float radius;       /* point: sphere radius, world units; directional: angular radius, degrees */
+    float radius; /* point: sphere radius, world units; directional: angular radius, degrees */
     float color[3];
     float intensity;
     int preset; /* id from fk_engine_load_preset; -1 draws no flare for this light */
 } fk_light;
 
 /* An engine for up to max_lights lights per call (1..FK_MAX_LIGHTS). NULL on failure;
- * fk_error(NULL) says why. */
+ * fk_error(NULL) says why. It clears GL errors left pending before it (glGetError), so that
+ * it can tell its own; no other call reads or clears GL errors. */
 FK_API fk_engine* fk_engine_create(int max_lights);
 FK_API void fk_engine_destroy(fk_engine* e);
 /* The last error, "" if none. fk_error(NULL): the last failed fk_engine_create. */

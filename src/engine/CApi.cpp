@@ -75,8 +75,9 @@ int fk_engine_load_preset(fk_engine* e, const char* name_or_path) {
     int id = kInvalid;
     const int rc = guarded(e, "fk_engine_load_preset", [&](flarekit::engine::Engine& en) {
         if (!name_or_path)
-            return flarekit::Status(flarekit::invalidInput("name_or_path: expected a preset "
-                                                           "name or path, got NULL"));
+            return flarekit::Status(
+                flarekit::invalidInput("name_or_path: expected a preset "
+                                       "name or path, got NULL"));
         auto loaded = en.loadPreset(name_or_path);
         if (!loaded) return flarekit::Status(loaded.error());
         id = *loaded;
@@ -106,12 +107,11 @@ int fk_engine_occlusion_views(fk_engine* e, const fk_frame* frames, int views,
             return flarekit::Status(
                 flarekit::invalidInput("frames: expected an array of views, got NULL"));
         if (views < 1 || views > FK_MAX_VIEWS) {
-            return flarekit::Status(flarekit::invalidInput(
-                "views: expected 1.." + std::to_string(FK_MAX_VIEWS) + ", got " +
-                std::to_string(views)));
+            return flarekit::Status(flarekit::invalidInput("views: expected 1.." +
+                                                           std::to_string(FK_MAX_VIEWS) + ", got " +
+                                                           std::to_string(views)));
         }
-        return en.occlusion(std::span<const fk_frame>(frames, std::size_t(views)), lights,
-                            count);
+        return en.occlusion(std::span<const fk_frame>(frames, std::size_t(views)), lights, count);
     });
 }
 
@@ -119,8 +119,8 @@ unsigned fk_engine_coverage_texture(const fk_engine* e) {
     return e ? e->engine->coverageTexture() : 0u;
 }
 
-int fk_engine_read_view(fk_engine* e, int view, float* coverage, float* in_frame,
-                        float* filtered, int count) {
+int fk_engine_read_view(fk_engine* e, int view, float* coverage, float* in_frame, float* filtered,
+                        int count) {
     int n = 0;
     const int rc = guarded(e, "fk_engine_read_view", [&](flarekit::engine::Engine& en) {
         auto r = en.readView(view, coverage, in_frame, filtered, count);
@@ -161,8 +161,9 @@ int fk_engine_draw_view(fk_engine* e, int view, const fk_frame* frame, const fk_
 }
 
 int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture) {
-    return guarded(e, "fk_engine_set_transmittance",
-                   [&](flarekit::engine::Engine& en) { return en.setTransmittance(view, texture); });
+    return guarded(e, "fk_engine_set_transmittance", [&](flarekit::engine::Engine& en) {
+        return en.setTransmittance(view, texture);
+    });
 }
 
 int fk_engine_set_samples(fk_engine* e, int samples_per_side) {

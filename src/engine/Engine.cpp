@@ -61,9 +61,9 @@ struct CoverageProgram {
 };
 
 Result<CoverageProgram> linkCoverage(bool multisample) {
-    auto p = gl::linkProgram({{GL_COMPUTE_SHADER, "light_coverage.comp",
-                               withPrelude(shaders::light_coverage_comp,
-                                           multisample ? "#define MULTISAMPLE\n" : "")}});
+    auto p = gl::linkProgram(
+        {{GL_COMPUTE_SHADER, "light_coverage.comp",
+          withPrelude(shaders::light_coverage_comp, multisample ? "#define MULTISAMPLE\n" : "")}});
     if (!p) return p.error();
     CoverageProgram c;
     c.program = std::move(*p);
@@ -88,8 +88,8 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
 
 struct FlareProgram {
     gl::Program program;
-    GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1,
-          presetId = -1, t = -1, halfSize = -1, guardBand = -1, referenceFlux = -1;
+    GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1, presetId = -1,
+          t = -1, halfSize = -1, guardBand = -1, referenceFlux = -1;
 };
 
 Result<FlareProgram> linkFlare() {
@@ -202,14 +202,18 @@ Engine::~Engine() = default;
 
 Result<std::unique_ptr<Engine>> Engine::create(int maxLights) {
     if (maxLights < 1 || maxLights > FK_MAX_LIGHTS) {
-        return invalidInput("max_lights: expected 1.." + std::to_string(FK_MAX_LIGHTS) +
-                            ", got " + std::to_string(maxLights));
+        return invalidInput("max_lights: expected 1.." + std::to_string(FK_MAX_LIGHTS) + ", got " +
+                            std::to_string(maxLights));
     }
     if (Status s = gl::requireCurrentContext("fk_engine_create"); !s) return s.error();
     if (epoxy_gl_version() < 45) {
         return invalidInput("fk_engine_create: expected a current OpenGL 4.5 context, got " +
                             std::to_string(epoxy_gl_version() / 10) + "." +
                             std::to_string(epoxy_gl_version() % 10));
+    }
+    // Errors the application left pending would read as this call's own below; they are
+    // cleared first (the one GL side effect of creating an engine, documented in flarekit.h).
+    while (glGetError() != GL_NO_ERROR) {
     }
     const GlStateGuard guard;
     auto impl = std::make_unique<Impl>();
@@ -259,9 +263,10 @@ Result<int> Engine::loadPreset(const std::string& nameOrPath) {
 
 Status Engine::setMethod(const std::string& method) {
     if (method == "compute") return Ok{};
-    return invalidInput("method: expected \"compute\" (the engine's batched pass; the other "
-                        "visibility methods measure flarekit's own frame), got \"" +
-                        method + "\"");
+    return invalidInput(
+        "method: expected \"compute\" (the engine's batched pass; the other "
+        "visibility methods measure flarekit's own frame), got \"" +
+        method + "\"");
 }
 
 Status Engine::setSamples(int perSide) {
@@ -338,10 +343,10 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
         glProgramUniform1i(p, c.viewIndex, int(v));
         glProgramUniform1i(p, c.stateBase, int(v) * m->maxLights);
         glProgramUniform1i(p, c.perSide, m->samplesPerSide);
-        glProgramUniform1f(
-            p, c.attack, float(smoothingStep(f.dt_seconds, m->temporal.attackSeconds)));
-        glProgramUniform1f(
-            p, c.release, float(smoothingStep(f.dt_seconds, m->temporal.releaseSeconds)));
+        glProgramUniform1f(p, c.attack,
+                           float(smoothingStep(f.dt_seconds, m->temporal.attackSeconds)));
+        glProgramUniform1f(p, c.release,
+                           float(smoothingStep(f.dt_seconds, m->temporal.releaseSeconds)));
         glProgramUniform2f(p, c.depthSize, float(f.width), float(f.height));
         const GLuint transmittance = m->transmittance[v];
         glProgramUniform1i(p, c.hasTransmittance, transmittance != 0 ? 1 : 0);
@@ -350,16 +355,14 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
         if (depth[v].multisample) {
             const SamplePattern& pattern = m->patternFor(f.depth_texture, depth[v].samples);
             glProgramUniform1i(p, c.sampleCount, depth[v].samples);
-            glProgramUniform2fv(p, c.samplePositions, depth[v].samples,
-                                pattern.positions.data());
+            glProgramUniform2fv(p, c.samplePositions, depth[v].samples, pattern.positions.data());
         }
         // A depth-stencil texture may be set to hand out stencil: read its depth, then put
         // the application's mode back.
         GLint mode = GL_DEPTH_COMPONENT;
         glGetTextureParameteriv(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
         if (mode != GL_DEPTH_COMPONENT)
-            glTextureParameteri(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE,
-                                GL_DEPTH_COMPONENT);
+            glTextureParameteri(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
         glBindTextureUnit(kDepthUnit, f.depth_texture);
         glBindSampler(kDepthUnit, m->nearest.get());
         glUseProgram(p);

@@ -29,7 +29,8 @@ constexpr float kMaxAngularRadiusDeg = 45.f;
 Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at) {
     if (!frame) return invalidInput(at + ": expected a frame, got NULL");
     const fk_frame& f = *frame;
-    if (f.depth_convention < FK_DEPTH_MINUS_ONE_TO_ONE || f.depth_convention > FK_DEPTH_REVERSED_Z) {
+    if (f.depth_convention < FK_DEPTH_MINUS_ONE_TO_ONE ||
+        f.depth_convention > FK_DEPTH_REVERSED_Z) {
         return invalidInput(at + ".depth_convention: expected 0, 1 or 2 (FK_DEPTH_*), got " +
                             std::to_string(int(f.depth_convention)));
     }
@@ -94,8 +95,9 @@ Status checkLights(const fk_light* lights, int count, int maxLights, int presetC
         const fk_light& l = lights[i];
         const std::string at = "lights[" + std::to_string(i) + "].";
         if (l.type != FK_LIGHT_DIRECTIONAL && l.type != FK_LIGHT_POINT) {
-            return invalidInput(at + "type: expected FK_LIGHT_DIRECTIONAL (0) or FK_LIGHT_POINT "
-                                     "(1), got " +
+            return invalidInput(at +
+                                "type: expected FK_LIGHT_DIRECTIONAL (0) or FK_LIGHT_POINT "
+                                "(1), got " +
                                 std::to_string(int(l.type)));
         }
         const bool point = l.type == FK_LIGHT_POINT;
@@ -137,8 +139,7 @@ Status checkFramebuffer(unsigned framebuffer) {
         return invalidInput("framebuffer: expected 0 or the name of a GL framebuffer, got " +
                             std::to_string(framebuffer));
     }
-    if (glCheckNamedFramebufferStatus(framebuffer, GL_DRAW_FRAMEBUFFER) !=
-        GL_FRAMEBUFFER_COMPLETE)
+    if (glCheckNamedFramebufferStatus(framebuffer, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         return invalidInput("framebuffer: expected a complete framebuffer");
     return Ok{};
 }

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "flarekit/GpuFlare.h"
 #include "flare/ElementSprites.h"
+#include "flarekit/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"

@@ -1,8 +1,8 @@
 // The GL scene pass: sky and sun first (full-screen, no depth), then every opaque object in
 // one draw with depth testing, then the translucent ones (opacity < 1) blended over without
-// writing depth, and multiplied into a transmittance target for the occlusion passes. Programs, targets and the mesh live as long as the SceneRenderer,
-// so a frame of an animation costs only its draw. Read back bottom-up and flipped to
-// flarekit's top-row-first order.
+// writing depth, and multiplied into a transmittance target for the occlusion passes. Programs,
+// targets and the mesh live as long as the SceneRenderer, so a frame of an animation costs only its
+// draw. Read back bottom-up and flipped to flarekit's top-row-first order.
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -91,8 +91,12 @@ int SceneRenderer::msaaSamples() const {
 
 SceneTargets sceneTargets(const SceneRenderer& r) {
     const SceneRenderer::Impl& m = *r.m;
-    return {m.color.get(),   m.depth.get(), m.target.get(),
-            m.msDepth.get(), m.vao.get(),   m.samples,
+    return {m.color.get(),
+            m.depth.get(),
+            m.target.get(),
+            m.msDepth.get(),
+            m.vao.get(),
+            m.samples,
             m.translucent.empty() ? 0u : m.transmittance.get()};
 }
 
@@ -244,8 +248,8 @@ Status SceneRenderer::setGeometry(const Scene& scene) {
         const double opacity = i < spheres           ? clear.spheres[i].opacity
                                : i < spheres + boxes ? clear.boxes[i - spheres].opacity
                                                      : clear.triangles[i - spheres - boxes].opacity;
-        m->translucent.push_back({ranges[i].first, ranges[i].count, float(opacity),
-                                  i < spheres + boxes});
+        m->translucent.push_back(
+            {ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
     }
     return gl::checkError("mesh upload");
 }

@@ -90,8 +90,8 @@ std::optional<Error> readLight(const json& o, const JsonPlace& at, Scene& s) {
     }
     if (const auto preset = o.find("preset"); preset != o.end()) {
         if (!preset->is_string())
-            return (at / "preset").fail("expected a preset name or path, got " +
-                                        jsonExcerpt(*preset));
+            return (at / "preset")
+                .fail("expected a preset name or path, got " + jsonExcerpt(*preset));
         light.preset = preset->get<std::string>();
     }
     s.lights.push_back(light);

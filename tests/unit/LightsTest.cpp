@@ -118,7 +118,7 @@ TEST(LightsJson, LightsArrayWithAndWithoutSun) {
     EXPECT_EQ(onlyLights->lights[0].type, LightType::Point);
     EXPECT_EQ(onlyLights->lights[0].preset, "subtle");
     EXPECT_EQ(onlyLights->lights[0].radius, 0.3);
-    EXPECT_EQ(onlyLights->lights[1].direction.z, -1.0);     // normalised
+    EXPECT_EQ(onlyLights->lights[1].direction.z, -1.0);          // normalised
     EXPECT_EQ(onlyLights->lights[1].preset, "tanczos-classic");  // the default
     // `sun` mirrors the first directional light.
     EXPECT_EQ(onlyLights->sun.angularRadiusDeg, 0.5);
@@ -168,11 +168,14 @@ TEST(LightsJson, BadLightsAndOpacitiesNameTheField) {
     EXPECT_NE(error(R"("lights": [{"type": "point", "position": [0, 0, -5], "preset": 3}]})")
                   .find("lights[0].preset: expected a preset name"),
               std::string::npos);
-    EXPECT_NE(error(R"("sun": {"direction": [0, 0, -1]}, "objects": [{"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "opacity": 1.5}]})")
-                  .find("objects[0].opacity: expected"),
-              std::string::npos);
+    EXPECT_NE(
+        error(
+            R"("sun": {"direction": [0, 0, -1]}, "objects": [{"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "opacity": 1.5}]})")
+            .find("objects[0].opacity: expected"),
+        std::string::npos);
     auto glass = parseScene(
-        head + R"("sun": {"direction": [0, 0, -1]}, "objects": [{"type": "triangles", "opacity": 0.25, "vertices": [[0, 0, -1], [1, 0, -1], [0, 1, -1]]}]})",
+        head +
+            R"("sun": {"direction": [0, 0, -1]}, "objects": [{"type": "triangles", "opacity": 0.25, "vertices": [[0, 0, -1], [1, 0, -1], [0, 1, -1]]}]})",
         "s.json");
     ASSERT_TRUE(glass.ok()) << glass.error().message;
     EXPECT_EQ(glass->triangles[0].opacity, 0.25);

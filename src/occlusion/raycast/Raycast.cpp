@@ -4,11 +4,11 @@
 // and compact), and the disc to the cone by 1 - cos(theta) = rho^2 (1 - cos(alpha)), which is
 // equal-area on the sphere too. Rows of strata are cast in parallel.
 #include <algorithm>
-#include <limits>
-#include <vector>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 #include "core/Parallel.h"
 #include "core/Random.h"
