@@ -17,6 +17,8 @@ packages=(
   fonts-dejavu-core
   # headless OpenGL (later issues; Mesa llvmpipe gives GL without a GPU)
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg
+  # the embedding example opens a window with GLFW when there is a display
+  libglfw3-dev
 )
 
 missing=()

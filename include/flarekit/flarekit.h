@@ -104,6 +104,9 @@ FK_API int fk_engine_draw(fk_engine* e, const fk_frame* frame, const fk_light* l
 
 /* ---- Added beyond the first contract ---- */
 
+/* The library's version: major x 10000 + minor x 100 (0.2: 200). */
+FK_API int fk_version(void);
+
 /* Raw coverage / in-frame share / filtered coverage of view `view` (waits for the GPU). */
 FK_API int fk_engine_read_view(fk_engine* e, int view, float* coverage, float* in_frame,
                                float* filtered, int count);

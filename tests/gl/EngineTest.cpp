@@ -87,7 +87,8 @@ TEST(Engine, TwoHundredFiftySixLampsMatchTheRayCasterThroughFlarekitsRenderer) {
     const auto proj = toFloat(perspectiveMatrix(scene.camera, double(scene.width) / scene.height));
     std::copy(view.begin(), view.end(), frame.view);
     std::copy(proj.begin(), proj.end(), frame.projection);
-    ASSERT_EQ(fk_engine_set_transmittance(e.get(), 0, targets.transmittance), 0) << fk_error(e.get());
+    ASSERT_EQ(fk_engine_set_transmittance(e.get(), 0, targets.transmittance), 0)
+        << fk_error(e.get());
     const std::vector<fk_light> lights = engineLights(scene, -1);
     ASSERT_EQ(fk_engine_occlusion(e.get(), &frame, lights.data(), 256), 0) << fk_error(e.get());
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
@@ -132,7 +133,7 @@ Scene wallScene() {
     front.type = behind.type = LightType::Point;
     front.position = {0.5, 0.5, -10}, front.radius = 0.2;
     behind.position = {0.5, 0.5, -30}, behind.radius = 0.2;
-    ahead.direction = {0, 0, -1};  // straight into the wall
+    ahead.direction = {0, 0, -1};                       // straight into the wall
     aside.direction = normalize(Vec3{0.35, 0.15, -1});  // in frame, past the wall's edge
     s.lights = {front, behind, ahead, aside};
     return s;
@@ -176,7 +177,8 @@ TEST(Engine, AViewportInsideALargerTextureMeasuresTheSame) {
     pass.draw(big, inside);
     ASSERT_EQ(fk_engine_occlusion(e.get(), &inside, lights.data(), 48), 0) << fk_error(e.get());
     const std::vector<float> offset = readCoverage(e.get(), 48);
-    for (int i = 0; i < 48; ++i) EXPECT_NEAR(offset[std::size_t(i)], alone[std::size_t(i)], 0.002) << i;
+    for (int i = 0; i < 48; ++i)
+        EXPECT_NEAR(offset[std::size_t(i)], alone[std::size_t(i)], 0.002) << i;
     int partial = 0;
     EXPECT_LE(worstError(offset, truth(scene), &partial), 0.04);  // single-sample depth
 }
@@ -196,14 +198,16 @@ TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
     const Scene centre = lampScene(32, 5, false);
     const Scene left = eye(centre, -0.032), right = eye(centre, 0.032);
     EnginePtr e = makeEngine(32);
-    const DepthTarget both = makeDepthTarget(2 * centre.width, centre.height, 4, GL_DEPTH_COMPONENT32F);
+    const DepthTarget both =
+        makeDepthTarget(2 * centre.width, centre.height, 4, GL_DEPTH_COMPONENT32F);
     fk_frame frames[2] = {
         frameFor(left, both, {0, 0, centre.width, centre.height}, FK_DEPTH_MINUS_ONE_TO_ONE),
         frameFor(right, both, {centre.width, 0, centre.width, centre.height},
                  FK_DEPTH_MINUS_ONE_TO_ONE)};
     DepthPass(left).draw(both, frames[0]);
     // The second eye must not clear the first: draw it through its own pass into a copy.
-    const DepthTarget rightOnly = makeDepthTarget(2 * centre.width, centre.height, 4, GL_DEPTH_COMPONENT32F);
+    const DepthTarget rightOnly =
+        makeDepthTarget(2 * centre.width, centre.height, 4, GL_DEPTH_COMPONENT32F);
     DepthPass(right).draw(rightOnly, frames[1]);
     glBlitNamedFramebuffer(rightOnly.framebuffer.get(), both.framebuffer.get(), centre.width, 0,
                            2 * centre.width, centre.height, centre.width, 0, 2 * centre.width,
@@ -230,14 +234,16 @@ TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
     const int preset = fk_engine_load_preset(e.get(), "subtle");
     ASSERT_GE(preset, 0) << fk_error(e.get());
     const std::vector<fk_light> one = engineLights(lamp, preset);
-    const DepthTarget sky = makeDepthTarget(2 * centre.width, centre.height, 1, GL_DEPTH_COMPONENT32F);
+    const DepthTarget sky =
+        makeDepthTarget(2 * centre.width, centre.height, 1, GL_DEPTH_COMPONENT32F);
     fk_frame skyFrames[2] = {
         frameFor(lampLeft, sky, {0, 0, centre.width, centre.height}, FK_DEPTH_MINUS_ONE_TO_ONE),
         frameFor(lampRight, sky, {centre.width, 0, centre.width, centre.height},
                  FK_DEPTH_MINUS_ONE_TO_ONE)};
     const float clearDepth = 1.f;
     glClearTexImage(sky.depth.get(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &clearDepth);
-    ASSERT_EQ(fk_engine_occlusion_views(e.get(), skyFrames, 2, one.data(), 1), 0) << fk_error(e.get());
+    ASSERT_EQ(fk_engine_occlusion_views(e.get(), skyFrames, 2, one.data(), 1), 0)
+        << fk_error(e.get());
     gl::Texture color = gl::makeTexture2D(GL_RGBA32F, 2 * centre.width, centre.height);
     auto fb = gl::makeFramebuffer(color.get());
     ASSERT_TRUE(fb.ok());
@@ -314,8 +320,8 @@ TEST(Engine, FlareOfAFullyVisibleSunMatchesTheCpuSpriteFlare) {
     ASSERT_GE(preset, 0) << fk_error(e.get());
     const std::vector<fk_light> light = engineLights(scene, preset);
     const DepthTarget target = makeDepthTarget(scene.width, scene.height, 1, GL_DEPTH_COMPONENT32F);
-    const fk_frame frame = frameFor(scene, target, {0, 0, scene.width, scene.height},
-                                    FK_DEPTH_MINUS_ONE_TO_ONE);
+    const fk_frame frame =
+        frameFor(scene, target, {0, 0, scene.width, scene.height}, FK_DEPTH_MINUS_ONE_TO_ONE);
     const float one = 1.f;
     glClearTexImage(target.depth.get(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
     ASSERT_EQ(fk_engine_occlusion(e.get(), &frame, light.data(), 1), 0);
@@ -337,7 +343,9 @@ TEST(Engine, FlareOfAFullyVisibleSunMatchesTheCpuSpriteFlare) {
     for (int y = 0; y < scene.height; ++y)
         for (int x = 0; x < scene.width; ++x)
             for (int c = 0; c < 3; ++c) {
-                const float g = c == 0 ? gpu->at(x, y).r : c == 1 ? gpu->at(x, y).g : gpu->at(x, y).b;
+                const float g = c == 0   ? gpu->at(x, y).r
+                                : c == 1 ? gpu->at(x, y).g
+                                         : gpu->at(x, y).b;
                 const float k = c == 0 ? cpu.at(x, y).r : c == 1 ? cpu.at(x, y).g : cpu.at(x, y).b;
                 gpuSum += g;
                 cpuSum += k;
@@ -403,16 +411,18 @@ TEST(Engine, LeavesTheApplicationsGlStateAsItFoundIt) {
     const int preset = fk_engine_load_preset(e.get(), "subtle");
     std::vector<fk_light> lights = engineLights(scene, preset);
     const DepthTarget target = makeDepthTarget(scene.width, scene.height, 4, GL_DEPTH_COMPONENT32F);
-    const fk_frame frame = frameFor(scene, target, {0, 0, scene.width, scene.height},
-                                    FK_DEPTH_MINUS_ONE_TO_ONE);
+    const fk_frame frame =
+        frameFor(scene, target, {0, 0, scene.width, scene.height}, FK_DEPTH_MINUS_ONE_TO_ONE);
     DepthPass(scene).draw(target, frame);
     // An application mid-frame: its own program, VAO, framebuffer, textures, bindings, blend.
     gl::Texture appColor = gl::makeTexture2D(GL_RGBA16F, scene.width, scene.height);
     gl::Texture appTexture = gl::makeTexture2D(GL_RGBA8, 4, 4);
     auto appFb = gl::makeFramebuffer(appColor.get());
-    auto appProgram = gl::linkProgram(
-        {{GL_VERTEX_SHADER, "app.vert", "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n"},
-         {GL_FRAGMENT_SHADER, "app.frag", "#version 450 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n"}});
+    auto appProgram =
+        gl::linkProgram({{GL_VERTEX_SHADER, "app.vert",
+                          "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n"},
+                         {GL_FRAGMENT_SHADER, "app.frag",
+                          "#version 450 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n"}});
     ASSERT_TRUE(appFb.ok() && appProgram.ok());
     gl::VertexArray appVao = gl::makeVertexArray();
     GLuint appBuffer = 0, appSampler = 0;
@@ -449,7 +459,8 @@ TEST(Engine, LeavesTheApplicationsGlStateAsItFoundIt) {
 
     ASSERT_EQ(fk_engine_occlusion(e.get(), &frame, lights.data(), 4), 0) << fk_error(e.get());
     EXPECT_TRUE(readState() == before) << "after fk_engine_occlusion";
-    ASSERT_EQ(fk_engine_draw(e.get(), &frame, lights.data(), 4, appFb->get()), 0) << fk_error(e.get());
+    ASSERT_EQ(fk_engine_draw(e.get(), &frame, lights.data(), 4, appFb->get()), 0)
+        << fk_error(e.get());
     EXPECT_TRUE(readState() == before) << "after fk_engine_draw";
     float coverage[4];
     ASSERT_EQ(fk_engine_read_coverage(e.get(), coverage, 4), 4);
@@ -492,8 +503,8 @@ TEST(Engine, BadArgumentsAreRefusedByNameWithNothingDrawnAndNoGlError) {
     ASSERT_GE(preset, 0);
     const std::vector<fk_light> good = engineLights(scene, preset);
     const DepthTarget target = makeDepthTarget(scene.width, scene.height, 1, GL_DEPTH_COMPONENT32F);
-    const fk_frame frame = frameFor(scene, target, {0, 0, scene.width, scene.height},
-                                    FK_DEPTH_MINUS_ONE_TO_ONE);
+    const fk_frame frame =
+        frameFor(scene, target, {0, 0, scene.width, scene.height}, FK_DEPTH_MINUS_ONE_TO_ONE);
     DepthPass(scene).draw(target, frame);
     ASSERT_EQ(fk_engine_occlusion(e.get(), &frame, good.data(), 4), 0);
     const std::vector<float> measured = readCoverage(e.get(), 4);
@@ -520,60 +531,120 @@ TEST(Engine, BadArgumentsAreRefusedByNameWithNothingDrawnAndNoGlError) {
         return l;
     };
     std::vector<Case> cases = {
-        {"depth 0", [&] { auto f = withFrame([](fk_frame& x) { x.depth_texture = 0; });
-                          return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"depth 0",
+         [&] {
+             auto f = withFrame([](fk_frame& x) { x.depth_texture = 0; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "fk_engine_occlusion: frame.depth_texture: expected the name of a GL texture, got 0"},
-        {"not a texture", [&] { auto f = withFrame([](fk_frame& x) { x.depth_texture = 987654; });
-                                return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"not a texture",
+         [&] {
+             auto f = withFrame([](fk_frame& x) { x.depth_texture = 987654; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.depth_texture: expected the name of a GL texture, got 987654"},
-        {"colour texture", [&] { auto f = withFrame([&](fk_frame& x) { x.depth_texture = notDepth.get(); });
-                                 return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"colour texture",
+         [&] {
+             auto f = withFrame([&](fk_frame& x) { x.depth_texture = notDepth.get(); });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.depth_texture: expected a depth format"},
-        {"wrong size", [&] { auto f = withFrame([](fk_frame& x) { x.width = 640; });
-                             return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"wrong size",
+         [&] {
+             auto f = withFrame([](fk_frame& x) { x.width = 640; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.depth_texture: is 320 x 180; expected the frame's width x height, 640 x 180"},
-        {"size mismatch", [&] { auto f = withFrame([](fk_frame& x) { x.width = 640, x.height = 360; });
-                                return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"size mismatch",
+         [&] {
+             auto f = withFrame([](fk_frame& x) { x.width = 640, x.height = 360; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.depth_texture: is 320 x 180; expected the frame's width x height, 640 x 360"},
-        {"viewport out", [&] { auto f = withFrame([](fk_frame& x) { x.viewport[0] = 10; });
-                               return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
-         "frame.viewport: expected x, y >= 0, w, h >= 1 inside the 320 x 180 depth texture, got [10, 0, 320, 180]"},
-        {"nan view", [&] { auto f = withFrame([&](fk_frame& x) { x.view[5] = nan; });
-                           return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"viewport out",
+         [&] {
+             auto f = withFrame([](fk_frame& x) { x.viewport[0] = 10; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
+         "frame.viewport: expected x, y >= 0, w, h >= 1 inside the 320 x 180 depth texture, got "
+         "[10, 0, 320, 180]"},
+        {"nan view",
+         [&] {
+             auto f = withFrame([&](fk_frame& x) { x.view[5] = nan; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.view: expected 16 finite numbers"},
-        {"inf projection", [&] { auto f = withFrame([&](fk_frame& x) { x.projection[0] = inf; });
-                                 return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"inf projection",
+         [&] {
+             auto f = withFrame([&](fk_frame& x) { x.projection[0] = inf; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.projection: expected 16 finite numbers"},
-        {"negative dt", [&] { auto f = withFrame([](fk_frame& x) { x.dt_seconds = -1; });
-                              return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"negative dt",
+         [&] {
+             auto f = withFrame([](fk_frame& x) { x.dt_seconds = -1; });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.dt_seconds: expected a finite number >= 0, got -1"},
-        {"convention", [&] { auto f = withFrame([](fk_frame& x) { const int seven = 7; std::memcpy(&x.depth_convention, &seven, sizeof seven); });
-                             return fk_engine_occlusion(e.get(), &f, good.data(), 4); },
+        {"convention",
+         [&] {
+             auto f = withFrame([](fk_frame& x) {
+                 const int seven = 7;
+                 std::memcpy(&x.depth_convention, &seven, sizeof seven);
+             });
+             return fk_engine_occlusion(e.get(), &f, good.data(), 4);
+         },
          "frame.depth_convention: expected 0, 1 or 2"},
         {"count", [&] { return fk_engine_occlusion(e.get(), &frame, good.data(), 5); },
          "count: expected 0..4 (the engine's max_lights), got 5"},
         {"null lights", [&] { return fk_engine_occlusion(e.get(), &frame, nullptr, 2); },
          "lights: expected an array, got NULL"},
-        {"nan position", [&] { auto l = withLight(1, [&](fk_light& x) { x.position[2] = nan; });
-                               return fk_engine_occlusion(e.get(), &frame, l.data(), 4); },
+        {"nan position",
+         [&] {
+             auto l = withLight(1, [&](fk_light& x) { x.position[2] = nan; });
+             return fk_engine_occlusion(e.get(), &frame, l.data(), 4);
+         },
          "lights[1].position: expected 3 finite numbers"},
-        {"negative radius", [&] { auto l = withLight(0, [](fk_light& x) { x.radius = -0.5f; });
-                                  return fk_engine_occlusion(e.get(), &frame, l.data(), 4); },
+        {"negative radius",
+         [&] {
+             auto l = withLight(0, [](fk_light& x) { x.radius = -0.5f; });
+             return fk_engine_occlusion(e.get(), &frame, l.data(), 4);
+         },
          "lights[0].radius: expected a positive number (world units), got -0.5"},
-        {"zero direction", [&] { auto l = withLight(2, [](fk_light& x) { x.direction[0] = x.direction[1] = x.direction[2] = 0; });
-                                 return fk_engine_occlusion(e.get(), &frame, l.data(), 4); },
+        {"zero direction",
+         [&] {
+             auto l = withLight(
+                 2, [](fk_light& x) { x.direction[0] = x.direction[1] = x.direction[2] = 0; });
+             return fk_engine_occlusion(e.get(), &frame, l.data(), 4);
+         },
          "lights[2].direction: expected a non-zero direction"},
-        {"huge angle", [&] { auto l = withLight(3, [](fk_light& x) { x.radius = 60; });
-                             return fk_engine_occlusion(e.get(), &frame, l.data(), 4); },
+        {"huge angle",
+         [&] {
+             auto l = withLight(3, [](fk_light& x) { x.radius = 60; });
+             return fk_engine_occlusion(e.get(), &frame, l.data(), 4);
+         },
          "lights[3].radius: expected an angle in (0, 45] degrees, got 60"},
-        {"type", [&] { auto l = withLight(0, [](fk_light& x) { const int nine = 9; std::memcpy(&x.type, &nine, sizeof nine); });
-                       return fk_engine_occlusion(e.get(), &frame, l.data(), 4); },
+        {"type",
+         [&] {
+             auto l = withLight(0, [](fk_light& x) {
+                 const int nine = 9;
+                 std::memcpy(&x.type, &nine, sizeof nine);
+             });
+             return fk_engine_occlusion(e.get(), &frame, l.data(), 4);
+         },
          "lights[0].type: expected FK_LIGHT_DIRECTIONAL (0) or FK_LIGHT_POINT (1), got 9"},
-        {"preset id", [&] { auto l = withLight(0, [](fk_light& x) { x.preset = 3; });
-                            return fk_engine_draw(e.get(), &frame, l.data(), 4, fb->get()); },
-         "fk_engine_draw: lights[0].preset: expected -1 or an id from fk_engine_load_preset (0..0), got 3"},
-        {"nan intensity", [&] { auto l = withLight(0, [&](fk_light& x) { x.intensity = nan; });
-                                return fk_engine_draw(e.get(), &frame, l.data(), 4, fb->get()); },
+        {"preset id",
+         [&] {
+             auto l = withLight(0, [](fk_light& x) { x.preset = 3; });
+             return fk_engine_draw(e.get(), &frame, l.data(), 4, fb->get());
+         },
+         "fk_engine_draw: lights[0].preset: expected -1 or an id from fk_engine_load_preset "
+         "(0..0), got 3"},
+        {"nan intensity",
+         [&] {
+             auto l = withLight(0, [&](fk_light& x) { x.intensity = nan; });
+             return fk_engine_draw(e.get(), &frame, l.data(), 4, fb->get());
+         },
          "lights[0].intensity: expected a finite number >= 0"},
         {"framebuffer", [&] { return fk_engine_draw(e.get(), &frame, good.data(), 4, 424242); },
          "fk_engine_draw: framebuffer: expected 0 or the name of a GL framebuffer, got 424242"},
@@ -589,7 +660,8 @@ TEST(Engine, BadArgumentsAreRefusedByNameWithNothingDrawnAndNoGlError) {
          "fk_engine_set_samples: samples_per_side: expected 1..64, got 0"},
         {"transmittance", [&] { return fk_engine_set_transmittance(e.get(), 0, 31337); },
          "fk_engine_set_transmittance: texture: expected 0 or the name of a GL_TEXTURE_2D"},
-        {"draw view", [&] { return fk_engine_draw_view(e.get(), 4, &frame, good.data(), 4, fb->get()); },
+        {"draw view",
+         [&] { return fk_engine_draw_view(e.get(), 4, &frame, good.data(), 4, fb->get()); },
          "fk_engine_draw_view: view: expected 0..3, got 4"},
     };
     for (const Case& c : cases) {

@@ -39,9 +39,9 @@ inline DepthTarget makeDepthTarget(int width, int height, int samples, GLenum fo
     t.depth = gl::Texture(name);
     GLuint fb = 0;
     glCreateFramebuffers(1, &fb);
-    glNamedFramebufferTexture(fb, format == GL_DEPTH24_STENCIL8 ? GL_DEPTH_STENCIL_ATTACHMENT
-                                                                : GL_DEPTH_ATTACHMENT,
-                              name, 0);
+    glNamedFramebufferTexture(
+        fb, format == GL_DEPTH24_STENCIL8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, name,
+        0);
     glNamedFramebufferDrawBuffer(fb, GL_NONE);
     t.framebuffer = gl::Framebuffer(fb);
     return t;
@@ -81,7 +81,8 @@ inline fk_frame frameFor(const Scene& scene, const DepthTarget& t, std::array<in
     const auto view = toFloat(lookAtMatrix(scene.camera));
     const auto proj =
         projectionFor(scene.camera, double(viewport[2]) / double(viewport[3]), convention);
-    for (int i = 0; i < 16; ++i) f.view[i] = view[std::size_t(i)], f.projection[i] = proj[std::size_t(i)];
+    for (int i = 0; i < 16; ++i)
+        f.view[i] = view[std::size_t(i)], f.projection[i] = proj[std::size_t(i)];
     f.dt_seconds = dt;
     return f;
 }
@@ -103,7 +104,8 @@ class DepthPass {
         GLuint b = 0, vao = 0;
         glCreateBuffers(1, &b);
         const MeshVertex none{};
-        glNamedBufferStorage(b, GLsizeiptr(std::max<std::size_t>(1, mesh.size()) * sizeof(MeshVertex)),
+        glNamedBufferStorage(b,
+                             GLsizeiptr(std::max<std::size_t>(1, mesh.size()) * sizeof(MeshVertex)),
                              mesh.empty() ? &none : mesh.data(), 0);
         m_buffer = gl::Buffer(b);
         glCreateVertexArrays(1, &vao);
@@ -125,13 +127,14 @@ class DepthPass {
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) {
                 float sum = 0;
-                for (int k = 0; k < 4; ++k) sum += frame.projection[k * 4 + r] * frame.view[c * 4 + k];
+                for (int k = 0; k < 4; ++k)
+                    sum += frame.projection[k * 4 + r] * frame.view[c * 4 + k];
                 vp[std::size_t(c * 4 + r)] = sum;
             }
         const bool reversed = frame.depth_convention == FK_DEPTH_REVERSED_Z;
-        glClipControl(GL_LOWER_LEFT,
-                      frame.depth_convention == FK_DEPTH_MINUS_ONE_TO_ONE ? GL_NEGATIVE_ONE_TO_ONE
-                                                                          : GL_ZERO_TO_ONE);
+        glClipControl(GL_LOWER_LEFT, frame.depth_convention == FK_DEPTH_MINUS_ONE_TO_ONE
+                                         ? GL_NEGATIVE_ONE_TO_ONE
+                                         : GL_ZERO_TO_ONE);
         glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.get());
         glViewport(0, 0, t.width, t.height);
         glDepthMask(GL_TRUE);

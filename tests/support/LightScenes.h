@@ -62,7 +62,8 @@ inline Scene lampScene(int lights, unsigned seed, bool translucent = true, int w
                       q.y > b.min.y - l.radius && q.y < b.max.y + l.radius &&
                       q.z > b.min.z - l.radius && q.z < b.max.z + l.radius;
         }
-        for (const Sphere& sp : s.spheres) inside |= length(l.position - sp.center) < sp.radius + l.radius;
+        for (const Sphere& sp : s.spheres)
+            inside |= length(l.position - sp.center) < sp.radius + l.radius;
         if (!inside) s.lights.push_back(l);
     }
     return s;

@@ -1,0 +1,115 @@
+// The installed package as an outside project uses it: `cmake --install` into a fresh prefix,
+// examples/embed-gl configured with find_package(flarekit 0.2) against that prefix alone,
+// built and run (its own EGL context, reversed-Z MSAA depth, a sun and 254 street lamps),
+// its coverage checked against `flarekit visibility --method raycast`; and a C program built
+// with pkg-config.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "TempDir.h"
+
+using flarekit::test::TempDir;
+
+namespace {
+
+int run(const std::string& command, const std::string& log) {
+    const int status = std::system((command + " >" + log + " 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Lamps whose sphere is under 2 px in radius on screen are below what a depth buffer resolves
+// (a 1-px light is 4 samples of 4x MSAA); the comparison keeps those at 2 px and more.
+constexpr double kMinRadiusPx = 2.0;
+constexpr double kTolerance = 0.02;
+
+}  // namespace
+
+TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCaster) {
+    TempDir dir;
+    const std::string prefix = dir.file("prefix"), build = dir.file("embed"), log = dir.file("log");
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --install " + FLAREKIT_BUILD_DIR + " --prefix " +
+                      prefix,
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " -S " + FLAREKIT_EXAMPLE_DIR + " -B " + build +
+                      " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + prefix,
+                  log),
+              0)
+        << slurp(log);
+    // It found the installed package, not the build tree.
+    const std::string cache = slurp(build + "/CMakeCache.txt");
+    EXPECT_NE(cache.find("flarekit_DIR:PATH=" + prefix + "/lib/cmake/flarekit"), std::string::npos);
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --build " + build, log), 0) << slurp(log);
+
+    const std::string scene = dir.file("city.json"), coverage = dir.file("coverage.json"),
+                      rays = dir.file("rays.json");
+    ASSERT_EQ(run(build + "/embed-gl --frames 3 --out " + dir.file("frame.ppm") +
+                      " --scene-json " + scene + " --coverage-json " + coverage,
+                  log),
+              0)
+        << slurp(log);
+    EXPECT_NE(slurp(log).find("255 lights (the sun and 254 lamps)"), std::string::npos) << slurp(log);
+    ASSERT_EQ(run(std::string(FLAREKIT_CLI) + " visibility " + scene +
+                      " --method raycast --samples 64 --json",
+                  rays),
+              0)
+        << slurp(rays);
+    const auto sceneJson = nlohmann::json::parse(slurp(scene));
+    const auto engine = nlohmann::json::parse(slurp(coverage))["coverage"];
+    const auto truth = nlohmann::json::parse(slurp(rays))["lights"];
+    ASSERT_EQ(engine.size(), truth.size());
+    const auto& eye = sceneJson["camera"]["position"];
+    const double focalPx = double(sceneJson["image"]["height"]) / 2 /
+                           std::tan(double(sceneJson["camera"]["fov_y_deg"]) * M_PI / 360);
+    int compared = 0, hidden = 0, partial = 0;
+    for (std::size_t i = 0; i < engine.size(); ++i) {
+        const auto& light = sceneJson["lights"][i];
+        double radiusPx = 0;
+        if (light["type"] == "point") {
+            const auto& p = light["position"];
+            const double d = std::hypot(double(p[0]) - double(eye[0]), double(p[1]) - double(eye[1]),
+                                        double(p[2]) - double(eye[2]));
+            radiusPx = focalPx * double(light["radius"]) / d;
+        } else {
+            radiusPx = focalPx * double(light["angular_radius_deg"]) * M_PI / 180;
+        }
+        if (double(truth[i]["in_frame"]) < 1 || radiusPx < kMinRadiusPx) continue;
+        const double t = truth[i]["coverage"];
+        EXPECT_NEAR(double(engine[i]), t, kTolerance) << "light " << i << ", " << radiusPx << " px";
+        ++compared;
+        hidden += t == 0 ? 1 : 0;
+        partial += t > 0.02 && t < 0.98 ? 1 : 0;
+    }
+    EXPECT_GE(compared, 40);
+    EXPECT_GE(hidden, 10);  // lamps behind buildings, and one lamp's bulb before another
+    EXPECT_GE(partial, 2);  // the globes at the block corners
+
+    // C, through pkg-config.
+    const std::string exe = dir.file("c_api_check");
+    ASSERT_EQ(run("PKG_CONFIG_PATH=" + prefix + "/lib/pkgconfig cc -std=c99 -Wall -Werror " +
+                      FLAREKIT_C_CHECK + " -o " + exe +
+                      " $(PKG_CONFIG_PATH=" + prefix + "/lib/pkgconfig pkg-config --cflags --libs flarekit) -Wl,-rpath," +
+                      prefix + "/lib",
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(run(exe, log), 0) << slurp(log);
+    EXPECT_NE(slurp(log).find("fk_engine_create: max_lights: expected 1..16384, got 0"),
+              std::string::npos)
+        << slurp(log);
+}

@@ -1,0 +1,15 @@
+/* flarekit.h as a C compiler sees it, linked through pkg-config: the library's version, and an
+ * engine refused before any GL work with its reason in fk_error(NULL). */
+#include <flarekit/flarekit.h>
+#include <stdio.h>
+#include <string.h>
+
+int main(void) {
+    fk_engine* engine;
+    if (fk_version() != FK_VERSION_MAJOR * 10000 + FK_VERSION_MINOR * 100) return 1;
+    engine = fk_engine_create(0);
+    if (engine != NULL) return 2;
+    if (strstr(fk_error(NULL), "max_lights: expected 1..") == NULL) return 3;
+    printf("%s\n", fk_error(NULL));
+    return 0;
+}
