@@ -47,7 +47,8 @@ inline City makeCity() {
             c.boxes.push_back({{cx - 15, 0, cz - 15}, {cx + 15, h, cz + 15}, {0.45f, 0.42f, 0.4f}});
         }
     const auto lampAt = [&](float x, float z, float radius = 0.3f) {
-        c.boxes.push_back({{x - 0.07f, 0, z - 0.07f}, {x + 0.07f, 4.05f - radius, z + 0.07f},
+        c.boxes.push_back({{x - 0.07f, 0, z - 0.07f},
+                           {x + 0.07f, 4.05f - radius, z + 0.07f},
                            {0.2f, 0.2f, 0.22f}});
         c.lamps.push_back({{x, 4.35f, z}, radius});
     };
@@ -82,10 +83,13 @@ inline bool writeSceneJson(const City& c, int width, int height, const std::stri
     std::fprintf(f, " \"ground\": {\"height\": 0},\n \"lights\": [\n");
     std::fprintf(f,
                  "  {\"type\": \"directional\", \"direction\": [%g, %g, %g], "
-                 "\"angular_radius_deg\": %g, \"intensity\": 3000}",
+                 "\"angular_radius_deg\": %g, \"color\": [1, 0.87, 0.67], \"intensity\": 3000, "
+                 "\"preset\": \"tanczos-classic\"}",
                  c.sunDirection.x, c.sunDirection.y, c.sunDirection.z, c.sunRadiusDeg);
     for (const Lamp& l : c.lamps)
-        std::fprintf(f, ",\n  {\"type\": \"point\", \"position\": [%g, %g, %g], \"radius\": %g}",
+        std::fprintf(f,
+                     ",\n  {\"type\": \"point\", \"position\": [%g, %g, %g], \"radius\": %g, "
+                     "\"color\": [1, 0.75, 0.45], \"intensity\": 2500, \"preset\": \"subtle\"}",
                      l.position.x, l.position.y, l.position.z, l.radius);
     std::fprintf(f, "],\n \"objects\": [\n");
     for (std::size_t i = 0; i < c.boxes.size(); ++i) {

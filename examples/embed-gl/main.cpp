@@ -34,9 +34,22 @@ Mat lookAt(V3 eye, V3 target) {
     const float sl = std::sqrt(s.x * s.x + s.z * s.z);
     s = {s.x / sl, 0.f, s.z / sl};
     const V3 u{s.y * f.z - s.z * f.y, s.z * f.x - s.x * f.z, s.x * f.y - s.y * f.x};
-    return {s.x, u.x, -f.x, 0, s.y, u.y, -f.y, 0, s.z, u.z, -f.z, 0,
-            -(s.x * eye.x + s.y * eye.y + s.z * eye.z), -(u.x * eye.x + u.y * eye.y + u.z * eye.z),
-            f.x * eye.x + f.y * eye.y + f.z * eye.z, 1};
+    return {s.x,
+            u.x,
+            -f.x,
+            0,
+            s.y,
+            u.y,
+            -f.y,
+            0,
+            s.z,
+            u.z,
+            -f.z,
+            0,
+            -(s.x * eye.x + s.y * eye.y + s.z * eye.z),
+            -(u.x * eye.x + u.y * eye.y + u.z * eye.z),
+            f.x * eye.x + f.y * eye.y + f.z * eye.z,
+            1};
 }
 
 //! Reversed-Z with an infinite far plane, for glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE):
@@ -176,14 +189,20 @@ bool headlessContext() {
     for (int attempt = 0; attempt < 2; ++attempt) {
         if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr) &&
             eglBindAPI(EGL_OPENGL_API)) {
-            const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+            const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                      4,
+                                      EGL_CONTEXT_MINOR_VERSION,
+                                      5,
                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                      EGL_NONE};
             EGLContext ctx = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
-            if (ctx != EGL_NO_CONTEXT && eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx))
+            if (ctx != EGL_NO_CONTEXT &&
+                eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx))
                 return true;
         }
-        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        display =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     }
     return false;
 }
@@ -198,14 +217,20 @@ bool parse(int argc, char** argv, Options& o) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
-        if (a == "--frames" && more) o.frames = std::atoi(argv[++i]);
+        if (a == "--frames" && more)
+            o.frames = std::atoi(argv[++i]);
         else if (a == "--size" && more) {
             if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2) return false;
-        } else if (a == "--out" && more) o.out = argv[++i];
-        else if (a == "--scene-json" && more) o.sceneJson = argv[++i];
-        else if (a == "--coverage-json" && more) o.coverageJson = argv[++i];
-        else if (a == "--window") o.window = true;
-        else return false;
+        } else if (a == "--out" && more)
+            o.out = argv[++i];
+        else if (a == "--scene-json" && more)
+            o.sceneJson = argv[++i];
+        else if (a == "--coverage-json" && more)
+            o.coverageJson = argv[++i];
+        else if (a == "--window")
+            o.window = true;
+        else
+            return false;
     }
     return o.frames >= 1 && o.width >= 16 && o.height >= 16 && o.width <= 8192 && o.height <= 8192;
 }
@@ -233,8 +258,9 @@ GLuint framebuffer(GLuint color, GLuint depth) {
 int main(int argc, char** argv) {
     Options o;
     if (!parse(argc, argv, o)) {
-        std::fprintf(stderr, "usage: embed-gl [--frames N] [--size WxH] [--out F.ppm] "
-                             "[--scene-json S] [--coverage-json C] [--window]\n");
+        std::fprintf(stderr,
+                     "usage: embed-gl [--frames N] [--size WxH] [--out F.ppm] "
+                     "[--scene-json S] [--coverage-json C] [--window]\n");
         return 2;
     }
 #if EMBED_HAS_GLFW
@@ -251,7 +277,8 @@ int main(int argc, char** argv) {
 #else
     if (o.window) return std::fprintf(stderr, "embed-gl: built without GLFW\n"), 2;
 #endif
-    if (!o.window && !headlessContext()) return std::fprintf(stderr, "embed-gl: no EGL context\n"), 1;
+    if (!o.window && !headlessContext())
+        return std::fprintf(stderr, "embed-gl: no EGL context\n"), 1;
 
     const City city = makeCity();
     std::vector<Vertex> mesh;
@@ -289,7 +316,8 @@ int main(int argc, char** argv) {
     if (!flares) return std::fprintf(stderr, "embed-gl: %s\n", fk_error(nullptr)), 1;
     const int sunPreset = fk_engine_load_preset(flares, "tanczos-classic");
     const int lampPreset = fk_engine_load_preset(flares, "subtle");
-    if (sunPreset < 0 || lampPreset < 0) return std::fprintf(stderr, "embed-gl: %s\n", fk_error(flares)), 1;
+    if (sunPreset < 0 || lampPreset < 0)
+        return std::fprintf(stderr, "embed-gl: %s\n", fk_error(flares)), 1;
     const float sl = std::sqrt(city.sunDirection.x * city.sunDirection.x +
                                city.sunDirection.y * city.sunDirection.y +
                                city.sunDirection.z * city.sunDirection.z);
@@ -321,7 +349,8 @@ int main(int argc, char** argv) {
 #endif
         view.eye.z = city.eye.z - 0.15f * float(frame);  // walking down the street
         const Mat v = lookAt(view.eye, view.target);
-        const Mat p = reversedInfinitePerspective(view.fovYDeg, float(w) / float(h), view.nearPlane);
+        const Mat p =
+            reversedInfinitePerspective(view.fovYDeg, float(w) / float(h), view.nearPlane);
         const Mat vp = multiply(p, v);
         // The sky pass needs the inverse; a finite projection gives it without special cases.
         Mat pFinite = p;
@@ -334,22 +363,38 @@ int main(int argc, char** argv) {
         {
             const float* m = vpFinite.data();
             float t[16];
-            t[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] + m[9] * m[7] * m[14] + m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
-            t[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] - m[8] * m[7] * m[14] - m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
-            t[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] + m[8] * m[7] * m[13] + m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
-            t[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] - m[8] * m[6] * m[13] - m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
-            t[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] - m[9] * m[3] * m[14] - m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
-            t[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] + m[8] * m[3] * m[14] + m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
-            t[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] - m[8] * m[3] * m[13] - m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
-            t[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] + m[8] * m[2] * m[13] + m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
-            t[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] + m[5] * m[3] * m[14] + m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
-            t[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] - m[4] * m[3] * m[14] - m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
-            t[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] + m[4] * m[3] * m[13] + m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
-            t[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] - m[4] * m[2] * m[13] - m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
-            t[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] - m[5] * m[3] * m[10] - m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
-            t[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] + m[4] * m[3] * m[10] + m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
-            t[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] - m[4] * m[3] * m[9] - m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
-            t[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] + m[4] * m[2] * m[9] + m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
+            t[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] +
+                   m[9] * m[7] * m[14] + m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
+            t[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] -
+                   m[8] * m[7] * m[14] - m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
+            t[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] +
+                   m[8] * m[7] * m[13] + m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
+            t[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] -
+                    m[8] * m[6] * m[13] - m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
+            t[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] -
+                   m[9] * m[3] * m[14] - m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
+            t[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] +
+                   m[8] * m[3] * m[14] + m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
+            t[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] -
+                   m[8] * m[3] * m[13] - m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
+            t[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] +
+                    m[8] * m[2] * m[13] + m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
+            t[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] +
+                   m[5] * m[3] * m[14] + m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
+            t[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] -
+                   m[4] * m[3] * m[14] - m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
+            t[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] +
+                    m[4] * m[3] * m[13] + m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
+            t[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] -
+                    m[4] * m[2] * m[13] - m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
+            t[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] -
+                   m[5] * m[3] * m[10] - m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
+            t[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] +
+                   m[4] * m[3] * m[10] + m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
+            t[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] -
+                    m[4] * m[3] * m[9] - m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
+            t[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] +
+                    m[4] * m[2] * m[9] + m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
             const float det = m[0] * t[0] + m[1] * t[4] + m[2] * t[8] + m[3] * t[12];
             for (int i = 0; i < 16; ++i) inv[i] = t[i] / det;
         }
@@ -363,20 +408,24 @@ int main(int argc, char** argv) {
         glClear(GL_DEPTH_BUFFER_BIT);
         glDisable(GL_DEPTH_TEST);
         glUseProgram(skyProgram);
-        glUniformMatrix4fv(glGetUniformLocation(skyProgram, "inverseViewProjection"), 1, GL_FALSE, inv.data());
+        glUniformMatrix4fv(glGetUniformLocation(skyProgram, "inverseViewProjection"), 1, GL_FALSE,
+                           inv.data());
         glUniform3f(glGetUniformLocation(skyProgram, "sunDirection"), sun.x, sun.y, sun.z);
-        glUniform1f(glGetUniformLocation(skyProgram, "cosSunRadius"), std::cos(city.sunRadiusDeg * 3.14159265f / 180.f));
+        glUniform1f(glGetUniformLocation(skyProgram, "cosSunRadius"),
+                    std::cos(city.sunRadiusDeg * 3.14159265f / 180.f));
         glBindVertexArray(empty);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_GREATER);
         glUseProgram(sceneProgram);
-        glUniformMatrix4fv(glGetUniformLocation(sceneProgram, "viewProjection"), 1, GL_FALSE, vp.data());
+        glUniformMatrix4fv(glGetUniformLocation(sceneProgram, "viewProjection"), 1, GL_FALSE,
+                           vp.data());
         glUniform3f(glGetUniformLocation(sceneProgram, "sunDirection"), sun.x, sun.y, sun.z);
         glBindVertexArray(vao);
         glDrawArrays(GL_TRIANGLES, 0, GLsizei(mesh.size()));
         glDisable(GL_DEPTH_TEST);
-        glBlitNamedFramebuffer(msTarget, hdrTarget, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(msTarget, hdrTarget, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+                               GL_NEAREST);
 
         // flarekit: every light measured in the MSAA depth, then drawn into the HDR colour.
         fk_frame f{};
@@ -429,7 +478,8 @@ int main(int argc, char** argv) {
         FILE* c = std::fopen(o.coverageJson.c_str(), "w");
         if (!c) return 1;
         std::fprintf(c, "{\"coverage\": [");
-        for (int i = 0; i < n; ++i) std::fprintf(c, "%s%.6f", i ? ", " : "", coverage[std::size_t(i)]);
+        for (int i = 0; i < n; ++i)
+            std::fprintf(c, "%s%.6f", i ? ", " : "", coverage[std::size_t(i)]);
         std::fprintf(c, "]}\n");
         std::fclose(c);
     }

@@ -1,5 +1,5 @@
-// GPU time of a span of GL commands, from a GL_TIME_ELAPSED query: what the benchmarks report
-// as "GPU ms". A GL context must be current; move-only.
+// GPU time of a span of GL commands, from two GL_TIMESTAMP queries around it: what the
+// benchmarks report as "GPU ms". A GL context must be current; move-only.
 #pragma once
 
 namespace flarekit {
@@ -8,7 +8,9 @@ class GpuTimer {
   public:
     GpuTimer();
     ~GpuTimer();
-    GpuTimer(GpuTimer&& other) noexcept : m_query(other.m_query) { other.m_query = 0; }
+    GpuTimer(GpuTimer&& other) noexcept : m_queries{other.m_queries[0], other.m_queries[1]} {
+        other.m_queries[0] = other.m_queries[1] = 0;
+    }
     GpuTimer& operator=(GpuTimer&& other) noexcept;
     GpuTimer(const GpuTimer&) = delete;
     GpuTimer& operator=(const GpuTimer&) = delete;
@@ -19,7 +21,7 @@ class GpuTimer {
     double milliseconds() const;
 
   private:
-    unsigned m_query = 0;
+    unsigned m_queries[2] = {0, 0};
 };
 
 }  // namespace flarekit

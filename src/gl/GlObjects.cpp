@@ -176,30 +176,34 @@ Status requireCurrentContext(const char* what) {
 
 namespace flarekit {
 
+// Two GL_TIMESTAMP queries rather than one GL_TIME_ELAPSED: Mesa's llvmpipe leaves compute
+// dispatches out of elapsed-time queries and reports a first draw's as hours, while its
+// timestamps bracket the work; GPU drivers give the same figure either way.
 GpuTimer::GpuTimer() {
-    glCreateQueries(GL_TIME_ELAPSED, 1, &m_query);
+    glCreateQueries(GL_TIMESTAMP, 2, m_queries);
 }
 GpuTimer::~GpuTimer() {
-    if (m_query) glDeleteQueries(1, &m_query);
+    if (m_queries[0]) glDeleteQueries(2, m_queries);
 }
 GpuTimer& GpuTimer::operator=(GpuTimer&& other) noexcept {
     if (this != &other) {
-        if (m_query) glDeleteQueries(1, &m_query);
-        m_query = other.m_query;
-        other.m_query = 0;
+        if (m_queries[0]) glDeleteQueries(2, m_queries);
+        m_queries[0] = std::exchange(other.m_queries[0], 0u);
+        m_queries[1] = std::exchange(other.m_queries[1], 0u);
     }
     return *this;
 }
 void GpuTimer::begin() const {
-    glBeginQuery(GL_TIME_ELAPSED, m_query);
+    glQueryCounter(m_queries[0], GL_TIMESTAMP);
 }
 void GpuTimer::end() const {
-    glEndQuery(GL_TIME_ELAPSED);
+    glQueryCounter(m_queries[1], GL_TIMESTAMP);
 }
 double GpuTimer::milliseconds() const {
-    GLuint64 ns = 0;
-    glGetQueryObjectui64v(m_query, GL_QUERY_RESULT, &ns);
-    return double(ns) * 1e-6;
+    GLuint64 start = 0, end = 0;
+    glGetQueryObjectui64v(m_queries[0], GL_QUERY_RESULT, &start);
+    glGetQueryObjectui64v(m_queries[1], GL_QUERY_RESULT, &end);
+    return end > start ? double(end - start) * 1e-6 : 0.0;
 }
 
 }  // namespace flarekit

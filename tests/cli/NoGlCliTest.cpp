@@ -14,11 +14,14 @@ TEST(CliWithoutGl, GlPathsRefuseWithOneLineAndWriteNothing) {
     TempDir dir;
     const std::string scene = std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json";
     const std::string sunset = std::string(FLAREKIT_SAMPLES) + "/sunset.png";
+    const std::string city = std::string(FLAREKIT_SAMPLES) + "/scenes/city-lamps.json";
     for (const std::vector<std::string>& args : {
              std::vector<std::string>{"render", scene, "-o", dir.file("r.png")},
              {"demo", "-o", dir.file("drive"), "--frames", "2"},
              {"visibility", scene, "--method", "compute"},
              {"postfx", sunset, "-o", dir.file("p.png"), "--backend", "gl"},
+             {"lights", city, "-o", dir.file("l.png")},
+             {"visibility", city, "--method", "compute"},
          }) {
         const CliResult r = runCli(args);
         EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
@@ -28,6 +31,7 @@ TEST(CliWithoutGl, GlPathsRefuseWithOneLineAndWriteNothing) {
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
     // The same subcommands' CPU paths.
     EXPECT_EQ(runCli({"visibility", scene, "--method", "raycast", "--json"}).exitCode, 0);
+    EXPECT_EQ(runCli({"visibility", city, "--method", "raycast", "--samples", "8"}).exitCode, 0);
     EXPECT_EQ(runCli({"postfx", sunset, "-o", dir.file("p.png")}).exitCode, 0);
 }
 #endif

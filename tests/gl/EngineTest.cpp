@@ -79,14 +79,7 @@ TEST(Engine, TwoHundredFiftySixLampsMatchTheRayCasterThroughFlarekitsRenderer) {
     ASSERT_TRUE(renderer->draw(scene).ok());
     const SceneTargets targets = sceneTargets(*renderer);
     ASSERT_NE(targets.transmittance, 0u);
-    fk_frame frame{};
-    frame.depth_texture = targets.multisampleDepth;
-    frame.width = scene.width, frame.height = scene.height;
-    frame.viewport[2] = scene.width, frame.viewport[3] = scene.height;
-    const auto view = toFloat(lookAtMatrix(scene.camera));
-    const auto proj = toFloat(perspectiveMatrix(scene.camera, double(scene.width) / scene.height));
-    std::copy(view.begin(), view.end(), frame.view);
-    std::copy(proj.begin(), proj.end(), frame.projection);
+    const fk_frame frame = engineFrame(scene, *renderer);
     ASSERT_EQ(fk_engine_set_transmittance(e.get(), 0, targets.transmittance), 0)
         << fk_error(e.get());
     const std::vector<fk_light> lights = engineLights(scene, -1);

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "flarekit/EngineScene.h"
 #include "flarekit/flarekit.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
@@ -164,22 +165,9 @@ class DepthPass {
     GLsizei m_count = 0;
 };
 
+//! The scene's lights with every flare drawn by `preset` (-1: none).
 inline std::vector<fk_light> engineLights(const Scene& scene, int preset) {
-    std::vector<fk_light> out;
-    for (const SceneLight& l : sceneLights(scene)) {
-        fk_light f{};
-        f.type = l.type == LightType::Point ? FK_LIGHT_POINT : FK_LIGHT_DIRECTIONAL;
-        f.position[0] = float(l.position.x), f.position[1] = float(l.position.y),
-        f.position[2] = float(l.position.z);
-        f.direction[0] = float(l.direction.x), f.direction[1] = float(l.direction.y),
-        f.direction[2] = float(l.direction.z);
-        f.radius = float(l.type == LightType::Point ? l.radius : l.angularRadiusDeg);
-        f.color[0] = float(l.color.x), f.color[1] = float(l.color.y), f.color[2] = float(l.color.z);
-        f.intensity = float(l.intensity);
-        f.preset = preset;
-        out.push_back(f);
-    }
-    return out;
+    return flarekit::engineLights(scene, [preset](const std::string&) { return preset; });
 }
 
 }  // namespace flarekit::test

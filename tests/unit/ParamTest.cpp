@@ -194,8 +194,9 @@ TEST(Params, SceneJsonReadsThroughTheSameTables) {
     EXPECT_EQ(
         error(R"("objects": [{"type": "triangles", "vertices": [[0,0,0],[1,0,0],[0,"x",0]]}])"),
         R"(s.json: objects[0].vertices[2]: expected an array of 3 numbers, got [0,"x",0])");
-    EXPECT_EQ(error(R"("objects": [], "lights": [])"),
-              "s.json: lights: unknown key (expected one of: image, camera, sun, ground, objects)");
+    EXPECT_EQ(error(R"("objects": [], "light": [])"),
+              "s.json: light: unknown key (expected one of: image, camera, sun, lights, ground, "
+              "objects)");
     const Param<SceneCamera>& fov = *findParam<SceneCamera>(kSceneCameraParams, "fov_y_deg");
     EXPECT_EQ(expectedText(fov), "a number in (0, 179]");
     SceneCamera camera;

@@ -96,6 +96,7 @@ void addElementsCommand(CLI::App& app, int& exitCode);
 void addPresetsCommand(CLI::App& app, int& exitCode);
 void addVisibilityCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
+void addLightsCommand(CLI::App& app, int& exitCode);
 void addDemoCommand(CLI::App& app, int& exitCode);
 void addPspCommand(CLI::App& app, int& exitCode);
 void addPostFxCommand(CLI::App& app, int& exitCode);

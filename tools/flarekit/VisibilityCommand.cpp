@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "Common.h"
+#include "EngineRun.h"
 #include "JsonLine.h"
 #include "ParamOptions.h"
 #include "flarekit/Render.h"
@@ -26,9 +27,32 @@ struct VisibilityArgs {
 #if FLAREKIT_HAS_GL
 //! Draws the frame and runs the method until its result arrives; `latency` says how many
 //! extra frames a late method (pbo, query) took.
+//! Every light at once through the engine API's batched pass (`compute` on a scene with
+//! more than the sun): the coverage the embedding API would give an application.
+Result<VisibilityResult> runEngineLights(const VisibilityArgs& a, const Scene& scene) {
+    EngineRunOptions o;
+    o.source = a.scene;
+    o.method = a.method;
+    o.render = a.render;
+    o.render.shadows = false;
+    o.flares = false;
+    const auto start = std::chrono::steady_clock::now();
+    auto run = runEngine(scene, o);
+    if (!run) return run.error();
+    VisibilityResult r;
+    r.method = a.method;
+    r.lights = run->lights;
+    r.coverage = r.lights.front().coverage;
+    r.inFrame = r.lights.front().inFrame;
+    r.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
     if (const auto lights = sceneLights(scene);
         lights.size() > 1 || lights.front().type != LightType::Directional) {
+        if (a.method == "compute") return runEngineLights(a, scene);
         return invalidInput(a.scene + ": lights: --method " + a.method +
                             " measures one directional light (the sun); this scene has " +
                             std::to_string(lights.size()) +

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     addPresetsCommand(app, exitCode);
     addVisibilityCommand(app, exitCode);
     addRenderCommand(app, exitCode);
+    addLightsCommand(app, exitCode);
     addDemoCommand(app, exitCode);
     addPspCommand(app, exitCode);
     addPostFxCommand(app, exitCode);

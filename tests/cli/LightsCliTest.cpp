@@ -1,0 +1,112 @@
+// `flarekit lights` and the many-light Scene JSON through the CLI: every light measured by the
+// engine API (and by `visibility --method compute`, the same pass) against the ray caster, the
+// "lights" array of `visibility --json`, and bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "Cli.h"
+
+using namespace flarekit::test;
+
+namespace {
+const std::string kCity = std::string(FLAREKIT_SAMPLES) + "/scenes/city-lamps.json";
+
+//! Light i's radius on screen in pixels.
+double radiusPx(const nlohmann::json& scene, std::size_t i) {
+    const auto& eye = scene["camera"]["position"];
+    const double focal = double(scene["image"]["height"]) / 2 /
+                         std::tan(double(scene["camera"]["fov_y_deg"]) * M_PI / 360);
+    const auto& l = scene["lights"][i];
+    if (l["type"] != "point") return focal * double(l["angular_radius_deg"]) * M_PI / 180;
+    const auto& p = l["position"];
+    return focal * double(l["radius"]) /
+           std::hypot(double(p[0]) - double(eye[0]), double(p[1]) - double(eye[1]),
+                      double(p[2]) - double(eye[2]));
+}
+//! 0.02, or for small lights what 4x MSAA depth can resolve: its samples sit a quarter pixel
+//! apart, so an edge is placed to within 1/8 px, which moves up to 2R x 1/8 px^2 of a light
+//! of radius R px (area pi R^2): 0.08 / R.
+double depthTolerance(double radiusPx) {
+    return std::max(0.02, 0.08 / radiusPx);
+}
+}  // namespace
+
+TEST(CliVisibility, JsonListsEveryLightInSceneOrder) {
+    const CliResult r = runCli({"visibility", kCity, "--samples", "16", "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["lights"].size(), 255u);
+    EXPECT_EQ(j["lights"][0]["coverage"], j["coverage"]);  // the top level is the first light
+    const CliResult one = runCli(
+        {"visibility", std::string(FLAREKIT_SAMPLES) + "/scenes/contract-example.json", "--json"});
+    ASSERT_EQ(one.exitCode, 0);
+    EXPECT_NE(one.out.find("\"lights\": [{\"coverage\": "), std::string::npos) << one.out;
+}
+
+FLAREKIT_GL_TEST(CliLights, EveryLightMatchesTheRayCasterAndTheImageHasTheirFlares) {
+    TempDir dir;
+    const CliResult r =
+        runCli({"lights", kCity, "-o", dir.file("city.png"), "--msaa", "4", "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto engine = nlohmann::json::parse(r.out);
+    EXPECT_EQ(engine["method"], "compute");
+    ASSERT_EQ(engine["lights_coverage"].size(), 255u);
+    EXPECT_TRUE(std::filesystem::file_size(dir.file("city.png")) > 10000);
+
+    const CliResult compute = runCli({"visibility", kCity, "--method", "compute", "--msaa", "4", "--json"});
+    ASSERT_EQ(compute.exitCode, 0) << compute.err;
+    const auto sameApi = nlohmann::json::parse(compute.out)["lights"];
+    const CliResult rays = runCli({"visibility", kCity, "--samples", "64", "--json"});
+    ASSERT_EQ(rays.exitCode, 0) << rays.err;
+    const auto truth = nlohmann::json::parse(rays.out)["lights"];
+    const auto scene = nlohmann::json::parse(slurp(kCity));
+    int compared = 0;
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        // The same pass through both subcommands.
+        EXPECT_EQ(sameApi[i]["coverage"], engine["lights_coverage"][i]["coverage"]) << i;
+        // 2 px: a depth buffer resolves no smaller light (PackageTest.cpp).
+        if (double(truth[i]["in_frame"]) < 1 || radiusPx(scene, i) < 2) continue;
+        EXPECT_NEAR(double(engine["lights_coverage"][i]["coverage"]), double(truth[i]["coverage"]),
+                    depthTolerance(radiusPx(scene, i)))
+            << "light " << i;
+        ++compared;
+    }
+    EXPECT_GE(compared, 40);
+}
+
+FLAREKIT_GL_TEST(CliLights, BadInputExitsTwoWithOneLineAndWritesNothing) {
+    TempDir dir;
+    auto scene = nlohmann::json::parse(slurp(kCity));
+    scene["lights"][3]["preset"] = "no-such-preset";
+    const std::string badPreset = dir.file("bad-preset.json");
+    std::ofstream(badPreset) << scene.dump();
+    const std::string out = dir.file("out.png");
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    };
+    for (const Case& c : std::vector<Case>{
+             {{"lights", badPreset, "-o", out}, badPreset + ": lights[3].preset: "},
+             {{"lights", dir.file("missing.json"), "-o", out}, "missing.json"},
+             {{"lights", kCity, "-o", out, "--method", "pbo"}, "--method"},
+             {{"lights", kCity, "-o", out, "--samples", "0"}, "--samples"},
+             {{"lights", kCity, "-o", dir.file("no/such/dir/x.png")}, "no/such/dir"},
+         }) {
+        const CliResult r = runCli(c.args);
+        EXPECT_EQ(r.exitCode, 2) << c.args[1] << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(out));
+    // A point light needs the batched pass: the one-sun methods refuse it by name.
+    const CliResult pbo = runCli({"visibility", kCity, "--method", "pbo"});
+    EXPECT_EQ(pbo.exitCode, 2);
+    EXPECT_NE(pbo.err.find("lights: --method pbo measures one directional light (the sun)"),
+              std::string::npos)
+        << pbo.err;
+}

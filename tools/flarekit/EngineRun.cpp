@@ -1,0 +1,94 @@
+#include "EngineRun.h"
+
+#if FLAREKIT_HAS_GL
+#include <chrono>
+#include <map>
+#include <memory>
+
+#include "flarekit/EngineScene.h"
+#include "flarekit/GpuTimer.h"
+#include "flarekit/HeadlessGl.h"
+#include "flarekit/flarekit.h"
+#endif
+#include "Common.h"
+
+namespace flarekit::cli {
+
+#if FLAREKIT_HAS_GL
+namespace {
+struct EngineDeleter {
+    void operator()(fk_engine* e) const { fk_engine_destroy(e); }
+};
+}  // namespace
+
+Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& o) {
+    auto gl = gl::HeadlessGl::create();
+    if (!gl) return gl.error();
+    auto renderer = SceneRenderer::create(scene, o.render);
+    if (!renderer) return renderer.error();
+    if (Status s = renderer->draw(scene); !s) return s.error();
+    const std::size_t count = sceneLights(scene).size();
+    std::unique_ptr<fk_engine, EngineDeleter> engine(fk_engine_create(int(count)));
+    if (!engine) return internalError(fk_error(nullptr));
+    fk_engine* e = engine.get();
+    if (fk_engine_set_method(e, o.method.c_str()) < 0 ||
+        fk_engine_set_samples(e, o.samplesPerSide) < 0)
+        return invalidInput(fk_error(e));
+    // Each preset named by a light, loaded once; a light whose preset fails names itself.
+    std::map<std::string, int> ids;
+    std::string presetError;
+    std::size_t index = 0;
+    const auto presetId = [&](const std::string& name) {
+        auto [it, fresh] = ids.try_emplace(name, -1);
+        if (fresh && o.flares) it->second = fk_engine_load_preset(e, name.c_str());
+        if (it->second < 0 && o.flares && presetError.empty()) {
+            presetError = o.source + ": lights[" + std::to_string(index) + "].preset: " +
+                          fk_error(e);
+        }
+        ++index;
+        return it->second < 0 ? -1 : it->second;
+    };
+    const std::vector<fk_light> lights = engineLights(scene, presetId);
+    if (!presetError.empty()) return invalidInput(presetError);
+    const fk_frame frame = engineFrame(scene, *renderer);
+    if (fk_engine_set_transmittance(e, 0, engineTransmittance(*renderer)) < 0)
+        return internalError(fk_error(e));
+
+    EngineRun run;
+    run.renderer = (*gl)->renderer();
+    const GpuTimer occlusionTimer, drawTimer;
+    const auto start = std::chrono::steady_clock::now();
+    occlusionTimer.begin();
+    const int measured = fk_engine_occlusion(e, &frame, lights.data(), int(lights.size()));
+    occlusionTimer.end();
+    if (measured < 0) return invalidInput(o.source + ": " + fk_error(e));
+    if (o.flares) {
+        drawTimer.begin();
+        const int drawn = fk_engine_draw(e, &frame, lights.data(), int(lights.size()),
+                                         engineColorFramebuffer(*renderer));
+        drawTimer.end();
+        if (drawn < 0) return invalidInput(o.source + ": " + fk_error(e));
+    }
+    run.cpuMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    run.occlusionGpuMs = occlusionTimer.milliseconds();
+    if (o.flares) run.drawGpuMs = drawTimer.milliseconds();
+    std::vector<float> coverage(lights.size()), inFrame(lights.size());
+    if (fk_engine_read_view(e, 0, coverage.data(), inFrame.data(), nullptr, int(lights.size())) < 0)
+        return internalError(fk_error(e));
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        run.lights.push_back({double(coverage[i]), double(inFrame[i])});
+    if (o.flares) {
+        auto image = renderer->readColor();
+        if (!image) return image.error();
+        run.image = std::move(*image);
+    }
+    return run;
+}
+#else
+Result<EngineRun> runEngine(const Scene&, const EngineRunOptions& o) {
+    return builtWithoutGl(o.flares ? "lights" : "visibility --method " + o.method);
+}
+#endif
+
+}  // namespace flarekit::cli

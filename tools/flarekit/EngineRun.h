@@ -1,0 +1,35 @@
+// A scene file through the engine API, as an application would use it: flarekit's renderer
+// draws the frame, the C API measures every light on its depth (and transmittance) in one
+// batched pass and, when asked, adds every light's flare. Shared by `flarekit lights` and
+// `flarekit visibility --method compute`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "flarekit/Image.h"
+#include "flarekit/Render.h"
+#include "flarekit/Result.h"
+#include "flarekit/Visibility.h"
+
+namespace flarekit::cli {
+
+struct EngineRunOptions {
+    std::string source;  //!< the scene file, for messages
+    std::string method = "compute";
+    RenderOptions render;
+    int samplesPerSide = 32;
+    bool flares = true;  //!< draw the flares and read the frame back
+};
+
+struct EngineRun {
+    std::vector<LightVisibility> lights;  //!< raw coverage and in-frame share, scene order
+    Image image;                          //!< linear HDR frame with the flares (flares only)
+    double cpuMs = 0;                     //!< wall time inside fk_engine_occlusion + fk_engine_draw
+    double occlusionGpuMs = 0, drawGpuMs = 0;  //!< timer queries around the two calls
+    std::string renderer;                      //!< GL_RENDERER
+};
+
+Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& options);
+
+}  // namespace flarekit::cli
