@@ -145,6 +145,7 @@ struct Engine::Impl {
     TemporalParams temporal;
     int lastViews = 0;
     std::array<int, FK_MAX_VIEWS> lastCount{};
+    std::vector<float> packed;  //!< the lights as uploaded, kept to reuse its memory
 
     GLuint uploadLights(const fk_light* lights, int count);
     const SamplePattern& patternFor(GLuint texture, int samples);
@@ -155,20 +156,7 @@ GLuint Engine::Impl::uploadLights(const fk_light* lights, int count) {
     const GLuint buffer = lightBuffers[std::size_t(ringAt)].get();
     ringAt = (ringAt + 1) % kLightRing;
     if (count == 0) return buffer;
-    std::vector<float> packed(std::size_t(count) * 16, 0.f);
-    for (int i = 0; i < count; ++i) {
-        const fk_light& l = lights[i];
-        float* p = packed.data() + std::size_t(i) * 16;
-        const bool point = l.type == FK_LIGHT_POINT;
-        std::memcpy(p, l.position, 3 * sizeof(float));
-        p[3] = point ? 1.f : 0.f;
-        std::memcpy(p + 4, l.direction, 3 * sizeof(float));
-        // Directional radii arrive in degrees; the shaders take radians.
-        p[7] = point ? l.radius : l.radius * 0.017453292519943295f;
-        std::memcpy(p + 8, l.color, 3 * sizeof(float));
-        p[11] = l.intensity;
-        p[12] = float(l.preset);
-    }
+    packLights(lights, count, packed);
     glNamedBufferSubData(buffer, 0, GLsizeiptr(packed.size() * sizeof(float)), packed.data());
     return buffer;
 }

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace flarekit::engine {
@@ -93,44 +94,62 @@ Status checkLights(const fk_light* lights, int count, int maxLights, int presetC
     if (count > 0 && !lights) return invalidInput("lights: expected an array, got NULL");
     for (int i = 0; i < count; ++i) {
         const fk_light& l = lights[i];
-        const std::string at = "lights[" + std::to_string(i) + "].";
+        // The field's name is built only for a message: the checks run every frame.
+        const auto at = [i] { return "lights[" + std::to_string(i) + "]."; };
         if (l.type != FK_LIGHT_DIRECTIONAL && l.type != FK_LIGHT_POINT) {
-            return invalidInput(at +
+            return invalidInput(at() +
                                 "type: expected FK_LIGHT_DIRECTIONAL (0) or FK_LIGHT_POINT "
                                 "(1), got " +
                                 std::to_string(int(l.type)));
         }
         const bool point = l.type == FK_LIGHT_POINT;
         if (point && !finite(l.position, 3))
-            return invalidInput(at + "position: expected 3 finite numbers");
+            return invalidInput(at() + "position: expected 3 finite numbers");
         if (!point) {
             if (!finite(l.direction, 3))
-                return invalidInput(at + "direction: expected 3 finite numbers");
+                return invalidInput(at() + "direction: expected 3 finite numbers");
             const float d2 = l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
                              l.direction[2] * l.direction[2];
             if (!(d2 > 0) || !std::isfinite(d2))
-                return invalidInput(at + "direction: expected a non-zero direction");
+                return invalidInput(at() + "direction: expected a non-zero direction");
         }
         const float maxRadius = point ? 1e30f : kMaxAngularRadiusDeg;
         if (!std::isfinite(l.radius) || l.radius <= 0 || l.radius > maxRadius) {
-            return invalidInput(at + "radius: expected " +
+            return invalidInput(at() + "radius: expected " +
                                 (point ? std::string("a positive number (world units)")
                                        : "an angle in (0, 45] degrees") +
                                 ", got " + number(l.radius));
         }
         if (!finite(l.color, 3) || l.color[0] < 0 || l.color[1] < 0 || l.color[2] < 0)
-            return invalidInput(at + "color: expected 3 finite numbers >= 0");
+            return invalidInput(at() + "color: expected 3 finite numbers >= 0");
         if (!std::isfinite(l.intensity) || l.intensity < 0)
-            return invalidInput(at + "intensity: expected a finite number >= 0, got " +
+            return invalidInput(at() + "intensity: expected a finite number >= 0, got " +
                                 number(l.intensity));
         if (l.preset < -1 || l.preset >= presetCount) {
-            return invalidInput(at + "preset: expected -1 or an id from fk_engine_load_preset (" +
+            return invalidInput(at() + "preset: expected -1 or an id from fk_engine_load_preset (" +
                                 (presetCount ? "0.." + std::to_string(presetCount - 1)
                                              : std::string("none loaded")) +
                                 "), got " + std::to_string(l.preset));
         }
     }
     return Ok{};
+}
+
+void packLights(const fk_light* lights, int count, std::vector<float>& packed) {
+    packed.assign(std::size_t(count) * 16, 0.f);
+    for (int i = 0; i < count; ++i) {
+        const fk_light& l = lights[i];
+        float* p = packed.data() + std::size_t(i) * 16;
+        const bool point = l.type == FK_LIGHT_POINT;
+        std::memcpy(p, l.position, 3 * sizeof(float));
+        p[3] = point ? 1.f : 0.f;
+        std::memcpy(p + 4, l.direction, 3 * sizeof(float));
+        // Directional radii arrive in degrees; the shaders take radians.
+        p[7] = point ? l.radius : l.radius * 0.017453292519943295f;
+        std::memcpy(p + 8, l.color, 3 * sizeof(float));
+        p[11] = l.intensity;
+        p[12] = float(l.preset);
+    }
 }
 
 Status checkFramebuffer(unsigned framebuffer) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "flarekit/Result.h"
 #include "flarekit/flarekit.h"
@@ -25,6 +26,10 @@ Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at
 //! (directional: at most 45 degrees), non-negative colour and intensity, preset -1 or a
 //! loaded id.
 Status checkLights(const fk_light* lights, int count, int maxLights, int presetCount);
+
+//! The lights as the shaders' Light records (light_view.glsl): 16 floats each, directional
+//! radii turned into radians. `packed` is resized to count x 16.
+void packLights(const fk_light* lights, int count, std::vector<float>& packed);
 
 //! A framebuffer name the application owns: 0 (the default one) or a complete framebuffer.
 Status checkFramebuffer(unsigned framebuffer);

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "Cli.h"
@@ -58,7 +58,8 @@ FLAREKIT_GL_TEST(CliLights, EveryLightMatchesTheRayCasterAndTheImageHasTheirFlar
     ASSERT_EQ(engine["lights_coverage"].size(), 255u);
     EXPECT_TRUE(std::filesystem::file_size(dir.file("city.png")) > 10000);
 
-    const CliResult compute = runCli({"visibility", kCity, "--method", "compute", "--msaa", "4", "--json"});
+    const CliResult compute =
+        runCli({"visibility", kCity, "--method", "compute", "--msaa", "4", "--json"});
     ASSERT_EQ(compute.exitCode, 0) << compute.err;
     const auto sameApi = nlohmann::json::parse(compute.out)["lights"];
     const CliResult rays = runCli({"visibility", kCity, "--samples", "64", "--json"});

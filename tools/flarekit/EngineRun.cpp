@@ -42,8 +42,8 @@ Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& o) {
         auto [it, fresh] = ids.try_emplace(name, -1);
         if (fresh && o.flares) it->second = fk_engine_load_preset(e, name.c_str());
         if (it->second < 0 && o.flares && presetError.empty()) {
-            presetError = o.source + ": lights[" + std::to_string(index) + "].preset: " +
-                          fk_error(e);
+            presetError =
+                o.source + ": lights[" + std::to_string(index) + "].preset: " + fk_error(e);
         }
         ++index;
         return it->second < 0 ? -1 : it->second;

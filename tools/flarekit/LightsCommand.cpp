@@ -41,10 +41,11 @@ void printReport(const LightsArgs& a, const EngineRun& run) {
     }
     int seen = 0;
     for (const LightVisibility& l : run.lights) seen += l.coverage > 0 ? 1 : 0;
-    std::printf("%s: %zu lights, %d at least partly visible; %.3f ms CPU in the API calls, GPU "
-                "%.3f ms occlusion + %.3f ms flares (%s)\n",
-                a.out.c_str(), run.lights.size(), seen, run.cpuMs, run.occlusionGpuMs,
-                run.drawGpuMs, run.renderer.c_str());
+    std::printf(
+        "%s: %zu lights, %d at least partly visible; %.3f ms CPU in the API calls, GPU "
+        "%.3f ms occlusion + %.3f ms flares (%s)\n",
+        a.out.c_str(), run.lights.size(), seen, run.cpuMs, run.occlusionGpuMs, run.drawGpuMs,
+        run.renderer.c_str());
     if (a.verbose) {
         for (std::size_t i = 0; i < run.lights.size(); ++i)
             std::printf("  light %zu: coverage %.4f, %.1f%% in frame\n", i, run.lights[i].coverage,
