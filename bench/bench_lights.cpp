@@ -161,7 +161,15 @@ void BM_CheckAndPack(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_CheckAndPack)->Arg(1024)->Arg(4096)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Occlusion)->Arg(1)->Arg(16)->Arg(128)->Arg(1024)->Arg(4096)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Draw)->Arg(1)->Arg(16)->Arg(128)->Arg(1024)->Arg(4096)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Occlusion)
+    ->Arg(1)
+    ->Arg(16)
+    ->Arg(128)
+    ->Arg(1024)
+    ->Arg(4096)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Draw)->Arg(1)->Arg(16)->Arg(128)->Arg(1024)->Arg(4096)->UseManualTime()->Unit(
+    benchmark::kMillisecond);
 BENCHMARK(BM_OcclusionOneByOne)->Arg(1024)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

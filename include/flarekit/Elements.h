@@ -21,8 +21,12 @@ enum class ElementType {
     Rays,     //!< many thin spikes of random angle and length (seeded)
     Disc,     //!< secondary disc: outer-to-inner colour gradient, soft edge
     Polygon,  //!< iris ghost: regular N-blade polygon, soft edge
+    //! A glow stretched along the frame edge nearest the light, brightest as the light crosses
+    //! that edge and gone `reach` inside or outside it (BCC's Edge Streak, FlareSim's Outside
+    //! Source): the flare leaves the frame with the light instead of vanishing at the border.
+    EdgeStreak,
 };
-inline constexpr int kElementTypeCount = 6;
+inline constexpr int kElementTypeCount = 7;
 std::optional<ElementType> parseElementType(std::string_view name);
 std::string_view elementTypeName(ElementType type);
 
@@ -48,6 +52,7 @@ struct ElementParams {
     int blades = 6;  //!< polygon: number of aperture blades
     std::uint32_t seed = 1;  //!< rays: random seed (same seed, same rays, on every platform)
     BlendMode blend = BlendMode::Add;  //!< how the element composites onto the image
+    float reach = 0.25f;  //!< edge streak: fades out this far from the edge, image heights
 };
 
 //! Bit of an element type in Param::appliesTo.
@@ -62,7 +67,8 @@ inline constexpr std::uint32_t kGlow = typeBit(ElementType::Glow),
                                kStreaks = typeBit(ElementType::Streaks),
                                kRays = typeBit(ElementType::Rays),
                                kDisc = typeBit(ElementType::Disc),
-                               kPolygon = typeBit(ElementType::Polygon), kSpikes = kStreaks | kRays;
+                               kPolygon = typeBit(ElementType::Polygon), kSpikes = kStreaks | kRays,
+                               kEdgeStreak = typeBit(ElementType::EdgeStreak);
 }  // namespace element_bits
 
 //! Every element parameter. Ranges are what still gives a sensible image; they exist to catch
@@ -80,7 +86,7 @@ inline constexpr Param<ElementParams> kElementParams[] = {
                                       "linearly to `color`; default `color`",
                                       element_bits::kGlow | element_bits::kRing |
                                           element_bits::kDisc | element_bits::kPolygon |
-                                          element_bits::kSpikes),
+                                          element_bits::kSpikes | element_bits::kEdgeStreak),
     param<&ElementParams::intensity>("intensity", 0, 1000, "", "multiplies the colour"),
     param<&ElementParams::aspect>("aspect", 0.05, 20, "",
                                   "horizontal stretch (2: twice as wide as tall)"),
@@ -105,6 +111,10 @@ inline constexpr Param<ElementParams> kElementParams[] = {
     param<&ElementParams::seed>("seed", 0, 4294967295.0, "",
                                 "random seed of the rays (same seed, same rays everywhere)",
                                 element_bits::kRays),
+    param<&ElementParams::reach>("reach", 0.01, 4, "image heights",
+                                 "edge streak: distance from the frame edge (inside or outside) at "
+                                 "which it has faded out",
+                                 element_bits::kEdgeStreak),
     choice<&ElementParams::blend>("blend", kBlendModeNames,
                                   "`add` (light adds, HDR-correct), `screen` (soft add for display "
                                   "images), `over` (alpha over)"),

@@ -60,6 +60,17 @@ inline Point flareVectorPoint(Point light, int width, int height, float t) {
     return {cx + t * (light.x - cx), cy + t * (light.y - cy)};
 }
 
+//! Where an edge streak goes for a light at `light` (pixels, top-left origin) in a width x
+//! height frame: the nearest point of the frame's border (the light clamped to the frame when
+//! outside), along that edge (rotationDeg 0 on the top and bottom edges, 90 on the sides), at
+//! weight 1 - smoothstep(0, reach x height, distance from the edge) on either side of it.
+struct EdgePlacement {
+    Point centre;
+    float rotationDeg = 0;
+    float weight = 0;
+};
+EdgePlacement edgeStreakPlacement(Point light, int width, int height, float reach);
+
 struct FlareStats {
     std::size_t elementsDrawn = 0;
     std::size_t pixelsShaded = 0;  //!< pixels evaluated: the cost of the flare

@@ -117,6 +117,12 @@ FK_API int fk_engine_draw_view(fk_engine* e, int view, const fk_frame* frame,
  * pixel of view `view` (the application's foliage alpha, glass, fog cards); it multiplies every
  * visible depth sample, sampled over the depth texture's extent. 0 removes it. */
 FK_API int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture);
+/* Off-screen lights: the application rendered view `view`'s depth past its viewport (a guard
+ * band: the whole depth texture, with the frame's projection extended over it), so directions
+ * that fall outside the viewport but inside the texture are measured instead of counted as
+ * unseen. A light just outside the frame then keeps its coverage, and its edge-streak elements
+ * stay lit as it leaves. in_frame still counts the viewport only. Off (0) by default. */
+FK_API int fk_engine_set_guard_band(fk_engine* e, int view, int enabled);
 /* Directions sampled per light: samples_per_side^2 (1..64; default 32, 1,024 rays per light,
  * a standard error near 0.004 on an edge across the disc). */
 FK_API int fk_engine_set_samples(fk_engine* e, int samples_per_side);

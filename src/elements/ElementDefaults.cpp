@@ -36,6 +36,13 @@ ElementParams defaultElement(ElementType type) {
             p.softness = 0.15f;
             p.intensity = 0.4f;
             break;
+        case ElementType::EdgeStreak:  // a long thin smear along the border
+            p.size = 0.3f;
+            p.aspect = 8.f;
+            p.color = {1.f, 0.75f, 0.5f};
+            p.innerColor = Rgb{1.f, 1.f, 1.f};
+            p.intensity = 0.5f;
+            break;
         case ElementType::Polygon:
             p.size = 0.07f;
             p.color = {0.4f, 0.6f, 0.5f};

@@ -10,8 +10,8 @@
 namespace flarekit {
 
 namespace {
-constexpr std::array<std::string_view, kElementTypeCount> kTypeNames = {"glow", "ring", "streaks",
-                                                                        "rays", "disc", "polygon"};
+constexpr std::array<std::string_view, kElementTypeCount> kTypeNames = {
+    "glow", "ring", "streaks", "rays", "disc", "polygon", "edge-streak"};
 Rgb scaled(const Rgb& c, float k) {
     return {c[0] * k, c[1] * k, c[2] * k};
 }
@@ -67,6 +67,7 @@ Rgba shadeElement(const ElementKernel& k, float dx, float dy) {
     if (lx * lx + ly * ly >= (1.f + k.pixel) * (1.f + k.pixel)) return {};
     switch (k.params.type) {
         case ElementType::Glow:
+        case ElementType::EdgeStreak:  // the glow's falloff, stretched along the edge
             return shadeGlow(k, lx, ly);
         case ElementType::Ring:
             return shadeRing(k, lx, ly);

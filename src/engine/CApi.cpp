@@ -166,6 +166,12 @@ int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture) {
     });
 }
 
+int fk_engine_set_guard_band(fk_engine* e, int view, int enabled) {
+    return guarded(e, "fk_engine_set_guard_band", [&](flarekit::engine::Engine& en) {
+        return en.setGuardBand(view, enabled != 0);
+    });
+}
+
 int fk_engine_set_samples(fk_engine* e, int samples_per_side) {
     return guarded(e, "fk_engine_set_samples",
                    [&](flarekit::engine::Engine& en) { return en.setSamples(samples_per_side); });

@@ -57,7 +57,7 @@ struct CoverageProgram {
     gl::Program program;
     GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1,
           stateBase = -1, perSide = -1, attack = -1, release = -1, hasTransmittance = -1,
-          depthSize = -1, sampleCount = -1, samplePositions = -1;
+          textureSize = -1, guardBand = -1, sampleCount = -1, samplePositions = -1;
 };
 
 Result<CoverageProgram> linkCoverage(bool multisample) {
@@ -78,7 +78,8 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
     c.attack = gl::uniformLocation(n, "attackStep");
     c.release = gl::uniformLocation(n, "releaseStep");
     c.hasTransmittance = gl::uniformLocation(n, "hasTransmittance");
-    c.depthSize = gl::uniformLocation(n, "depthSize");
+    c.textureSize = gl::uniformLocation(n, "depthTextureSize");
+    c.guardBand = gl::uniformLocation(n, "depthPastViewport");
     if (multisample) {
         c.sampleCount = gl::uniformLocation(n, "sampleCount");
         c.samplePositions = gl::uniformLocation(n, "samplePositions");
@@ -89,7 +90,7 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
 struct FlareProgram {
     gl::Program program;
     GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1, presetId = -1,
-          t = -1, halfSize = -1, guardBand = -1, referenceFlux = -1;
+          t = -1, halfSize = -1, guardBand = -1, referenceFlux = -1, edgeStreak = -1, reach = -1;
 };
 
 Result<FlareProgram> linkFlare() {
@@ -110,6 +111,8 @@ Result<FlareProgram> linkFlare() {
     f.halfSize = gl::uniformLocation(n, "halfSize");
     f.guardBand = gl::uniformLocation(n, "guardBand");
     f.referenceFlux = gl::uniformLocation(n, "referenceFlux");
+    f.edgeStreak = gl::uniformLocation(n, "edgeStreak");
+    f.reach = gl::uniformLocation(n, "reach");
     return f;
 }
 
@@ -141,6 +144,7 @@ struct Engine::Impl {
     std::vector<LoadedPreset> presets;
     std::vector<SamplePattern> patterns;
     std::array<GLuint, FK_MAX_VIEWS> transmittance{};
+    std::array<bool, FK_MAX_VIEWS> guardBand{};
     int samplesPerSide = kDefaultSamplesPerSide;
     TemporalParams temporal;
     int lastViews = 0;
@@ -293,6 +297,15 @@ Status Engine::setTransmittance(int view, unsigned texture) {
     return Ok{};
 }
 
+Status Engine::setGuardBand(int view, bool enabled) {
+    if (view < 0 || view >= FK_MAX_VIEWS) {
+        return invalidInput("view: expected 0.." + std::to_string(FK_MAX_VIEWS - 1) + ", got " +
+                            std::to_string(view));
+    }
+    m->guardBand[std::size_t(view)] = enabled;
+    return Ok{};
+}
+
 unsigned Engine::coverageTexture() const {
     return m->coverageImage.get();
 }
@@ -335,7 +348,8 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
                            float(smoothingStep(f.dt_seconds, m->temporal.attackSeconds)));
         glProgramUniform1f(p, c.release,
                            float(smoothingStep(f.dt_seconds, m->temporal.releaseSeconds)));
-        glProgramUniform2f(p, c.depthSize, float(f.width), float(f.height));
+        glProgramUniform2f(p, c.textureSize, float(f.width), float(f.height));
+        glProgramUniform1i(p, c.guardBand, m->guardBand[v] ? 1 : 0);
         const GLuint transmittance = m->transmittance[v];
         glProgramUniform1i(p, c.hasTransmittance, transmittance != 0 ? 1 : 0);
         glBindTextureUnit(kTransmittanceUnit, transmittance);
@@ -417,6 +431,8 @@ Status Engine::draw(int view, const fk_frame* frame, const fk_light* lights, int
         for (const ElementSprite& s : m->presets[id].sprites) {
             glProgramUniform1f(p, f.t, s.t);
             glProgramUniform2f(p, f.halfSize, s.halfW, s.halfH);
+            glProgramUniform1i(p, f.edgeStreak, s.edgeStreak ? 1 : 0);
+            glProgramUniform1f(p, f.reach, s.reach);
             glBindTextureUnit(kElementUnit, s.texture.get());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
         }

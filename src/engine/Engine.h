@@ -36,6 +36,7 @@ class Engine {
     //! number of lights written.
     Result<int> readView(int view, float* coverage, float* inFrame, float* filtered, int count);
     Status setTransmittance(int view, unsigned texture);
+    Status setGuardBand(int view, bool enabled);
     Status setSamples(int perSide);
     Status setTemporal(float attackSeconds, float releaseSeconds, float guardBand);
     Status reset();

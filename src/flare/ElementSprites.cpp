@@ -23,8 +23,12 @@ Result<std::vector<ElementSprite>> buildElementSprites(const Preset& preset, int
         const float extent = 2.f * radius * std::max(1.f, e.aspect) + 8.f;
         const float texScale = std::min(1.f, float(kMaxTextureSide) / extent);
         const Image image = renderElement(scaled, radius * texScale);
-        ElementSprite sprite{e.t, 0.5f * float(image.width()) / texScale,
-                             0.5f * float(image.height()) / texScale, e.blend,
+        ElementSprite sprite{e.t,
+                             0.5f * float(image.width()) / texScale,
+                             0.5f * float(image.height()) / texScale,
+                             e.blend,
+                             e.type == ElementType::EdgeStreak,
+                             e.reach,
                              gl::makeTexture2D(GL_RGBA16F, image.width(), image.height())};
         const GLuint tex = sprite.texture.get();
         glTextureSubImage2D(tex, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT,

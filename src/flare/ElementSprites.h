@@ -17,6 +17,8 @@ struct ElementSprite {
     float t;             //!< position on the flare vector
     float halfW, halfH;  //!< quad half size, frame pixels
     BlendMode blend;
+    bool edgeStreak;      //!< placed by edgeStreakPlacement instead of on the flare vector
+    float reach;          //!< edge streak: its reach (ElementParams::reach)
     gl::Texture texture;  //!< RGBA16F premultiplied, top row first, clamped to a clear border
 };
 

@@ -31,16 +31,22 @@ std::vector<PlacedElement> placeElements(const Image& image, const Preset& prese
     const float height = float(image.height());
     for (const ElementParams& e : preset.elements) {
         const float radius = e.size * height;
-        const float k = e.intensity * preset.intensity * intensity;
+        const bool edge = e.type == ElementType::EdgeStreak;
+        const EdgePlacement edgeAt =
+            edge ? edgeStreakPlacement(light, image.width(), image.height(), e.reach)
+                 : EdgePlacement{};
+        const float k = e.intensity * preset.intensity * intensity * (edge ? edgeAt.weight : 1.f);
         if (radius < kMinRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
         ElementParams scaled = e;
         scaled.intensity = k;
-        PlacedElement p{prepareElement(scaled, radius),
-                        flareVectorPoint(light, image.width(), image.height(), e.t),
-                        0,
-                        0,
-                        0,
-                        0};
+        if (edge) scaled.rotationDeg += edgeAt.rotationDeg;
+        PlacedElement p{
+            prepareElement(scaled, radius),
+            edge ? edgeAt.centre : flareVectorPoint(light, image.width(), image.height(), e.t),
+            0,
+            0,
+            0,
+            0};
         // Clip in double: a light far outside the frame must not overflow int.
         auto clip = [](double v, int hi) { return int(std::clamp(v, 0.0, double(hi))); };
         p.x0 = clip(std::floor(double(p.centre.x) - p.kernel.halfExtentX), image.width());
@@ -53,6 +59,31 @@ std::vector<PlacedElement> placeElements(const Image& image, const Preset& prese
 }
 
 }  // namespace
+
+EdgePlacement edgeStreakPlacement(Point light, int width, int height, float reach) {
+    const float w = float(width), h = float(height);
+    EdgePlacement p;
+    const float toLeft = light.x, toRight = w - light.x, toTop = light.y, toBottom = h - light.y;
+    const bool inside = std::min({toLeft, toRight, toTop, toBottom}) >= 0.f;
+    float distance = 0.f;
+    if (inside) {  // the nearest edge, and the point of it opposite the light
+        const float nearest = std::min({toLeft, toRight, toTop, toBottom});
+        distance = nearest;
+        const bool side = nearest == toLeft || nearest == toRight;
+        p.rotationDeg = side ? 90.f : 0.f;
+        p.centre = side ? Point{nearest == toLeft ? 0.f : w, light.y}
+                        : Point{light.x, nearest == toTop ? 0.f : h};
+    } else {  // the light clamped into the frame, along the edge it is beyond the most
+        p.centre = {std::clamp(light.x, 0.f, w), std::clamp(light.y, 0.f, h)};
+        const float dx = light.x - p.centre.x, dy = light.y - p.centre.y;
+        distance = std::sqrt(dx * dx + dy * dy);
+        p.rotationDeg = std::abs(dx) > std::abs(dy) ? 90.f : 0.f;
+    }
+    const float band = reach * h;
+    const float u = band > 0.f ? std::clamp(distance / band, 0.f, 1.f) : 1.f;
+    p.weight = 1.f - u * u * (3.f - 2.f * u);
+    return p;
+}
 
 FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity) {
     FlareStats stats;

@@ -85,7 +85,9 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     glProgramUniform1f(p, gl::uniformLocation(p, "brightnessScale"), result.flareIntensity);
     glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(w), float(h));
     const GLint centreAt = gl::uniformLocation(p, "centre"),
-                halfAt = gl::uniformLocation(p, "halfSize");
+                halfAt = gl::uniformLocation(p, "halfSize"),
+                weightAt = gl::uniformLocation(p, "elementWeight"),
+                transposedAt = gl::uniformLocation(p, "transposed");
 
     glBindFramebuffer(GL_FRAMEBUFFER, sceneTargets(target).framebuffer);
     glViewport(0, 0, w, h);
@@ -96,8 +98,15 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     glUseProgram(p);
     if (conditionQuery) glBeginConditionalRender(conditionQuery, GL_QUERY_NO_WAIT);
     for (const ElementSprite& s : m->sprites) {
-        const Point c = flareVectorPoint(result.sunPixel, w, h, s.t);  // top-left origin
+        // Top-left origin, as renderFlare places elements.
+        const EdgePlacement edge = s.edgeStreak
+                                       ? edgeStreakPlacement(result.sunPixel, w, h, s.reach)
+                                       : EdgePlacement{{}, 0.f, 1.f};
+        const Point c = s.edgeStreak ? edge.centre : flareVectorPoint(result.sunPixel, w, h, s.t);
+        if (edge.weight <= 0.f) continue;
         glProgramUniform2f(p, centreAt, c.x, float(h) - c.y);
+        glProgramUniform1f(p, weightAt, edge.weight);
+        glProgramUniform1i(p, transposedAt, edge.rotationDeg != 0.f ? 1 : 0);
         glProgramUniform2f(p, halfAt, s.halfW, s.halfH);
         setBlend(s.blend);
         glBindTextureUnit(0, s.texture.get());

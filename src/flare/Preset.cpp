@@ -162,6 +162,10 @@ std::string presetParameterReference() {
             case ElementType::Polygon:
                 os << "blades " << p.blades << ", softness " << p.softness;
                 break;
+            case ElementType::EdgeStreak:
+                os << "aspect " << p.aspect << ", reach " << p.reach
+                   << " (placed on the frame edge; t unused)";
+                break;
             case ElementType::Glow:
                 break;
         }

@@ -4,9 +4,13 @@
 // against renderFlare; the GL state it must leave alone; and every bad argument.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
+
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <numeric>
 
@@ -65,6 +69,17 @@ double worstError(const std::vector<float>& engine, const VisibilityResult& rays
     }
     return worst;
 }
+
+//! A preset file holding one edge streak, removed afterwards.
+struct TempPreset {
+    std::string path = std::filesystem::temp_directory_path() /
+                       ("flarekit-edge-" + std::to_string(::getpid()) + ".json");
+    TempPreset() {
+        std::ofstream(path) << R"({"name": "edge", "elements": [{"type": "edge-streak", "size": )"
+                               R"(0.25, "aspect": 8, "reach": 0.3, "intensity": 0.8}]})";
+    }
+    ~TempPreset() { std::filesystem::remove(path); }
+};
 
 }  // namespace
 
@@ -673,4 +688,89 @@ TEST(Engine, BadArgumentsAreRefusedByNameWithNothingDrawnAndNoGlError) {
     EXPECT_EQ(sum, 0.0);
     EXPECT_EQ(readCoverage(e.get(), 4), measured);
     EXPECT_EQ(fk_engine_occlusion(nullptr, &frame, good.data(), 4), -1);
+}
+
+TEST(Engine, AGuardBandKeepsALightJustOffScreenMeasuredAndItsEdgeStreakLit) {
+    // A 640x360 view inside a depth texture with a 64-pixel guard band all round, rendered with
+    // the view's projection extended over the band. A sphere light 30 px past the right edge,
+    // half behind a pole.
+    glContext();
+    Scene scene;
+    scene.width = 640, scene.height = 360;
+    scene.camera.position = {0, 0, 0};
+    scene.camera.lookAt = {0, 0, -1};
+    scene.sun.intensity = 0;
+    const double halfWidth = std::tan(30.0 * M_PI / 180) * 640.0 / 360.0;  // at 1 m, fov_y 60
+    const double x = (1 + 60.0 / 640.0) * halfWidth * 20;                  // 30 px outside
+    SceneLight lamp;
+    lamp.type = LightType::Point;
+    lamp.position = {x, 0, -20};
+    lamp.radius = 0.3;
+    lamp.intensity = 2000;
+    scene.lights = {lamp};
+    scene.boxes.push_back({{x * 0.6 - 2, -3, -12}, {x * 0.6, 3, -11.9}});  // ends mid-light
+    const VisibilityResult rays = truth(scene);
+    ASSERT_GT(rays.lights[0].coverage, 0.2);
+    ASSERT_LT(rays.lights[0].coverage, 0.8);
+    ASSERT_EQ(rays.lights[0].inFrame, 0.0);
+
+    const int band = 64;
+    const DepthTarget target =
+        makeDepthTarget(640 + 2 * band, 360 + 2 * band, 4, GL_DEPTH_COMPONENT32F);
+    const fk_frame view =
+        frameFor(scene, target, {band, band, 640, 360}, FK_DEPTH_MINUS_ONE_TO_ONE);
+    fk_frame whole = view;
+    whole.viewport[0] = whole.viewport[1] = 0;
+    whole.viewport[2] = target.width, whole.viewport[3] = target.height;
+    for (int c = 0; c < 4; ++c) {
+        whole.projection[c * 4 + 0] *= 640.f / float(target.width);
+        whole.projection[c * 4 + 1] *= 360.f / float(target.height);
+    }
+    DepthPass(scene).draw(target, whole);
+
+    EnginePtr e = makeEngine(1);
+    TempPreset streak;
+    const int preset = fk_engine_load_preset(e.get(), streak.path.c_str());
+    ASSERT_GE(preset, 0) << fk_error(e.get());
+    const std::vector<fk_light> light = engineLights(scene, preset);
+    float coverage = -1, inFrame = -1;
+    ASSERT_EQ(fk_engine_occlusion(e.get(), &view, light.data(), 1), 0) << fk_error(e.get());
+    ASSERT_EQ(fk_engine_read_view(e.get(), 0, &coverage, &inFrame, nullptr, 1), 1);
+    EXPECT_EQ(coverage, 0.f);  // screen-only: nothing of it is in the frame
+    ASSERT_EQ(fk_engine_set_guard_band(e.get(), 0, 1), 0);
+    ASSERT_EQ(fk_engine_occlusion(e.get(), &view, light.data(), 1), 0);
+    ASSERT_EQ(fk_engine_read_view(e.get(), 0, &coverage, &inFrame, nullptr, 1), 1);
+    EXPECT_NEAR(coverage, rays.lights[0].coverage, kTolerance);
+    EXPECT_EQ(inFrame, 0.f);
+
+    // The edge streak, drawn by the engine and by renderFlare with the same coverage.
+    ASSERT_EQ(fk_engine_reset(e.get()), 0);
+    ASSERT_EQ(fk_engine_occlusion(e.get(), &view, light.data(), 1), 0);
+    gl::Texture color = gl::makeTexture2D(GL_RGBA32F, target.width, target.height);
+    auto fb = gl::makeFramebuffer(color.get());
+    const float black[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(fb->get(), GL_COLOR, 0, black);
+    ASSERT_EQ(fk_engine_draw(e.get(), &view, light.data(), 1, fb->get()), 0) << fk_error(e.get());
+    auto gpu = gl::readTextureRgba(color.get(), target.width, target.height);
+    ASSERT_TRUE(gpu.ok());
+    double inside = 0, elsewhere = 0;
+    for (int y = band; y < band + 360; ++y)
+        for (int px = band; px < band + 640; ++px)
+            (px >= band + 640 - 100 ? inside : elsewhere) += gpu->at(px, y).r;
+    EXPECT_GT(inside, 0.0);
+    EXPECT_EQ(elsewhere, 0.0);  // only along the right edge (the streak is 90 px thick)
+
+    auto presetData = loadPreset(streak.path);
+    ASSERT_TRUE(presetData.ok());
+    Image cpu(640, 360);
+    Point at;
+    ASSERT_TRUE(projectPoint(scene, lamp.position, at));
+    const double tanRadius = 0.3 / std::sqrt(std::pow(length(lamp.position), 2) - 0.09);
+    const double radiusOfHeight = tanRadius / (2 * std::tan(30.0 * M_PI / 180));
+    const double flux = 2000 * M_PI * radiusOfHeight * radiusOfHeight;  // white: luminance 2000
+    renderFlare(cpu, *presetData, at, float(coverage * flux));
+    double cpuSum = 0;
+    for (int y = 0; y < 360; ++y)
+        for (int px = 0; px < 640; ++px) cpuSum += cpu.at(px, y).r;
+    EXPECT_NEAR(inside / cpuSum, 1.0, 0.03);
 }

@@ -128,3 +128,45 @@ TEST(Flare, TinyAndZeroSizedElementsAreSkippedSafely) {
         renderFlare(img, single(ElementType::Glow, 1.f, 0.f), {50.f, 50.f}, 1.f);
     EXPECT_EQ(stats.elementsDrawn, 0u);
 }
+
+TEST(EdgeStreak, PlacementFollowsTheNearestEdgeAndFadesWithin) {
+    // 640 x 360, reach 0.25 heights = 90 px on either side of the edge.
+    const EdgePlacement centre = edgeStreakPlacement({320, 180}, 640, 360, 0.25f);
+    EXPECT_EQ(centre.weight, 0.f);  // 180 px from the nearest edge: past the reach
+    const EdgePlacement onRight = edgeStreakPlacement({640, 100}, 640, 360, 0.25f);
+    EXPECT_EQ(onRight.weight, 1.f);
+    EXPECT_EQ(onRight.rotationDeg, 90.f);
+    EXPECT_EQ(onRight.centre.x, 640.f);
+    EXPECT_EQ(onRight.centre.y, 100.f);
+    const EdgePlacement outsideTop = edgeStreakPlacement({200, -45}, 640, 360, 0.25f);
+    EXPECT_EQ(outsideTop.rotationDeg, 0.f);
+    EXPECT_EQ(outsideTop.centre.x, 200.f);
+    EXPECT_EQ(outsideTop.centre.y, 0.f);
+    EXPECT_FLOAT_EQ(outsideTop.weight, 0.5f);  // half the reach: smoothstep's midpoint
+    const EdgePlacement insideLeft = edgeStreakPlacement({45, 200}, 640, 360, 0.25f);
+    EXPECT_FLOAT_EQ(insideLeft.weight, 0.5f);
+    EXPECT_EQ(insideLeft.centre.x, 0.f);
+    EXPECT_EQ(edgeStreakPlacement({-200, 100}, 640, 360, 0.25f).weight, 0.f);
+}
+
+TEST(EdgeStreak, TheFlareLeavesTheFrameWithTheLight) {
+    Preset p;
+    ElementParams e = defaultElement(ElementType::EdgeStreak);
+    e.size = 0.2f;
+    e.reach = 0.25f;
+    p.elements = {e};
+    const auto sum = [](const Image& image, int x0, int x1) {
+        double s = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = x0; x < x1; ++x) s += image.at(x, y).r;
+        return s;
+    };
+    Image centred(640, 360), leaving(640, 360), gone(640, 360);
+    renderFlare(centred, p, {320, 180}, 1.f);
+    renderFlare(leaving, p, {660, 180}, 1.f);  // 20 px past the right edge
+    renderFlare(gone, p, {800, 180}, 1.f);     // past the reach
+    EXPECT_EQ(sum(centred, 0, 640), 0.0);
+    EXPECT_GT(sum(leaving, 600, 640), 0.0);  // along the right edge...
+    EXPECT_EQ(sum(leaving, 0, 500), 0.0);    // ...and only there: a vertical streak
+    EXPECT_EQ(sum(gone, 0, 640), 0.0);
+}

@@ -53,7 +53,7 @@ TEST(Preset, ReportsTheFieldAndWhatWasExpected) {
               "my.json: element[0].color: expected an array of 3 numbers in [0, 64], got [1,2]");
     EXPECT_EQ(
         errorOf(R"({"elements":[{"type":"sparkle"}]})"),
-        R"(my.json: element[0].type: expected one of "glow", "ring", "streaks", "rays", "disc", "polygon", got "sparkle")");
+        R"(my.json: element[0].type: expected one of "glow", "ring", "streaks", "rays", "disc", "polygon", "edge-streak", got "sparkle")");
     EXPECT_EQ(
         errorOf(R"({"elements":[{"size":0.1}]})").rfind("my.json: element[0].type: missing", 0),
         0u);

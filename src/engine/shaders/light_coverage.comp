@@ -3,7 +3,8 @@
 // perSide^2 stratified, jittered directions (the ray caster's sampling) into the frame's
 // depth. A direction counts as seen where the stored depth is at or beyond the light's own
 // depth there (times the transmittance texture, if any); directions outside the view count
-// as unseen (a screen method reports what is in frame). Thread 0 writes the light's raw
+// as unseen (a screen method reports what is in frame), unless the application rendered a
+// guard band around the view, which is then read too. Thread 0 writes the light's raw
 // coverage and in-frame share, steps its temporal filter (attack / release, as
 // TemporalFilter) and stores the filtered value in the coverage texture. Built twice: with
 // MULTISAMPLE defined a direction reads the depth sample of its pixel nearest to it.
@@ -28,7 +29,6 @@ float depthAt(vec2 p) { return texelFetch(depthTexture, ivec2(p), 0).r; }
 #endif
 layout(binding = 14) uniform sampler2D transmittance;
 uniform bool hasTransmittance;
-uniform vec2 depthSize;  // texels
 
 // Per light and view: raw coverage, filtered coverage, in-frame share, 1 once started.
 layout(std430, binding = 7) buffer State { vec4 state[]; };
@@ -62,11 +62,16 @@ void main() {
         vec2 ab = 2.0 * (vec2(k % perSide, k / perSide) + jitter) / float(perSide) - 1.0;
         vec2 pixel;
         float lightDepth;
-        if (!landsAt(v, coneDirection(v, t1, t2, ab), pixel, lightDepth)) continue;
+        bool inView;
+        bool readable = landsAt(v, coneDirection(v, t1, t2, ab), pixel, lightDepth, inView);
+        if (!readable) {
+            s.y += inView ? 1.0 : 0.0;
+            continue;
+        }
         float stored = depthAt(pixel);
         bool seen = depthConvention == 2 ? stored <= lightDepth : stored >= lightDepth;
-        float kept = hasTransmittance ? texture(transmittance, pixel / depthSize).r : 1.0;
-        s += vec2(seen ? clamp(kept, 0.0, 1.0) : 0.0, 1.0);
+        float kept = hasTransmittance ? texture(transmittance, pixel / depthTextureSize).r : 1.0;
+        s += vec2(seen ? clamp(kept, 0.0, 1.0) : 0.0, inView ? 1.0 : 0.0);
     }
     sums[index] = s;
     barrier();

@@ -13,8 +13,36 @@ uniform float t;         // position on the flare vector
 uniform vec2 halfSize;   // quad half size, pixels
 uniform float guardBand; // edge-fade width, shorter sides of the viewport
 uniform float referenceFlux;
+uniform bool edgeStreak;  // this element is an edge streak (placed on the frame edge)
+uniform float reach;      // its reach, viewport heights
 out vec2 uv;
 flat out vec3 tint;
+
+// edgeStreakPlacement of flarekit/Flare.h (src/flare/FlareRenderer.cpp), line for line:
+// xy centre, z 1 on a side edge (turned a quarter), w the weight.
+vec4 edgeStreakPlacement(vec2 light, vec2 size, float reachHeights) {
+    float toLeft = light.x, toRight = size.x - light.x, toTop = light.y, toBottom = size.y - light.y;
+    bool inside = min(min(toLeft, toRight), min(toTop, toBottom)) >= 0.0;
+    float distance = 0.0;
+    vec2 centre;
+    float side;
+    if (inside) {
+        float nearest = min(min(toLeft, toRight), min(toTop, toBottom));
+        distance = nearest;
+        bool onSide = nearest == toLeft || nearest == toRight;
+        side = onSide ? 1.0 : 0.0;
+        centre = onSide ? vec2(nearest == toLeft ? 0.0 : size.x, light.y)
+                        : vec2(light.x, nearest == toTop ? 0.0 : size.y);
+    } else {
+        centre = clamp(light, vec2(0.0), size);
+        vec2 d = light - centre;
+        distance = length(d);
+        side = abs(d.x) > abs(d.y) ? 1.0 : 0.0;
+    }
+    float band = reachHeights * size.y;
+    float u = band > 0.0 ? clamp(distance / band, 0.0, 1.0) : 1.0;
+    return vec4(centre, side, 1.0 - u * u * (3.0 - 2.0 * u));
+}
 
 float edgeFade(vec2 p, vec2 size) {
     float inside = min(min(p.x, size.x - p.x), min(p.y, size.y - p.y));
@@ -36,13 +64,18 @@ void main() {
     float radiusOfHeight = tanRadius * projectionMatrix[1][1] / 2.0;
     float flux = lum * kPi * radiusOfHeight * radiusOfHeight / referenceFlux;
     float weight = texelFetch(coverageTexture, ivec2(gl_InstanceID, viewIndex), 0).r;
-    float intensity = clip.w > 0.0 && !v.inside ? weight * edgeFade(light, size) * flux : 0.0;
+    vec4 edge = edgeStreak ? edgeStreakPlacement(light, size, reach) : vec4(0.0, 0.0, 0.0, 1.0);
+    // An edge streak takes the coverage alone: it is what is left of the flare past the edge.
+    float fade = edgeStreak ? edge.w : edgeFade(light, size);
+    float intensity = clip.w > 0.0 && !v.inside ? weight * fade * flux : 0.0;
     tint = lum > 0.0 ? radiance / lum * intensity : vec3(0.0);
     bool drawn = int(l.presetPad.x) == presetId && intensity > 0.0 && !isinf(intensity) &&
                  !isnan(intensity);
     vec2 corner = vec2(gl_VertexID & 1, (gl_VertexID >> 1) & 1);
     uv = vec2(corner.x, 1.0 - corner.y);  // element images are stored top row first
-    vec2 centre = size * 0.5 + t * (light - size * 0.5);
-    vec2 p = centre + (corner * 2.0 - 1.0) * halfSize;
+    bool transposed = edge.z > 0.5;       // a quarter turn of a doubly symmetric sprite
+    if (transposed) uv = vec2(corner.y, 1.0 - corner.x);
+    vec2 centre = edgeStreak ? edge.xy : size * 0.5 + t * (light - size * 0.5);
+    vec2 p = centre + (corner * 2.0 - 1.0) * (transposed ? halfSize.yx : halfSize);
     gl_Position = drawn ? vec4(p / size * 2.0 - 1.0, 0.0, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
 }

@@ -75,9 +75,13 @@ float storedDepth(float zNdc) {
     return clamp(depthConvention == 0 ? zNdc * 0.5 + 0.5 : zNdc, 0.0, 1.0);
 }
 
-// Where view-space direction d of the light lands: the depth texture's pixel (GL units) and
-// the light's stored depth along it. False when it falls outside the view (or behind it).
-bool landsAt(LightView v, vec3 d, out vec2 pixel, out float lightDepth) {
+// Where view-space direction d of the light lands: the depth texture's pixel (GL units), the
+// light's stored depth along it, and whether that is inside the viewport. False when it falls
+// behind the camera, or outside what may be read: the viewport, or with a guard band (depth
+// rendered past the viewport with the same projection) the whole depth texture.
+uniform bool depthPastViewport;  // fk_engine_set_guard_band
+uniform vec2 depthTextureSize;
+bool landsAt(LightView v, vec3 d, out vec2 pixel, out float lightDepth, out bool inView) {
     vec4 clip;
     if (v.point) {
         float b = dot(v.centre, d), c = dot(v.centre, v.centre) - v.radius * v.radius;
@@ -88,10 +92,12 @@ bool landsAt(LightView v, vec3 d, out vec2 pixel, out float lightDepth) {
     }
     pixel = vec2(0.0);
     lightDepth = 0.0;
+    inView = false;
     if (clip.w <= 0.0) return false;
     vec3 ndc = clip.xyz / clip.w;
-    if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return false;
+    inView = all(lessThanEqual(abs(ndc.xy), vec2(1.0)));
     pixel = vec2(viewport.xy) + (ndc.xy * 0.5 + 0.5) * vec2(viewport.zw);
     lightDepth = storedDepth(ndc.z);
-    return true;
+    bool inTexture = all(greaterThanEqual(pixel, vec2(0.0))) && all(lessThan(pixel, depthTextureSize));
+    return depthPastViewport ? inTexture : inView;
 }
