@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,23 @@ unsigned engineTransmittance(const SceneRenderer& renderer);
 
 //! The renderer's HDR colour target (a framebuffer name), where fk_engine_draw adds flares.
 unsigned engineColorFramebuffer(const SceneRenderer& renderer);
+
+//! A scene's objects as the texture-mask occluder callback draws them (fk_occluder_callback):
+//! opaque ones black, translucent ones multiplying the tile by 1 - opacity (spheres and boxes
+//! by their front faces, so once each, as the ray caster counts them). A GL context must be
+//! current while it lives.
+class SceneOccluders {
+  public:
+    static Result<std::unique_ptr<SceneOccluders>> create(const Scene& scene);
+    ~SceneOccluders();
+    //! The callback itself; `user` is the SceneOccluders.
+    static void draw(void* user, int view, int light, const float viewProjection[16],
+                     unsigned framebuffer, const int viewport[4]);
+
+  private:
+    struct Impl;
+    explicit SceneOccluders(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m;
+};
 
 }  // namespace flarekit

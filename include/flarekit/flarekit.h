@@ -80,7 +80,9 @@ FK_API const char* fk_error(const fk_engine* e);
 /* A sprite preset by shipped name ("tanczos-classic", `flarekit presets`) or JSON path.
  * >= 0 id, < 0 error. */
 FK_API int fk_engine_load_preset(fk_engine* e, const char* name_or_path);
-/* A visibility method name; default and, for now, only: "compute" (the batched pass). */
+/* A visibility method name: "compute" (default: the frame's depth, one batched pass) or
+ * "texture-mask" (GPG2's sun maps, drawn by the occluder callback: lights off screen keep
+ * their coverage, and grey occluders give translucency exactly). */
 FK_API int fk_engine_set_method(fk_engine* e, const char* method);
 
 /* Measures every light in `frame`'s depth: one dispatch, 0 ok, < 0 error. */
@@ -117,6 +119,18 @@ FK_API int fk_engine_draw_view(fk_engine* e, int view, const fk_frame* frame,
  * pixel of view `view` (the application's foliage alpha, glass, fog cards); it multiplies every
  * visible depth sample, sampled over the depth texture's extent. 0 removes it. */
 FK_API int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture);
+/* texture-mask: the engine binds `framebuffer`, sets the viewport to `viewport` (light `light`'s
+ * tile of the sun-map atlas, cleared to white) and calls this once per light and view. Draw
+ * every occluder there with `view_projection` (column-major, in the clip space of the frame's
+ * depth convention) in black, with depth testing off; a translucent one may multiply the tile
+ * by 1 - opacity instead (glBlendFunc(GL_ZERO, GL_SRC_COLOR); closed objects front faces
+ * only). The camera sits at the eye, looks along the light and sees exactly its cone; for a
+ * point light its far plane stops before the light, so what is behind the light is clipped.
+ * Leave the framebuffer bound; any other state may change (the call restores the caller's). */
+typedef void (*fk_occluder_callback)(void* user, int view, int light,
+                                     const float view_projection[16], unsigned framebuffer,
+                                     const int viewport[4]);
+FK_API int fk_engine_set_occluder_callback(fk_engine* e, fk_occluder_callback callback, void* user);
 /* Off-screen lights: the application rendered view `view`'s depth past its viewport (a guard
  * band: the whole depth texture, with the frame's projection extended over it), so directions
  * that fall outside the viewport but inside the texture are measured instead of counted as

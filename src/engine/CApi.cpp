@@ -166,6 +166,12 @@ int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture) {
     });
 }
 
+int fk_engine_set_occluder_callback(fk_engine* e, fk_occluder_callback callback, void* user) {
+    return guarded(e, "fk_engine_set_occluder_callback", [&](flarekit::engine::Engine& en) {
+        return en.setOccluderCallback(callback, user);
+    });
+}
+
 int fk_engine_set_guard_band(fk_engine* e, int view, int enabled) {
     return guarded(e, "fk_engine_set_guard_band", [&](flarekit::engine::Engine& en) {
         return en.setGuardBand(view, enabled != 0);

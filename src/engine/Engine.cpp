@@ -47,10 +47,13 @@ gl::Buffer makeBuffer(GLsizeiptr bytes) {
     return gl::Buffer(b);
 }
 
-std::string withPrelude(const char* text, const std::string& defines) {
+//! The shader after the light_view.glsl prelude (and, for the occlusion passes, the per-light
+//! state of light_state.glsl).
+std::string withPrelude(const char* text, const std::string& defines, bool state = false) {
     std::string body(text);
     if (body.rfind("#version", 0) == 0) body = body.substr(body.find('\n') + 1);
-    return "#version 450 core\n" + defines + shaders::light_view_glsl + "\n#line 2\n" + body;
+    return "#version 450 core\n" + defines + shaders::light_view_glsl +
+           (state ? shaders::light_state_glsl : "") + "\n#line 2\n" + body;
 }
 
 struct CoverageProgram {
@@ -61,9 +64,9 @@ struct CoverageProgram {
 };
 
 Result<CoverageProgram> linkCoverage(bool multisample) {
-    auto p = gl::linkProgram(
-        {{GL_COMPUTE_SHADER, "light_coverage.comp",
-          withPrelude(shaders::light_coverage_comp, multisample ? "#define MULTISAMPLE\n" : "")}});
+    auto p = gl::linkProgram({{GL_COMPUTE_SHADER, "light_coverage.comp",
+                               withPrelude(shaders::light_coverage_comp,
+                                           multisample ? "#define MULTISAMPLE\n" : "", true)}});
     if (!p) return p.error();
     CoverageProgram c;
     c.program = std::move(*p);
@@ -85,6 +88,97 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
         c.samplePositions = gl::uniformLocation(n, "samplePositions");
     }
     return c;
+}
+
+//! The texture-mask reduction (sunmap_coverage.comp) and its uniforms.
+struct SunMapProgram {
+    gl::Program program;
+    GLint view = -1, projection = -1, viewport = -1, viewIndex = -1, stateBase = -1, attack = -1,
+          release = -1, tileSize = -1, tilesPerRow = -1, guardBand = -1;
+};
+
+Result<SunMapProgram> linkSunMap() {
+    auto p = gl::linkProgram({{GL_COMPUTE_SHADER, "sunmap_coverage.comp",
+                               withPrelude(shaders::sunmap_coverage_comp, "", true)}});
+    if (!p) return p.error();
+    SunMapProgram c;
+    c.program = std::move(*p);
+    const GLuint n = c.program.get();
+    c.view = gl::uniformLocation(n, "viewMatrix");
+    c.projection = gl::uniformLocation(n, "projectionMatrix");
+    c.viewport = gl::uniformLocation(n, "viewport");
+    c.viewIndex = gl::uniformLocation(n, "viewIndex");
+    c.stateBase = gl::uniformLocation(n, "stateBase");
+    c.attack = gl::uniformLocation(n, "attackStep");
+    c.release = gl::uniformLocation(n, "releaseStep");
+    c.tileSize = gl::uniformLocation(n, "tileSize");
+    c.tilesPerRow = gl::uniformLocation(n, "tilesPerRow");
+    c.guardBand = gl::uniformLocation(n, "depthPastViewport");
+    return c;
+}
+
+//! Sun-map tiles: 64 texels a side (about 3,200 inside the cone's circle: an edge across it is
+//! placed to half a texel, under 0.01 of the disc) while the atlas stays within 4096^2; for
+//! more than 4,096 lights they shrink to fit.
+constexpr int kMaxTileSize = 64, kMaxAtlasSide = 4096;
+//! The widest cone a tile holds: 80 degrees half-angle (tan = 5.7); a camera nearer a sphere
+//! light than that is as good as inside it.
+constexpr double kMaxSunMapHalfAngle = 1.4;
+
+//! Column-major view-projection of the camera at `eye` looking along unit `axis` whose field of
+//! view is the cone of half-angle `half`, to distance `farPlane`, in the clip space of the
+//! frame's depth convention (so the application's clip control draws it unchanged).
+std::array<float, 16> sunMapCamera(const double eye[3], const double axis[3], double half,
+                                   double nearPlane, double farPlane,
+                                   fk_depth_convention convention) {
+    const double up[3] = {std::abs(axis[1]) < 0.99 ? 0.0 : 1.0,
+                          std::abs(axis[1]) < 0.99 ? 1.0 : 0.0, 0.0};
+    double side[3] = {axis[1] * up[2] - axis[2] * up[1], axis[2] * up[0] - axis[0] * up[2],
+                      axis[0] * up[1] - axis[1] * up[0]};
+    const double sl = std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+    for (double& c : side) c /= sl;
+    const double u[3] = {side[1] * axis[2] - side[2] * axis[1],
+                         side[2] * axis[0] - side[0] * axis[2],
+                         side[0] * axis[1] - side[1] * axis[0]};
+    const auto dot = [](const double* a, const double* b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    };
+    const double view[16] = {
+        side[0], u[0], -axis[0], 0, side[1],         u[1],         -axis[1],       0,
+        side[2], u[2], -axis[2], 0, -dot(side, eye), -dot(u, eye), dot(axis, eye), 1};
+    const double f = 1.0 / std::tan(std::min(half, kMaxSunMapHalfAngle));
+    const double n = std::min(nearPlane, 0.5 * farPlane), far = farPlane;
+    double proj[16] = {f, 0, 0, 0, 0, f, 0, 0, 0, 0, 0, -1, 0, 0, 0, 0};
+    if (convention == FK_DEPTH_MINUS_ONE_TO_ONE) {
+        proj[10] = (far + n) / (n - far);
+        proj[14] = 2 * far * n / (n - far);
+    } else {
+        proj[10] = far / (n - far);
+        proj[14] = far * n / (n - far);
+    }
+    std::array<float, 16> vp{};
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k) sum += proj[k * 4 + r] * view[c * 4 + k];
+            vp[std::size_t(c * 4 + r)] = float(sum);
+        }
+    return vp;
+}
+
+//! The frame's own near plane, read back from its projection under its convention: the sun
+//! maps clip there too. (A plane much nearer than the scene's scale makes float clipping of
+//! large triangles, a ground plane, scatter slivers over the tiny field of view of a sun map.)
+double nearPlaneOf(const fk_frame& f) {
+    const double p10 = f.projection[10], p14 = f.projection[14];
+    double n = 0.1;
+    if (f.depth_convention == FK_DEPTH_MINUS_ONE_TO_ONE && p10 != 1.0)
+        n = p14 / (p10 - 1.0);
+    else if (f.depth_convention == FK_DEPTH_ZERO_TO_ONE && p10 != 0.0)
+        n = p14 / p10;
+    else if (f.depth_convention == FK_DEPTH_REVERSED_Z && p10 != -1.0)
+        n = p14 / (p10 + 1.0);
+    return std::isfinite(n) && n > 1e-6 ? n : 0.1;
 }
 
 struct FlareProgram {
@@ -133,6 +227,13 @@ struct SamplePattern {
 struct Engine::Impl {
     int maxLights = 0;
     CoverageProgram coverage[2];  //!< single-sample depth, multisampled depth
+    SunMapProgram sunMap;
+    bool textureMask = false;  //!< the method: texture-mask (sun maps) instead of compute
+    fk_occluder_callback occluders = nullptr;
+    void* occludersUser = nullptr;
+    gl::Texture atlas;  //!< RGBA8 sun maps, one tile per light (made with the method)
+    gl::Framebuffer atlasTarget;
+    int tileSize = 0, tilesPerRow = 0;
     FlareProgram flare;
     std::array<gl::Buffer, kLightRing> lightBuffers;
     int ringAt = 0;
@@ -154,7 +255,71 @@ struct Engine::Impl {
     GLuint uploadLights(const fk_light* lights, int count);
     const SamplePattern& patternFor(GLuint texture, int samples);
     Status ensureSprites(LoadedPreset& p, int height);
+    Status measureSunMaps(int view, const fk_frame& f, const fk_light* lights, int count,
+                          GLuint lightBuffer);
 };
+
+Status Engine::Impl::measureSunMaps(int view, const fk_frame& f, const fk_light* lights, int count,
+                                    GLuint lightBuffer) {
+    // The eye: view = [R | t] is rigid, so the eye is -R^T t.
+    double eye[3];
+    for (int i = 0; i < 3; ++i)
+        eye[i] = -(double(f.view[i * 4 + 0]) * f.view[12] + double(f.view[i * 4 + 1]) * f.view[13] +
+                   double(f.view[i * 4 + 2]) * f.view[14]);
+    const float white[4] = {1, 1, 1, 1};
+    glClearNamedFramebufferfv(atlasTarget.get(), GL_COLOR, 0, white);
+    const double nearPlane = nearPlaneOf(f);
+    for (int i = 0; i < count; ++i) {
+        const fk_light& l = lights[i];
+        double axis[3], half = 0, farPlane = 1e7;
+        if (l.type == FK_LIGHT_POINT) {
+            double d[3] = {l.position[0] - eye[0], l.position[1] - eye[1], l.position[2] - eye[2]};
+            const double dist = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (dist <= l.radius) continue;  // inside the light: the reduction says 1
+            for (int k = 0; k < 3; ++k) axis[k] = d[k] / dist;
+            half = std::asin(double(l.radius) / dist);
+            // Only what lies before the light hides it (kNearSide of light_view.glsl).
+            farPlane = (dist - l.radius) * 0.999;
+        } else {
+            const double dl = std::sqrt(double(l.direction[0]) * l.direction[0] +
+                                        double(l.direction[1]) * l.direction[1] +
+                                        double(l.direction[2]) * l.direction[2]);
+            for (int k = 0; k < 3; ++k) axis[k] = l.direction[k] / dl;
+            half = double(l.radius) * 3.14159265358979323846 / 180.0;
+        }
+        const std::array<float, 16> vp =
+            sunMapCamera(eye, axis, half, nearPlane, farPlane, f.depth_convention);
+        const int tile[4] = {(i % tilesPerRow) * tileSize, (i / tilesPerRow) * tileSize, tileSize,
+                             tileSize};
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, atlasTarget.get());
+        glViewport(tile[0], tile[1], tile[2], tile[3]);
+        occluders(occludersUser, view, i, vp.data(), atlasTarget.get(), tile);
+    }
+    // The callbacks may have bound anything: bind what the reduction reads now.
+    const SunMapProgram& c = sunMap;
+    const GLuint p = c.program.get();
+    glProgramUniformMatrix4fv(p, c.view, 1, GL_FALSE, f.view);
+    glProgramUniformMatrix4fv(p, c.projection, 1, GL_FALSE, f.projection);
+    glProgramUniform4iv(p, c.viewport, 1, f.viewport);
+    glProgramUniform1i(p, c.viewIndex, view);
+    glProgramUniform1i(p, c.stateBase, view * maxLights);
+    glProgramUniform1f(p, c.attack, float(smoothingStep(f.dt_seconds, temporal.attackSeconds)));
+    glProgramUniform1f(p, c.release, float(smoothingStep(f.dt_seconds, temporal.releaseSeconds)));
+    glProgramUniform1i(p, c.tileSize, tileSize);
+    glProgramUniform1i(p, c.tilesPerRow, tilesPerRow);
+    glProgramUniform1i(p, c.guardBand, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lightBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStateBinding, state.get());
+    glBindImageTexture(kStateImageUnit, coverageImage.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_R32F);
+    // The sun maps were drawn: make the draws visible to the fetches (rendering then sampling
+    // needs no barrier, but a compute read after a draw on the same texture is ordered anyway).
+    glBindTextureUnit(kDepthUnit, atlas.get());
+    glBindSampler(kDepthUnit, nearest.get());
+    glUseProgram(p);
+    glDispatchCompute(GLuint(count), 1, 1);
+    return Ok{};
+}
 
 GLuint Engine::Impl::uploadLights(const fk_light* lights, int count) {
     const GLuint buffer = lightBuffers[std::size_t(ringAt)].get();
@@ -215,6 +380,9 @@ Result<std::unique_ptr<Engine>> Engine::create(int maxLights) {
         if (!c) return c.error();
         impl->coverage[ms] = std::move(*c);
     }
+    auto sunMap = linkSunMap();
+    if (!sunMap) return sunMap.error();
+    impl->sunMap = std::move(*sunMap);
     auto flare = linkFlare();
     if (!flare) return flare.error();
     impl->flare = std::move(*flare);
@@ -254,11 +422,35 @@ Result<int> Engine::loadPreset(const std::string& nameOrPath) {
 }
 
 Status Engine::setMethod(const std::string& method) {
-    if (method == "compute") return Ok{};
-    return invalidInput(
-        "method: expected \"compute\" (the engine's batched pass; the other "
-        "visibility methods measure flarekit's own frame), got \"" +
-        method + "\"");
+    if (method == "compute") {
+        m->textureMask = false;
+        return Ok{};
+    }
+    if (method != "texture-mask") {
+        return invalidInput(
+            "method: expected \"compute\" (depth, one batched pass) or "
+            "\"texture-mask\" (sun maps the application's occluder callback "
+            "draws), got \"" +
+            method + "\"");
+    }
+    if (!m->atlas) {
+        const GlStateGuard guard;
+        m->tilesPerRow = int(std::ceil(std::sqrt(double(m->maxLights))));
+        m->tileSize = std::min(kMaxTileSize, kMaxAtlasSide / m->tilesPerRow);
+        const int side = m->tilesPerRow * m->tileSize;
+        m->atlas = gl::makeTexture2D(GL_RGBA8, side, side);
+        auto target = gl::makeFramebuffer(m->atlas.get());
+        if (!target) return target.error();
+        m->atlasTarget = std::move(*target);
+    }
+    m->textureMask = true;
+    return Ok{};
+}
+
+Status Engine::setOccluderCallback(fk_occluder_callback callback, void* user) {
+    m->occluders = callback;
+    m->occludersUser = user;
+    return Ok{};
 }
 
 Status Engine::setSamples(int perSide) {
@@ -323,12 +515,26 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
         depth[v] = *info;
     }
     if (Status s = checkLights(lights, count, m->maxLights, int(m->presets.size())); !s) return s;
+    if (m->textureMask && !m->occluders) {
+        return invalidInput(
+            "method texture-mask: expected an occluder callback "
+            "(fk_engine_set_occluder_callback) to draw the sun maps");
+    }
     m->lastViews = int(frames.size());
     for (std::size_t v = 0; v < frames.size(); ++v) m->lastCount[v] = count;
     if (count == 0) return Ok{};
 
     const GlStateGuard guard;
     const GLuint lightBuffer = m->uploadLights(lights, count);
+    if (m->textureMask) {
+        for (std::size_t v = 0; v < frames.size(); ++v)
+            if (Status s = m->measureSunMaps(int(v), frames[v], lights, count, lightBuffer); !s)
+                return s;
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                        GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        return Ok{};
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lightBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStateBinding, m->state.get());
     glBindImageTexture(kStateImageUnit, m->coverageImage.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY,

@@ -37,6 +37,7 @@ class Engine {
     Result<int> readView(int view, float* coverage, float* inFrame, float* filtered, int count);
     Status setTransmittance(int view, unsigned texture);
     Status setGuardBand(int view, bool enabled);
+    Status setOccluderCallback(fk_occluder_callback callback, void* user);
     Status setSamples(int perSide);
     Status setTemporal(float attackSeconds, float releaseSeconds, float guardBand);
     Status reset();

@@ -111,3 +111,21 @@ FLAREKIT_GL_TEST(CliLights, BadInputExitsTwoWithOneLineAndWritesNothing) {
               std::string::npos)
         << pbo.err;
 }
+
+FLAREKIT_GL_TEST(CliVisibility, TextureMaskMeasuresEveryLightOfAManyLightSceneEvenOffScreen) {
+    // A sun map per light through the engine API's occluder callback: unlike the depth pass it
+    // needs no light to be in frame or large on screen.
+    const CliResult mask = runCli({"visibility", kCity, "--method", "texture-mask", "--json"});
+    ASSERT_EQ(mask.exitCode, 0) << mask.err;
+    const CliResult rays = runCli({"visibility", kCity, "--samples", "64", "--json"});
+    ASSERT_EQ(rays.exitCode, 0) << rays.err;
+    const auto measured = nlohmann::json::parse(mask.out)["lights"];
+    const auto truth = nlohmann::json::parse(rays.out)["lights"];
+    ASSERT_EQ(measured.size(), truth.size());
+    int offScreenSeen = 0;
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        EXPECT_NEAR(double(measured[i]["coverage"]), double(truth[i]["coverage"]), 0.02) << i;
+        offScreenSeen += double(truth[i]["in_frame"]) == 0 && double(truth[i]["coverage"]) > 0.5;
+    }
+    EXPECT_GE(offScreenSeen, 5);
+}

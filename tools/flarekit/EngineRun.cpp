@@ -34,6 +34,14 @@ Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& o) {
     if (fk_engine_set_method(e, o.method.c_str()) < 0 ||
         fk_engine_set_samples(e, o.samplesPerSide) < 0)
         return invalidInput(fk_error(e));
+    // texture-mask: the sun maps get the scene's objects from the occluder callback.
+    std::unique_ptr<SceneOccluders> occluders;
+    if (o.method == "texture-mask") {
+        auto made = SceneOccluders::create(scene);
+        if (!made) return made.error();
+        occluders = std::move(*made);
+        fk_engine_set_occluder_callback(e, &SceneOccluders::draw, occluders.get());
+    }
     // Each preset named by a light, loaded once; a light whose preset fails names itself.
     std::map<std::string, int> ids;
     std::string presetError;

@@ -88,8 +88,10 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
                     "output image: EXR stays linear HDR, 8/16-bit outputs are tone-mapped")
         ->required();
     cmd->add_option("--method", args->method,
-                    "visibility method of the engine API (compute: one batched GPU pass)")
-        ->check(CLI::IsMember({"compute"}))
+                    "visibility method of the engine API: compute (the frame's depth, one "
+                    "batched GPU pass) or texture-mask (a sun map per light: off-screen lights "
+                    "and translucency exact)")
+        ->check(CLI::IsMember({"compute", "texture-mask"}))
         ->capture_default_str();
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
     cmd->add_option("--samples", args->samples,

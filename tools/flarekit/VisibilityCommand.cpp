@@ -52,11 +52,11 @@ Result<VisibilityResult> runEngineLights(const VisibilityArgs& a, const Scene& s
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
     if (const auto lights = sceneLights(scene);
         lights.size() > 1 || lights.front().type != LightType::Directional) {
-        if (a.method == "compute") return runEngineLights(a, scene);
+        if (a.method == "compute" || a.method == "texture-mask") return runEngineLights(a, scene);
         return invalidInput(a.scene + ": lights: --method " + a.method +
                             " measures one directional light (the sun); this scene has " +
                             std::to_string(lights.size()) +
-                            " lights or a point light (use raycast or compute)");
+                            " lights or a point light (use raycast, compute or texture-mask)");
     }
     auto gl = gl::HeadlessGl::create();
     if (!gl) return gl.error();

@@ -30,22 +30,9 @@ float depthAt(vec2 p) { return texelFetch(depthTexture, ivec2(p), 0).r; }
 layout(binding = 14) uniform sampler2D transmittance;
 uniform bool hasTransmittance;
 
-// Per light and view: raw coverage, filtered coverage, in-frame share, 1 once started.
-layout(std430, binding = 7) buffer State { vec4 state[]; };
-layout(r32f, binding = 7) uniform writeonly image2D filteredCoverage;
-uniform int viewIndex;
-uniform int stateBase;  // viewIndex x max lights
 uniform int perSide;
-uniform float attackStep, releaseStep;  // 1 - exp(-dt / tau), from the CPU
 
 shared vec2 sums[256];
-
-// A 32-bit integer hash (Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", pcg).
-uint pcgHash(uint v) {
-    uint state = v * 747796405u + 2891336453u;
-    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-    return (word >> 22u) ^ word;
-}
 
 void main() {
     uint light = gl_WorkGroupID.x;
@@ -81,12 +68,5 @@ void main() {
     }
     if (index != 0u) return;
     vec2 share = v.inside ? vec2(1.0) : sums[0] / float(total);
-    vec4 previous = state[stateBase + int(light)];
-    float filtered = share.x;
-    if (previous.w > 0.5) {
-        float step = share.x > previous.y ? attackStep : releaseStep;
-        filtered = previous.y + step * (share.x - previous.y);
-    }
-    state[stateBase + int(light)] = vec4(share.x, filtered, share.y, 1.0);
-    imageStore(filteredCoverage, ivec2(int(light), viewIndex), vec4(filtered));
+    storeCoverage(light, share.x, share.y);
 }

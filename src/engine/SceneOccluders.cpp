@@ -1,0 +1,113 @@
+// flarekit's own scenes as texture-mask occluders: two meshes (opaque, translucent) and one
+// small program, drawn from each light's sun-map camera by the engine's callback.
+#include <epoxy/gl.h>
+
+#include "flarekit/EngineScene.h"
+#include "flarekit_shaders.h"
+#include "gl/GlObjects.h"
+#include "scene/SceneMesh.h"
+
+namespace flarekit {
+
+namespace {
+struct Mesh {
+    gl::VertexArray vao;
+    gl::Buffer vertices;
+    GLsizei count = 0;
+};
+
+Mesh upload(const std::vector<MeshVertex>& mesh) {
+    Mesh m;
+    m.vao = gl::makeVertexArray();
+    m.count = GLsizei(mesh.size());
+    if (mesh.empty()) return m;
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
+    m.vertices = gl::Buffer(b);
+    glVertexArrayVertexBuffer(m.vao.get(), 0, b, 0, sizeof(MeshVertex));
+    glEnableVertexArrayAttrib(m.vao.get(), 0);
+    glVertexArrayAttribFormat(m.vao.get(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(m.vao.get(), 0, 0);
+    return m;
+}
+
+struct TranslucentRange {
+    GLint first;
+    GLsizei count;
+    float opacity;
+    bool closed;
+};
+}  // namespace
+
+struct SceneOccluders::Impl {
+    gl::Program program;
+    GLint viewProjection = -1, keep = -1;
+    Mesh opaque, translucent;
+    std::vector<TranslucentRange> ranges;
+};
+
+SceneOccluders::SceneOccluders(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
+SceneOccluders::~SceneOccluders() = default;
+
+Result<std::unique_ptr<SceneOccluders>> SceneOccluders::create(const Scene& scene) {
+    if (Status s = gl::requireCurrentContext("SceneOccluders::create"); !s) return s.error();
+    auto program = gl::linkProgram({{GL_VERTEX_SHADER, "occluder.vert", shaders::occluder_vert},
+                                    {GL_FRAGMENT_SHADER, "occluder.frag", shaders::occluder_frag}});
+    if (!program) return program.error();
+    auto m = std::make_unique<Impl>();
+    m->program = std::move(*program);
+    m->viewProjection = gl::uniformLocation(m->program.get(), "viewProjection");
+    m->keep = gl::uniformLocation(m->program.get(), "keep");
+    Scene opaque = scene, clear = scene;
+    opaque.spheres.clear(), opaque.boxes.clear(), opaque.triangles.clear();
+    clear.spheres.clear(), clear.boxes.clear(), clear.triangles.clear(), clear.ground.reset();
+    for (const Sphere& o : scene.spheres) (o.opacity < 1 ? clear : opaque).spheres.push_back(o);
+    for (const Box& o : scene.boxes) (o.opacity < 1 ? clear : opaque).boxes.push_back(o);
+    for (const Triangle& o : scene.triangles)
+        (o.opacity < 1 ? clear : opaque).triangles.push_back(o);
+    m->opaque = upload(buildSceneMesh(opaque));
+    m->translucent = upload(buildSceneMesh(clear));
+    const std::vector<MeshObjectRange> ranges = sceneMeshRanges(clear);
+    const std::size_t spheres = clear.spheres.size(), boxes = clear.boxes.size();
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+        const double opacity = i < spheres           ? clear.spheres[i].opacity
+                               : i < spheres + boxes ? clear.boxes[i - spheres].opacity
+                                                     : clear.triangles[i - spheres - boxes].opacity;
+        m->ranges.push_back({ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
+    }
+    if (Status s = gl::checkError("uploading the sun-map occluders"); !s) return s.error();
+    return std::unique_ptr<SceneOccluders>(new SceneOccluders(std::move(m)));
+}
+
+void SceneOccluders::draw(void* user, int, int, const float viewProjection[16], unsigned,
+                          const int*) {
+    const Impl& m = *static_cast<SceneOccluders*>(user)->m;
+    const GLuint p = m.program.get();
+    glProgramUniformMatrix4fv(p, m.viewProjection, 1, GL_FALSE, viewProjection);
+    glUseProgram(p);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    if (m.opaque.count > 0) {
+        glProgramUniform1f(p, m.keep, 0.f);
+        glBindVertexArray(m.opaque.vao.get());
+        glDrawArrays(GL_TRIANGLES, 0, m.opaque.count);
+    }
+    if (m.ranges.empty()) return;
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_SRC_COLOR);  // the tile x (1 - opacity)
+    glBindVertexArray(m.translucent.vao.get());
+    for (const TranslucentRange& r : m.ranges) {
+        glProgramUniform1f(p, m.keep, 1.f - r.opacity);
+        if (r.closed)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
+        glDrawArrays(GL_TRIANGLES, r.first, r.count);
+    }
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+}
+
+}  // namespace flarekit

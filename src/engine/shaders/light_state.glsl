@@ -1,0 +1,27 @@
+// Per light and view: the raw coverage, its temporally filtered value (attack / release, as
+// TemporalFilter of flarekit/Temporal.h) and the in-frame share, in the state buffer, and the
+// filtered value in the coverage texture the application and the flare draw read. Prepended
+// to both occlusion passes (light_coverage.comp, sunmap_coverage.comp).
+layout(std430, binding = 7) buffer State { vec4 state[]; };  // raw, filtered, in frame, started
+layout(r32f, binding = 7) uniform writeonly image2D filteredCoverage;
+uniform int viewIndex;
+uniform int stateBase;                  // viewIndex x max lights
+uniform float attackStep, releaseStep;  // 1 - exp(-dt / tau), from the CPU
+
+void storeCoverage(uint light, float raw, float inFrame) {
+    vec4 previous = state[stateBase + int(light)];
+    float filtered = raw;
+    if (previous.w > 0.5) {
+        float step = raw > previous.y ? attackStep : releaseStep;
+        filtered = previous.y + step * (raw - previous.y);
+    }
+    state[stateBase + int(light)] = vec4(raw, filtered, inFrame, 1.0);
+    imageStore(filteredCoverage, ivec2(int(light), viewIndex), vec4(filtered));
+}
+
+// A 32-bit integer hash (Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", pcg).
+uint pcgHash(uint v) {
+    uint h = v * 747796405u + 2891336453u;
+    uint word = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    return (word >> 22u) ^ word;
+}

@@ -1,0 +1,6 @@
+#version 450 core
+// Black for an opaque occluder; 1 - opacity, multiplied into the white tile, for a
+// translucent one.
+uniform float keep;
+out vec4 fragColor;
+void main() { fragColor = vec4(vec3(keep), 1.0); }
