@@ -4,6 +4,8 @@
 //   BM_Occlusion/<lights>        one batched occlusion call a frame
 //   BM_Draw/<lights>             one flare draw call a frame (subtle preset: 4 elements)
 //   BM_OcclusionOneByOne/<lights> the same lights, one fk_engine_occlusion call per light
+//   BM_TextureMask/<lights>      texture-mask: a sun map per light drawn by the occluder
+//                                callback (flarekit's SceneOccluders: the whole scene a light)
 // Counters (means per frame):
 //   cpu_ms   wall time inside the API call(s): what the application's render thread pays
 //   gpu_ms   GPU time of the call(s), from timestamp queries around them
@@ -158,8 +160,23 @@ void BM_CheckAndPack(benchmark::State& state) {
     state.counters["lights"] = double(count);
 }
 
+void BM_TextureMask(benchmark::State& state) {
+    const int count = int(state.range(0));
+    Bench& b = bench();
+    if (!b.engine) return state.SkipWithError(b.error.c_str());
+    static auto occluders = SceneOccluders::create(b.scene);
+    if (!occluders) return state.SkipWithError(occluders.error().message.c_str());
+    fk_engine_set_occluder_callback(b.engine, &SceneOccluders::draw, occluders->get());
+    fk_engine_set_method(b.engine, "texture-mask");
+    measure(state, [count](Bench& x) {
+        return fk_engine_occlusion(x.engine, &x.frame, x.lights.data(), count) == 0;
+    });
+    fk_engine_set_method(b.engine, "compute");
+}
+
 }  // namespace
 
+BENCHMARK(BM_TextureMask)->Arg(16)->Arg(128)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckAndPack)->Arg(1024)->Arg(4096)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Occlusion)
     ->Arg(1)

@@ -60,7 +60,8 @@ struct CoverageProgram {
     gl::Program program;
     GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1,
           stateBase = -1, perSide = -1, attack = -1, release = -1, hasTransmittance = -1,
-          textureSize = -1, guardBand = -1, sampleCount = -1, samplePositions = -1;
+          textureSize = -1, guardBand = -1, sampleCount = -1, samplePositions = -1,
+          depthSamples = -1;
 };
 
 Result<CoverageProgram> linkCoverage(bool multisample) {
@@ -78,6 +79,7 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
     c.viewIndex = gl::uniformLocation(n, "viewIndex");
     c.stateBase = gl::uniformLocation(n, "stateBase");
     c.perSide = gl::uniformLocation(n, "perSide");
+    c.depthSamples = gl::uniformLocation(n, "samplesPerPixel");
     c.attack = gl::uniformLocation(n, "attackStep");
     c.release = gl::uniformLocation(n, "releaseStep");
     c.hasTransmittance = gl::uniformLocation(n, "hasTransmittance");
@@ -550,6 +552,7 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
         glProgramUniform1i(p, c.viewIndex, int(v));
         glProgramUniform1i(p, c.stateBase, int(v) * m->maxLights);
         glProgramUniform1i(p, c.perSide, m->samplesPerSide);
+        glProgramUniform1i(p, c.depthSamples, depth[v].samples);
         glProgramUniform1f(p, c.attack,
                            float(smoothingStep(f.dt_seconds, m->temporal.attackSeconds)));
         glProgramUniform1f(p, c.release,

@@ -74,7 +74,8 @@ Result<std::unique_ptr<SceneOccluders>> SceneOccluders::create(const Scene& scen
         const double opacity = i < spheres           ? clear.spheres[i].opacity
                                : i < spheres + boxes ? clear.boxes[i - spheres].opacity
                                                      : clear.triangles[i - spheres - boxes].opacity;
-        m->ranges.push_back({ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
+        m->ranges.push_back(
+            {ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
     }
     if (Status s = gl::checkError("uploading the sun-map occluders"); !s) return s.error();
     return std::unique_ptr<SceneOccluders>(new SceneOccluders(std::move(m)));

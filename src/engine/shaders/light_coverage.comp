@@ -1,5 +1,5 @@
 #version 450 core
-// The engine's batched occlusion: one work group per light, 256 threads casting its
+// The engine's batched occlusion: one work group per light, 256 threads casting up to
 // perSide^2 stratified, jittered directions (the ray caster's sampling) into the frame's
 // depth. A direction counts as seen where the stored depth is at or beyond the light's own
 // depth there (times the transmittance texture, if any); directions outside the view count
@@ -30,7 +30,8 @@ float depthAt(vec2 p) { return texelFetch(depthTexture, ivec2(p), 0).r; }
 layout(binding = 14) uniform sampler2D transmittance;
 uniform bool hasTransmittance;
 
-uniform int perSide;
+uniform int perSide;        // directions per side for a light large on screen
+uniform int samplesPerPixel;  // depth samples per pixel (1, or the MSAA count)
 
 shared vec2 sums[256];
 
@@ -41,12 +42,18 @@ void main() {
     vec3 helper = abs(v.axis.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
     vec3 t1 = normalize(cross(v.axis, helper));
     vec3 t2 = cross(v.axis, t1);
-    int total = perSide * perSide;
+    // Directions per side: about four per depth sample the light covers, up to perSide. A
+    // light a few pixels wide is resolved by its few samples, not by more directions (its
+    // error is the depth's quantization); this keeps a street of distant lamps cheap.
+    float radiusPx = tan(min(v.halfAngle, 1.4)) * projectionMatrix[1][1] * 0.5 * float(viewport.w);
+    float covered = 3.14159265 * radiusPx * radiusPx * float(samplesPerPixel);
+    int side = clamp(int(ceil(sqrt(4.0 * covered))), min(8, perSide), perSide);
+    int total = side * side;
     vec2 s = vec2(0.0);  // seen (weighted by transmittance), in frame
     for (int k = int(index); k < total && !v.inside; k += 256) {
         uint h = pcgHash(uint(k) ^ pcgHash(light));
         vec2 jitter = vec2(h & 0xffffu, h >> 16) / 65536.0;
-        vec2 ab = 2.0 * (vec2(k % perSide, k / perSide) + jitter) / float(perSide) - 1.0;
+        vec2 ab = 2.0 * (vec2(k % side, k / side) + jitter) / float(side) - 1.0;
         vec2 pixel;
         float lightDepth;
         bool inView;
