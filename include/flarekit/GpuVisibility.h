@@ -37,6 +37,10 @@ class GpuVisibility {
     virtual std::optional<double> latestCoverage() = 0;
     //! Frames between a measure() and its result becoming the newest (0: same frame).
     virtual int latencyFrames() const = 0;
+    //! measure() calls since the one whose result is the newest now (0: the last one). A late
+    //! method's newest result ages while its next results are in flight; measureStillFrame
+    //! asks this to know a result is of its view and not of one measured before.
+    virtual int resultAge() const { return latencyFrames(); }
     //! A GL query of the newest measure() that counts the sun's visible samples, for
     //! glBeginConditionalRender (`query` only; 0 for the other methods): drawing gated by it
     //! is skipped by the GPU when the sun was hidden, with no CPU involvement.

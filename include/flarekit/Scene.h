@@ -42,6 +42,10 @@ struct SceneSun {
     double angularRadiusDeg = 1.5;
     Vec3 color{1.0, 0.95, 0.85};
     double intensity = 2400.0;  //!< radiance of the disc: a low sun is 10^3-10^5 x its sky
+    //! 0: at infinity. Set (in code, not in the Scene JSON) when a sphere light stands in as
+    //! the sun of the one-light GPU methods (lightAsSun): the distance to its near side, so
+    //! only what lies before it hides it.
+    double distance = 0;
 };
 inline constexpr Param<SceneSun> kSceneSunParams[] = {
     required(param<&SceneSun::direction>("direction", kSceneAnyCoordinate, kParamUnbounded, "",
@@ -149,6 +153,10 @@ inline constexpr Param<SceneLight> kPointLightParams[] = {
 };
 
 SceneLight lightFromSun(const SceneSun& sun);
+//! A light as the sun the one-light GPU methods measure, seen from `camera`: a directional
+//! light as it is; a point light as the disc its sphere subtends (direction to its centre,
+//! angular radius asin(radius / distance)) at the distance of its near side.
+SceneSun lightAsSun(const SceneLight& light, const SceneCamera& camera);
 
 struct Scene {
     int width = 640, height = 360;

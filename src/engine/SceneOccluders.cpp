@@ -59,23 +59,13 @@ Result<std::unique_ptr<SceneOccluders>> SceneOccluders::create(const Scene& scen
     m->program = std::move(*program);
     m->viewProjection = gl::uniformLocation(m->program.get(), "viewProjection");
     m->keep = gl::uniformLocation(m->program.get(), "keep");
-    Scene opaque = scene, clear = scene;
-    opaque.spheres.clear(), opaque.boxes.clear(), opaque.triangles.clear();
-    clear.spheres.clear(), clear.boxes.clear(), clear.triangles.clear(), clear.ground.reset();
-    for (const Sphere& o : scene.spheres) (o.opacity < 1 ? clear : opaque).spheres.push_back(o);
-    for (const Box& o : scene.boxes) (o.opacity < 1 ? clear : opaque).boxes.push_back(o);
-    for (const Triangle& o : scene.triangles)
-        (o.opacity < 1 ? clear : opaque).triangles.push_back(o);
+    const Scene opaque = opaqueObjects(scene), clear = translucentObjects(scene);
     m->opaque = upload(buildSceneMesh(opaque));
     m->translucent = upload(buildSceneMesh(clear));
     const std::vector<MeshObjectRange> ranges = sceneMeshRanges(clear);
-    const std::size_t spheres = clear.spheres.size(), boxes = clear.boxes.size();
     for (std::size_t i = 0; i < ranges.size(); ++i) {
-        const double opacity = i < spheres           ? clear.spheres[i].opacity
-                               : i < spheres + boxes ? clear.boxes[i - spheres].opacity
-                                                     : clear.triangles[i - spheres - boxes].opacity;
-        m->ranges.push_back(
-            {ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
+        m->ranges.push_back({ranges[i].first, ranges[i].count, float(objectOpacity(clear, i)),
+                             objectClosed(clear, i)});
     }
     if (Status s = gl::checkError("uploading the sun-map occluders"); !s) return s.error();
     return std::unique_ptr<SceneOccluders>(new SceneOccluders(std::move(m)));

@@ -71,9 +71,9 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
         if (Status s = renderer.draw(view); !s) return s.error();
         if (Status s = method.measure(view, renderer); !s) return s.error();
         // The newest result must come from a measure() of this call, not from an earlier view
-        // the method saw: its latency (frames behind the newest measure) tells which.
+        // the method saw: its age (measures since the one it came from) tells which.
         const std::optional<double> coverage = method.latestCoverage();
-        if (coverage && method.latencyFrames() <= frame) {
+        if (coverage && method.resultAge() <= frame) {
             if (frames) *frames = frame;
             return *coverage;
         }

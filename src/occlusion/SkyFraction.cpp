@@ -31,6 +31,7 @@ Result<GLuint> SkyFraction::update(const SunDiscView& v, const SceneRenderer& re
     const GLuint p = multisampled ? m_multisample.get() : m_single.get();
     if (multisampled)
         glProgramUniform1i(p, gl::uniformLocation(p, "sampleCount"), renderer.msaaSamples());
+    glProgramUniform1f(p, gl::uniformLocation(p, "lightDepth"), float(v.lightDepth));
     glBindFramebuffer(GL_FRAMEBUFFER, m_target.get());
     glViewport(0, 0, m_width, m_height);
     glEnable(GL_SCISSOR_TEST);

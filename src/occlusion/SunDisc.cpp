@@ -27,6 +27,15 @@ SunDiscView sunDiscView(const SceneCamera& camera, int width, int height, const 
     const SunCone cone(sun);
     v.sun = cone.axis;
     v.chord2 = 2.0 * cone.oneMinusCos;
+    if (sun.distance > 0) {
+        // gluPerspective depth of the near side's view-space depth D (0.1% nearer: a surface
+        // at the light itself does not hide it), (f + n)/(f - n) - 2 f n / ((f - n) D) mapped
+        // to [0, 1].
+        const double n = camera.nearPlane, f = camera.farPlane;
+        const double depth = std::max(1e-9, 0.999 * sun.distance * dot(cone.axis, v.forward));
+        const double ndc = (f + n) / (f - n) - 2 * f * n / ((f - n) * depth);
+        v.lightDepth = std::clamp(0.5 * ndc + 0.5, 0.0, 1.0);
+    }
     double lox = 1e300, loy = 1e300, hix = -1e300, hiy = -1e300;
     bool behind = false;
     for (int i = 0; i < kRimSamples; ++i) {
@@ -88,6 +97,7 @@ void setSunDiscUniforms(GLuint p, const SunDiscView& v) {
                        float(v.tanHalfY));
     glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(v.width), float(v.height));
     glProgramUniform1f(p, gl::uniformLocation(p, "sunChord2"), float(v.chord2));
+    glProgramUniform1f(p, gl::uniformLocation(p, "lightDepth"), float(v.lightDepth));
 }
 
 }  // namespace flarekit::occlusion

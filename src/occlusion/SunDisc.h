@@ -14,6 +14,10 @@ struct SunDiscView {
     int width = 1, height = 1;  //!< frame size in pixels
     Vec3 sun;                   //!< unit direction toward the sun
     double chord2 = 0;          //!< 2 (1 - cos(angular radius))
+    //! The light's own stored depth (classic [0, 1] depth of the camera's projection): 1, the
+    //! cleared far value, for a light at infinity; a sphere light's near side, pulled 0.1%
+    //! toward the camera, otherwise. A pixel sees the light where its depth is at least this.
+    double lightDepth = 1.0;
     //! GL pixel box [x0, x1) x [y0, y1) (origin bottom-left) holding the disc's in-frame part;
     //! empty when none of it is in the frame.
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

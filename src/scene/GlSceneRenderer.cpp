@@ -225,13 +225,7 @@ Status SceneRenderer::setGeometry(const Scene& scene) {
                             " renderer");
     }
     // Opaque objects (and the ground) in one mesh, translucent ones in another.
-    Scene opaque = scene, clear = scene;
-    opaque.spheres.clear(), opaque.boxes.clear(), opaque.triangles.clear();
-    clear.spheres.clear(), clear.boxes.clear(), clear.triangles.clear(), clear.ground.reset();
-    for (const Sphere& o : scene.spheres) (o.opacity < 1 ? clear : opaque).spheres.push_back(o);
-    for (const Box& o : scene.boxes) (o.opacity < 1 ? clear : opaque).boxes.push_back(o);
-    for (const Triangle& o : scene.triangles)
-        (o.opacity < 1 ? clear : opaque).triangles.push_back(o);
+    const Scene opaque = opaqueObjects(scene), clear = translucentObjects(scene);
     m->vertexCount = 0;
     if (Status s = uploadMesh(buildSceneMesh(opaque), m->vao.get(), m->vertices, m->vertexCount);
         !s)
@@ -244,12 +238,8 @@ Status SceneRenderer::setGeometry(const Scene& scene) {
     m->translucent.clear();
     const std::vector<MeshObjectRange> ranges = sceneMeshRanges(clear);
     for (std::size_t i = 0; i < ranges.size(); ++i) {
-        const std::size_t spheres = clear.spheres.size(), boxes = clear.boxes.size();
-        const double opacity = i < spheres           ? clear.spheres[i].opacity
-                               : i < spheres + boxes ? clear.boxes[i - spheres].opacity
-                                                     : clear.triangles[i - spheres - boxes].opacity;
-        m->translucent.push_back(
-            {ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
+        m->translucent.push_back({ranges[i].first, ranges[i].count, float(objectOpacity(clear, i)),
+                                  objectClosed(clear, i)});
     }
     return gl::checkError("mesh upload");
 }

@@ -1,5 +1,8 @@
 // Scene JSON (the docs/architecture.md contract) with full validation: every error names the file
 // and the field, and says what was expected.
+#include <cmath>
+#include <numbers>
+
 #include "core/ParamJson.h"
 #include "flarekit/Image.h"
 #include "flarekit/Scene.h"
@@ -239,6 +242,23 @@ SceneLight lightFromSun(const SceneSun& sun) {
     l.color = sun.color;
     l.intensity = sun.intensity;
     return l;
+}
+
+SceneSun lightAsSun(const SceneLight& light, const SceneCamera& camera) {
+    SceneSun sun{light.direction, light.angularRadiusDeg, light.color, light.intensity};
+    if (light.type != LightType::Point) return sun;
+    const Vec3 toLight = light.position - camera.position;
+    const double d = length(toLight);
+    // A camera inside the sphere sees it whole: a disc as wide as the methods take, right ahead.
+    if (d <= light.radius) {
+        sun.direction = normalize(camera.lookAt - camera.position);
+        sun.angularRadiusDeg = 45;
+        return sun;
+    }
+    sun.direction = toLight * (1.0 / d);
+    sun.angularRadiusDeg = std::asin(light.radius / d) * 180.0 / std::numbers::pi;
+    sun.distance = d - light.radius;
+    return sun;
 }
 
 std::vector<SceneLight> sceneLights(const Scene& scene) {

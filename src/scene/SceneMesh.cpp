@@ -76,6 +76,43 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
     return out;
 }
 
+Scene opaqueObjects(const Scene& scene) {
+    Scene s = scene;
+    s.spheres.clear(), s.boxes.clear(), s.triangles.clear();
+    for (const Sphere& o : scene.spheres)
+        if (o.opacity >= 1) s.spheres.push_back(o);
+    for (const Box& o : scene.boxes)
+        if (o.opacity >= 1) s.boxes.push_back(o);
+    for (const Triangle& o : scene.triangles)
+        if (o.opacity >= 1) s.triangles.push_back(o);
+    return s;
+}
+
+Scene translucentObjects(const Scene& scene) {
+    Scene s = scene;
+    s.spheres.clear(), s.boxes.clear(), s.triangles.clear(), s.ground.reset();
+    for (const Sphere& o : scene.spheres)
+        if (o.opacity < 1) s.spheres.push_back(o);
+    for (const Box& o : scene.boxes)
+        if (o.opacity < 1) s.boxes.push_back(o);
+    for (const Triangle& o : scene.triangles)
+        if (o.opacity < 1) s.triangles.push_back(o);
+    return s;
+}
+
+double objectOpacity(const Scene& scene, std::size_t i) {
+    const std::size_t spheres = scene.spheres.size(), boxes = scene.boxes.size();
+    if (i < spheres) return scene.spheres[i].opacity;
+    if (i < spheres + boxes) return scene.boxes[i - spheres].opacity;
+    return i - spheres - boxes < scene.triangles.size()
+               ? scene.triangles[i - spheres - boxes].opacity
+               : kOpaque;  // the ground
+}
+
+bool objectClosed(const Scene& scene, std::size_t i) {
+    return i < scene.spheres.size() + scene.boxes.size();
+}
+
 std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene) {
     std::vector<MeshObjectRange> out;
     int first = 0;

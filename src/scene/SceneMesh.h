@@ -18,6 +18,17 @@ inline constexpr int kSphereSlices = 64, kSphereStacks = 32;
 
 std::vector<MeshVertex> buildSceneMesh(const Scene& scene);
 
+//! The scene with only its opaque objects (and its ground), as the renderer's depth mesh holds
+//! them, and with only its translucent ones (opacity < 1, no ground): the two meshes every GL
+//! pass that draws objects builds.
+Scene opaqueObjects(const Scene& scene);
+Scene translucentObjects(const Scene& scene);
+
+//! Opacity of object i of sceneMeshRanges(scene)'s order (spheres, boxes, triangles), and
+//! whether it is closed (a sphere or a box: its front faces cross each ray once).
+double objectOpacity(const Scene& scene, std::size_t i);
+bool objectClosed(const Scene& scene, std::size_t i);
+
 //! Where each object's vertices sit in buildSceneMesh's list (spheres, then boxes, then
 //! triangles, in scene order), with a bounding sphere and, for spheres and boxes, the radius
 //! of a ball the object surely contains (0 for triangles), for culling and early-outs.

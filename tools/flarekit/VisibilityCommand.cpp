@@ -1,5 +1,6 @@
 // flarekit visibility: how much of the sun a scene's camera sees, by the CPU ground truth
 // (`raycast`) or any GPU method of the seed articles on the headless GL backend.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -49,15 +50,15 @@ Result<VisibilityResult> runEngineLights(const VisibilityArgs& a, const Scene& s
     return r;
 }
 
+//! The seeds' one-light methods measure one light at a time: each light stands in as the
+//! frame's sun (lightAsSun: a point light as the disc its sphere subtends, seen where the
+//! depth reaches its near side), the frame is drawn and measured until its result arrives.
+//! compute and texture-mask on a many-light scene measure every light at once instead.
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
-    if (const auto lights = sceneLights(scene);
-        lights.size() > 1 || lights.front().type != LightType::Directional) {
-        if (a.method == "compute" || a.method == "texture-mask") return runEngineLights(a, scene);
-        return invalidInput(a.scene + ": lights: --method " + a.method +
-                            " measures one directional light (the sun); this scene has " +
-                            std::to_string(lights.size()) +
-                            " lights or a point light (use raycast, compute or texture-mask)");
-    }
+    const std::vector<SceneLight> lights = sceneLights(scene);
+    if ((a.method == "compute" || a.method == "texture-mask") &&
+        (lights.size() > 1 || lights.front().type != LightType::Directional))
+        return runEngineLights(a, scene);
     auto gl = gl::HeadlessGl::create();
     if (!gl) return gl.error();
     RenderOptions render = a.render;
@@ -69,13 +70,19 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     auto method = createGpuVisibility(a.method, scene, options);
     if (!method) return method.error();
     const auto start = std::chrono::steady_clock::now();
-    auto coverage = measureStillFrame(**method, *renderer, scene, 16, &latency);
-    if (!coverage) return coverage.error();
     VisibilityResult r;
     r.method = a.method;
-    r.coverage = *coverage;
-    r.inFrame = sunInFrameFraction(scene);
-    r.lights = {{r.coverage, r.inFrame}};
+    for (const SceneLight& light : lights) {
+        Scene view = scene;
+        view.sun = lightAsSun(light, scene.camera);
+        int frames = 0;
+        auto coverage = measureStillFrame(**method, *renderer, view, 16, &frames);
+        if (!coverage) return coverage.error();
+        latency = std::max(latency, frames);
+        r.lights.push_back({*coverage, lightInFrameFraction(scene, light)});
+    }
+    r.coverage = r.lights.front().coverage;
+    r.inFrame = r.lights.front().inFrame;
     r.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;

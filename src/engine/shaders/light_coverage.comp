@@ -42,12 +42,12 @@ void main() {
     vec3 helper = abs(v.axis.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
     vec3 t1 = normalize(cross(v.axis, helper));
     vec3 t2 = cross(v.axis, t1);
-    // Directions per side: about four per depth sample the light covers, up to perSide. A
+    // Directions per side: about 16 per depth sample the light covers, up to perSide. A
     // light a few pixels wide is resolved by its few samples, not by more directions (its
     // error is the depth's quantization); this keeps a street of distant lamps cheap.
     float radiusPx = tan(min(v.halfAngle, 1.4)) * projectionMatrix[1][1] * 0.5 * float(viewport.w);
     float covered = 3.14159265 * radiusPx * radiusPx * float(samplesPerPixel);
-    int side = clamp(int(ceil(sqrt(4.0 * covered))), min(8, perSide), perSide);
+    int side = clamp(int(ceil(sqrt(16.0 * covered))), min(8, perSide), perSide);
     int total = side * side;
     vec2 s = vec2(0.0);  // seen (weighted by transmittance), in frame
     for (int k = int(index); k < total && !v.inside; k += 256) {

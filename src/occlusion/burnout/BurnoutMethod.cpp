@@ -118,6 +118,8 @@ class BurnoutMethod final : public GpuMethod {
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);  // black rectangle at the far plane: depth-tested
         glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glProgramUniform1f(m_black.get(), gl::uniformLocation(m_black.get(), "lightDepth"),
+                           float(v.lightDepth));
         glUseProgram(m_black.get());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

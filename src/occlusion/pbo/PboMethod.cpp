@@ -33,6 +33,7 @@ class PboMethod final : public GpuMethod {
     }
     std::string name() const override { return "pbo"; }
     int latencyFrames() const override { return m_latency; }
+    int resultAge() const override { return int(m_frame - m_resultFrame); }
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         ++m_frame;
@@ -106,6 +107,7 @@ class PboMethod final : public GpuMethod {
             s.knownEmpty = false;
             publish(0.0);
             m_latency = int(m_frame - s.frame);
+            m_resultFrame = s.frame;
         } else if (s.fence) {
             collectSlot(s, wait);
         }
@@ -126,12 +128,14 @@ class PboMethod final : public GpuMethod {
         glUnmapNamedBuffer(s.buffer.get());
         publish(coverage);
         m_latency = int(m_frame - s.frame);
+        m_resultFrame = s.frame;
     }
 
     SkyFraction m_sky;
     std::vector<Slot> m_slots;
     long m_frame = 0;
     int m_latency = 0;
+    long m_resultFrame = 0;  //!< the frame whose result is the newest
 };
 }  // namespace
 

@@ -27,6 +27,7 @@ class QueryMethod final : public GpuMethod {
     }
     std::string name() const override { return "query"; }
     int latencyFrames() const override { return m_latency; }
+    int resultAge() const override { return int(m_frame - m_resultFrame); }
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         ++m_frame;
@@ -129,6 +130,7 @@ class QueryMethod final : public GpuMethod {
             p.pending = p.knownEmpty = false;
             publish(0.0);
             m_latency = int(m_frame - p.frame);
+            m_resultFrame = p.frame;
             return;
         }
         GLuint ready = 0;
@@ -144,6 +146,7 @@ class QueryMethod final : public GpuMethod {
         p.pending = false;
         publish(total ? double(visible) / double(total) : 0.0);
         m_latency = int(m_frame - p.frame);
+        m_resultFrame = p.frame;
     }
 
     gl::Program m_program;
@@ -155,6 +158,7 @@ class QueryMethod final : public GpuMethod {
     Pair m_pairs[kRing];
     long m_frame = 0;
     int m_latency = 0;
+    long m_resultFrame = 0;  //!< the frame whose result is the newest
 };
 }  // namespace
 

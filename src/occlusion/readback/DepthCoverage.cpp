@@ -19,7 +19,9 @@ double weightedCoverage(const SunDiscView& v, const float* values, int x0, int y
 }  // namespace
 
 double coverageFromDepth(const SunDiscView& v, const float* depth, int x0, int y0, int w, int h) {
-    return weightedCoverage(v, depth, x0, y0, w, h, [](float d) { return d >= 1.0f ? 1.0 : 0.0; });
+    const float light = float(v.lightDepth);
+    return weightedCoverage(v, depth, x0, y0, w, h,
+                            [light](float d) { return d >= light ? 1.0 : 0.0; });
 }
 
 double coverageFromSkyFraction(const SunDiscView& v, const float* sky, int x0, int y0, int w,

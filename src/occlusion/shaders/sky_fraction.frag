@@ -9,15 +9,16 @@ uniform int sampleCount;
 #else
 layout(binding = 0) uniform sampler2D depth;
 #endif
+uniform float lightDepth;  // 1 (the cleared far value) for the sun; a sphere light's near side
 out float sky;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
 #ifdef MULTISAMPLE
     int n = 0;
     for (int i = 0; i < sampleCount; ++i)
-        if (texelFetch(depthSamples, p, i).r >= 1.0) ++n;
+        if (texelFetch(depthSamples, p, i).r >= lightDepth) ++n;
     sky = float(n) / float(sampleCount);
 #else
-    sky = texelFetch(depth, p, 0).r >= 1.0 ? 1.0 : 0.0;
+    sky = texelFetch(depth, p, 0).r >= lightDepth ? 1.0 : 0.0;
 #endif
 }

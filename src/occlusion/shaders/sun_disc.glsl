@@ -5,6 +5,7 @@ uniform vec2 tanHalfFov;                   // tan(fov / 2) horizontally, vertica
 uniform vec2 frameSize;                    // pixels
 uniform vec3 sunDir;                       // unit, toward the sun
 uniform float sunChord2;                   // |d - s|^2 at the rim: 2 (1 - cos(radius))
+uniform float lightDepth;  // the light's stored depth: 1 (sky) for the sun, a sphere light's near side
 
 // The unit view ray through a point of the frame in GL pixel units (origin bottom-left).
 vec3 rayThrough(vec2 p) {

@@ -15,6 +15,10 @@ SceneCamera sunCamera(const Scene& view) {
     c.lookAt = c.position + s;
     c.up = std::abs(s.y) < 0.99 ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
     c.fovYDeg = 2 * view.sun.angularRadiusDeg;  // the disc touches the viewport's edges
+    if (view.sun.distance > 0) {  // a sphere light: only what lies before it may hide it
+        c.farPlane = 0.999 * view.sun.distance;
+        c.nearPlane = std::min(c.nearPlane, 0.5 * c.farPlane);
+    }
     return c;
 }
 

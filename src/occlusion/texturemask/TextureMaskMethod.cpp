@@ -33,7 +33,7 @@ class TextureMaskMethod final : public GpuMethod {
              {GL_FRAGMENT_SHADER, "occluder_black.frag", shaders::occluder_black_frag}});
         if (!black) return black.error();
         m->m_black = std::move(*black);
-        m->m_ranges = sceneMeshRanges(world);
+        m->m_ranges = sceneMeshRanges(opaqueObjects(world));  // the renderer's depth mesh
         return std::unique_ptr<GpuVisibility>(std::move(m));
     }
     std::string name() const override { return "texture-mask"; }
@@ -104,16 +104,19 @@ class TextureMaskMethod final : public GpuMethod {
         m_counts.clear();
         const Vec3 eye = view.camera.position, s = normalize(view.sun.direction);
         const double alpha = view.sun.angularRadiusDeg * std::numbers::pi / 180.0;
+        const double light = view.sun.distance > 0 ? view.sun.distance : 1e300;
         for (const MeshObjectRange& r : m_ranges) {
             const Vec3 toObject = r.centre - eye;
             const double distance = length(toObject);
-            if (distance <= r.solidRadius) return false;  // the eye is inside it
-            if (distance <= r.boundRadius) {              // the eye may be inside: draw it
+            if (distance - r.boundRadius >= light) continue;  // wholly behind the light
+            if (distance <= r.solidRadius) return false;      // the eye is inside it
+            if (distance <= r.boundRadius) {                  // the eye may be inside: draw it
                 m_firsts.push_back(r.first), m_counts.push_back(r.count);
                 continue;
             }
             const double angle = std::acos(std::clamp(dot(toObject, s) / distance, -1.0, 1.0));
-            if (r.solidRadius > 0 && angle + alpha <= std::asin(r.solidRadius / distance))
+            if (r.solidRadius > 0 && distance + r.solidRadius < light &&
+                angle + alpha <= std::asin(r.solidRadius / distance))
                 return false;
             if (angle <= alpha + std::asin(r.boundRadius / distance)) {
                 m_firsts.push_back(r.first), m_counts.push_back(r.count);

@@ -24,11 +24,11 @@ void main() {
         float weight = discWeight(vec2(pixel));
 #ifdef MULTISAMPLE
         int sky = 0;
-        for (int i = 0; i < sampleCount; ++i) sky += texelFetch(sceneDepth, pixel, i).r >= 1.0 ? 1 : 0;
+        for (int i = 0; i < sampleCount; ++i) sky += texelFetch(sceneDepth, pixel, i).r >= lightDepth ? 1 : 0;
         s = vec2(weight * float(sky) / float(sampleCount), weight);
 #else
         float depth = texelFetch(sceneDepth, pixel, 0).r;
-        s = vec2(depth >= 1.0 ? weight : 0.0, weight);
+        s = vec2(depth >= lightDepth ? weight : 0.0, weight);
 #endif
     }
     sums[index] = s;

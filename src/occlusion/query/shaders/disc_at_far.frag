@@ -4,6 +4,6 @@
 out vec4 fragColor;
 void main() {
     if (!inSunDisc(rayThrough(gl_FragCoord.xy))) discard;
-    gl_FragDepth = 1.0;
+    gl_FragDepth = lightDepth;  // the far plane for the sun
     fragColor = vec4(1.0);
 }

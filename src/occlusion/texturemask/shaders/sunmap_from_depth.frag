@@ -23,7 +23,7 @@ void main() {
             vec2 pixel = (vec2(dot(d, camRight), dot(d, camUp)) / z / tanHalfFov * 0.5 + 0.5) * frameSize;
             if (any(lessThan(pixel, vec2(0.0))) || any(greaterThanEqual(pixel, frameSize))) continue;
             ++disc;
-            if (frameDepthAt(pixel) >= 1.0) ++sky;
+            if (frameDepthAt(pixel) >= lightDepth) ++sky;
         }
     }
     float n = float(kSub * kSub);
