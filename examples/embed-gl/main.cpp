@@ -113,13 +113,13 @@ void main() { ndc = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 :
               gl_Position = vec4(ndc, 0.0, 1.0); })";
 const char* kSkyFrag = R"(#version 450 core
 in vec2 ndc;
-uniform mat4 inverseViewProjection;
+uniform vec3 right, up, forward;  // the camera's basis
+uniform vec2 tanHalf;             // tan(fov / 2) across and up
 uniform vec3 sunDirection;
 uniform float cosSunRadius;
 out vec4 fragColor;
 void main() {
-    vec4 far = inverseViewProjection * vec4(ndc, 0.5, 1.0), near = inverseViewProjection * vec4(ndc, 1.0, 1.0);
-    vec3 d = normalize(far.xyz / far.w - near.xyz / near.w);
+    vec3 d = normalize(forward + right * (ndc.x * tanHalf.x) + up * (ndc.y * tanHalf.y));
     vec3 sky = mix(vec3(0.9, 0.6, 0.4), vec3(0.15, 0.25, 0.55), clamp(d.y * 3.0, 0.0, 1.0));
     fragColor = vec4(dot(d, sunDirection) >= cosSunRadius ? vec3(3000.0, 2600.0, 2000.0) : sky, 1.0);
 })";
@@ -352,53 +352,6 @@ int main(int argc, char** argv) {
         const Mat p =
             reversedInfinitePerspective(view.fovYDeg, float(w) / float(h), view.nearPlane);
         const Mat vp = multiply(p, v);
-        // The sky pass needs the inverse; a finite projection gives it without special cases.
-        Mat pFinite = p;
-        pFinite[10] = view.nearPlane / (view.farPlane - view.nearPlane);
-        pFinite[14] = view.farPlane * view.nearPlane / (view.farPlane - view.nearPlane);
-        const Mat vpFinite = multiply(pFinite, v);
-        // A general 4x4 inverse would be the application's own maths library; this one inverts
-        // the sky's view-projection by Cramer's rule.
-        Mat inv{};
-        {
-            const float* m = vpFinite.data();
-            float t[16];
-            t[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] +
-                   m[9] * m[7] * m[14] + m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
-            t[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] -
-                   m[8] * m[7] * m[14] - m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
-            t[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] +
-                   m[8] * m[7] * m[13] + m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
-            t[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] -
-                    m[8] * m[6] * m[13] - m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
-            t[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] -
-                   m[9] * m[3] * m[14] - m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
-            t[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] +
-                   m[8] * m[3] * m[14] + m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
-            t[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] -
-                   m[8] * m[3] * m[13] - m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
-            t[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] +
-                    m[8] * m[2] * m[13] + m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
-            t[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] +
-                   m[5] * m[3] * m[14] + m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
-            t[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] -
-                   m[4] * m[3] * m[14] - m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
-            t[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] +
-                    m[4] * m[3] * m[13] + m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
-            t[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] -
-                    m[4] * m[2] * m[13] - m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
-            t[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] -
-                   m[5] * m[3] * m[10] - m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
-            t[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] +
-                   m[4] * m[3] * m[10] + m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
-            t[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] -
-                    m[4] * m[3] * m[9] - m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
-            t[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] +
-                    m[4] * m[2] * m[9] + m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
-            const float det = m[0] * t[0] + m[1] * t[4] + m[2] * t[8] + m[3] * t[12];
-            for (int i = 0; i < 16; ++i) inv[i] = t[i] / det;
-        }
-
         // The application's own passes: sky, then the city with reversed-Z depth.
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
         glBindFramebuffer(GL_FRAMEBUFFER, msTarget);
@@ -408,8 +361,13 @@ int main(int argc, char** argv) {
         glClear(GL_DEPTH_BUFFER_BIT);
         glDisable(GL_DEPTH_TEST);
         glUseProgram(skyProgram);
-        glUniformMatrix4fv(glGetUniformLocation(skyProgram, "inverseViewProjection"), 1, GL_FALSE,
-                           inv.data());
+        // The camera basis is the view matrix's rows; the sky shader builds each pixel's ray.
+        glUniform3f(glGetUniformLocation(skyProgram, "right"), v[0], v[4], v[8]);
+        glUniform3f(glGetUniformLocation(skyProgram, "up"), v[1], v[5], v[9]);
+        glUniform3f(glGetUniformLocation(skyProgram, "forward"), -v[2], -v[6], -v[10]);
+        const float tanHalfY = std::tan(view.fovYDeg * 3.14159265f / 360.f);
+        glUniform2f(glGetUniformLocation(skyProgram, "tanHalf"), tanHalfY * float(w) / float(h),
+                    tanHalfY);
         glUniform3f(glGetUniformLocation(skyProgram, "sunDirection"), sun.x, sun.y, sun.z);
         glUniform1f(glGetUniformLocation(skyProgram, "cosSunRadius"),
                     std::cos(city.sunRadiusDeg * 3.14159265f / 180.f));

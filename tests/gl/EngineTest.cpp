@@ -785,8 +785,8 @@ class OccluderPass {
         opaque.boxes.clear(), clear.boxes.clear(), clear.spheres.clear(), clear.triangles.clear();
         clear.ground.reset();
         for (const Box& b : scene.boxes) (b.opacity < 1 ? clear : opaque).boxes.push_back(b);
-        m_opaque = upload(buildSceneMesh(opaque), m_opaqueVao, m_opaqueBuffer);
-        m_clear = upload(buildSceneMesh(clear), m_clearVao, m_clearBuffer);
+        m_opaque = uploadPositions(buildSceneMesh(opaque), m_opaqueVao, m_opaqueBuffer);
+        m_clear = uploadPositions(buildSceneMesh(clear), m_clearVao, m_clearBuffer);
         for (const Box& b : clear.boxes) m_opacities.push_back(float(b.opacity));
         auto p = gl::linkProgram(
             {{GL_VERTEX_SHADER, "occluder.vert",
@@ -824,23 +824,6 @@ class OccluderPass {
     int calls = 0;
 
   private:
-    static GLsizei upload(const std::vector<MeshVertex>& mesh, gl::VertexArray& vao,
-                          gl::Buffer& buffer) {
-        GLuint b = 0, a = 0;
-        glCreateBuffers(1, &b);
-        const MeshVertex none{};
-        glNamedBufferStorage(b,
-                             GLsizeiptr(std::max<std::size_t>(1, mesh.size()) * sizeof(MeshVertex)),
-                             mesh.empty() ? &none : mesh.data(), 0);
-        buffer = gl::Buffer(b);
-        glCreateVertexArrays(1, &a);
-        glVertexArrayVertexBuffer(a, 0, b, 0, sizeof(MeshVertex));
-        glEnableVertexArrayAttrib(a, 0);
-        glVertexArrayAttribFormat(a, 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(a, 0, 0);
-        vao = gl::VertexArray(a);
-        return GLsizei(mesh.size());
-    }
     gl::VertexArray m_opaqueVao, m_clearVao;
     gl::Buffer m_opaqueBuffer, m_clearBuffer;
     GLsizei m_opaque = 0, m_clear = 0;

@@ -88,33 +88,30 @@ inline fk_frame frameFor(const Scene& scene, const DepthTarget& t, std::array<in
     return f;
 }
 
+//! `mesh` into a new buffer with its positions at attribute 0 of a new vertex array (an empty
+//! mesh gets a one-vertex buffer, since GL refuses an empty one); its vertex count.
+inline GLsizei uploadPositions(const std::vector<MeshVertex>& mesh, gl::VertexArray& vao,
+                               gl::Buffer& buffer) {
+    GLuint b = 0, a = 0;
+    glCreateBuffers(1, &b);
+    const MeshVertex none{};
+    glNamedBufferStorage(b, GLsizeiptr(std::max<std::size_t>(1, mesh.size()) * sizeof(MeshVertex)),
+                         mesh.empty() ? &none : mesh.data(), 0);
+    buffer = gl::Buffer(b);
+    glCreateVertexArrays(1, &a);
+    glVertexArrayVertexBuffer(a, 0, b, 0, sizeof(MeshVertex));
+    glEnableVertexArrayAttrib(a, 0);
+    glVertexArrayAttribFormat(a, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(a, 0, 0);
+    vao = gl::VertexArray(a);
+    return GLsizei(mesh.size());
+}
+
 //! Draws the scene's opaque objects into `t` inside `frame.viewport`, the way `frame` says.
 class DepthPass {
   public:
     explicit DepthPass(const Scene& scene) {
-        Scene opaque = scene;
-        opaque.spheres.clear(), opaque.boxes.clear(), opaque.triangles.clear();
-        for (const Sphere& o : scene.spheres)
-            if (o.opacity >= 1) opaque.spheres.push_back(o);
-        for (const Box& o : scene.boxes)
-            if (o.opacity >= 1) opaque.boxes.push_back(o);
-        for (const Triangle& o : scene.triangles)
-            if (o.opacity >= 1) opaque.triangles.push_back(o);
-        const std::vector<MeshVertex> mesh = buildSceneMesh(opaque);
-        m_count = GLsizei(mesh.size());
-        GLuint b = 0, vao = 0;
-        glCreateBuffers(1, &b);
-        const MeshVertex none{};
-        glNamedBufferStorage(b,
-                             GLsizeiptr(std::max<std::size_t>(1, mesh.size()) * sizeof(MeshVertex)),
-                             mesh.empty() ? &none : mesh.data(), 0);
-        m_buffer = gl::Buffer(b);
-        glCreateVertexArrays(1, &vao);
-        glVertexArrayVertexBuffer(vao, 0, b, 0, sizeof(MeshVertex));
-        glEnableVertexArrayAttrib(vao, 0);
-        glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao, 0, 0);
-        m_vao = gl::VertexArray(vao);
+        m_count = uploadPositions(buildSceneMesh(opaqueObjects(scene)), m_vao, m_buffer);
         auto p = gl::linkProgram(
             {{GL_VERTEX_SHADER, "app_depth.vert",
               "#version 450 core\nlayout(location = 0) in vec3 p;\nuniform mat4 vp;\n"

@@ -145,6 +145,11 @@ std::optional<ToneOperator> namedToneOperator(const std::string& name) {
     return std::nullopt;
 }
 
+ToneOperator renderedFrameCurve(const std::string& out, const std::string& tonemap) {
+    if (isFloatFormat(outputSampleFormat(out))) return ToneOperator::None;
+    return namedToneOperator(tonemap).value_or(ToneOperator::Aces);
+}
+
 ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out, SampleFormat requested) {
     return hdrInput && !isFloatFormat(outputSampleFormat(out, requested)) ? ToneOperator::Filmic
                                                                           : ToneOperator::None;

@@ -60,6 +60,9 @@ std::optional<ToneOperator> namedToneOperator(const std::string& name);
 //! already display-referred: none.
 ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out,
                                  SampleFormat requested = SampleFormat::Auto);
+//! A rendered frame's curve (render, lights): `--tonemap NAME` for 8/16-bit outputs, none for
+//! float outputs, which stay linear.
+ToneOperator renderedFrameCurve(const std::string& out, const std::string& tonemap);
 
 //! "X,Y" in pixels (finite numbers); nullopt when malformed.
 std::optional<Point> parsePoint(const std::string& text);

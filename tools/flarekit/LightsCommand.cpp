@@ -66,11 +66,7 @@ int runLights(const LightsArgs& a) {
         auto run = runEngine(*scene, o);
         if (!run) return run.error();
         printReport(a, *run);
-        const bool display = !isFloatFormat(outputSampleFormat(a.out));
-        const ToneOperator curve = display
-                                       ? namedToneOperator(a.tonemap).value_or(ToneOperator::Aces)
-                                       : ToneOperator::None;
-        toneMapImage(run->image, curve, a.tone.exposure);
+        toneMapImage(run->image, renderedFrameCurve(a.out, a.tonemap), a.tone.exposure);
         return ImageOutput{std::move(run->image), {}};
     });
 }

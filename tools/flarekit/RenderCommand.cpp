@@ -62,10 +62,7 @@ Result<ImageOutput> renderStill(const RenderArgs& a) {
             frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
     }
     // The display curve for 8/16-bit files; float outputs stay linear (exposure applied).
-    const bool display = !isFloatFormat(outputSampleFormat(a.out));
-    const ToneOperator curve =
-        display ? namedToneOperator(a.tonemap).value_or(ToneOperator::Aces) : ToneOperator::None;
-    toneMapImage(frame->image, curve, a.tone.exposure);
+    toneMapImage(frame->image, renderedFrameCurve(a.out, a.tonemap), a.tone.exposure);
     return ImageOutput{std::move(frame->image), {}};
 }
 
