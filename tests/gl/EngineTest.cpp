@@ -23,6 +23,7 @@
 #include "flarekit/Temporal.h"
 #include "flarekit/Visibility.h"
 #include "flarekit/flarekit.h"
+#include "flarekit/flarekit.hpp"
 #include "scene/SceneTargets.h"
 
 using namespace flarekit;
@@ -870,4 +871,36 @@ TEST(Engine, TextureMaskDrawsSunMapsThroughTheOccluderCallbackEvenOffScreen) {
     EXPECT_GT(coverage[first], 0.2f);  // off screen, half hidden, still measured
     EXPECT_LT(coverage[first], 0.8f);
     EXPECT_EQ(rays.lights[first].inFrame, 0.0);
+}
+
+TEST(Engine, TheCppWrapperGivesTheSameCoverageAsTheCApi) {
+    const Scene scene = wallScene();
+    glContext();
+    flarekit::api::Engine cpp(4);
+    ASSERT_TRUE(cpp.valid()) << cpp.createError();
+    EXPECT_FALSE(flarekit::api::Engine(0).valid());
+    std::string error;
+    EXPECT_LT(cpp.loadPreset("no-such-preset", &error), 0);
+    EXPECT_NE(error.find("fk_engine_load_preset"), std::string::npos) << error;
+    const int preset = cpp.loadPreset("subtle");
+    ASSERT_GE(preset, 0);
+    const std::vector<fk_light> lights = engineLights(scene, preset);
+    const DepthTarget target = makeDepthTarget(scene.width, scene.height, 1, GL_DEPTH_COMPONENT32F);
+    const fk_frame frame =
+        frameFor(scene, target, {0, 0, scene.width, scene.height}, FK_DEPTH_MINUS_ONE_TO_ONE);
+    DepthPass(scene).draw(target, frame);
+    ASSERT_TRUE(cpp.occlusion(frame, lights)) << cpp.occlusion(frame, lights).error;
+    std::vector<float> viaCpp(4);
+    ASSERT_EQ(cpp.readCoverage(viaCpp), 4);
+    EnginePtr c = makeEngine(4);
+    ASSERT_EQ(fk_engine_load_preset(c.get(), "subtle"), preset);
+    ASSERT_EQ(fk_engine_occlusion(c.get(), &frame, lights.data(), 4), 0);
+    EXPECT_EQ(viaCpp, readCoverage(c.get(), 4));
+    const flarekit::api::Outcome bad = cpp.setMethod("pbo");
+    EXPECT_FALSE(bad);
+    EXPECT_NE(bad.error.find("fk_engine_set_method: method: expected"), std::string::npos);
+    flarekit::api::Engine moved = std::move(cpp);
+    EXPECT_TRUE(moved.valid());
+    EXPECT_FALSE(cpp.valid());  // NOLINT(bugprone-use-after-move): moved-from is empty
+    EXPECT_NE(moved.coverageTexture(), 0u);
 }
