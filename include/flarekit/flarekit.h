@@ -9,7 +9,8 @@
  * adds every light's sprite flare, instanced and additive, in linear HDR, into the
  * application's framebuffer before its tone map. Nothing is read back in the frame loop.
  * Errors: calls return < 0 (or NULL) and fk_error says which argument was wrong and what was
- * expected; nothing is drawn and no GL error is left. See docs/engine-api.md. */
+ * expected; nothing is drawn and no GL error is left. A call that needs GL without a current
+ * context returns an error too. See docs/engine-api.md. */
 #ifndef FLAREKIT_FLAREKIT_H
 #define FLAREKIT_FLAREKIT_H
 
@@ -73,6 +74,8 @@ typedef struct {
  * fk_error(NULL) says why. It clears GL errors left pending before it (glGetError), so that
  * it can tell its own; no other call reads or clears GL errors. */
 FK_API fk_engine* fk_engine_create(int max_lights);
+/* With the engine's context current; without one the engine's GL objects are left to the
+ * context's destruction. */
 FK_API void fk_engine_destroy(fk_engine* e);
 /* The last error, "" if none. fk_error(NULL): the last failed fk_engine_create. */
 FK_API const char* fk_error(const fk_engine* e);

@@ -7,6 +7,7 @@
 
 #include "engine/Engine.h"
 #include "flarekit/flarekit.h"
+#include "gl/GlObjects.h"
 
 struct fk_engine {
     std::unique_ptr<flarekit::engine::Engine> engine;
@@ -20,11 +21,20 @@ thread_local std::string t_createError;
 constexpr int kInvalid = -1;   //!< a refused argument (fk_error says which)
 constexpr int kInternal = -2;  //!< a failure inside flarekit or the GL driver
 
+//! Runs `call` on the engine, turning a Status or an exception into the C return code and
+//! fk_error's text. Calls that touch GL first check a context is current: without one,
+//! libepoxy would end the process instead of the call returning an error.
 template <class Call>
-int guarded(fk_engine* e, const char* name, Call call) {
+int guarded(fk_engine* e, const char* name, Call call, bool needsGl = true) {
     if (!e) {
         t_createError = std::string(name) + ": expected an engine, got NULL";
         return kInvalid;
+    }
+    if (needsGl) {
+        if (flarekit::Status s = flarekit::gl::requireCurrentContext(name); !s) {
+            e->engine->lastError = s.error().message;
+            return kInvalid;
+        }
     }
     try {
         flarekit::Status s = call(*e->engine);
@@ -64,6 +74,10 @@ fk_engine* fk_engine_create(int max_lights) {
 }
 
 void fk_engine_destroy(fk_engine* e) {
+    if (!e) return;
+    // Without the engine's context current its GL objects cannot be deleted (libepoxy would
+    // abort the process): they are left to the context's own destruction.
+    if (!flarekit::gl::requireCurrentContext("fk_engine_destroy")) (void)e->engine.release();
     delete e;
 }
 
@@ -167,27 +181,32 @@ int fk_engine_set_transmittance(fk_engine* e, int view, unsigned texture) {
 }
 
 int fk_engine_set_occluder_callback(fk_engine* e, fk_occluder_callback callback, void* user) {
-    return guarded(e, "fk_engine_set_occluder_callback", [&](flarekit::engine::Engine& en) {
-        return en.setOccluderCallback(callback, user);
-    });
+    return guarded(
+        e, "fk_engine_set_occluder_callback",
+        [&](flarekit::engine::Engine& en) { return en.setOccluderCallback(callback, user); },
+        false);
 }
 
 int fk_engine_set_guard_band(fk_engine* e, int view, int enabled) {
-    return guarded(e, "fk_engine_set_guard_band", [&](flarekit::engine::Engine& en) {
-        return en.setGuardBand(view, enabled != 0);
-    });
+    return guarded(
+        e, "fk_engine_set_guard_band",
+        [&](flarekit::engine::Engine& en) { return en.setGuardBand(view, enabled != 0); }, false);
 }
 
 int fk_engine_set_samples(fk_engine* e, int samples_per_side) {
-    return guarded(e, "fk_engine_set_samples",
-                   [&](flarekit::engine::Engine& en) { return en.setSamples(samples_per_side); });
+    return guarded(
+        e, "fk_engine_set_samples",
+        [&](flarekit::engine::Engine& en) { return en.setSamples(samples_per_side); }, false);
 }
 
 int fk_engine_set_temporal(fk_engine* e, float attack_seconds, float release_seconds,
                            float guard_band) {
-    return guarded(e, "fk_engine_set_temporal", [&](flarekit::engine::Engine& en) {
-        return en.setTemporal(attack_seconds, release_seconds, guard_band);
-    });
+    return guarded(
+        e, "fk_engine_set_temporal",
+        [&](flarekit::engine::Engine& en) {
+            return en.setTemporal(attack_seconds, release_seconds, guard_band);
+        },
+        false);
 }
 
 int fk_engine_reset(fk_engine* e) {

@@ -14,6 +14,8 @@
 #include <functional>
 #include <numeric>
 
+#include <epoxy/egl.h>
+
 #include "DepthPass.h"
 #include "GlTestContext.h"
 #include "LightScenes.h"
@@ -903,4 +905,29 @@ TEST(Engine, TheCppWrapperGivesTheSameCoverageAsTheCApi) {
     EXPECT_TRUE(moved.valid());
     EXPECT_FALSE(cpp.valid());  // NOLINT(bugprone-use-after-move): moved-from is empty
     EXPECT_NE(moved.coverageTexture(), 0u);
+}
+
+TEST(Engine, CallsWithoutACurrentContextReturnAnErrorInsteadOfAborting) {
+    EnginePtr e = makeEngine(4);
+    const Scene scene = wallScene();
+    const std::vector<fk_light> lights = engineLights(scene, -1);
+    const DepthTarget target = makeDepthTarget(scene.width, scene.height, 1, GL_DEPTH_COMPONENT32F);
+    const fk_frame frame =
+        frameFor(scene, target, {0, 0, scene.width, scene.height}, FK_DEPTH_MINUS_ONE_TO_ONE);
+    const EGLDisplay display = eglGetCurrentDisplay();
+    const EGLContext context = eglGetCurrentContext();
+    ASSERT_TRUE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+    const int occlusion = fk_engine_occlusion(e.get(), &frame, lights.data(), 4);
+    const std::string message = fk_error(e.get());
+    fk_engine* none = fk_engine_create(4);
+    const std::string createMessage = fk_error(nullptr);
+    const int samples = fk_engine_set_samples(e.get(), 16);  // no GL: still fine
+    ASSERT_TRUE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context));
+    EXPECT_LT(occlusion, 0);
+    EXPECT_NE(message.find("fk_engine_occlusion: no OpenGL context is current"), std::string::npos)
+        << message;
+    EXPECT_EQ(none, nullptr);
+    EXPECT_NE(createMessage.find("no OpenGL context is current"), std::string::npos);
+    EXPECT_EQ(samples, 0);
+    EXPECT_EQ(fk_engine_occlusion(e.get(), &frame, lights.data(), 4), 0) << fk_error(e.get());
 }
