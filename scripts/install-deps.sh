@@ -19,6 +19,8 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg
   # the embedding example opens a window with GLFW when there is a display
   libglfw3-dev
+  # the embedding example's window test runs it on a private X server (Xvfb, local socket only)
+  xvfb
 )
 
 missing=()

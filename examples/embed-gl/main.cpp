@@ -4,7 +4,10 @@
 // (fk_engine_occlusion: one batched GPU pass), then has every light's flare added to its HDR
 // colour before its own tone map (fk_engine_draw).
 //   embed-gl [--frames N] [--size WxH] [--out frame.ppm] [--scene-json S] [--coverage-json C]
-//            [--window]
+//            [--window | --headless]
+// With a display (and GLFW) it opens a window and runs until it is closed (or --frames N
+// frames); --headless, or no display, renders N frames (default 3) off screen. Either way the
+// last frame goes to --out.
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 #if EMBED_HAS_GLFW
@@ -210,7 +213,7 @@ bool headlessContext() {
 struct Options {
     int frames = 3, width = 1280, height = 720;
     std::string out = "embed-gl.ppm", sceneJson, coverageJson;
-    bool window = false;
+    bool window = false, headless = false, framesGiven = false;
 };
 
 bool parse(int argc, char** argv, Options& o) {
@@ -218,7 +221,7 @@ bool parse(int argc, char** argv, Options& o) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
         if (a == "--frames" && more)
-            o.frames = std::atoi(argv[++i]);
+            o.frames = std::atoi(argv[++i]), o.framesGiven = true;
         else if (a == "--size" && more) {
             if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2) return false;
         } else if (a == "--out" && more)
@@ -229,10 +232,13 @@ bool parse(int argc, char** argv, Options& o) {
             o.coverageJson = argv[++i];
         else if (a == "--window")
             o.window = true;
+        else if (a == "--headless")
+            o.headless = true;
         else
             return false;
     }
-    return o.frames >= 1 && o.width >= 16 && o.height >= 16 && o.width <= 8192 && o.height <= 8192;
+    return !(o.window && o.headless) && o.frames >= 1 && o.width >= 16 && o.height >= 16 &&
+           o.width <= 8192 && o.height <= 8192;
 }
 
 GLuint texture(GLenum target, GLenum format, int w, int h, int samples) {
@@ -260,19 +266,27 @@ int main(int argc, char** argv) {
     if (!parse(argc, argv, o)) {
         std::fprintf(stderr,
                      "usage: embed-gl [--frames N] [--size WxH] [--out F.ppm] "
-                     "[--scene-json S] [--coverage-json C] [--window]\n");
+                     "[--scene-json S] [--coverage-json C] [--window | --headless]\n");
         return 2;
     }
 #if EMBED_HAS_GLFW
     GLFWwindow* window = nullptr;
+    // A display and no --headless: a window, as an application would open.
+    const bool display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
+    const bool asked = o.window;
+    if (!o.headless && display) o.window = true;
+    if (o.window && !glfwInit()) {
+        if (asked) return std::fprintf(stderr, "embed-gl: no display for --window\n"), 2;
+        o.window = false;  // a display that does not answer: off screen instead
+    }
     if (o.window) {
-        if (!glfwInit()) return std::fprintf(stderr, "embed-gl: no display for --window\n"), 2;
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         window = glfwCreateWindow(o.width, o.height, "flarekit embed-gl", nullptr, nullptr);
         if (!window) return std::fprintf(stderr, "embed-gl: no GL 4.5 window\n"), 1;
         glfwMakeContextCurrent(window);
+        std::printf("embed-gl: a %dx%d window (GLFW)\n", o.width, o.height);
     }
 #else
     if (o.window) return std::fprintf(stderr, "embed-gl: built without GLFW\n"), 2;
@@ -343,7 +357,8 @@ int main(int argc, char** argv) {
     }
 
     City view = city;
-    for (int frame = 0; frame < o.frames || o.window; ++frame) {
+    // A window runs until closed unless --frames was given.
+    for (int frame = 0; frame < o.frames || (o.window && !o.framesGiven); ++frame) {
 #if EMBED_HAS_GLFW
         if (window && glfwWindowShouldClose(window)) break;
 #endif
@@ -398,14 +413,18 @@ int main(int argc, char** argv) {
             fk_engine_draw(flares, &f, lights.data(), int(lights.size()), hdrTarget) < 0)
             return std::fprintf(stderr, "embed-gl: %s\n", fk_error(flares)), 1;
 
-        // The application's tone map, to the window or the display target.
-        glBindFramebuffer(GL_FRAMEBUFFER, o.window ? 0 : ldrTarget);
+        // The application's tone map into its display target, shown in the window if any.
+        glBindFramebuffer(GL_FRAMEBUFFER, ldrTarget);
         glUseProgram(tonemapProgram);
         glBindTextureUnit(0, hdr);
         glBindVertexArray(empty);
         glDrawArrays(GL_TRIANGLES, 0, 3);
 #if EMBED_HAS_GLFW
         if (window) {
+            int fw = 0, fh = 0;
+            glfwGetFramebufferSize(window, &fw, &fh);
+            glBlitNamedFramebuffer(ldrTarget, 0, 0, 0, w, h, 0, 0, fw, fh, GL_COLOR_BUFFER_BIT,
+                                   GL_LINEAR);
             glfwSwapBuffers(window);
             glfwPollEvents();
         }
@@ -418,7 +437,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < n; ++i) seen += coverage[std::size_t(i)] > 0.5f ? 1 : 0;
     std::printf("embed-gl: %zu lights (the sun and %zu lamps), %d more than half visible\n",
                 lights.size(), city.lamps.size(), seen);
-    if (!o.window) {
+    {
         std::vector<unsigned char> rgba(std::size_t(w) * h * 4);
         glGetTextureImage(ldr, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
         FILE* out = std::fopen(o.out.c_str(), "wb");

@@ -18,7 +18,10 @@ namespace {
 //! fk_error(NULL): why the last fk_engine_create of this thread failed.
 thread_local std::string t_createError;
 
-constexpr int kInvalid = -1;   //!< a refused argument (fk_error says which)
+constexpr int kInvalid = -1;  //!< a refused argument (fk_error says which)
+constexpr const char* kNoContext =
+    "no OpenGL context is current on this thread (the application's GL 4.5 core context must be "
+    "current in every call)";
 constexpr int kInternal = -2;  //!< a failure inside flarekit or the GL driver
 
 //! Runs `call` on the engine, turning a Status or an exception into the C return code and
@@ -30,11 +33,9 @@ int guarded(fk_engine* e, const char* name, Call call, bool needsGl = true) {
         t_createError = std::string(name) + ": expected an engine, got NULL";
         return kInvalid;
     }
-    if (needsGl) {
-        if (flarekit::Status s = flarekit::gl::requireCurrentContext(name); !s) {
-            e->engine->lastError = s.error().message;
-            return kInvalid;
-        }
+    if (needsGl && !flarekit::gl::hasCurrentContext()) {
+        e->engine->lastError = std::string(name) + ": " + kNoContext;
+        return kInvalid;
     }
     try {
         flarekit::Status s = call(*e->engine);
@@ -77,7 +78,7 @@ void fk_engine_destroy(fk_engine* e) {
     if (!e) return;
     // Without the engine's context current its GL objects cannot be deleted (libepoxy would
     // abort the process): they are left to the context's own destruction.
-    if (!flarekit::gl::requireCurrentContext("fk_engine_destroy")) (void)e->engine.release();
+    if (!flarekit::gl::hasCurrentContext()) (void)e->engine.release();
     delete e;
 }
 

@@ -364,7 +364,11 @@ Result<std::unique_ptr<Engine>> Engine::create(int maxLights) {
         return invalidInput("max_lights: expected 1.." + std::to_string(FK_MAX_LIGHTS) + ", got " +
                             std::to_string(maxLights));
     }
-    if (Status s = gl::requireCurrentContext("fk_engine_create"); !s) return s.error();
+    if (!gl::hasCurrentContext()) {
+        return invalidInput(
+            "no OpenGL context is current on this thread (the application's GL "
+            "4.5 core context must be current in every call)");
+    }
     if (epoxy_gl_version() < 45) {
         return invalidInput("fk_engine_create: expected a current OpenGL 4.5 context, got " +
                             std::to_string(epoxy_gl_version() / 10) + "." +

@@ -161,12 +161,27 @@ Result<Program> linkProgram(std::initializer_list<ShaderSource> sources) {
     return program;
 }
 
-Status requireCurrentContext(const char* what) {
-    if (eglGetCurrentContext() != EGL_NO_CONTEXT) return Ok{};
-    // An application on GLX: ask libGL if the process has it (no link-time dependency).
+bool hasCurrentContext() {
+    if (eglGetCurrentContext() != EGL_NO_CONTEXT) return true;
+    // An application on GLX: ask libGL if the process has it (no link-time dependency). GLFW
+    // and SDL load libGLX / libGL at run time, local to themselves, so look in those by name
+    // (RTLD_NOLOAD: only if already loaded) as well as in the global scope.
     using GetContext = void* (*)();
     if (auto glx = reinterpret_cast<GetContext>(dlsym(RTLD_DEFAULT, "glXGetCurrentContext")))
-        if (glx()) return Ok{};
+        if (glx()) return true;
+    for (const char* library : {"libGLX.so.0", "libGL.so.1", "libGL.so"}) {
+        void* handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
+        if (!handle) continue;
+        auto glx = reinterpret_cast<GetContext>(dlsym(handle, "glXGetCurrentContext"));
+        const bool current = glx && glx();
+        dlclose(handle);
+        if (current) return true;
+    }
+    return false;
+}
+
+Status requireCurrentContext(const char* what) {
+    if (hasCurrentContext()) return Ok{};
     return invalidInput(std::string(what) +
                         ": no OpenGL context is current on this thread (make one current, e.g. "
                         "with flarekit::gl::HeadlessGl::create())");

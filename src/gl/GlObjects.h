@@ -99,6 +99,8 @@ Status checkError(const std::string& what);
 //! else an error naming `what`. Every GL class's create() asks first: a GL call without a
 //! context would end the process in libepoxy's assertion instead of returning an error.
 Status requireCurrentContext(const char* what);
+//! Whether an OpenGL context (EGL, or GLX in a process that has it) is current on this thread.
+bool hasCurrentContext();
 
 //! Level 0 of a width x height colour texture as float RGBA, top row first (GL rows are
 //! bottom-up; `flipRows` false keeps GL row 0 as image row 0, for textures uploaded that way).

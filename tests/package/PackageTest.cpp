@@ -4,7 +4,14 @@
 // its coverage checked against `flarekit visibility --method raycast`; and a C program built
 // with pkg-config.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +49,41 @@ double depthTolerance(double radiusPx) {
     return std::max(0.02, 0.08 / radiusPx);
 }
 
+//! A private X server for the window test: Xvfb on a free display number, listening on its
+//! local socket only (-nolisten tcp), stopped when the test ends.
+class Xvfb {
+  public:
+    Xvfb() {
+        for (int n = 90; n < 190 && m_pid == 0; ++n) {
+            const std::string socket = "/tmp/.X11-unix/X" + std::to_string(n);
+            if (std::filesystem::exists(socket) ||
+                std::filesystem::exists("/tmp/.X" + std::to_string(n) + "-lock"))
+                continue;
+            const std::string display = ":" + std::to_string(n);
+            const char* argv[] = {"Xvfb", display.c_str(), "-nolisten", "tcp", "-screen",
+                                  "0",    "1280x800x24",   nullptr};
+            if (posix_spawnp(&m_pid, "Xvfb", nullptr, nullptr, const_cast<char**>(argv), environ) !=
+                0) {
+                m_pid = 0;
+                return;
+            }
+            for (int wait = 0; wait < 100 && !std::filesystem::exists(socket); ++wait)
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            m_display = display;
+        }
+    }
+    ~Xvfb() {
+        if (m_pid == 0) return;
+        kill(m_pid, SIGTERM);
+        waitpid(m_pid, nullptr, 0);
+    }
+    const std::string& display() const { return m_display; }
+
+  private:
+    pid_t m_pid = 0;
+    std::string m_display;
+};
+
 }  // namespace
 
 TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCaster) {
@@ -64,8 +106,8 @@ TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCa
 
     const std::string scene = dir.file("city.json"), coverage = dir.file("coverage.json"),
                       rays = dir.file("rays.json");
-    ASSERT_EQ(run(build + "/embed-gl --frames 3 --out " + dir.file("frame.ppm") + " --scene-json " +
-                      scene + " --coverage-json " + coverage,
+    ASSERT_EQ(run(build + "/embed-gl --headless --frames 3 --out " + dir.file("frame.ppm") +
+                      " --scene-json " + scene + " --coverage-json " + coverage,
                   log),
               0)
         << slurp(log);
@@ -117,6 +159,23 @@ TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCa
     EXPECT_GE(compared, 40);
     EXPECT_GE(hidden, 10);  // lamps behind buildings, and one lamp's bulb before another
     EXPECT_GE(partial, 2);  // the globes at the block corners
+
+    // With a display it opens a window (GLFW, a GLX context) and measures the same.
+    {
+        const Xvfb x;
+        ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+        const std::string windowed = dir.file("windowed.json");
+        ASSERT_EQ(run("DISPLAY=" + x.display() + " " + build + "/embed-gl --frames 3 --out " +
+                          dir.file("window.ppm") + " --coverage-json " + windowed,
+                      log),
+                  0)
+            << slurp(log);
+        EXPECT_NE(slurp(log).find("a 1280x720 window (GLFW)"), std::string::npos) << slurp(log);
+        const auto inWindow = nlohmann::json::parse(slurp(windowed))["coverage"];
+        ASSERT_EQ(inWindow.size(), engine.size());
+        for (std::size_t i = 0; i < engine.size(); ++i)
+            EXPECT_NEAR(double(inWindow[i]), double(engine[i]), 1e-4) << "light " << i;
+    }
 
     // C, through pkg-config.
     const std::string exe = dir.file("c_api_check");
