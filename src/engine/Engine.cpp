@@ -56,12 +56,43 @@ std::string withPrelude(const char* text, const std::string& defines, bool state
            (state ? shaders::light_state_glsl : "") + "\n#line 2\n" + body;
 }
 
+//! The uniforms both occlusion passes take from light_view.glsl and light_state.glsl.
+struct LightPassUniforms {
+    GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1,
+          stateBase = -1, attack = -1, release = -1, guardBand = -1;
+
+    void locate(GLuint n) {
+        view = gl::uniformLocation(n, "viewMatrix");
+        projection = gl::uniformLocation(n, "projectionMatrix");
+        viewport = gl::uniformLocation(n, "viewport");
+        convention = gl::uniformLocation(n, "depthConvention");
+        viewIndex = gl::uniformLocation(n, "viewIndex");
+        stateBase = gl::uniformLocation(n, "stateBase");
+        attack = gl::uniformLocation(n, "attackStep");
+        release = gl::uniformLocation(n, "releaseStep");
+        guardBand = gl::uniformLocation(n, "depthPastViewport");
+    }
+    //! View `index` of a frame: its matrices, viewport and convention, its rows of the state,
+    //! the filter's steps for its dt, and whether depth past its viewport may be read.
+    void set(GLuint p, const fk_frame& f, int index, int maxLights, const TemporalParams& t,
+             bool pastViewport) const {
+        glProgramUniformMatrix4fv(p, view, 1, GL_FALSE, f.view);
+        glProgramUniformMatrix4fv(p, projection, 1, GL_FALSE, f.projection);
+        glProgramUniform4iv(p, viewport, 1, f.viewport);
+        glProgramUniform1i(p, convention, int(f.depth_convention));
+        glProgramUniform1i(p, viewIndex, index);
+        glProgramUniform1i(p, stateBase, index * maxLights);
+        glProgramUniform1f(p, attack, float(smoothingStep(f.dt_seconds, t.attackSeconds)));
+        glProgramUniform1f(p, release, float(smoothingStep(f.dt_seconds, t.releaseSeconds)));
+        glProgramUniform1i(p, guardBand, pastViewport ? 1 : 0);
+    }
+};
+
 struct CoverageProgram {
     gl::Program program;
-    GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1,
-          stateBase = -1, perSide = -1, attack = -1, release = -1, hasTransmittance = -1,
-          textureSize = -1, guardBand = -1, sampleCount = -1, samplePositions = -1,
-          depthSamples = -1;
+    LightPassUniforms pass;
+    GLint perSide = -1, hasTransmittance = -1, textureSize = -1, sampleCount = -1,
+          samplePositions = -1, depthSamples = -1;
 };
 
 Result<CoverageProgram> linkCoverage(bool multisample) {
@@ -72,19 +103,11 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
     CoverageProgram c;
     c.program = std::move(*p);
     const GLuint n = c.program.get();
-    c.view = gl::uniformLocation(n, "viewMatrix");
-    c.projection = gl::uniformLocation(n, "projectionMatrix");
-    c.viewport = gl::uniformLocation(n, "viewport");
-    c.convention = gl::uniformLocation(n, "depthConvention");
-    c.viewIndex = gl::uniformLocation(n, "viewIndex");
-    c.stateBase = gl::uniformLocation(n, "stateBase");
+    c.pass.locate(n);
     c.perSide = gl::uniformLocation(n, "perSide");
     c.depthSamples = gl::uniformLocation(n, "samplesPerPixel");
-    c.attack = gl::uniformLocation(n, "attackStep");
-    c.release = gl::uniformLocation(n, "releaseStep");
     c.hasTransmittance = gl::uniformLocation(n, "hasTransmittance");
     c.textureSize = gl::uniformLocation(n, "depthTextureSize");
-    c.guardBand = gl::uniformLocation(n, "depthPastViewport");
     if (multisample) {
         c.sampleCount = gl::uniformLocation(n, "sampleCount");
         c.samplePositions = gl::uniformLocation(n, "samplePositions");
@@ -95,8 +118,8 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
 //! The texture-mask reduction (sunmap_coverage.comp) and its uniforms.
 struct SunMapProgram {
     gl::Program program;
-    GLint view = -1, projection = -1, viewport = -1, viewIndex = -1, stateBase = -1, attack = -1,
-          release = -1, tileSize = -1, tilesPerRow = -1, guardBand = -1;
+    LightPassUniforms pass;
+    GLint tileSize = -1, tilesPerRow = -1;
 };
 
 Result<SunMapProgram> linkSunMap() {
@@ -106,16 +129,9 @@ Result<SunMapProgram> linkSunMap() {
     SunMapProgram c;
     c.program = std::move(*p);
     const GLuint n = c.program.get();
-    c.view = gl::uniformLocation(n, "viewMatrix");
-    c.projection = gl::uniformLocation(n, "projectionMatrix");
-    c.viewport = gl::uniformLocation(n, "viewport");
-    c.viewIndex = gl::uniformLocation(n, "viewIndex");
-    c.stateBase = gl::uniformLocation(n, "stateBase");
-    c.attack = gl::uniformLocation(n, "attackStep");
-    c.release = gl::uniformLocation(n, "releaseStep");
+    c.pass.locate(n);
     c.tileSize = gl::uniformLocation(n, "tileSize");
     c.tilesPerRow = gl::uniformLocation(n, "tilesPerRow");
-    c.guardBand = gl::uniformLocation(n, "depthPastViewport");
     return c;
 }
 
@@ -300,16 +316,9 @@ Status Engine::Impl::measureSunMaps(int view, const fk_frame& f, const fk_light*
     // The callbacks may have bound anything: bind what the reduction reads now.
     const SunMapProgram& c = sunMap;
     const GLuint p = c.program.get();
-    glProgramUniformMatrix4fv(p, c.view, 1, GL_FALSE, f.view);
-    glProgramUniformMatrix4fv(p, c.projection, 1, GL_FALSE, f.projection);
-    glProgramUniform4iv(p, c.viewport, 1, f.viewport);
-    glProgramUniform1i(p, c.viewIndex, view);
-    glProgramUniform1i(p, c.stateBase, view * maxLights);
-    glProgramUniform1f(p, c.attack, float(smoothingStep(f.dt_seconds, temporal.attackSeconds)));
-    glProgramUniform1f(p, c.release, float(smoothingStep(f.dt_seconds, temporal.releaseSeconds)));
+    c.pass.set(p, f, view, maxLights, temporal, false);
     glProgramUniform1i(p, c.tileSize, tileSize);
     glProgramUniform1i(p, c.tilesPerRow, tilesPerRow);
-    glProgramUniform1i(p, c.guardBand, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lightBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStateBinding, state.get());
     glBindImageTexture(kStateImageUnit, coverageImage.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
@@ -549,20 +558,10 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
         const fk_frame& f = frames[v];
         const CoverageProgram& c = m->coverage[depth[v].multisample ? 1 : 0];
         const GLuint p = c.program.get();
-        glProgramUniformMatrix4fv(p, c.view, 1, GL_FALSE, f.view);
-        glProgramUniformMatrix4fv(p, c.projection, 1, GL_FALSE, f.projection);
-        glProgramUniform4iv(p, c.viewport, 1, f.viewport);
-        glProgramUniform1i(p, c.convention, int(f.depth_convention));
-        glProgramUniform1i(p, c.viewIndex, int(v));
-        glProgramUniform1i(p, c.stateBase, int(v) * m->maxLights);
+        c.pass.set(p, f, int(v), m->maxLights, m->temporal, m->guardBand[v]);
         glProgramUniform1i(p, c.perSide, m->samplesPerSide);
         glProgramUniform1i(p, c.depthSamples, depth[v].samples);
-        glProgramUniform1f(p, c.attack,
-                           float(smoothingStep(f.dt_seconds, m->temporal.attackSeconds)));
-        glProgramUniform1f(p, c.release,
-                           float(smoothingStep(f.dt_seconds, m->temporal.releaseSeconds)));
         glProgramUniform2f(p, c.textureSize, float(f.width), float(f.height));
-        glProgramUniform1i(p, c.guardBand, m->guardBand[v] ? 1 : 0);
         const GLuint transmittance = m->transmittance[v];
         glProgramUniform1i(p, c.hasTransmittance, transmittance != 0 ? 1 : 0);
         glBindTextureUnit(kTransmittanceUnit, transmittance);
