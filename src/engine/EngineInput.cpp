@@ -152,6 +152,12 @@ void packLights(const fk_light* lights, int count, std::vector<float>& packed) {
     }
 }
 
+Status checkView(int view) {
+    if (view >= 0 && view < FK_MAX_VIEWS) return Ok{};
+    return invalidInput("view: expected 0.." + std::to_string(FK_MAX_VIEWS - 1) + ", got " +
+                        std::to_string(view));
+}
+
 Status checkFramebuffer(unsigned framebuffer) {
     if (framebuffer == 0) return Ok{};
     if (!glIsFramebuffer(framebuffer)) {

@@ -31,6 +31,9 @@ Status checkLights(const fk_light* lights, int count, int maxLights, int presetC
 //! radii turned into radians. `packed` is resized to count x 16.
 void packLights(const fk_light* lights, int count, std::vector<float>& packed);
 
+//! A view index: 0..FK_MAX_VIEWS - 1.
+Status checkView(int view);
+
 //! A framebuffer name the application owns: 0 (the default one) or a complete framebuffer.
 Status checkFramebuffer(unsigned framebuffer);
 

@@ -1,0 +1,34 @@
+// Texture masking's sun maps for many lights (Maughan, "Texture Masking for Faster Lens
+// Flare", Game Programming Gems 2, 2001): an atlas of one tile per light, each drawn by the
+// application's occluder callback from a camera at the eye that sees exactly that light's
+// cone. sunmap_coverage.comp then reduces every tile at once (EngineTextureMask.cpp).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include "flarekit/Result.h"
+#include "flarekit/flarekit.h"
+#include "gl/GlObjects.h"
+
+namespace flarekit::engine {
+
+class SunMapAtlas {
+  public:
+    //! Tiles for `maxLights` lights (a current GL context is needed).
+    static Result<SunMapAtlas> create(int maxLights);
+    //! Clears the atlas white and calls `occluders` once per light, its tile bound and set as
+    //! the viewport (the caller restores the GL state). A camera inside a sphere light gets
+    //! no call: the reduction counts it fully seen.
+    void draw(int view, const fk_frame& f, const fk_light* lights, int count,
+              fk_occluder_callback occluders, void* user) const;
+    GLuint texture() const { return m_atlas.get(); }
+    int tileSize() const { return m_tileSize; }
+    int tilesPerRow() const { return m_tilesPerRow; }
+
+  private:
+    gl::Texture m_atlas;  //!< RGBA8, one tile per light
+    gl::Framebuffer m_target;
+    int m_tileSize = 0, m_tilesPerRow = 0;
+};
+
+}  // namespace flarekit::engine
