@@ -66,8 +66,8 @@ Result<CoverageProgram> linkCoverage(bool multisample) {
 }
 
 Result<SunMapProgram> linkSunMap() {
-    auto c = linkOcclusionPass<SunMapProgram>("sunmap_coverage.comp",
-                                              shaders::sunmap_coverage_comp, "");
+    auto c =
+        linkOcclusionPass<SunMapProgram>("sunmap_coverage.comp", shaders::sunmap_coverage_comp, "");
     if (!c) return c.error();
     c->tileSize = gl::uniformLocation(c->program.get(), "tileSize");
     c->tilesPerRow = gl::uniformLocation(c->program.get(), "tilesPerRow");

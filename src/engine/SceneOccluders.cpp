@@ -5,38 +5,17 @@
 #include "flarekit/EngineScene.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
+#include "scene/MeshDraw.h"
 #include "scene/SceneMesh.h"
 
 namespace flarekit {
 
 namespace {
+//! A mesh drawn from each sun-map camera: its vertex array, buffer and vertex count.
 struct Mesh {
-    gl::VertexArray vao;
+    gl::VertexArray vao = gl::makeVertexArray();
     gl::Buffer vertices;
     GLsizei count = 0;
-};
-
-Mesh upload(const std::vector<MeshVertex>& mesh) {
-    Mesh m;
-    m.vao = gl::makeVertexArray();
-    m.count = GLsizei(mesh.size());
-    if (mesh.empty()) return m;
-    GLuint b = 0;
-    glCreateBuffers(1, &b);
-    glNamedBufferStorage(b, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
-    m.vertices = gl::Buffer(b);
-    glVertexArrayVertexBuffer(m.vao.get(), 0, b, 0, sizeof(MeshVertex));
-    glEnableVertexArrayAttrib(m.vao.get(), 0);
-    glVertexArrayAttribFormat(m.vao.get(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(m.vao.get(), 0, 0);
-    return m;
-}
-
-struct TranslucentRange {
-    GLint first;
-    GLsizei count;
-    float opacity;
-    bool closed;
 };
 }  // namespace
 
@@ -60,13 +39,14 @@ Result<std::unique_ptr<SceneOccluders>> SceneOccluders::create(const Scene& scen
     m->viewProjection = gl::uniformLocation(m->program.get(), "viewProjection");
     m->keep = gl::uniformLocation(m->program.get(), "keep");
     const Scene opaque = opaqueObjects(scene), clear = translucentObjects(scene);
-    m->opaque = upload(buildSceneMesh(opaque));
-    m->translucent = upload(buildSceneMesh(clear));
-    const std::vector<MeshObjectRange> ranges = sceneMeshRanges(clear);
-    for (std::size_t i = 0; i < ranges.size(); ++i) {
-        m->ranges.push_back({ranges[i].first, ranges[i].count, float(objectOpacity(clear, i)),
-                             objectClosed(clear, i)});
+    for (auto [mesh, objects] :
+         {std::pair{&m->opaque, &opaque}, std::pair{&m->translucent, &clear}}) {
+        if (Status s =
+                uploadMesh(buildSceneMesh(*objects), mesh->vao.get(), mesh->vertices, mesh->count);
+            !s)
+            return s.error();
     }
+    m->ranges = translucentRanges(clear);
     if (Status s = gl::checkError("uploading the sun-map occluders"); !s) return s.error();
     return std::unique_ptr<SceneOccluders>(new SceneOccluders(std::move(m)));
 }
@@ -89,15 +69,7 @@ void SceneOccluders::draw(void* user, int, int, const float viewProjection[16], 
     glEnable(GL_BLEND);
     glBlendFunc(GL_ZERO, GL_SRC_COLOR);  // the tile x (1 - opacity)
     glBindVertexArray(m.translucent.vao.get());
-    for (const TranslucentRange& r : m.ranges) {
-        glProgramUniform1f(p, m.keep, 1.f - r.opacity);
-        if (r.closed)
-            glEnable(GL_CULL_FACE);
-        else
-            glDisable(GL_CULL_FACE);
-        glDrawArrays(GL_TRIANGLES, r.first, r.count);
-    }
-    glDisable(GL_CULL_FACE);
+    drawTranslucent(m.ranges, [&](float opacity) { glProgramUniform1f(p, m.keep, 1.f - opacity); });
     glDisable(GL_BLEND);
 }
 

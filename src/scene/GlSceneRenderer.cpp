@@ -14,6 +14,7 @@
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
+#include "scene/MeshDraw.h"
 #include "scene/SceneMesh.h"
 #include "scene/SceneTargets.h"
 
@@ -56,12 +57,6 @@ struct SceneRenderer::Impl {
     gl::VertexArray vao;
     gl::Buffer vertices;
     GLsizei vertexCount = 0;
-    struct TranslucentRange {
-        GLint first;
-        GLsizei count;
-        float opacity;
-        bool closed;  //!< sphere or box: front faces only
-    };
     gl::VertexArray translucentVao;
     gl::Buffer translucentVertices;
     std::vector<TranslucentRange> translucent;
@@ -179,42 +174,12 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RenderOpti
     return renderer;
 }
 
-namespace {
-//! Uploads `mesh` into a new buffer and points `vao`'s attributes 0-2 at it.
-Status uploadMesh(const std::vector<MeshVertex>& mesh, GLuint vao, gl::Buffer& vertices,
-                  GLsizei& count) {
-    vertices.reset();
-    count = GLsizei(mesh.size());
-    if (mesh.empty()) return Ok{};
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    vertices = gl::Buffer(buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(mesh.size() * sizeof(MeshVertex)), mesh.data(), 0);
-    glVertexArrayVertexBuffer(vao, 0, buffer, 0, sizeof(MeshVertex));
-    for (GLuint attr = 0; attr < 3; ++attr) {
-        glEnableVertexArrayAttrib(vao, attr);
-        glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
-        glVertexArrayAttribBinding(vao, attr, 0);
-    }
-    return Ok{};
-}
-}  // namespace
-
 void SceneRenderer::Impl::drawTranslucent(GLuint program) const {
     glBindVertexArray(translucentVao.get());
     glUseProgram(program);
     const GLint opacityAt = gl::uniformLocation(program, "opacity");
-    for (const TranslucentRange& r : translucent) {
-        glProgramUniform1f(program, opacityAt, r.opacity);
-        if (r.closed) {
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_BACK);
-        } else {
-            glDisable(GL_CULL_FACE);
-        }
-        glDrawArrays(GL_TRIANGLES, r.first, r.count);
-    }
-    glDisable(GL_CULL_FACE);
+    flarekit::drawTranslucent(
+        translucent, [&](float opacity) { glProgramUniform1f(program, opacityAt, opacity); });
 }
 
 Status SceneRenderer::setGeometry(const Scene& scene) {
@@ -235,12 +200,7 @@ Status SceneRenderer::setGeometry(const Scene& scene) {
                               m->translucentVertices, translucentCount);
         !s)
         return s;
-    m->translucent.clear();
-    const std::vector<MeshObjectRange> ranges = sceneMeshRanges(clear);
-    for (std::size_t i = 0; i < ranges.size(); ++i) {
-        m->translucent.push_back({ranges[i].first, ranges[i].count, float(objectOpacity(clear, i)),
-                                  objectClosed(clear, i)});
-    }
+    m->translucent = translucentRanges(clear);
     return gl::checkError("mesh upload");
 }
 

@@ -100,19 +100,6 @@ Scene translucentObjects(const Scene& scene) {
     return s;
 }
 
-double objectOpacity(const Scene& scene, std::size_t i) {
-    const std::size_t spheres = scene.spheres.size(), boxes = scene.boxes.size();
-    if (i < spheres) return scene.spheres[i].opacity;
-    if (i < spheres + boxes) return scene.boxes[i - spheres].opacity;
-    return i - spheres - boxes < scene.triangles.size()
-               ? scene.triangles[i - spheres - boxes].opacity
-               : kOpaque;  // the ground
-}
-
-bool objectClosed(const Scene& scene, std::size_t i) {
-    return i < scene.spheres.size() + scene.boxes.size();
-}
-
 std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene) {
     std::vector<MeshObjectRange> out;
     int first = 0;
@@ -132,6 +119,20 @@ std::vector<MeshObjectRange> sceneMeshRanges(const Scene& scene) {
         out.push_back(
             {first, 3, c, std::max({length(t.a - c), length(t.b - c), length(t.c - c)}), 0.0});
         first += 3;
+    }
+    return out;
+}
+
+std::vector<TranslucentRange> translucentRanges(const Scene& translucent) {
+    const std::vector<MeshObjectRange> ranges = sceneMeshRanges(translucent);
+    const std::size_t spheres = translucent.spheres.size(), boxes = translucent.boxes.size();
+    std::vector<TranslucentRange> out;
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+        const double opacity = i < spheres ? translucent.spheres[i].opacity
+                               : i < spheres + boxes
+                                   ? translucent.boxes[i - spheres].opacity
+                                   : translucent.triangles[i - spheres - boxes].opacity;
+        out.push_back({ranges[i].first, ranges[i].count, float(opacity), i < spheres + boxes});
     }
     return out;
 }

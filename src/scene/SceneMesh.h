@@ -24,10 +24,16 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene);
 Scene opaqueObjects(const Scene& scene);
 Scene translucentObjects(const Scene& scene);
 
-//! Opacity of object i of sceneMeshRanges(scene)'s order (spheres, boxes, triangles), and
-//! whether it is closed (a sphere or a box: its front faces cross each ray once).
-double objectOpacity(const Scene& scene, std::size_t i);
-bool objectClosed(const Scene& scene, std::size_t i);
+//! A translucent object in buildSceneMesh(translucentObjects(scene)): its vertices, opacity and
+//! whether it is closed (a sphere or a box, drawn by its front faces so that it counts once
+//! for each ray, as the ray caster counts it).
+struct TranslucentRange {
+    int first = 0, count = 0;
+    float opacity = 1;
+    bool closed = false;
+};
+//! Every object of `translucent` (a translucentObjects() scene) in mesh order.
+std::vector<TranslucentRange> translucentRanges(const Scene& translucent);
 
 //! Where each object's vertices sit in buildSceneMesh's list (spheres, then boxes, then
 //! triangles, in scene order), with a bounding sphere and, for spheres and boxes, the radius

@@ -22,7 +22,6 @@
 
 namespace flarekit::test {
 
-
 // The API's accuracy bound against the ray caster (4x MSAA depth).
 constexpr double kTolerance = 0.02;
 
@@ -53,7 +52,8 @@ inline VisibilityResult truth(const Scene& s) {
 }
 
 //! Worst |engine - raycast| over the lights, and how many lights were partly hidden.
-inline double worstError(const std::vector<float>& engine, const VisibilityResult& rays, int* partial) {
+inline double worstError(const std::vector<float>& engine, const VisibilityResult& rays,
+                         int* partial) {
     double worst = 0;
     *partial = 0;
     for (std::size_t i = 0; i < engine.size(); ++i) {
@@ -73,7 +73,6 @@ struct TempPreset {
     }
     ~TempPreset() { std::filesystem::remove(path); }
 };
-
 
 inline Scene wallScene() {
     Scene s;
