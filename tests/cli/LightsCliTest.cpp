@@ -84,6 +84,7 @@ FLAREKIT_GL_TEST(CliLights, BadInputExitsTwoWithOneLineAndWritesNothing) {
     TempDir dir;
     auto scene = nlohmann::json::parse(slurp(kCity));
     scene["lights"][3]["preset"] = "no-such-preset";
+    scene["lights"][1]["preset"] = "";  // draws no flare: the bad light is still named by its index
     const std::string badPreset = dir.file("bad-preset.json");
     std::ofstream(badPreset) << scene.dump();
     const std::string out = dir.file("out.png");

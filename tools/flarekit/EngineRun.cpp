@@ -42,22 +42,26 @@ Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& o) {
         occluders = std::move(*made);
         fk_engine_set_occluder_callback(e, &SceneOccluders::draw, occluders.get());
     }
-    // Each preset named by a light, loaded once; a light whose preset fails names itself.
+    // Each preset named by a light, loaded once (only when flares are drawn); the first light
+    // whose preset fails to load names itself.
     std::map<std::string, int> ids;
-    std::string presetError;
-    std::size_t index = 0;
-    const auto presetId = [&](const std::string& name) {
-        auto [it, fresh] = ids.try_emplace(name, -1);
-        if (fresh && o.flares) it->second = fk_engine_load_preset(e, name.c_str());
-        if (it->second < 0 && o.flares && presetError.empty()) {
-            presetError =
-                o.source + ": lights[" + std::to_string(index) + "].preset: " + fk_error(e);
+    if (o.flares) {
+        const std::vector<SceneLight> sceneLightList = sceneLights(scene);
+        for (std::size_t i = 0; i < sceneLightList.size(); ++i) {
+            const std::string& name = sceneLightList[i].preset;
+            if (name.empty() || ids.count(name)) continue;
+            const int id = fk_engine_load_preset(e, name.c_str());
+            if (id < 0) {
+                return invalidInput(o.source + ": lights[" + std::to_string(i) +
+                                    "].preset: " + fk_error(e));
+            }
+            ids[name] = id;
         }
-        ++index;
-        return it->second < 0 ? -1 : it->second;
-    };
-    const std::vector<fk_light> lights = engineLights(scene, presetId);
-    if (!presetError.empty()) return invalidInput(presetError);
+    }
+    const std::vector<fk_light> lights = engineLights(scene, [&](const std::string& name) {
+        const auto it = ids.find(name);
+        return it == ids.end() ? -1 : it->second;
+    });
     const fk_frame frame = engineFrame(scene, *renderer);
     if (fk_engine_set_transmittance(e, 0, engineTransmittance(*renderer)) < 0)
         return internalError(fk_error(e));
