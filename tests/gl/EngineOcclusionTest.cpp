@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -125,6 +126,15 @@ Scene eye(const Scene& s, double offset) {
 }
 }  // namespace
 
+namespace {
+//! The two eyes' frames of a side-by-side stereo texture: the left half, then the right.
+std::array<fk_frame, 2> sideBySide(const Scene& left, const Scene& right, const DepthTarget& t) {
+    const int w = t.width / 2;
+    return {frameFor(left, t, {0, 0, w, t.height}, FK_DEPTH_MINUS_ONE_TO_ONE),
+            frameFor(right, t, {w, 0, w, t.height}, FK_DEPTH_MINUS_ONE_TO_ONE)};
+}
+}  // namespace
+
 TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
     // Side by side in one 2:1 texture, as many VR runtimes hand it over; eyes 6.4 cm apart.
     const Scene centre = lampScene(32, 5, false);
@@ -132,10 +142,7 @@ TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
     EnginePtr e = makeEngine(32);
     const DepthTarget both =
         makeDepthTarget(2 * centre.width, centre.height, 4, GL_DEPTH_COMPONENT32F);
-    fk_frame frames[2] = {
-        frameFor(left, both, {0, 0, centre.width, centre.height}, FK_DEPTH_MINUS_ONE_TO_ONE),
-        frameFor(right, both, {centre.width, 0, centre.width, centre.height},
-                 FK_DEPTH_MINUS_ONE_TO_ONE)};
+    const std::array<fk_frame, 2> frames = sideBySide(left, right, both);
     DepthPass(left).draw(both, frames[0]);
     // The second eye must not clear the first: draw it through its own pass into a copy.
     const DepthTarget rightOnly =
@@ -146,7 +153,7 @@ TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
                            centre.height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     const std::vector<fk_light> lights = engineLights(centre, -1);
-    ASSERT_EQ(fk_engine_occlusion_views(e.get(), frames, 2, lights.data(), 32), 0)
+    ASSERT_EQ(fk_engine_occlusion_views(e.get(), frames.data(), 2, lights.data(), 32), 0)
         << fk_error(e.get());
     std::vector<float> views[2];
     for (int v = 0; v < 2; ++v) {
@@ -168,13 +175,10 @@ TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
     const std::vector<fk_light> one = engineLights(lamp, preset);
     const DepthTarget sky =
         makeDepthTarget(2 * centre.width, centre.height, 1, GL_DEPTH_COMPONENT32F);
-    fk_frame skyFrames[2] = {
-        frameFor(lampLeft, sky, {0, 0, centre.width, centre.height}, FK_DEPTH_MINUS_ONE_TO_ONE),
-        frameFor(lampRight, sky, {centre.width, 0, centre.width, centre.height},
-                 FK_DEPTH_MINUS_ONE_TO_ONE)};
+    const std::array<fk_frame, 2> skyFrames = sideBySide(lampLeft, lampRight, sky);
     const float clearDepth = 1.f;
     glClearTexImage(sky.depth.get(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &clearDepth);
-    ASSERT_EQ(fk_engine_occlusion_views(e.get(), skyFrames, 2, one.data(), 1), 0)
+    ASSERT_EQ(fk_engine_occlusion_views(e.get(), skyFrames.data(), 2, one.data(), 1), 0)
         << fk_error(e.get());
     gl::Texture color = gl::makeTexture2D(GL_RGBA32F, 2 * centre.width, centre.height);
     auto fb = gl::makeFramebuffer(color.get());
@@ -182,7 +186,9 @@ TEST(Engine, StereoGivesEachEyeItsOwnCoverageAndFlarePosition) {
     const float black[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(fb->get(), GL_COLOR, 0, black);
     for (int v = 0; v < 2; ++v)
-        ASSERT_EQ(fk_engine_draw_view(e.get(), v, &skyFrames[v], one.data(), 1, fb->get()), 0)
+        ASSERT_EQ(
+            fk_engine_draw_view(e.get(), v, &skyFrames[std::size_t(v)], one.data(), 1, fb->get()),
+            0)
             << fk_error(e.get());
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     auto image = gl::readTextureRgba(color.get(), 2 * centre.width, centre.height);
