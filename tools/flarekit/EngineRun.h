@@ -32,4 +32,10 @@ struct EngineRun {
 
 Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& options);
 
+//! Every light's coverage as `visibility --json` and `lights --json` print it (a contract):
+//! `[{"coverage": c, "in_frame": f}, ...]` in scene order.
+std::string lightsJson(const std::vector<LightVisibility>& lights);
+//! The same as lines: "  light i: coverage c, p% in frame".
+void printLights(const std::vector<LightVisibility>& lights);
+
 }  // namespace flarekit::cli

@@ -28,14 +28,7 @@ void printReport(const LightsArgs& a, const EngineRun& run) {
         j.number("cpu_ms", run.cpuMs, 3)
             .number("occlusion_gpu_ms", run.occlusionGpuMs, 3)
             .number("draw_gpu_ms", run.drawGpuMs, 3);
-        std::string lights = "[";
-        for (std::size_t i = 0; i < run.lights.size(); ++i) {
-            JsonLine l;
-            l.number("coverage", run.lights[i].coverage, 6)
-                .number("in_frame", run.lights[i].inFrame, 6);
-            lights += (i ? ", " : "") + l.str();
-        }
-        j.json("lights_coverage", lights + "]");
+        j.json("lights_coverage", lightsJson(run.lights));
         std::printf("%s\n", j.str().c_str());
         return;
     }
@@ -46,11 +39,7 @@ void printReport(const LightsArgs& a, const EngineRun& run) {
         "%.3f ms occlusion + %.3f ms flares (%s)\n",
         a.out.c_str(), run.lights.size(), seen, run.cpuMs, run.occlusionGpuMs, run.drawGpuMs,
         run.renderer.c_str());
-    if (a.verbose) {
-        for (std::size_t i = 0; i < run.lights.size(); ++i)
-            std::printf("  light %zu: coverage %.4f, %.1f%% in frame\n", i, run.lights[i].coverage,
-                        100 * run.lights[i].inFrame);
-    }
+    if (a.verbose) printLights(run.lights);
 }
 
 int runLights(const LightsArgs& a) {

@@ -26,8 +26,6 @@ struct VisibilityArgs {
 };
 
 #if FLAREKIT_HAS_GL
-//! Draws the frame and runs the method until its result arrives; `latency` says how many
-//! extra frames a late method (pbo, query) took.
 //! Every light at once through the engine API's batched pass (`compute` on a scene with
 //! more than the sun): the coverage the embedding API would give an application.
 Result<VisibilityResult> runEngineLights(const VisibilityArgs& a, const Scene& scene) {
@@ -54,6 +52,7 @@ Result<VisibilityResult> runEngineLights(const VisibilityArgs& a, const Scene& s
 //! frame's sun (lightAsSun: a point light as the disc its sphere subtends, seen where the
 //! depth reaches its near side), the frame is drawn and measured until its result arrives.
 //! compute and texture-mask on a many-light scene measure every light at once instead.
+//! `latency` says how many extra frames a late method (pbo, query) took.
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
     const std::vector<SceneLight> lights = sceneLights(scene);
     if ((a.method == "compute" || a.method == "texture-mask") &&
@@ -113,14 +112,7 @@ int runVisibility(const VisibilityArgs& a) {
         j.integer("samples", (long long)r->samples)
             .integer("latency_frames", latency)
             .number("cpu_ms", r->milliseconds, 3);
-        std::string lights = "[";
-        for (std::size_t i = 0; i < r->lights.size(); ++i) {
-            JsonLine light;
-            light.number("coverage", r->lights[i].coverage, 6)
-                .number("in_frame", r->lights[i].inFrame, 6);
-            lights += (i ? ", " : "") + light.str();
-        }
-        j.json("lights", lights + "]");
+        j.json("lights", lightsJson(r->lights));
         std::printf("%s\n", j.str().c_str());
     } else {
         std::printf("%s: coverage %.4f (%.1f%% of the sun visible), %.1f%% of the disc in frame",
@@ -128,11 +120,7 @@ int runVisibility(const VisibilityArgs& a) {
         if (r->samples) std::printf(", %zu rays", r->samples);
         if (latency) std::printf(", result %d frame%s late", latency, latency > 1 ? "s" : "");
         std::printf(", %.1f ms\n", r->milliseconds);
-        if (r->lights.size() > 1) {
-            for (std::size_t i = 0; i < r->lights.size(); ++i)
-                std::printf("  light %zu: coverage %.4f, %.1f%% in frame\n", i,
-                            r->lights[i].coverage, 100 * r->lights[i].inFrame);
-        }
+        if (r->lights.size() > 1) printLights(r->lights);
     }
     return kExitOk;
 }
