@@ -127,7 +127,7 @@ std::optional<Error> readLights(const json& doc, const JsonPlace& top, Scene& s)
         s.sun.intensity = 0;  // no directional light: a sun nobody sees
         for (const SceneLight& l : s.lights) {
             if (l.type != LightType::Directional) continue;
-            s.sun = {l.direction, l.angularRadiusDeg, l.color, l.intensity};
+            s.sun = lightAsSun(l, s.camera);
             break;
         }
     }
