@@ -24,7 +24,7 @@ enum class SampleFormat { Auto, U8, U16, Half, Float };
 
 struct WriteOptions {
     SampleFormat format =
-        SampleFormat::Auto;  //!< Auto: .exr half, .hdr/.pfm float, .tif 16-bit, else 8-bit
+        SampleFormat::Auto;  //!< Auto: .exr half, .hdr float, .tif 16-bit, else 8-bit
     bool alpha = false;      //!< write RGBA (ignored by formats without alpha)
 };
 
@@ -34,7 +34,7 @@ SampleFormat outputSampleFormat(const std::string& path,
 inline bool isFloatFormat(SampleFormat f) {
     return f == SampleFormat::Half || f == SampleFormat::Float;
 }
-//! Whether `path`'s format holds half/float samples (.exr, .hdr, .pfm, .tif/.tiff); writeImage
+//! Whether `path`'s format holds half/float samples (.exr, .hdr, .tif/.tiff); writeImage
 //! refuses a float SampleFormat for any other, rather than letting the writer downgrade it.
 bool holdsFloatSamples(const std::string& path);
 

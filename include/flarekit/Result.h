@@ -12,6 +12,7 @@ enum class ErrorCode {
     InvalidInput,  //!< the caller's data is wrong: bad file, field, size, value (CLI exit 2)
     Io,            //!< a file could not be read or written (CLI exit 2)
     Internal,      //!< a bug or an environment failure inside flarekit (CLI exit 1)
+    Interrupted,   //!< stopped by SIGINT/SIGTERM at a safe point (CLI exit 128 + signal)
 };
 
 struct Error {

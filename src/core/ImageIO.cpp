@@ -2,6 +2,7 @@
 // memory is allocated, so a corrupt or hostile header cannot make flarekit allocate gigabytes.
 #include "flarekit/ImageIO.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -10,9 +11,9 @@
 #include <filesystem>
 #include <memory>
 
-#include "core/AtomicFile.h"
 #include "core/FirstLine.h"
 #include "core/Parallel.h"
+#include "core/SafeWrite.h"
 #include "flarekit/Color.h"
 
 namespace flarekit {
@@ -191,24 +192,22 @@ Result<LoadedImage> readImage(const std::string& path) {
 }
 
 namespace {
-//! The OIIO writer for path's extension, or the error naming the unsupported extension.
+//! The OIIO writer for path's extension, or the error naming the unsupported extension. Only
+//! writers that can encode into memory are used: the bytes are then committed by
+//! writeFileSafely, which checks every write (OIIO's file writers do not all report a full disk).
 Result<std::unique_ptr<OIIO::ImageOutput>> createOutput(const std::string& path) {
     auto out = OIIO::ImageOutput::create(path);
-    if (!out)
-        return invalidInput(path + ": unsupported output format '" + lowerExtension(path) + "'");
+    if (!out || !out->supports("ioproxy")) {
+        return invalidInput(
+            path + ": unsupported output format '" + lowerExtension(path) +
+            "': expected .png, .jpg, .tif, .exr, .hdr, .bmp, .tga, .ppm, .webp or .dpx");
+    }
     return out;
 }
 }  // namespace
 
 Status checkOutputPath(const std::string& path) {
-    if (path.empty()) return invalidInput("output: expected a file name, got an empty path");
-    fs::path p(path);
-    fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) {
-        return invalidInput(path + ": output directory '" + dir.string() + "' does not exist");
-    }
-    if (fs::is_directory(p, ec)) return invalidInput(path + ": output path is a directory");
+    if (Status s = checkWritablePath(path); !s) return s;
     auto out = createOutput(path);
     if (!out) return out.error();
     return Ok{};
@@ -220,21 +219,22 @@ SampleFormat resolveFormat(const std::string& path, SampleFormat requested) {
     if (requested != SampleFormat::Auto) return requested;
     const std::string ext = lowerExtension(path);
     if (ext == ".exr") return SampleFormat::Half;
-    if (ext == ".hdr" || ext == ".pfm") return SampleFormat::Float;
+    if (ext == ".hdr") return SampleFormat::Float;
     if (ext == ".tif" || ext == ".tiff") return SampleFormat::U16;
     return SampleFormat::U8;
 }
 
-//! Writes through a writer from createOutput (chosen by the final name's extension) into the
-//! temporary file.
-Status writeWithOiio(OIIO::ImageOutput& out, const std::string& path, const std::string& tempPath,
-                     const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType, const void* data) {
-    if (!out.open(tempPath, spec))
-        return ioError(path + ": cannot write: " + firstLine(out.geterror()));
-    if (!out.write_image(dataType, data))
-        return ioError(path + ": cannot write: " + firstLine(out.geterror()));
-    if (!out.close()) return ioError(path + ": cannot write: " + firstLine(out.geterror()));
-    return Ok{};
+//! Encodes through a writer from createOutput (chosen by the final name's extension) into
+//! memory, then commits the bytes with writeFileSafely.
+Status writeWithOiio(OIIO::ImageOutput& out, const std::string& path, const OIIO::ImageSpec& spec,
+                     OIIO::TypeDesc dataType, const void* data) {
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    if (!out.set_ioproxy(&memory) || !out.open(path, spec) || !out.write_image(dataType, data) ||
+        !out.close()) {
+        return ioError(path + ": cannot encode: " + firstLine(out.geterror()));
+    }
+    return writeFileSafely(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
 }  // namespace
@@ -245,7 +245,7 @@ SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested)
 
 bool holdsFloatSamples(const std::string& path) {
     const std::string ext = lowerExtension(path);
-    return ext == ".exr" || ext == ".hdr" || ext == ".pfm" || ext == ".tif" || ext == ".tiff";
+    return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
 }
 
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
@@ -259,8 +259,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     const bool isFloat = isFloatFormat(format);
     if (isFloat && !holdsFloatSamples(path)) {
         return invalidInput(path +
-                            ": half/float samples need a float format (.exr, .tif, .hdr, "
-                            ".pfm), not '" +
+                            ": half/float samples need a float format (.exr, .tif, .hdr), not '" +
                             lowerExtension(path) + "'");
     }
 
@@ -294,24 +293,18 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
             bytes[i] = i % std::size_t(channels) < 3 ? linearToSrgb8(sample(i))
                                                      : std::uint8_t(std::lround(encode(i) * 255.f));
         });
-        return writeAtomically(path, [&](const std::string& temp) {
-            return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::UINT8, bytes.data());
-        });
+        return writeWithOiio(writer, path, spec, OIIO::TypeDesc::UINT8, bytes.data());
     }
     if (format == SampleFormat::U16) {
         std::vector<std::uint16_t> words(count);
         forEachSample(count, [&](std::size_t i) {
             words[i] = std::uint16_t(std::lround(encode(i) * 65535.f));
         });
-        return writeAtomically(path, [&](const std::string& temp) {
-            return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::UINT16, words.data());
-        });
+        return writeWithOiio(writer, path, spec, OIIO::TypeDesc::UINT16, words.data());
     }
     std::vector<float> linear(count);
     forEachSample(count, [&](std::size_t i) { linear[i] = sample(i); });
-    return writeAtomically(path, [&](const std::string& temp) {
-        return writeWithOiio(writer, path, temp, spec, OIIO::TypeDesc::FLOAT, linear.data());
-    });
+    return writeWithOiio(writer, path, spec, OIIO::TypeDesc::FLOAT, linear.data());
 }
 
 Result<Image8> readImage8(const std::string& path) {
@@ -348,9 +341,7 @@ Status writeImage8(const std::string& path, const Image8& image) {
         spec.attribute("oiio:UnassociatedAlpha", 1);
     }
     spec.attribute("Software", "flarekit");
-    return writeAtomically(path, [&](const std::string& temp) {
-        return writeWithOiio(**out, path, temp, spec, OIIO::TypeDesc::UINT8, image.pixels.data());
-    });
+    return writeWithOiio(**out, path, spec, OIIO::TypeDesc::UINT8, image.pixels.data());
 }
 
 }  // namespace flarekit

@@ -30,8 +30,7 @@ inline constexpr Param<ApplyArgs> kApplyArgParams[] = {
 Status checkDepthFits(const std::string& out, SampleFormat requested) {
     if (!isFloatFormat(requested) || holdsFloatSamples(out)) return Ok{};
     return invalidInput(out +
-                        ": --depth half/float needs a float format (.exr, .tif, .hdr, "
-                        ".pfm), not '" +
+                        ": --depth half/float needs a float format (.exr, .tif, .hdr), not '" +
                         std::filesystem::path(out).extension().string() + "'");
 }
 

@@ -1,6 +1,7 @@
 #include "Common.h"
 
-#include "core/AtomicFile.h"
+#include "core/Interrupt.h"
+#include "core/SafeWrite.h"
 
 #include <unistd.h>
 #include <charconv>
@@ -13,9 +14,40 @@
 
 namespace flarekit::cli {
 
+namespace {
+bool g_interruptReported = false;
+}
+
 int report(const Error& error) {
-    std::fprintf(stderr, "flarekit: %s\n", error.message.c_str());
+    std::fprintf(stderr, "flarekit: %s\n", cappedLine(error.message).c_str());
+    if (error.code == ErrorCode::Interrupted) {
+        g_interruptReported = true;
+        return 128 + interruptSignal();
+    }
     return error.code == ErrorCode::Internal ? kExitInternal : kExitBadInput;
+}
+
+int finishProcess(int exitCode) {
+    if (interrupted()) {
+        if (!g_interruptReported) {
+            std::fprintf(stderr, "flarekit: interrupted by %s: %s\n", interruptSignalName().c_str(),
+                         exitCode == kExitOk ? "the command had finished; its outputs are complete"
+                                             : "the command had already failed");
+        }
+        (void)flushStandardOutput();
+        return 128 + interruptSignal();
+    }
+    if (Status s = flushStandardOutput(); !s && exitCode == kExitOk) return report(s.error());
+    return exitCode;
+}
+
+std::string cappedLine(const std::string& message) {
+    // 1,000 characters: the longest real message (a list of every known key) fits; a hostile
+    // input that echoes megabytes of itself does not reach the terminal.
+    constexpr std::size_t kMaxLine = 1000;
+    std::string line = message.substr(0, message.find('\n'));
+    if (line.size() > kMaxLine) line = line.substr(0, kMaxLine - 3) + "...";
+    return line;
 }
 
 void warn(const std::string& message) {
@@ -130,13 +162,7 @@ Error builtWithoutGl(const std::string& what) {
 }
 
 Status writeText(const std::string& path, const std::string& text) {
-    return writeAtomically(path, [&](const std::string& temp) -> Status {
-        std::FILE* f = std::fopen(temp.c_str(), "wb");
-        if (!f) return ioError(path + ": cannot write");
-        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        if (std::fclose(f) != 0 || !ok) return ioError(path + ": write failed");
-        return Ok{};
-    });
+    return writeFileSafely(path, text);
 }
 
 std::optional<ToneOperator> namedToneOperator(const std::string& name) {

@@ -20,8 +20,15 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitInternal = 1;
 inline constexpr int kExitBadInput = 2;
 
-//! Prints "flarekit: <message>" and returns the exit code for the error.
+//! Prints "flarekit: <message>" (one line, capped) and returns the exit code for the error:
+//! 1 internal, 128 + signal for an interrupt, 2 otherwise.
 int report(const Error& error);
+//! The process's exit code once the subcommand returned `exitCode`: an interrupt that arrived
+//! (even after the work was done) gives 128 + signal and one line saying so; a write error on
+//! standard output turns success into exit 2.
+int finishProcess(int exitCode);
+//! The first line of `message`, cut to 1,000 characters.
+std::string cappedLine(const std::string& message);
 void warn(const std::string& message);
 
 //! Holds back what libraries print on stderr while it lives; on destruction replays it except

@@ -1,6 +1,7 @@
 // flarekit demo: the built-in drive (road, trees, buildings, tunnel, turn) rendered to PNG
 // frames, a coverage log, a strip of six frames and, with ffmpeg installed, an MP4.
 // PNG encoding runs on a writer thread so the GL/raycast/flare work of the next frame overlaps it.
+#include <atomic>
 #include <condition_variable>
 #include <cstdio>
 #include <deque>
@@ -12,7 +13,7 @@
 #include "ParamOptions.h"
 #include "Progress.h"
 #include "Video.h"
-#include "core/AtomicFile.h"
+#include "core/Interrupt.h"
 #include "flarekit/Demo.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
@@ -42,6 +43,8 @@ class FrameWriter {
         m_queue.emplace_back(std::move(path), std::move(image));
         m_cv.notify_all();
     }
+    //! Frames written completely so far (in order: after a failure none are written).
+    int written() const { return m_written.load(); }
     //! Waits for every queued frame; the first write error, if any.
     Status close() {
         {
@@ -66,7 +69,11 @@ class FrameWriter {
                 m_cv.notify_all();
             }
             if (!m_status) continue;  // after a failure, drain without writing
-            if (Status s = writeImage(job.first, job.second); !s) m_status = s;
+            if (Status s = writeImage(job.first, job.second); !s) {
+                m_status = s;
+            } else {
+                ++m_written;
+            }
         }
     }
     std::size_t m_capacity;
@@ -75,6 +82,7 @@ class FrameWriter {
     std::deque<std::pair<std::string, Image>> m_queue;
     bool m_closed = false;
     Status m_status = Ok{};
+    std::atomic<int> m_written{0};
     std::thread m_thread;
 };
 
@@ -163,7 +171,19 @@ int runDemo(DemoArgs& a) {
     Strip strip(n, w, h);
     FrameWriter writer(3);
     Progress progress("demo", n);
+    //! What an interrupt leaves: the complete frames, in order, and nothing else.
+    auto stopped = [&] {
+        progress.finish();
+        (void)writer.close();
+        const int done = writer.written();
+        return report(interruptedError(
+            done == 0 ? "no frame was written"
+                      : std::to_string(done) + " of " + std::to_string(n) + " frames written (" +
+                            framePath(0) + " .. " + framePath(done - 1) +
+                            ", all complete); no coverage.csv, strip or video"));
+    };
     for (int i = 0; i < n; ++i) {
+        if (interrupted()) return stopped();
         auto frame = demo->next();
         if (!frame) {
             progress.finish();
@@ -185,6 +205,7 @@ int runDemo(DemoArgs& a) {
         writer.push(framePath(i), std::move(frame->image));
         progress.update(i + 1);
     }
+    if (interrupted()) return stopped();
     progress.finish();
     if (Status s = writer.close(); !s) return report(s.error());
     if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());

@@ -1,15 +1,19 @@
 #include "Video.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <vector>
+
+#include "core/Interrupt.h"
 
 namespace flarekit::cli {
 
@@ -25,7 +29,10 @@ std::string findFfmpeg() {
 }
 
 namespace {
-//! Runs argv with stdout and stderr appended to logPath; returns the exit status (-1: no start).
+constexpr int kInterruptedRun = -2;
+
+//! Runs argv with stdout and stderr appended to logPath; returns the exit status (-1: no start,
+//! kInterruptedRun: stopped for SIGINT/SIGTERM).
 int runLogged(const std::vector<std::string>& args, const std::string& logPath) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -40,8 +47,22 @@ int runLogged(const std::vector<std::string>& args, const std::string& logPath) 
     const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) return -1;
+    TrackedChild tracked(pid);
+    // Polled rather than a blocking wait, so that an interrupt stops ffmpeg (a SIGTERM sent to
+    // flarekit alone would not reach it) and reaps it before flarekit exits.
     int status = 0;
-    if (waitpid(pid, &status, 0) < 0) return -1;
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) return -1;
+        if (interrupted()) {
+            kill(pid, SIGTERM);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            return kInterruptedRun;
+        }
+        usleep(20 * 1000);  // 20 ms: no visible delay, negligible CPU next to ffmpeg's
+    }
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 }  // namespace
@@ -49,6 +70,7 @@ int runLogged(const std::vector<std::string>& args, const std::string& logPath) 
 Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double fps,
                    const std::string& output, const std::string& logPath) {
     const std::string temp = output + ".partial.mp4";
+    TrackedTempPath trackedTemp(temp);  // removed by a second SIGINT/SIGTERM too
     char rate[32];
     std::snprintf(rate, sizeof rate, "%.6g", fps);
     // CRF 18: visually lossless for H.264; yuv420p so every player opens it; faststart so it
@@ -75,8 +97,12 @@ Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double
     h264.push_back(temp);
     mpeg4.push_back(temp);
     int rc = runLogged(h264, logPath);
-    if (rc != 0) rc = runLogged(mpeg4, logPath);
+    if (rc != 0 && rc != kInterruptedRun) rc = runLogged(mpeg4, logPath);
     std::error_code ec;
+    if (rc == kInterruptedRun) {
+        std::filesystem::remove(temp, ec);
+        return interruptedError("the frames are complete; ffmpeg was stopped and no video written");
+    }
     if (rc != 0) {
         std::filesystem::remove(temp, ec);
         return ioError(output + ": ffmpeg failed (exit " + std::to_string(rc) + "); see " +

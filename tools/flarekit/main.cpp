@@ -3,12 +3,13 @@
 #include <exception>
 
 #include "Common.h"
+#include "core/Interrupt.h"
 
 int main(int argc, char** argv) {
     using namespace flarekit::cli;
     CLI::App app{"flarekit: lens flares for images and scenes (sprite flares after Tanczos 1999)"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "flarekit 0.1.0");
+    app.set_version_flag("--version", "flarekit " FLAREKIT_VERSION_STRING);
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);
@@ -20,15 +21,16 @@ int main(int argc, char** argv) {
     addDemoCommand(app, exitCode);
     addPspCommand(app, exitCode);
     addPostFxCommand(app, exitCode);
+    flarekit::installInterruptHandlers();
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-        std::fprintf(stderr, "flarekit: %s (see flarekit --help)\n", e.what());
+        std::fprintf(stderr, "flarekit: %s (see flarekit --help)\n", cappedLine(e.what()).c_str());
         return kExitBadInput;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "flarekit: internal error: %s\n", e.what());
+        std::fprintf(stderr, "flarekit: internal error: %s\n", cappedLine(e.what()).c_str());
         return kExitInternal;
     }
-    return exitCode;
+    return finishProcess(exitCode);
 }

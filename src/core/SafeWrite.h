@@ -1,0 +1,29 @@
+// Every file flarekit writes goes through writeFileSafely, so that a full disk, a signal or a
+// crash never leaves a truncated file and never replaces what the user had.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "flarekit/Result.h"
+
+namespace flarekit {
+
+//! Writes `bytes` as the whole content of `path`:
+//!  - a new or regular file: into a temporary file beside it (with the old file's permissions),
+//!    every write and the close checked, fsync'd, then renamed over the target; the directory
+//!    is synced so the rename survives a crash;
+//!  - a symbolic link: the same at the file it points to, so the link stays a link;
+//!  - a device, FIFO or socket (`/dev/null`, `/dev/stdout` on a pipe): written in place,
+//!    every write checked (renaming over a device node would replace it).
+//! Refuses to start (Interrupted) once SIGINT/SIGTERM has arrived.
+Status writeFileSafely(const std::string& path, std::string_view bytes);
+
+//! Why `path` cannot be written (its directory is missing, it is a directory), or Ok.
+Status checkWritablePath(const std::string& path);
+
+//! Flushes standard output and fails (naming it) when anything written to it was lost, e.g.
+//! `flarekit visibility --json > /dev/full`.
+Status flushStandardOutput();
+
+}  // namespace flarekit
