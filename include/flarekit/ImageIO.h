@@ -17,8 +17,18 @@ struct LoadedImage {
     int droppedChannels = 0;    //!< channels past the 4th, not kept
 };
 
-//! Reads any OIIO-supported file. Sizes are checked before pixels are allocated.
-Result<LoadedImage> readImage(const std::string& path);
+//! What the job reading an image will need, per pixel of the image and in all, so that its peak
+//! is checked against the memory budget (flarekit/Limits.h) from the header, before any pixel
+//! is decoded. The default is the read itself: the decoded RGBA floats plus the decode buffer.
+struct JobMemory {
+    double bytesPerPixel = 32;
+    double fixedBytes = 0;
+    std::string detail;  //!< how the estimate is made, for the message ("apply: ...")
+};
+
+//! Reads any OIIO-supported file. Sizes, the pixels-per-byte ratio and the job's memory are
+//! checked before pixels are allocated.
+Result<LoadedImage> readImage(const std::string& path, const JobMemory& job = {});
 
 enum class SampleFormat { Auto, U8, U16, Half, Float };
 
@@ -43,7 +53,7 @@ bool holdsFloatSamples(const std::string& path);
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
 
 //! Reads an 8-bit file exactly (no colour conversion); fails on other bit depths.
-Result<Image8> readImage8(const std::string& path);
+Result<Image8> readImage8(const std::string& path, const JobMemory& job = {4, 0, {}});
 //! Writes an 8-bit image exactly (no colour conversion), atomically.
 Status writeImage8(const std::string& path, const Image8& image);
 

@@ -15,6 +15,7 @@
 #include "core/Parallel.h"
 #include "core/SafeWrite.h"
 #include "flarekit/Color.h"
+#include "flarekit/Limits.h"
 
 namespace flarekit {
 
@@ -29,7 +30,36 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
+//! A header that claims far more pixels than its file could hold, or a job over the memory
+//! budget: refused before anything is decoded.
+Status checkClaimedSize(const std::string& path, const OIIO::ImageSpec& spec,
+                        const JobMemory& job) {
+    const ResourceLimits limits = resourceLimits();
+    const double pixels =
+        double(spec.width) * double(spec.height) * double(std::max(1, spec.depth));
+    std::error_code ec;
+    const auto fileBytes = fs::file_size(path, ec);
+    if (!ec && pixels >= double(limits.ratioCheckFromPixels) &&
+        pixels > limits.maxPixelsPerFileByte * double(std::max<std::uintmax_t>(fileBytes, 1))) {
+        char ratio[32];
+        std::snprintf(ratio, sizeof ratio, "%.0f",
+                      pixels / double(std::max<std::uintmax_t>(fileBytes, 1)));
+        return invalidInput(path + ": claims " + std::to_string(spec.width) + "x" +
+                            std::to_string(spec.height) + " pixels in " +
+                            std::to_string(fileBytes) + " bytes (" + ratio +
+                            " pixels per byte; a decompression bomb or a truncated file): expected "
+                            "at most " +
+                            std::to_string(std::uint64_t(limits.maxPixelsPerFileByte)) +
+                            " (raise it with --max-pixels-per-byte)");
+    }
+    const double decodeBytes = pixels * double(std::max(1, spec.nchannels)) * 4.0;
+    const double need = job.fixedBytes + pixels * job.bytesPerPixel + decodeBytes;
+    return checkMemory(path, need,
+                       std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                           (job.detail.empty() ? "" : ", " + job.detail));
+}
+
+Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path, const JobMemory& job) {
     std::error_code ec;
     if (!fs::exists(path, ec)) return ioError(path + ": cannot read: no such file");
     if (fs::is_directory(path, ec)) return ioError(path + ": cannot read: is a directory");
@@ -56,6 +86,7 @@ Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path) {
                             std::to_string(kMaxImagePixels) + " pixels");
     }
     if (spec.nchannels < 1) return invalidInput(path + ": image has no channels");
+    if (Status st = checkClaimedSize(path, spec, job); !st) return st.error();
     // OIIO reads a movie as one subimage per frame; taking the first one silently would hide
     // that the rest were ignored.
     if (std::string(in->format_name()).rfind("FFmpeg", 0) == 0) {  // OIIO's "FFmpeg movie"
@@ -132,8 +163,8 @@ bool declaredLinear(const OIIO::ImageSpec& spec) {
 
 }  // namespace
 
-Result<LoadedImage> readImage(const std::string& path) {
-    auto opened = openInput(path);
+Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
+    auto opened = openInput(path, job);
     if (!opened) return opened.error();
     auto& in = opened.value();
     const OIIO::ImageSpec spec = in->spec();
@@ -307,8 +338,8 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     return writeWithOiio(writer, path, spec, OIIO::TypeDesc::FLOAT, linear.data());
 }
 
-Result<Image8> readImage8(const std::string& path) {
-    auto opened = openInput(path);
+Result<Image8> readImage8(const std::string& path, const JobMemory& job) {
+    auto opened = openInput(path, job);
     if (!opened) return opened.error();
     auto& in = opened.value();
     const OIIO::ImageSpec spec = in->spec();

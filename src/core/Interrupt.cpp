@@ -32,8 +32,9 @@ void onSignal(int sig) {
         const pid_t pid = child.load();
         if (pid > 0) ::kill(pid, SIGKILL), ::waitpid(pid, nullptr, 0);
     }
-    static const char kLine[] = "flarekit: interrupted twice: stopped at once; temporary files "
-                                "removed, nothing partial left\n";
+    static const char kLine[] =
+        "flarekit: interrupted twice: stopped at once; temporary files "
+        "removed, nothing partial left\n";
     (void)!::write(STDERR_FILENO, kLine, sizeof kLine - 1);
     ::_exit(128 + g_signal.load());
 }

@@ -5,18 +5,34 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "flarekit/Result.h"
 
 namespace flarekit {
 
+//! Bounds checked while a document is parsed, before its tree can grow past them.
+struct JsonLimits {
+    //! 64 levels: the deepest shipped format (scene objects' vertices) nests 4; 64 keeps every
+    //! recursive walk of the tree (nlohmann's own dump, comparisons) far from the stack's end.
+    std::size_t maxDepth = 64;
+    std::size_t maxValues = std::size_t(1) << 20;  //!< every key and value counts one
+    std::string what = "a preset";                 //!< what the limit is for, for the message
+};
+
 //! Parses text; a syntax error becomes "source: invalid JSON: parse error at line L, column C:
-//! ...".
-Result<nlohmann::json> parseJsonText(const std::string& text, const std::string& source);
+//! ...", a number past double's range "source: field: expected a finite number, got 1e999".
+Result<nlohmann::json> parseJsonText(const std::string& text, const std::string& source,
+                                     const JsonLimits& limits = {});
 //! The value as JSON text, cut to 60 characters: what an error message shows after "got".
+//! Nested or long containers are described ("an array of 70000 values"), never dumped whole.
 std::string jsonExcerpt(const nlohmann::json& value);
-//! The whole file, or an Io error naming it.
-Result<std::string> readTextFile(const std::string& path);
+//! `text` cut to `max` characters, the last three "...": every echoed key or token.
+std::string excerpt(std::string_view text, std::size_t max);
+//! The whole file, or an Io error naming it; files over maxBytes are refused unread.
+Result<std::string> readTextFile(const std::string& path,
+                                 std::uintmax_t maxBytes = std::uintmax_t(16) << 20);
 
 }  // namespace flarekit

@@ -19,8 +19,10 @@ class JsonPlace {
   public:
     JsonPlace(std::string source, std::string at = {})
         : m_source(std::move(source)), m_at(std::move(at)) {}
+    //! The key cut to 60 characters: keys come from the input and may be megabytes long.
     JsonPlace operator/(std::string_view key) const {
-        return {m_source, m_at.empty() ? std::string(key) : m_at + "." + std::string(key)};
+        const std::string k = excerpt(key, 60);
+        return {m_source, m_at.empty() ? k : m_at + "." + k};
     }
     JsonPlace index(std::size_t i) const {
         return {m_source, m_at + "[" + std::to_string(i) + "]"};

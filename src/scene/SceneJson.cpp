@@ -13,8 +13,19 @@ using json = nlohmann::json;
 
 namespace {
 
-//! Largest accepted scene triangle count: 4 million keeps a scene's memory under ~0.5 GB.
-constexpr std::size_t kMaxTriangles = std::size_t(4) << 20;
+//! Largest accepted scene triangle count: 1 million (2^20). The JSON tree of a triangle (3
+//! vertex arrays of 3 numbers) costs ~600 bytes while it is parsed, so the limit keeps a scene
+//! under ~0.6 GB and ~4 s of parsing; bigger meshes belong in an engine (the C API measures
+//! any depth buffer).
+constexpr std::size_t kMaxTriangles = std::size_t(1) << 20;
+//! The parse stops past this many JSON events (keys, values, ends: 15 per triangle), so an
+//! oversized scene is refused while it is read, not after: every triangle allowed, every light
+//! (~20 each) and a million spheres or boxes besides.
+constexpr std::size_t kMaxSceneJsonValues =
+    16 * kMaxTriangles + 20 * kMaxSceneLights + (std::size_t(16) << 20);
+//! Scene files above this size are refused unread: 1M triangles written with 17 digits per
+//! coordinate take ~200 MB.
+constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(256) << 20;
 
 #define FK_TRY(expr) \
     if (auto fk_err = (expr)) return *fk_err
@@ -276,7 +287,9 @@ std::vector<Triangle> groundTriangles(const Scene& scene) {
 }
 
 Result<Scene> parseScene(const std::string& jsonText, const std::string& source) {
-    auto doc = parseJsonText(jsonText, source);
+    auto doc = parseJsonText(
+        jsonText, source,
+        {64, kMaxSceneJsonValues, "a scene: 1,048,576 triangles, 65,536 lights and ~1M objects"});
     if (!doc) return doc.error();
     auto scene = readScene(*doc, JsonPlace(source));
     if (!scene) return scene.error();
@@ -287,7 +300,7 @@ Result<Scene> parseScene(const std::string& jsonText, const std::string& source)
 }
 
 Result<Scene> loadScene(const std::string& path) {
-    auto text = readTextFile(path);
+    auto text = readTextFile(path, kMaxSceneFileBytes);
     if (!text) return text.error();
     return parseScene(*text, path);
 }

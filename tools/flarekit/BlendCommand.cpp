@@ -13,9 +13,9 @@ struct BlendArgs {
 int runBlend(const BlendArgs& a) {
     return runImage8Job(a.out, [&]() -> Result<Image8> {
         const Blend8Mode mode = *parseBlend8Mode(a.mode);  // CLI11 checked membership
-        auto src = readQuietly(readImage8, a.src);
+        auto src = readImage8Quietly(a.src);
         if (!src) return src.error();
-        auto dst = readQuietly(readImage8, a.dst);
+        auto dst = readImage8Quietly(a.dst);
         if (!dst) return dst.error();
         auto blended = blendImages8(mode, *src, *dst);
         if (!blended)

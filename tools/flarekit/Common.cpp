@@ -110,8 +110,11 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text) {
     return std::pair{*w, *h};
 }
 
-Result<LoadedImage> readInputImage(const std::string& path) {
-    auto loaded = readQuietly(readImage, path);
+Result<LoadedImage> readInputImage(const std::string& path, const JobMemory& job) {
+    auto loaded = [&] {
+        LibraryNoiseFilter filter;
+        return readImage(path, job);
+    }();
     if (!loaded) return loaded.error();
     if (loaded->droppedChannels > 0) {
         return invalidInput(

@@ -45,11 +45,10 @@ class LibraryNoiseFilter {
     int m_saved = -1;
 };
 
-//! readImage / readImage8 with library noise filtered.
-template <typename Reader>
-auto readQuietly(Reader reader, const std::string& path) {
+//! readImage8 with library noise filtered.
+inline Result<Image8> readImage8Quietly(const std::string& path) {
     LibraryNoiseFilter filter;
-    return reader(path);
+    return readImage8(path);
 }
 
 //! The presets a subcommand uses when --preset is not given.
@@ -79,7 +78,8 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 //! A float image read for a subcommand: decoded as readImage does, noise filtered, NaN/Inf
 //! replaced with a warning, and (the same in every subcommand) more than 4 channels refused:
 //! flarekit writes RGBA, so the others would be lost from the output.
-Result<LoadedImage> readInputImage(const std::string& path);
+//! `job` is the subcommand's memory per input pixel, checked against the budget from the header.
+Result<LoadedImage> readInputImage(const std::string& path, const JobMemory& job);
 
 //! Creates `dir` (and its parents) for a subcommand's outputs; a one-line error if it cannot.
 Status makeOutputDirectory(const std::string& dir);

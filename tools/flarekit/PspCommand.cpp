@@ -45,7 +45,7 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     if (!sun)
         return report(invalidInput("--sun: expected X,Y in screen pixels, e.g. 240,100, got '" +
                                    a.sun + "'"));
-    auto mask = readQuietly(readImage8, a.occluders);
+    auto mask = readImage8Quietly(a.occluders);
     if (!mask) return report(mask.error());
     auto occluders = psp::occludersFromMask(*mask, a.occluders);
     if (!occluders) return report(occluders.error());

@@ -1,15 +1,57 @@
 // flarekit: the command-line tool. One subcommand per job; each lives in its own file.
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 
 #include "Common.h"
 #include "core/Interrupt.h"
+#include "flarekit/Limits.h"
+
+namespace {
+
+//! --max-memory / FLAREKIT_MAX_MEMORY and --max-pixels-per-byte into the library's limits;
+//! a one-line error for a malformed value.
+flarekit::Status applyLimits(const std::string& maxMemory, double maxPixelsPerByte) {
+    flarekit::ResourceLimits limits;
+    std::string memory = maxMemory, source = "--max-memory";
+    if (memory.empty()) {
+        if (const char* env = std::getenv("FLAREKIT_MAX_MEMORY"); env && *env) {
+            memory = env;
+            source = "FLAREKIT_MAX_MEMORY";
+        }
+    }
+    if (!memory.empty()) {
+        const auto bytes = flarekit::parseByteSize(memory);
+        if (!bytes) {
+            return flarekit::invalidInput(source +
+                                          ": expected a size such as 4G, 512M or 8GiB, got '" +
+                                          flarekit::cli::cappedLine(memory).substr(0, 60) + "'");
+        }
+        limits.maxMemoryBytes = *bytes;
+    }
+    if (maxPixelsPerByte > 0) limits.maxPixelsPerFileByte = maxPixelsPerByte;
+    flarekit::setResourceLimits(limits);
+    return flarekit::Ok{};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace flarekit::cli;
     CLI::App app{"flarekit: lens flares for images and scenes (sprite flares after Tanczos 1999)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "flarekit " FLAREKIT_VERSION_STRING);
+    // Global options, accepted before or after the subcommand (fallthrough).
+    app.fallthrough();
+    std::string maxMemory;
+    double maxPixelsPerByte = 0;
+    app.add_option("--max-memory", maxMemory,
+                   "memory budget of a job, e.g. 8G (default 4G, or FLAREKIT_MAX_MEMORY): a job "
+                   "whose estimated peak exceeds it is refused before it starts");
+    app.add_option("--max-pixels-per-byte", maxPixelsPerByte,
+                   "refuse images over 16 MP claiming more pixels per file byte than this "
+                   "(default 10000: decompression bombs, truncated files)")
+        ->check(CLI::PositiveNumber);
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);
@@ -21,6 +63,11 @@ int main(int argc, char** argv) {
     addDemoCommand(app, exitCode);
     addPspCommand(app, exitCode);
     addPostFxCommand(app, exitCode);
+    // The limits are in place before any subcommand's callback runs.
+    app.parse_complete_callback([&] {
+        if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)
+            throw CLI::ValidationError(s.error().message);
+    });
     flarekit::installInterruptHandlers();
     try {
         app.parse(argc, argv);
