@@ -125,17 +125,44 @@ Result<nlohmann::json> parseJsonText(const std::string& text, const std::string&
     }
 }
 
-std::string jsonExcerpt(const nlohmann::json& value) {
-    // Never dump() a deep or huge value whole (its recursion and size are the input's): only
-    // scalars and short containers are printed; others are described.
-    if (value.is_object() || value.is_array()) {
-        bool flat = value.size() <= 8;
-        for (const auto& v : value) flat = flat && !v.is_structured();
-        if (!flat)
-            return value.is_object() ? "an object of " + std::to_string(value.size()) + " keys"
-                                     : "an array of " + std::to_string(value.size()) + " values";
+namespace {
+//! nlohmann's compact dump, stopped once `out` is longer than `max`: a huge value costs only
+//! what is shown. Recursion is bounded by the parse's depth limit.
+void dumpUpTo(const json& v, std::string& out, std::size_t max) {
+    if (out.size() > max) return;
+    if (v.is_array()) {
+        out += '[';
+        bool first = true;
+        for (const json& e : v) {
+            if (out.size() > max) return;
+            if (!first) out += ',';
+            first = false;
+            dumpUpTo(e, out, max);
+        }
+        out += ']';
+    } else if (v.is_object()) {
+        out += '{';
+        bool first = true;
+        for (const auto& [key, e] : v.items()) {
+            if (out.size() > max) return;
+            if (!first) out += ',';
+            first = false;
+            out += json(excerpt(key, max)).dump() + ':';
+            dumpUpTo(e, out, max);
+        }
+        out += '}';
+    } else if (v.is_string()) {
+        out += json(excerpt(v.get_ref<const std::string&>(), max + 4)).dump();
+    } else {
+        out += v.dump();
     }
-    return excerpt(value.dump(), 60);
+}
+}  // namespace
+
+std::string jsonExcerpt(const nlohmann::json& value) {
+    std::string text;
+    dumpUpTo(value, text, 60);
+    return excerpt(text, 60);
 }
 
 Result<std::string> readTextFile(const std::string& path, std::uintmax_t maxBytes) {

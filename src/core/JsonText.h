@@ -27,7 +27,7 @@ struct JsonLimits {
 Result<nlohmann::json> parseJsonText(const std::string& text, const std::string& source,
                                      const JsonLimits& limits = {});
 //! The value as JSON text, cut to 60 characters: what an error message shows after "got".
-//! Nested or long containers are described ("an array of 70000 values"), never dumped whole.
+//! A long value is never dumped whole: the dump stops once it passes 60 characters.
 std::string jsonExcerpt(const nlohmann::json& value);
 //! `text` cut to `max` characters, the last three "...": every echoed key or token.
 std::string excerpt(std::string_view text, std::size_t max);

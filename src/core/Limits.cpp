@@ -42,8 +42,8 @@ Status checkMemory(const std::string& what, double bytes, const std::string& det
     const double budget = double(resourceLimits().maxMemoryBytes);
     if (bytes <= budget) return Ok{};
     return invalidInput(what + ": needs an estimated " + formatBytes(bytes) +
-                        (detail.empty() ? "" : " (" + detail + ")") + ", over the memory budget of " +
-                        formatBytes(budget) +
+                        (detail.empty() ? "" : " (" + detail + ")") +
+                        ", over the memory budget of " + formatBytes(budget) +
                         " (raise it with --max-memory or FLAREKIT_MAX_MEMORY)");
 }
 

@@ -12,6 +12,7 @@ struct Spike {
     float angle;   //!< radians in [0, 2*pi), measured in the element's local frame
     float length;  //!< fraction of radius
     float weight;  //!< brightness multiplier
+    float cosAngle = 1.f, sinAngle = 0.f;  //!< of `angle`, so a pixel costs no trigonometry
 };
 
 //! Brightness across a spike at perpendicular distance u (local units): a Gaussian core plus a

@@ -78,6 +78,7 @@ std::vector<Spike> makeSpikes(const ElementParams& p) {
     }
     std::sort(spikes.begin(), spikes.end(),
               [](const Spike& a, const Spike& b) { return a.angle < b.angle; });
+    for (Spike& s : spikes) s.cosAngle = std::cos(s.angle), s.sinAngle = std::sin(s.angle);
     return spikes;
 }
 
@@ -102,10 +103,10 @@ Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
         float offset = s.angle - lo;
         if (offset < 0.f) offset += kTwoPi;
         if (offset > 2.f * window) break;
-        const float delta = theta - s.angle;
-        const float along = d * std::cos(delta);
+        // d cos(theta - angle) and d sin(theta - angle), by the angle-difference identities.
+        const float along = x * s.cosAngle + y * s.sinAngle;
         if (along <= 0.f || along >= s.length) continue;
-        const float perp = d * std::sin(delta);
+        const float perp = y * s.cosAngle - x * s.sinAngle;
         if (std::abs(perp) >= k.maxHalfWidth) continue;
         sum += s.weight * spikeAcross(k.spikeProfile, perp) *
                std::pow(1.f - along / s.length, k.params.falloff);

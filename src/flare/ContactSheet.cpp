@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "flarekit/Flare.h"
+#include "flarekit/Limits.h"
 
 namespace flarekit {
 
@@ -32,6 +33,15 @@ Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
     }
     const int n = int(preset.elements.size());
     const int columns = std::min(n, kMaxColumns), rows = (n + columns - 1) / columns;
+    // The sheet's RGBA floats, the OIIO canvas's label rendering and the largest sprite (a
+    // cell), then the encoded samples: ~24 bytes per sheet pixel.
+    const double sheetPixels = double(columns) * rows * double(cellSize) * cellSize;
+    if (Status s = checkMemory("elements: a sheet of " + std::to_string(n) + " cells of " +
+                                   std::to_string(cellSize) + " px",
+                               sheetPixels * 24.0 + 16.0 * cellSize * cellSize * 4.0);
+        !s) {
+        return s.error();
+    }
     ContactSheet sheet;
     sheet.image = Image(columns * cellSize, rows * cellSize);
     sheet.image.fill({0.f, 0.f, 0.f, 1.f});

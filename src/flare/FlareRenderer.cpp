@@ -4,6 +4,8 @@
 // so the result does not depend on the thread count.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "core/Parallel.h"
@@ -83,6 +85,48 @@ EdgePlacement edgeStreakPlacement(Point light, int width, int height, float reac
     const float u = band > 0.f ? std::clamp(distance / band, 0.f, 1.f) : 1.f;
     p.weight = 1.f - u * u * (3.f - 2.f * u);
     return p;
+}
+
+namespace {
+//! One element's spike evaluations, and 0 for other element types.
+double spikeWork(const ElementParams& e, int width, int height) {
+    if (e.type != ElementType::Streaks && e.type != ElementType::Rays) return 0;
+    const double radius = double(e.size) * height;
+    if (radius < kMinRadiusPx) return 0;
+    const SpikeProfile profile = makeSpikeProfile(e.thickness, float(1.0 / radius));
+    const double support = double(spikeSupport(profile)) * radius;  // pixels
+    const double reach = std::min(radius, std::hypot(double(width), double(height)));
+    return double(e.count) * (2.0 * support * reach + support * support);
+}
+}  // namespace
+
+double flareSpikeWork(const Preset& preset, int width, int height) {
+    double work = 0;
+    for (const ElementParams& e : preset.elements) work += spikeWork(e, width, height);
+    return work;
+}
+
+Status checkFlareWork(const Preset& preset, int width, int height, int flares,
+                      const std::string& what) {
+    const double work = flareSpikeWork(preset, width, height) * std::max(1, flares);
+    if (work <= kMaxSpikeWork) return Ok{};
+    std::size_t worst = 0;
+    for (std::size_t i = 1; i < preset.elements.size(); ++i) {
+        if (spikeWork(preset.elements[i], width, height) >
+            spikeWork(preset.elements[worst], width, height))
+            worst = i;
+    }
+    const ElementParams& e = preset.elements[worst];
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s: elements[%zu] (%s, count %d, size %g, thickness %g) at %dx%d needs an "
+                  "estimated %.3g spike evaluations%s, over the limit of %.3g (minutes of work): "
+                  "lower its count, size or thickness",
+                  what.c_str(), worst, std::string(elementTypeName(e.type)).c_str(), e.count,
+                  double(e.size), double(e.thickness), width, height, work,
+                  flares > 1 ? (" for " + std::to_string(flares) + " flares").c_str() : "",
+                  kMaxSpikeWork);
+    return invalidInput(text);
 }
 
 FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity) {

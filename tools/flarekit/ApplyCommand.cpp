@@ -95,6 +95,11 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a) {
         for (const LightCandidate& light : search.lights)
             flares.push_back({light.position, a.intensity * light.flareScale});
     }
+    if (Status s =
+            checkFlareWork(*preset, image.width(), image.height(), int(flares.size()), a.preset);
+        !s) {
+        return s.error();
+    }
     for (const auto& [light, intensity] : flares) {
         if (!(intensity > 0.f)) continue;
         const FlareStats stats = renderFlare(image, *preset, light, intensity);

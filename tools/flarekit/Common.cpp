@@ -2,6 +2,10 @@
 
 #include "core/Interrupt.h"
 #include "core/SafeWrite.h"
+#include "flarekit/Limits.h"
+#if FLAREKIT_HAS_GL
+#include <epoxy/gl.h>
+#endif
 
 #include <unistd.h>
 #include <charconv>
@@ -41,6 +45,12 @@ int finishProcess(int exitCode) {
     return exitCode;
 }
 
+std::string excerptLine(const std::string& text, std::size_t max) {
+    std::string line = text.substr(0, text.find('\n'));
+    if (line.size() > max) line = line.substr(0, max - 3) + "...";
+    return line;
+}
+
 std::string cappedLine(const std::string& message) {
     // 1,000 characters: the longest real message (a list of every known key) fits; a hostile
     // input that echoes megabytes of itself does not reach the terminal.
@@ -54,7 +64,8 @@ void warn(const std::string& message) {
     std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str());
 }
 
-LibraryNoiseFilter::LibraryNoiseFilter() {
+LibraryNoiseFilter::LibraryNoiseFilter(std::vector<std::string> dropped)
+    : m_dropped(std::move(dropped)) {
     std::fflush(stderr);
     m_capture = std::tmpfile();
     if (!m_capture) return;
@@ -67,18 +78,88 @@ LibraryNoiseFilter::LibraryNoiseFilter() {
     }
 }
 
-LibraryNoiseFilter::~LibraryNoiseFilter() {
-    if (!m_capture) return;
+std::string LibraryNoiseFilter::finish() {
+    if (!m_capture) return m_firstDropped;
     std::fflush(stderr);
     ::dup2(m_saved, STDERR_FILENO);
     ::close(m_saved);
     std::rewind(m_capture);
     char line[4096];
     while (std::fgets(line, sizeof line, m_capture)) {
-        if (std::strncmp(line, "libpng ", 7) != 0) std::fputs(line, stderr);
+        bool drop = false;
+        for (const std::string& prefix : m_dropped)
+            drop = drop || std::strncmp(line, prefix.c_str(), prefix.size()) == 0;
+        if (!drop) {
+            std::fputs(line, stderr);
+        } else if (m_firstDropped.empty()) {
+            m_firstDropped = line;
+            while (!m_firstDropped.empty() &&
+                   (m_firstDropped.back() == '\n' || m_firstDropped.back() == ' '))
+                m_firstDropped.pop_back();
+        }
     }
     std::fclose(m_capture);
+    m_capture = nullptr;
+    return m_firstDropped;
 }
+
+LibraryNoiseFilter::~LibraryNoiseFilter() {
+    (void)finish();
+}
+
+#if FLAREKIT_HAS_GL
+Result<std::unique_ptr<gl::HeadlessGl>> createHeadlessGl() {
+    LibraryNoiseFilter filter(
+        {"libEGL warning", "MESA-LOADER", "MESA:", "libGL error", "pci id", "\n"});
+    auto gl = gl::HeadlessGl::create();
+    const std::string mesa = filter.finish();
+    if (gl || mesa.empty()) return gl;
+    Error e = gl.error();
+    e.message += "; Mesa: " + excerptLine(mesa, 160);
+    return e;
+}
+
+Status checkGlFrame(int width, int height, int msaa, const std::string& field) {
+    GLint texture = 0, renderbuffer = 0, viewport[2] = {0, 0}, fbWidth = 0, fbHeight = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &fbWidth);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &fbHeight);
+    auto check = [&](int size, const char* side,
+                     std::initializer_list<std::pair<GLint, const char*>> limits) -> Status {
+        for (const auto& [limit, name] : limits) {
+            if (limit > 0 && size > limit) {
+                return invalidInput(field + "." + side + ": " + std::to_string(size) +
+                                    " is over this OpenGL's limit of " + std::to_string(limit) +
+                                    " (" + name + ")");
+            }
+        }
+        return Ok{};
+    };
+    if (Status s = check(width, "width",
+                         {{texture, "GL_MAX_TEXTURE_SIZE"},
+                          {renderbuffer, "GL_MAX_RENDERBUFFER_SIZE"},
+                          {viewport[0], "GL_MAX_VIEWPORT_DIMS"},
+                          {fbWidth, "GL_MAX_FRAMEBUFFER_WIDTH"}});
+        !s)
+        return s;
+    if (Status s = check(height, "height",
+                         {{texture, "GL_MAX_TEXTURE_SIZE"},
+                          {renderbuffer, "GL_MAX_RENDERBUFFER_SIZE"},
+                          {viewport[1], "GL_MAX_VIEWPORT_DIMS"},
+                          {fbHeight, "GL_MAX_FRAMEBUFFER_HEIGHT"}});
+        !s)
+        return s;
+    // Per pixel: the HDR colour, depth and transmittance targets and their resolve (~32 bytes),
+    // the read-back and the CPU image (32), 12 per extra MSAA sample; 256 MiB of process and
+    // driver (Mesa's llvmpipe measured at ~250 MiB resident with a small frame).
+    const double pixels = double(width) * double(height);
+    return checkMemory(field, 256.0 * (1 << 20) + pixels * (64.0 + 12.0 * std::max(0, msaa - 1)),
+                       std::to_string(width) + "x" + std::to_string(height) + " with " +
+                           std::to_string(std::max(1, msaa)) + " sample(s) per pixel");
+}
+#endif
 
 std::optional<Point> parsePoint(const std::string& text) {
     const auto comma = text.find(',');

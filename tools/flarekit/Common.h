@@ -8,11 +8,15 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFxParams.h"
 #include "flarekit/Result.h"
+#if FLAREKIT_HAS_GL
+#include "flarekit/HeadlessGl.h"
+#endif
 
 namespace flarekit::cli {
 
@@ -29,18 +33,25 @@ int report(const Error& error);
 int finishProcess(int exitCode);
 //! The first line of `message`, cut to 1,000 characters.
 std::string cappedLine(const std::string& message);
+//! The first line of `text`, cut to `max` characters.
+std::string excerptLine(const std::string& text, std::size_t max);
 void warn(const std::string& message);
 
 //! Holds back what libraries print on stderr while it lives; on destruction replays it except
-//! libpng's own "libpng error: ..." lines, which repeat what flarekit reports in its one line.
+//! the lines starting with one of `dropped` (by default libpng's own "libpng error: ..." lines,
+//! which repeat what flarekit reports in its one line).
 class LibraryNoiseFilter {
   public:
-    LibraryNoiseFilter();
+    explicit LibraryNoiseFilter(std::vector<std::string> dropped = {"libpng "});
     ~LibraryNoiseFilter();
     LibraryNoiseFilter(const LibraryNoiseFilter&) = delete;
     LibraryNoiseFilter& operator=(const LibraryNoiseFilter&) = delete;
+    //! Stops capturing now (replaying what was kept); the first dropped line, trimmed.
+    std::string finish();
 
   private:
+    std::vector<std::string> m_dropped;
+    std::string m_firstDropped;
     std::FILE* m_capture = nullptr;
     int m_saved = -1;
 };
@@ -92,6 +103,17 @@ struct ImageOutput {
 };
 int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work);
 int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work);
+
+#if FLAREKIT_HAS_GL
+//! The headless GL context with Mesa's loader warnings held back: on failure its one line says
+//! what was tried and what failed (with Mesa's first warning), instead of four lines.
+Result<std::unique_ptr<gl::HeadlessGl>> createHeadlessGl();
+//! A frame of width x height rendered with `msaa` samples per pixel in the current context:
+//! refused when a side is over the context's limits (GL_MAX_TEXTURE_SIZE, renderbuffer,
+//! viewport, framebuffer), naming `field` ("scene.json: image" gives "scene.json:
+//! image.width: ..."), or when its render targets and copies are over the memory budget.
+Status checkGlFrame(int width, int height, int msaa, const std::string& field);
+#endif
 
 //! The one-line error of an OpenGL feature in a build without OpenGL (FLAREKIT_GL=OFF).
 Error builtWithoutGl(const std::string& what);

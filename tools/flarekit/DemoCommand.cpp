@@ -9,6 +9,8 @@
 #include <mutex>
 #include <thread>
 
+#include <sys/statvfs.h>
+
 #include "Common.h"
 #include "ParamOptions.h"
 #include "Progress.h"
@@ -17,6 +19,7 @@
 #include "flarekit/Demo.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/Limits.h"
 #if FLAREKIT_HAS_GL
 #include "flarekit/HeadlessGl.h"
 #endif
@@ -133,6 +136,27 @@ class Strip {
     Image m_image;
 };
 
+//! Refuses a run whose frames would not fit on the output's file system, before the first
+//! frame: the estimate is ~1.5 bytes per pixel per PNG frame (the drive's 8-bit frames compress
+//! to 1.1-1.4 with OIIO's default zlib level), plus the MP4 at most a tenth of that.
+Status checkDemoDisk(const DemoArgs& a, int w, int h) {
+    // The output directory may not exist yet: its nearest existing ancestor's file system.
+    std::filesystem::path dir = std::filesystem::absolute(a.outDir);
+    std::error_code ec;
+    while (!std::filesystem::exists(dir, ec) && dir.has_parent_path() && dir != dir.parent_path())
+        dir = dir.parent_path();
+    struct statvfs fs {};
+    if (::statvfs(dir.c_str(), &fs) != 0) return Ok{};  // unknown: the writes will tell
+    const double frames = double(a.settings.frames > 0 ? a.settings.frames : 240);
+    const double need = frames * double(w) * double(h) * 1.5 * (a.noVideo ? 1.0 : 1.1);
+    const double freeBytes = double(fs.f_bavail) * double(fs.f_frsize);
+    if (need <= freeBytes) return Ok{};
+    return invalidInput(a.outDir + ": the demo needs an estimated " + formatBytes(need) +
+                        " of disk (" + std::to_string(int(frames)) + " frames at " +
+                        std::to_string(w) + "x" + std::to_string(h) + ", ~1.5 bytes per pixel), " +
+                        formatBytes(freeBytes) + " free there: lower --frames or --size");
+}
+
 #if FLAREKIT_HAS_GL
 int runDemo(DemoArgs& a) {
     const auto size = parseSize(a.size);
@@ -145,9 +169,13 @@ int runDemo(DemoArgs& a) {
     if (Status s = validateDemoSettings(a.settings); !s) return report(s.error());
     auto preset = loadPreset(a.preset);
     if (!preset) return report(preset.error());
-    if (Status s = makeOutputDirectory(a.outDir); !s) return report(s.error());
-    auto gl = gl::HeadlessGl::create();
+    if (Status s = checkFlareWork(*preset, w, h, 1, a.preset); !s) return report(s.error());
+    auto gl = createHeadlessGl();
     if (!gl) return report(gl.error());
+    if (Status s = checkGlFrame(w, h, a.settings.msaaSamples, "--size"); !s)
+        return report(s.error());
+    if (Status s = checkDemoDisk(a, w, h); !s) return report(s.error());
+    if (Status s = makeOutputDirectory(a.outDir); !s) return report(s.error());
     auto demo = DemoAnimation::create(a.settings, *preset);
     if (!demo) return report(demo.error());
 

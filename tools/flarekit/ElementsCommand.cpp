@@ -19,6 +19,7 @@ int runElements(const ElementsArgs& a) {
     return runImageJob(a.out, [&]() -> Result<ImageOutput> {
         auto preset = loadPreset(a.preset);
         if (!preset) return preset.error();
+        if (Status s = checkFlareWork(*preset, a.cell, a.cell, 1, a.preset); !s) return s.error();
         auto sheet = renderContactSheet(*preset, a.cell);
         if (!sheet) return sheet.error();
         if (!sheet->labelled)

@@ -41,8 +41,12 @@ struct EngineDeleter {
 }  // namespace
 
 Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& o) {
-    auto gl = gl::HeadlessGl::create();
+    auto gl = createHeadlessGl();
     if (!gl) return gl.error();
+    if (Status s =
+            checkGlFrame(scene.width, scene.height, o.render.msaaSamples, o.source + ": image");
+        !s)
+        return s.error();
     auto renderer = SceneRenderer::create(scene, o.render);
     if (!renderer) return renderer.error();
     if (Status s = renderer->draw(scene); !s) return s.error();

@@ -52,8 +52,10 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
         }
     } else {
 #if FLAREKIT_HAS_GL
-        auto context = gl::HeadlessGl::create();
+        auto context = createHeadlessGl();
         if (!context) return context.error();
+        if (Status s = checkGlFrame(image.width(), image.height(), 1, a.in + ": image"); !s)
+            return s.error();
         auto chain = GpuPostFx::create();
         if (!chain) return chain.error();
         if (a.verbose) std::printf("OpenGL: %s\n", (*context)->renderer().c_str());

@@ -36,8 +36,14 @@ Result<ImageOutput> renderStill(const RenderArgs& a) {
     if (!scene) return scene.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
-    auto gl = gl::HeadlessGl::create();
+    if (Status s = checkFlareWork(*preset, scene->width, scene->height, 1, a.preset); !s)
+        return s.error();
+    auto gl = createHeadlessGl();
     if (!gl) return gl.error();
+    if (Status s =
+            checkGlFrame(scene->width, scene->height, a.render.msaaSamples, a.scene + ": image");
+        !s)
+        return s.error();
     // A still through the frame pipeline: no temporal filter, linear HDR out (tone-mapped
     // below for 8/16-bit files), raycast at its ground-truth sample count.
     FramePipelineSettings settings;

@@ -58,8 +58,12 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     if ((a.method == "compute" || a.method == "texture-mask") &&
         (lights.size() > 1 || lights.front().type != LightType::Directional))
         return runEngineLights(a, scene);
-    auto gl = gl::HeadlessGl::create();
+    auto gl = createHeadlessGl();
     if (!gl) return gl.error();
+    if (Status s =
+            checkGlFrame(scene.width, scene.height, a.render.msaaSamples, a.scene + ": image");
+        !s)
+        return s.error();
     RenderOptions render = a.render;
     render.shadows = false;  // visibility reads depth only
     auto renderer = SceneRenderer::create(scene, render);
