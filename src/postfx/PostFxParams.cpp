@@ -110,7 +110,11 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
     if (!doc.is_object()) return top.fail("expected an object, got " + jsonExcerpt(doc));
     PostFxParams p;
     p.name = fs::path(source).stem().string();
-    for (const auto& [key, value] : doc.items()) {
+    for (const auto& item : doc.items()) {
+        // Named references, not a structured binding: clang 14 (the fuzz build) cannot capture
+        // a binding in the lambda below.
+        const std::string& key = item.key();
+        const json& value = item.value();
         bool section = false;
         std::optional<Error> error;
         forEachSection(p, [&](std::string_view name, auto table, auto& owner) {

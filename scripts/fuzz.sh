@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, ASan + UBSan, no GL) in build-fuzz and runs each for
+# SECONDS (default 60) from its seed corpus under tests/fuzz/corpus/. New inputs go to a scratch
+# corpus; a crash, leak or timeout leaves its input in build-fuzz/artifacts/ and fails the run.
+#   scripts/fuzz.sh [SECONDS] [TARGET...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(FuzzPreset FuzzPostFxPreset FuzzScene FuzzImageRead FuzzPsp)
+
+if [ "${FLAREKIT_FUZZ_NO_BUILD:-}" != 1 ]; then  # set by callers that run targets in parallel
+cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+  -DCMAKE_CXX_COMPILER=clang++ -DFLAREKIT_FUZZ=ON -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_TESTS=OFF \
+  -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="${FLAREKIT_WERROR:-OFF}" >/dev/null
+cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
+fi
+
+mkdir -p build-fuzz/artifacts
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+failed=0
+for t in "${targets[@]}"; do
+  seeds="tests/fuzz/corpus/$t"
+  scratch="build-fuzz/corpus/$t"
+  mkdir -p "$scratch"
+  echo "fuzz: $t for ${seconds}s (seeds: $(ls "$seeds" | wc -l))"
+  if ! "build-fuzz/tests/fuzz/$t" "$scratch" "$seeds" -max_total_time="$seconds" -timeout=20 \
+      -rss_limit_mb=2048 -max_len=262144 -print_final_stats=1 \
+      -artifact_prefix="build-fuzz/artifacts/$t-" >"build-fuzz/$t.log" 2>&1; then
+    echo "fuzz: $t FAILED (see build-fuzz/$t.log; the input is in build-fuzz/artifacts/):" >&2
+    grep -E "ERROR|SUMMARY|Test unit written" "build-fuzz/$t.log" | head -5 >&2
+    failed=1
+  else
+    grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build-fuzz/$t.log" | tr '\n' ' '
+    echo
+  fi
+done
+exit "$failed"
