@@ -4,8 +4,9 @@
 #   ./setup.sh demo   renders the demo drive (out/drive: frames + MP4) and every shipped preset on
 #                     the sample images into out/
 #   ./setup.sh test   checks the formatting, runs the whole test suite, then builds the
-#                     FLAREKIT_GL=OFF variant (core + CLI, no OpenGL) and runs its tests
-#                     (CI runs this; with CI=true warnings are errors)
+#                     FLAREKIT_GL=OFF variant (core + CLI, no OpenGL) and runs its tests, then
+#                     the ASan + UBSan variant and its tests (GL included, on llvmpipe), then
+#                     each fuzz target for 60 s (CI runs this; with CI=true warnings are errors)
 set -euo pipefail
 cd "$(dirname "$0")"
 job="${1:-}"
@@ -30,5 +31,16 @@ case "$job" in
       -DFLAREKIT_WERROR="$werror"
     cmake --build build-nogl -j"$(nproc)"
     ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure
+    # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the whole suite again,
+    # except the package test (it builds an example against the installed library with the
+    # system compiler's plain flags, which cannot link an instrumented library).
+    cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DFLAREKIT_SANITIZE=address,undefined -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="$werror"
+    cmake --build build-asan -j"$(nproc)"
+    ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1 \
+      LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0" \
+      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^Package'
+    FLAREKIT_WERROR="$werror" ./scripts/fuzz.sh 60
     ;;
 esac

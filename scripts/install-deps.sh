@@ -21,6 +21,8 @@ packages=(
   libglfw3-dev
   # the embedding example's window test runs it on a private X server (Xvfb, local socket only)
   xvfb
+  # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -1,0 +1,158 @@
+#!/usr/bin/env bash
+# Fault injection through the CLI, as an unlucky user meets it: a full disk for every output
+# format (a 1 MiB tmpfs, as root; skipped with the reason where mounting is not allowed), the
+# input as its own output on that disk, device-node and symlink outputs, stdout on /dev/full,
+# and SIGINT/SIGTERM at random points of `demo` (frames and video) and `apply`. Each checks the
+# exit code, that nothing partial is left and that the input is intact.
+#   tests/fault/fault-injection.sh FLAREKIT SAMPLES_DIR [gl|nogl]
+# (nogl: a FLAREKIT_GL=OFF build; the demo cases, which need OpenGL, are skipped.)
+set -uo pipefail
+cli="$1"
+samples="$2"
+gl="${3:-gl}"
+work="$(mktemp -d /tmp/flarekit-fault.XXXXXX)"
+mnt="$work/full"
+failures=0
+checks=0
+pass() { checks=$((checks + 1)); }
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); checks=$((checks + 1)); }
+cleanup() {
+  mountpoint -q "$mnt" 2>/dev/null && umount "$mnt"
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+# No temporary or partial file anywhere under $1.
+expect_no_leftovers() {
+  local left
+  left="$(find "$1" \( -name '.flarekit-tmp-*' -o -name '*.partial.mp4' \) 2>/dev/null)"
+  if [ -n "$left" ]; then fail "$2: left behind: $left"; else pass; fi
+}
+# Every image under $1 decodes completely.
+expect_complete_images() {
+  local f
+  for f in $(find "$1" -name '*.png' -o -name '*.exr' 2>/dev/null); do
+    if ! oiiotool "$f" -o "$work/decoded.exr" >/dev/null 2>&1; then fail "$2: $f is not a complete image"; else pass; fi
+  done
+}
+expect_exit() {  # expected actual what
+  if [ "$2" -eq "$1" ]; then pass; else fail "$3: exit $2, expected $1"; fi
+}
+
+cp "$samples/sunset.png" "$work/in.png"
+in_sum="$(md5sum < "$work/in.png")"
+
+# --- full disk ------------------------------------------------------------------------------
+mkdir -p "$mnt"
+if [ "$(id -u)" -ne 0 ]; then
+  echo "SKIP full disk: not root (mounting a small tmpfs needs root)"
+elif ! mount -t tmpfs -o size=1m tmpfs "$mnt" 2>/dev/null; then
+  echo "SKIP full disk: mount -t tmpfs is not permitted here (a container without CAP_SYS_ADMIN)"
+else
+  cp "$work/in.png" "$mnt/in.png"
+  dd if=/dev/zero of="$mnt/fill" bs=4k 2>/dev/null
+  for ext in png jpg tif exr hdr bmp tga ppm webp; do
+    "$cli" apply "$mnt/in.png" -o "$mnt/out.$ext" --light 400,200 2>"$work/err"
+    rc=$?
+    expect_exit 2 "$rc" "full disk, apply -o out.$ext"
+    [ -e "$mnt/out.$ext" ] && fail "full disk: out.$ext exists" || pass
+    grep -q "No space left on device" "$work/err" || fail "full disk .$ext: message: $(cat "$work/err")"
+  done
+  "$cli" postfx "$mnt/in.png" -o "$mnt/post.png" 2>/dev/null
+  expect_exit 2 $? "full disk, postfx"
+  "$cli" apply "$mnt/in.png" -o "$mnt/in.png" 2>/dev/null
+  expect_exit 2 $? "full disk, apply IN -o IN"
+  [ "$(md5sum < "$mnt/in.png")" = "$in_sum" ] && pass || fail "full disk: the input was changed"
+  "$cli" visibility "$samples/scenes/sun-behind-trees.json" --json > "$mnt/v.json" 2>/dev/null
+  rc=$?
+  [ "$rc" -ne 0 ] && pass || fail "full disk: visibility --json > file exited 0"
+  rm -f "$mnt/v.json" "$mnt/fill"
+  # A disk that fills up during the demo: frames before are complete, nothing partial after.
+  [ "$gl" = gl ] || echo "SKIP full disk during demo: built without OpenGL"
+  [ "$gl" = gl ] && dd if=/dev/zero of="$mnt/fill" bs=4k count=160 2>/dev/null
+  if [ "$gl" = gl ]; then
+    "$cli" demo -o "$mnt/drive" --frames 40 --size 320x180 --no-video 2>/dev/null
+    expect_exit 2 $? "full disk during demo"
+  fi
+  expect_complete_images "$mnt/drive" "full disk during demo"
+  expect_no_leftovers "$mnt" "full disk"
+  umount "$mnt"
+fi
+
+# --- devices, symlinks, stdout ----------------------------------------------------------------
+"$cli" visibility "$samples/scenes/sun-behind-trees.json" --json > /dev/full 2>"$work/err"
+rc=$?
+[ "$rc" -ne 0 ] && grep -q "standard output" "$work/err" && pass || fail "stdout on /dev/full: exit $rc: $(cat "$work/err")"
+mask="$work/mask.png"
+oiiotool --pattern constant:color=0 480x272 1 -d uint8 -o "$mask"
+"$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png" --trace /dev/full 2>/dev/null
+expect_exit 2 $? "psp --trace /dev/full"
+[ -c /dev/full ] && pass || fail "/dev/full is no longer a character device"
+lines="$("$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png" --trace /dev/stdout | wc -l)"
+[ "$lines" -gt 10 ] && pass || fail "psp --trace /dev/stdout wrote $lines lines to stdout"
+[ -L /dev/stdout ] && pass || fail "/dev/stdout is no longer a link"
+cp "$work/in.png" "$work/real.png"
+ln -s real.png "$work/link.png"
+"$cli" apply "$work/real.png" -o "$work/link.png" --light 400,200
+expect_exit 0 $? "apply -o SYMLINK"
+[ -L "$work/link.png" ] && pass || fail "the output symlink was replaced by a file"
+[ "$(md5sum < "$work/real.png")" != "$in_sum" ] && pass || fail "the symlink's target was not written"
+ln -s dangling-target.png "$work/dangling.png"
+"$cli" apply "$work/in.png" -o "$work/dangling.png" --light 400,200
+expect_exit 0 $? "apply -o DANGLING-SYMLINK"
+[ -L "$work/dangling.png" ] && [ -f "$work/dangling-target.png" ] && pass || fail "dangling symlink output"
+mkfifo "$work/fifo.png"
+( cat "$work/fifo.png" > "$work/from-fifo.png" ) &
+"$cli" apply "$work/in.png" -o "$work/fifo.png" --light 400,200
+expect_exit 0 $? "apply -o FIFO"
+wait
+[ -p "$work/fifo.png" ] && pass || fail "the FIFO was replaced"
+oiiotool "$work/from-fifo.png" -o "$work/decoded.exr" >/dev/null 2>&1 && pass || fail "the FIFO did not carry a complete PNG"
+[ "$(md5sum < "$work/in.png")" = "$in_sum" ] && pass || fail "the input was changed"
+expect_no_leftovers "$work" "devices and links"
+
+# --- interrupts -------------------------------------------------------------------------------
+# A signal at a random point: the exit code is 128 + signal (or 0 when the run had finished
+# before the signal came), nothing partial is left, every image is complete, no ffmpeg remains.
+interrupt_trial() {  # signal delay_ms kind
+  local sig="$1" delay="$2" kind="$3"
+  local dir="$work/int-$kind-$sig-$delay" pid rc
+  mkdir -p "$dir"
+  if [ "$kind" = demo ]; then
+    "$cli" demo -o "$dir/drive" --frames 24 --size 320x180 >/dev/null 2>"$dir/err" &
+  else
+    "$cli" apply "$samples/sunset-hdr.exr" -o "$dir/out.exr" --preset sun-wide 2>"$dir/err" &
+  fi
+  pid=$!
+  sleep "$(awk "BEGIN {print $delay / 1000}")"
+  local sent=1
+  kill -s "$sig" "$pid" 2>/dev/null || sent=0
+  wait "$pid"
+  rc=$?
+  local want=$((128 + $(kill -l "$sig")))
+  if [ "$sent" -eq 1 ] && [ "$rc" -ne "$want" ] && [ "$rc" -ne 0 ]; then
+    fail "$kind SIG$sig after ${delay} ms: exit $rc, expected $want: $(head -c 300 "$dir/err")"
+  elif [ "$sent" -eq 1 ] && [ "$rc" -eq "$want" ] && [ -s "$dir/err" ] &&
+      [ "$(grep -c '^flarekit: ' "$dir/err")" -ne 1 ]; then
+    # (An empty stderr: the signal came while the dynamic loader was still starting the
+    # process, before flarekit's handlers existed; nothing had been written.)
+    fail "$kind SIG$sig after ${delay} ms: expected one flarekit line on stderr: $(cat "$dir/err")"
+  else
+    pass
+  fi
+  sleep 0.1
+  if pgrep -f "ffmpeg.*$dir" >/dev/null; then fail "$kind SIG$sig: ffmpeg still running"; pkill -f "ffmpeg.*$dir"; else pass; fi
+  expect_no_leftovers "$dir" "$kind SIG$sig after ${delay} ms"
+  expect_complete_images "$dir" "$kind SIG$sig after ${delay} ms"
+}
+RANDOM=${FLAREKIT_FAULT_SEED:-$$}
+echo "interrupt trials with seed $RANDOM"
+for sig in INT TERM; do
+  for trial in 1 2 3; do
+    [ "$gl" = gl ] && interrupt_trial "$sig" $((RANDOM % 4000 + 200)) demo
+    interrupt_trial "$sig" $((RANDOM % 1500 + 50)) apply
+  done
+done
+
+echo "fault injection: $checks checks, $failures failed"
+[ "$failures" -eq 0 ]
