@@ -33,12 +33,14 @@ case "$job" in
     ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure
     # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the whole suite again,
     # except the package test (it builds an example against the installed library with the
-    # system compiler's plain flags, which cannot link an instrumented library).
+    # system compiler's plain flags, which cannot link an instrumented library). Leak checking
+    # is off here: Mesa unloads its driver at eglTerminate, so its one-time allocations are
+    # reported against "<unknown module>" and cannot be suppressed by name, and libstdc++ and
+    # OIIO have no frame pointers for the fast unwinder. The fuzz targets (no GL) check leaks.
     cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DFLAREKIT_SANITIZE=address,undefined -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="$werror"
     cmake --build build-asan -j"$(nproc)"
-    ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1 \
-      LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0" \
+    ASAN_OPTIONS=detect_leaks=0:strict_string_checks=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^Package'
     FLAREKIT_WERROR="$werror" ./scripts/fuzz.sh 60

@@ -64,7 +64,11 @@ std::string cutParseMessage(const std::string& what) {
 
 std::string excerpt(std::string_view text, std::size_t max) {
     if (text.size() <= max) return std::string(text);
-    return std::string(text.substr(0, max - 3)) + "...";
+    // Cut at a character boundary: never inside a UTF-8 sequence (continuation bytes are
+    // 10xxxxxx), so the excerpt stays valid UTF-8 when the text was.
+    std::size_t cut = max - 3;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return std::string(text.substr(0, cut)) + "...";
 }
 
 Result<nlohmann::json> parseJsonText(const std::string& text, const std::string& source,
@@ -126,6 +130,12 @@ Result<nlohmann::json> parseJsonText(const std::string& text, const std::string&
 }
 
 namespace {
+//! A string as JSON text; bytes that are not UTF-8 (a file may hold any) become U+FFFD instead
+//! of making nlohmann throw.
+std::string dumpText(const std::string& text) {
+    return json(text).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 //! nlohmann's compact dump, stopped once `out` is longer than `max`: a huge value costs only
 //! what is shown. Recursion is bounded by the parse's depth limit.
 void dumpUpTo(const json& v, std::string& out, std::size_t max) {
@@ -147,12 +157,12 @@ void dumpUpTo(const json& v, std::string& out, std::size_t max) {
             if (out.size() > max) return;
             if (!first) out += ',';
             first = false;
-            out += json(excerpt(key, max)).dump() + ':';
+            out += dumpText(excerpt(key, max)) + ':';
             dumpUpTo(e, out, max);
         }
         out += '}';
     } else if (v.is_string()) {
-        out += json(excerpt(v.get_ref<const std::string&>(), max + 4)).dump();
+        out += dumpText(excerpt(v.get_ref<const std::string&>(), max + 4));
     } else {
         out += v.dump();
     }

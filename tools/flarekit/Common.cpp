@@ -33,10 +33,10 @@ int report(const Error& error) {
 
 int finishProcess(int exitCode) {
     if (interrupted()) {
-        if (!g_interruptReported) {
+        // One line in all: a command that failed for another reason has said so already.
+        if (!g_interruptReported && exitCode == kExitOk) {
             std::fprintf(stderr, "flarekit: interrupted by %s: %s\n", interruptSignalName().c_str(),
-                         exitCode == kExitOk ? "the command had finished; its outputs are complete"
-                                             : "the command had already failed");
+                         "the command had finished; its outputs are complete");
         }
         (void)flushStandardOutput();
         return 128 + interruptSignal();

@@ -13,7 +13,8 @@ namespace flarekit::cli {
 class JsonLine {
   public:
     JsonLine& text(const char* key, const std::string& value) {
-        return raw(key, nlohmann::json(value).dump());
+        return raw(key, nlohmann::json(value).dump(-1, ' ', false,
+                                                   nlohmann::json::error_handler_t::replace));
     }
     JsonLine& number(const char* key, double value, int decimals) {
         char s[64];
@@ -29,7 +30,10 @@ class JsonLine {
 
   private:
     JsonLine& raw(const char* key, const std::string& value) {
-        m_body += (m_body.empty() ? "" : ", ") + nlohmann::json(key).dump() + ": " + value;
+        m_body +=
+            (m_body.empty() ? "" : ", ") +
+            nlohmann::json(key).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) +
+            ": " + value;
         return *this;
     }
     std::string m_body;
