@@ -25,15 +25,26 @@ std::string number(double v) {
 //! Directional lights' angular radius limit: the Scene JSON's (kDirectionalLightParams).
 constexpr float kMaxAngularRadiusDeg = 45.f;
 
+//! The integer a C caller stored in an enum field. Read as int, never as the C++ enum: a C
+//! program may store any int there, and loading a value outside the enumerators' range
+//! through the enum type is undefined behaviour in C++ (UBSan: "not a valid value").
+template <class Enum>
+int enumBits(const Enum& field) {
+    static_assert(sizeof(Enum) == sizeof(int), "C enums are int-sized on every supported ABI");
+    int bits = 0;
+    std::memcpy(&bits, &field, sizeof bits);
+    return bits;
+}
+
 }  // namespace
 
 Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at) {
     if (!frame) return invalidInput(at + ": expected a frame, got NULL");
     const fk_frame& f = *frame;
-    if (f.depth_convention < FK_DEPTH_MINUS_ONE_TO_ONE ||
-        f.depth_convention > FK_DEPTH_REVERSED_Z) {
+    if (const int convention = enumBits(f.depth_convention);
+        convention < FK_DEPTH_MINUS_ONE_TO_ONE || convention > FK_DEPTH_REVERSED_Z) {
         return invalidInput(at + ".depth_convention: expected 0, 1 or 2 (FK_DEPTH_*), got " +
-                            std::to_string(int(f.depth_convention)));
+                            std::to_string(convention));
     }
     if (!finite(f.view, 16)) return invalidInput(at + ".view: expected 16 finite numbers");
     if (!finite(f.projection, 16))
@@ -96,11 +107,12 @@ Status checkLights(const fk_light* lights, int count, int maxLights, int presetC
         const fk_light& l = lights[i];
         // The field's name is built only for a message: the checks run every frame.
         const auto at = [i] { return "lights[" + std::to_string(i) + "]."; };
-        if (l.type != FK_LIGHT_DIRECTIONAL && l.type != FK_LIGHT_POINT) {
+        if (const int type = enumBits(l.type);
+            type != FK_LIGHT_DIRECTIONAL && type != FK_LIGHT_POINT) {
             return invalidInput(at() +
                                 "type: expected FK_LIGHT_DIRECTIONAL (0) or FK_LIGHT_POINT "
                                 "(1), got " +
-                                std::to_string(int(l.type)));
+                                std::to_string(type));
         }
         const bool point = l.type == FK_LIGHT_POINT;
         if (point && !finite(l.position, 3))
