@@ -126,31 +126,28 @@ Status checkGlFrame(int width, int height, int msaa, const std::string& field) {
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &fbWidth);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &fbHeight);
-    auto check = [&](int size, const char* side,
-                     std::initializer_list<std::pair<GLint, const char*>> limits) -> Status {
+    // Each axis against every limit that bounds it (0: a limit the context does not report).
+    struct Axis {
+        int size;
+        const char* side;
+        GLint viewport, framebuffer;
+        const char* framebufferName;
+    };
+    for (const Axis& a :
+         {Axis{width, "width", viewport[0], fbWidth, "GL_MAX_FRAMEBUFFER_WIDTH"},
+          Axis{height, "height", viewport[1], fbHeight, "GL_MAX_FRAMEBUFFER_HEIGHT"}}) {
+        const std::pair<GLint, const char*> limits[] = {{texture, "GL_MAX_TEXTURE_SIZE"},
+                                                        {renderbuffer, "GL_MAX_RENDERBUFFER_SIZE"},
+                                                        {a.viewport, "GL_MAX_VIEWPORT_DIMS"},
+                                                        {a.framebuffer, a.framebufferName}};
         for (const auto& [limit, name] : limits) {
-            if (limit > 0 && size > limit) {
-                return invalidInput(field + "." + side + ": " + std::to_string(size) +
+            if (limit > 0 && a.size > limit) {
+                return invalidInput(field + "." + a.side + ": " + std::to_string(a.size) +
                                     " is over this OpenGL's limit of " + std::to_string(limit) +
                                     " (" + name + ")");
             }
         }
-        return Ok{};
-    };
-    if (Status s = check(width, "width",
-                         {{texture, "GL_MAX_TEXTURE_SIZE"},
-                          {renderbuffer, "GL_MAX_RENDERBUFFER_SIZE"},
-                          {viewport[0], "GL_MAX_VIEWPORT_DIMS"},
-                          {fbWidth, "GL_MAX_FRAMEBUFFER_WIDTH"}});
-        !s)
-        return s;
-    if (Status s = check(height, "height",
-                         {{texture, "GL_MAX_TEXTURE_SIZE"},
-                          {renderbuffer, "GL_MAX_RENDERBUFFER_SIZE"},
-                          {viewport[1], "GL_MAX_VIEWPORT_DIMS"},
-                          {fbHeight, "GL_MAX_FRAMEBUFFER_HEIGHT"}});
-        !s)
-        return s;
+    }
     // Per pixel: the HDR colour, depth and transmittance targets and their resolve (~32 bytes),
     // the read-back and the CPU image (32), 12 per extra MSAA sample; 256 MiB of process and
     // driver (Mesa's llvmpipe measured at ~250 MiB resident with a small frame).
