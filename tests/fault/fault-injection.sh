@@ -85,12 +85,18 @@ rc=$?
 [ "$rc" -ne 0 ] && grep -q "standard output" "$work/err" && pass || fail "stdout on /dev/full: exit $rc: $(cat "$work/err")"
 mask="$work/mask.png"
 oiiotool --pattern constant:color=0 480x272 1 -d uint8 -o "$mask"
-"$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png" --trace /dev/full 2>/dev/null
-expect_exit 2 $? "psp --trace /dev/full"
-[ -c /dev/full ] && pass || fail "/dev/full is no longer a character device"
-lines="$("$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png" --trace /dev/stdout | wc -l)"
-[ "$lines" -gt 10 ] && pass || fail "psp --trace /dev/stdout wrote $lines lines to stdout"
-[ -L /dev/stdout ] && pass || fail "/dev/stdout is no longer a link"
+# The device and the stdout link are this test's own (a full device made with mknod as root,
+# a link to /proc/self/fd/1), so that a broken writer replaces them, not the system's.
+full=/dev/full
+if [ "$(id -u)" -eq 0 ] && mknod -m 666 "$work/full-device" c 1 7 2>/dev/null; then full="$work/full-device"; fi
+stdout_link="$work/stdout-link"
+ln -s /proc/self/fd/1 "$stdout_link"
+"$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png" --trace "$full" 2>/dev/null
+expect_exit 2 $? "psp --trace $full"
+[ -c "$full" ] && pass || fail "$full is no longer a character device"
+lines="$("$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png" --trace "$stdout_link" | wc -l)"
+[ "$lines" -gt 10 ] && pass || fail "psp --trace (a link to stdout) wrote $lines lines to stdout"
+[ -L "$stdout_link" ] && pass || fail "the link to stdout is no longer a link"
 cp "$work/in.png" "$work/real.png"
 ln -s real.png "$work/link.png"
 "$cli" apply "$work/real.png" -o "$work/link.png" --light 400,200

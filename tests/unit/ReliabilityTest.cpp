@@ -2,6 +2,7 @@
 // side is in tests/cli/RegressionTest.cpp and tests/fault/fault-injection.sh).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -57,13 +58,18 @@ TEST(SafeWrite, WritesThroughASymlinkAndKeepsTheLink) {
 }
 
 TEST(SafeWrite, WritesDevicesInPlaceAndReportsTheirErrors) {
-    EXPECT_TRUE(writeFileSafely("/dev/null", "gone").ok());
-    auto full = writeFileSafely("/dev/full", "no room");
-    ASSERT_FALSE(full.ok());
-    EXPECT_EQ(full.error().message, "/dev/full: cannot write: No space left on device");
+    // The test's own full device (mknod, as root), so that a broken writer replaces it rather
+    // than the system's /dev/full; /dev/full where mknod is not allowed.
+    TempDir dir;
+    std::string full = dir.file("full");
+    if (::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) full = "/dev/full";
+    auto r = writeFileSafely(full, "no room");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message, full + ": cannot write: No space left on device");
     struct stat st {};
-    ASSERT_EQ(::stat("/dev/full", &st), 0);
+    ASSERT_EQ(::stat(full.c_str(), &st), 0);
     EXPECT_TRUE(S_ISCHR(st.st_mode));
+    EXPECT_TRUE(writeFileSafely("/dev/null", "gone").ok());
 }
 
 TEST(SafeWrite, AMissingDirectoryIsBadInputAndWritesNothing) {

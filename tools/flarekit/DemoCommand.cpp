@@ -136,6 +136,7 @@ class Strip {
     Image m_image;
 };
 
+#if FLAREKIT_HAS_GL
 //! Refuses a run whose frames would not fit on the output's file system, before the first
 //! frame: the estimate is ~1.5 bytes per pixel per PNG frame (the drive's 8-bit frames compress
 //! to 1.1-1.4 with OIIO's default zlib level), plus the MP4 at most a tenth of that.
@@ -157,7 +158,6 @@ Status checkDemoDisk(const DemoArgs& a, int w, int h) {
                         formatBytes(freeBytes) + " free there: lower --frames or --size");
 }
 
-#if FLAREKIT_HAS_GL
 int runDemo(DemoArgs& a) {
     const auto size = parseSize(a.size);
     if (!size)
