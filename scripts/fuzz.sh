@@ -28,7 +28,7 @@ for t in "${targets[@]}"; do
   mkdir -p "$scratch"
   echo "fuzz: $t for ${seconds}s (seeds: $(ls "$seeds" | wc -l))"
   if ! "build-fuzz/tests/fuzz/$t" "$scratch" "$seeds" -max_total_time="$seconds" -timeout=20 \
-      -rss_limit_mb=2048 -max_len=262144 -print_final_stats=1 \
+      -rss_limit_mb=3072 -max_len=262144 -print_final_stats=1 \
       -artifact_prefix="build-fuzz/artifacts/$t-" >"build-fuzz/$t.log" 2>&1; then
     echo "fuzz: $t FAILED (see build-fuzz/$t.log; the input is in build-fuzz/artifacts/):" >&2
     grep -E "ERROR|SUMMARY|Test unit written" "build-fuzz/$t.log" | head -5 >&2
