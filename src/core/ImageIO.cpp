@@ -24,10 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string excerptText(const std::string& text, std::size_t max) {
-    return text.size() <= max ? text : text.substr(0, max - 3) + "...";
-}
-
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -71,7 +67,7 @@ Status checkExrAttributeSizes(const std::string& path) {
                              std::uint32_t(size[2]) << 16 | std::uint32_t(size[3]) << 24);
             const auto at = std::uintmax_t(in.tellg());
             if (bytes < 0 || std::uintmax_t(bytes) > fileBytes - std::min(at, fileBytes)) {
-                return invalidInput(path + ": EXR header attribute '" + excerptText(name, 60) +
+                return invalidInput(path + ": EXR header attribute '" + excerpt(name, 60) +
                                     "' claims " + std::to_string(bytes) + " bytes, more than the " +
                                     std::to_string(fileBytes - std::min(at, fileBytes)) +
                                     " left in the file");

@@ -62,15 +62,6 @@ std::string cutParseMessage(const std::string& what) {
 
 }  // namespace
 
-std::string excerpt(std::string_view text, std::size_t max) {
-    if (text.size() <= max) return std::string(text);
-    // Cut at a character boundary: never inside a UTF-8 sequence (continuation bytes are
-    // 10xxxxxx), so the excerpt stays valid UTF-8 when the text was.
-    std::size_t cut = max - 3;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
-    return std::string(text.substr(0, cut)) + "...";
-}
-
 Result<nlohmann::json> parseJsonText(const std::string& text, const std::string& source,
                                      const JsonLimits& limits) {
     ParsePath path;

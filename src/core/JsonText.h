@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/FirstLine.h"
 #include "flarekit/Result.h"
 
 namespace flarekit {
@@ -29,8 +30,6 @@ Result<nlohmann::json> parseJsonText(const std::string& text, const std::string&
 //! The value as JSON text, cut to 60 characters: what an error message shows after "got".
 //! A long value is never dumped whole: the dump stops once it passes 60 characters.
 std::string jsonExcerpt(const nlohmann::json& value);
-//! `text` cut to `max` characters, the last three "...": every echoed key or token.
-std::string excerpt(std::string_view text, std::size_t max);
 //! The whole file, or an Io error naming it; files over maxBytes are refused unread.
 Result<std::string> readTextFile(const std::string& path,
                                  std::uintmax_t maxBytes = std::uintmax_t(16) << 20);

@@ -1,5 +1,6 @@
 #include "Common.h"
 
+#include "core/FirstLine.h"
 #include "core/Interrupt.h"
 #include "core/SafeWrite.h"
 #include "flarekit/Limits.h"
@@ -46,18 +47,13 @@ int finishProcess(int exitCode) {
 }
 
 std::string excerptLine(const std::string& text, std::size_t max) {
-    std::string line = text.substr(0, text.find('\n'));
-    if (line.size() > max) line = line.substr(0, max - 3) + "...";
-    return line;
+    return excerpt(std::string_view(text).substr(0, text.find('\n')), max);
 }
 
 std::string cappedLine(const std::string& message) {
     // 1,000 characters: the longest real message (a list of every known key) fits; a hostile
     // input that echoes megabytes of itself does not reach the terminal.
-    constexpr std::size_t kMaxLine = 1000;
-    std::string line = message.substr(0, message.find('\n'));
-    if (line.size() > kMaxLine) line = line.substr(0, kMaxLine - 3) + "...";
-    return line;
+    return excerptLine(message, 1000);
 }
 
 void warn(const std::string& message) {

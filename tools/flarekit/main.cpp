@@ -25,7 +25,7 @@ flarekit::Status applyLimits(const std::string& maxMemory, double maxPixelsPerBy
         if (!bytes) {
             return flarekit::invalidInput(source +
                                           ": expected a size such as 4G, 512M or 8GiB, got '" +
-                                          flarekit::cli::cappedLine(memory).substr(0, 60) + "'");
+                                          flarekit::cli::excerptLine(memory, 60) + "'");
         }
         limits.maxMemoryBytes = *bytes;
     }
