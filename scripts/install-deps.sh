@@ -7,7 +7,9 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   # the formatting check of ./setup.sh test (.clang-format)
   clang-format
-  # image I/O (EXR, PNG, JPEG, TIFF) and its command-line tools
+  # image I/O: EXR, PNG, JPEG and TIFF through their own libraries (fast start-up), every other
+  # format through OpenImageIO, loaded only when needed; oiiotool for the tests and benches
+  libopenexr-dev libimath-dev libpng-dev libjpeg62-turbo-dev libtiff-dev
   libopenimageio-dev openimageio-tools
   # JSON presets and scenes, CLI parsing, threads
   nlohmann-json3-dev libcli11-dev libtbb-dev

@@ -1,4 +1,5 @@
-// Image files through OpenImageIO: EXR, PNG, JPEG, TIFF and every other format OIIO reads.
+// Image files: EXR, PNG, JPEG and TIFF through their own libraries, every other format
+// OpenImageIO reads or writes through its module (loaded on first use).
 #pragma once
 
 #include <string>
@@ -26,8 +27,8 @@ struct JobMemory {
     std::string detail;  //!< how the estimate is made, for the message ("apply: ...")
 };
 
-//! Reads any OIIO-supported file. Sizes, the pixels-per-byte ratio and the job's memory are
-//! checked before pixels are allocated.
+//! Reads any file flarekit's codecs or OpenImageIO know, by its first bytes. Sizes, the
+//! pixels-per-byte ratio and the job's memory are checked before pixels are allocated.
 Result<LoadedImage> readImage(const std::string& path, const JobMemory& job = {});
 
 enum class SampleFormat { Auto, U8, U16, Half, Float };
@@ -56,6 +57,11 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
 Result<Image8> readImage8(const std::string& path, const JobMemory& job = {4, 0, {}});
 //! Writes an 8-bit image exactly (no colour conversion), atomically.
 Status writeImage8(const std::string& path, const Image8& image);
+
+//! zlib level of every PNG written from now on, 0 (store) to 9 (smallest); 1 by default
+//! (fast: docs/formats.md has the size trade-off). Clamped to [0, 9].
+void setPngCompression(int level);
+int pngCompression();
 
 //! Fails with InvalidInput when the directory `path` would be written into does not exist.
 Status checkOutputPath(const std::string& path);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <vector>
 
 namespace flarekit {
 
@@ -17,6 +19,72 @@ float linearToSrgb(float linear) {
     return 1.055f * std::pow(linear, 1.f / 2.4f) - 0.055f;
 }
 
+namespace {
+
+//! The decode of encoded value e, in double: the code boundaries are computed from it.
+double decodeDouble(double e) {
+    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+
+//! Correct rounding of an encode to `levels` codes without pow: code k covers the linear values
+//! from the decode of (k - 0.5)/levels up to that of (k + 0.5)/levels, so the code of x is the
+//! number of those boundaries at or below x. A first guess comes from a table indexed by the
+//! float's exponent and top mantissa bits (`kBucketBits` of them): `start[b]` is the code at the
+//! bottom of bucket b, and the answer lies between it and the next bucket's code.
+template <typename Code, int kLevels, int kMinExponent, int kBucketBits>
+struct EncodeTable {
+    static constexpr int kShift = 23 - kBucketBits;
+    //! Bits of 2^kMinExponent: every value below it is below the first boundary (code 0).
+    static constexpr std::uint32_t kFirstBits = std::uint32_t(127 + kMinExponent) << 23;
+    static constexpr std::size_t kBuckets = std::size_t(-kMinExponent) << kBucketBits;
+
+    std::vector<float> bounds;  //!< kLevels boundaries, then +inf
+    std::vector<Code> start;    //!< kBuckets + 1 first codes
+
+    EncodeTable() : bounds(kLevels + 1), start(kBuckets + 1) {
+        for (int k = 0; k < kLevels; ++k)
+            bounds[std::size_t(k)] = float(decodeDouble((k + 0.5) / kLevels));
+        bounds[kLevels] = INFINITY;
+        for (std::size_t b = 0; b <= kBuckets; ++b) {
+            const float lo = std::bit_cast<float>(kFirstBits + std::uint32_t(b << kShift));
+            start[b] =
+                Code(std::upper_bound(bounds.begin(), bounds.end() - 1, lo) - bounds.begin());
+        }
+    }
+
+    Code encode(float linear) const {
+        if (!(linear >= std::bit_cast<float>(kFirstBits))) return 0;  // also NaN
+        if (linear >= 1.f) return Code(kLevels);
+        const std::size_t b = (std::bit_cast<std::uint32_t>(linear) - kFirstBits) >> kShift;
+        Code code = start[b];
+        while (linear >= bounds[code]) ++code;  // at most a few steps: see the bucket sizes
+        return code;
+    }
+};
+
+// 8-bit: with 8 mantissa bits a bucket is narrower than the code spacing everywhere in [0, 1]
+// (0.002 wide below 1, where codes are 0.009 apart; 3e-4 apart on the linear segment), so the
+// loop runs at most once. Values below 2^-13 (1.2e-4) are under the first boundary (1.5e-4).
+using Encode8 = EncodeTable<std::uint8_t, 255, -13, 8>;
+// 16-bit: the first boundary is 5.9e-7, above 2^-21; 10 mantissa bits keep a bucket within
+// about 14 codes near 1.0.
+using Encode16 = EncodeTable<std::uint16_t, 65535, -21, 10>;
+
+float finiteOr0(float v) {
+    return std::isfinite(v) ? v : 0.f;
+}
+
+const Encode8& encode8() {
+    static const Encode8 table;
+    return table;
+}
+const Encode16& encode16() {
+    static const Encode16 table;
+    return table;
+}
+
+}  // namespace
+
 float srgb8ToLinear(std::uint8_t code) {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
@@ -26,22 +94,37 @@ float srgb8ToLinear(std::uint8_t code) {
     return table[code];
 }
 
-std::uint8_t linearToSrgb8(float linear) {
-    // Rounding to the nearest code without pow: code k covers linear values from the decode of
-    // (k - 0.5)/255 up to that of (k + 0.5)/255, so a binary search over the 255 boundaries
-    // (computed once, in double) gives the correctly rounded code in 8 comparisons.
-    static const std::array<float, 255> bounds = [] {
-        std::array<float, 255> b{};
-        for (int k = 0; k < 255; ++k) {
-            const double e = (k + 0.5) / 255.0;
-            b[std::size_t(k)] =
-                float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
-        }
-        return b;
+float srgb16ToLinear(std::uint16_t code) {
+    static const std::vector<float> table = [] {
+        std::vector<float> t(65536);
+        for (std::size_t i = 0; i < t.size(); ++i) t[i] = srgbToLinear(float(i) / 65535.f);
+        return t;
     }();
-    if (!(linear > 0.f)) return 0;  // also maps NaN to 0
-    if (linear >= 1.f) return 255;
-    return std::uint8_t(std::upper_bound(bounds.begin(), bounds.end(), linear) - bounds.begin());
+    return table[code];
+}
+
+std::uint8_t linearToSrgb8(float linear) {
+    return encode8().encode(linear);
+}
+
+std::uint16_t linearToSrgb16(float linear) {
+    return encode16().encode(linear);
+}
+
+void encodeSrgb8(const float* rgba, std::size_t pixels, int channels, std::uint8_t* out) {
+    const Encode8& table = encode8();
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
+        for (int c = 0; c < std::min(channels, 3); ++c) out[c] = table.encode(finiteOr0(rgba[c]));
+        if (channels == 4) out[3] = alphaTo8(finiteOr0(rgba[3]));
+    }
+}
+
+void encodeSrgb16(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
+    const Encode16& table = encode16();
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
+        for (int c = 0; c < std::min(channels, 3); ++c) out[c] = table.encode(finiteOr0(rgba[c]));
+        if (channels == 4) out[3] = alphaTo16(finiteOr0(rgba[3]));
+    }
 }
 
 }  // namespace flarekit

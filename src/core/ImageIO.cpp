@@ -1,13 +1,13 @@
-// Image files through OpenImageIO. Sizes are validated from the header before any pixel
+// Image files. PNG, JPEG, TIFF and EXR go through their own libraries (core/codecs), every
+// other format through the OpenImageIO module, loaded only when such a file is met. Sizes,
+// the pixels-per-byte ratio and the job's memory are checked from the header before any pixel
 // memory is allocated, so a corrupt or hostile header cannot make flarekit allocate gigabytes.
 #include "flarekit/ImageIO.h"
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -15,14 +15,20 @@
 #include "core/FirstLine.h"
 #include "core/Parallel.h"
 #include "core/SafeWrite.h"
+#include "core/codecs/Codecs.h"
+#include "core/codecs/OiioModule.h"
 #include "flarekit/Color.h"
 #include "flarekit/Limits.h"
 
 namespace flarekit {
 
 namespace fs = std::filesystem;
+using codec::Format;
+using codec::SampleType;
 
 namespace {
+
+std::atomic<int> g_pngCompression{codec::EncodeOptions{}.pngCompression};
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -80,13 +86,23 @@ Status checkExrAttributeSizes(const std::string& path) {
     return Ok{};
 }
 
-//! A header that claims far more pixels than its file could hold, or a job over the memory
-//! budget: refused before anything is decoded.
-Status checkClaimedSize(const std::string& path, const OIIO::ImageSpec& spec,
-                        const JobMemory& job) {
+//! Sizes, then a header that claims far more pixels than its file could hold, then a job over
+//! the memory budget: refused before anything is decoded.
+Status checkHeader(const std::string& path, const codec::Header& header, const JobMemory& job) {
+    if (header.width < 1 || header.height < 1 || header.width > kMaxImageSide ||
+        header.height > kMaxImageSide) {
+        return invalidInput(path + ": image size " + std::to_string(header.width) + "x" +
+                            std::to_string(header.height) + ": expected width and height in [1, " +
+                            std::to_string(kMaxImageSide) + "]");
+    }
+    if (std::size_t(header.width) * std::size_t(header.height) > kMaxImagePixels) {
+        return invalidInput(path + ": image size " + std::to_string(header.width) + "x" +
+                            std::to_string(header.height) + ": expected at most " +
+                            std::to_string(kMaxImagePixels) + " pixels");
+    }
+    if (header.channels < 1) return invalidInput(path + ": image has no channels");
     const ResourceLimits limits = resourceLimits();
-    const double pixels =
-        double(spec.width) * double(spec.height) * double(std::max(1, spec.depth));
+    const double pixels = double(header.width) * double(header.height);
     std::error_code ec;
     const auto fileBytes = fs::file_size(path, ec);
     if (!ec && pixels >= double(limits.ratioCheckFromPixels) &&
@@ -94,59 +110,57 @@ Status checkClaimedSize(const std::string& path, const OIIO::ImageSpec& spec,
         char ratio[32];
         std::snprintf(ratio, sizeof ratio, "%.0f",
                       pixels / double(std::max<std::uintmax_t>(fileBytes, 1)));
-        return invalidInput(path + ": claims " + std::to_string(spec.width) + "x" +
-                            std::to_string(spec.height) + " pixels in " +
+        return invalidInput(path + ": claims " + std::to_string(header.width) + "x" +
+                            std::to_string(header.height) + " pixels in " +
                             std::to_string(fileBytes) + " bytes (" + ratio +
                             " pixels per byte; a decompression bomb or a truncated file): expected "
                             "at most " +
                             std::to_string(std::uint64_t(limits.maxPixelsPerFileByte)) +
                             " (raise it with --max-pixels-per-byte)");
     }
-    const double decodeBytes = pixels * double(std::max(1, spec.nchannels)) * 4.0;
+    const double decodeBytes =
+        pixels * double(std::min(header.channels, 4)) * double(codec::sampleBytes(header.decodeAs));
     const double need = job.fixedBytes + pixels * job.bytesPerPixel + decodeBytes;
     return checkMemory(path, need,
-                       std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                       std::to_string(header.width) + "x" + std::to_string(header.height) +
                            (job.detail.empty() ? "" : ", " + job.detail));
 }
 
-Result<std::unique_ptr<OIIO::ImageInput>> openInput(const std::string& path, const JobMemory& job) {
+Status checkReadable(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) return ioError(path + ": cannot read: no such file");
     if (fs::is_directory(path, ec)) return ioError(path + ": cannot read: is a directory");
-    if (Status st = checkExrAttributeSizes(path); !st) return st.error();
-    // Straight (unassociated) alpha in memory: without this hint OIIO's PNG reader multiplies
-    // colour by alpha, which would change the bytes `flarekit blend` must use exactly.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) {
-        std::string why = firstLine(OIIO::geterror());
-        return invalidInput(path +
-                            ": cannot read image: " + (why.empty() ? "unknown format" : why));
+    return checkExrAttributeSizes(path);
+}
+
+const codec::OiioModule* moduleFor(const std::string& what, Error* error) {
+    std::string why;
+    const codec::OiioModule* m = codec::oiioModule(&why);
+    if (!m && error) {
+        *error = internalError(what +
+                               " needs flarekit's OpenImageIO module, which could not be "
+                               "loaded: " +
+                               excerpt(why, 300));
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide ||
-        spec.height > kMaxImageSide) {
-        return invalidInput(path + ": image size " + std::to_string(spec.width) + "x" +
-                            std::to_string(spec.height) + ": expected width and height in [1, " +
-                            std::to_string(kMaxImageSide) + "]");
-    }
-    if (std::size_t(spec.width) * std::size_t(spec.height) > kMaxImagePixels) {
-        return invalidInput(path + ": image size " + std::to_string(spec.width) + "x" +
-                            std::to_string(spec.height) + ": expected at most " +
-                            std::to_string(kMaxImagePixels) + " pixels");
-    }
-    if (spec.nchannels < 1) return invalidInput(path + ": image has no channels");
-    if (Status st = checkClaimedSize(path, spec, job); !st) return st.error();
-    // OIIO reads a movie as one subimage per frame; taking the first one silently would hide
-    // that the rest were ignored.
-    if (std::string(in->format_name()).rfind("FFmpeg", 0) == 0) {  // OIIO's "FFmpeg movie"
-        return invalidInput(path +
-                            ": is a video; flarekit reads still images (take a frame out with "
-                            "`ffmpeg -i " +
-                            path + " -frames:v 1 frame.png`)");
-    }
-    return in;
+    return m;
+}
+
+bool leftToOiio(const Error& e) {
+    return e.message == codec::kUnsupportedLayout;
+}
+
+//! The file's samples through the codec its first bytes name, or through OpenImageIO.
+Result<codec::Raw> readRaw(const std::string& path, Format format,
+                           const codec::HeaderCheck& check) {
+    Result<codec::Raw> raw = invalidInput(codec::kUnsupportedLayout);
+    if (format == Format::Png) raw = codec::readPng(path, check);
+    if (format == Format::Jpeg) raw = codec::readJpeg(path, check);
+    if (format == Format::Tiff) raw = codec::readTiff(path, check);
+    if (raw.ok() || !leftToOiio(raw.error())) return raw;
+    Error error;
+    const codec::OiioModule* m = moduleFor(path + ": reading this file", &error);
+    if (!m) return error;
+    return m->read(path, check);
 }
 
 //! The image as it is meant to be seen: EXIF orientation (1-8, as a phone stores a portrait
@@ -190,112 +204,215 @@ Image reoriented(const Image& src, int orientation) {
     return dst;
 }
 
-//! fn(i) for every i in [0, count), spread over the cores in chunks.
+//! fn(i0, i1) over [0, count) in chunks spread over the cores.
 template <typename Fn>
-void forEachSample(std::size_t count, Fn fn) {
-    constexpr std::size_t kChunk = 1 << 16;
+void forEachChunk(std::size_t count, Fn fn) {
+    constexpr std::size_t kChunk = 1 << 15;
     parallelFor(0, int((count + kChunk - 1) / kChunk), 1, [&](int c0, int c1) {
-        const std::size_t end = std::min(count, std::size_t(c1) * kChunk);
-        for (std::size_t i = std::size_t(c0) * kChunk; i < end; ++i) fn(i);
+        fn(std::size_t(c0) * kChunk, std::min(count, std::size_t(c1) * kChunk));
     });
 }
 
-bool isFloatType(OIIO::TypeDesc type) {
-    return type.basetype == OIIO::TypeDesc::HALF || type.basetype == OIIO::TypeDesc::FLOAT ||
-           type.basetype == OIIO::TypeDesc::DOUBLE;
-}
-
-bool declaredLinear(const OIIO::ImageSpec& spec) {
-    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
-    std::transform(cs.begin(), cs.end(), cs.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return cs == "linear" || cs == "lin_srgb" || cs == "scene_linear";
-}
-
-}  // namespace
-
-Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
-    auto opened = openInput(path, job);
-    if (!opened) return opened.error();
-    auto& in = opened.value();
-    const OIIO::ImageSpec spec = in->spec();
-    const int keep = std::min(spec.nchannels, 4);
-    LoadedImage out;
-    out.fileChannels = spec.nchannels;
-    out.droppedChannels = spec.nchannels - keep;
-    out.wasFloat = isFloatType(spec.format);
-    out.hasAlpha = keep == 2 || keep == 4;
-    const bool decodeSrgb = !out.wasFloat && !declaredLinear(spec);
-    // 8-bit sRGB files decode exactly through a 256-entry table; everything else as float.
-    const bool bytes = spec.format == OIIO::TypeDesc::UINT8 && decodeSrgb;
-    const std::size_t samples =
-        std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(keep);
-    std::vector<std::uint8_t> raw8(bytes ? samples : 0);
-    std::vector<float> rawF(bytes ? 0 : samples);
-    const bool read = bytes ? in->read_image(0, 0, 0, keep, OIIO::TypeDesc::UINT8, raw8.data())
-                            : in->read_image(0, 0, 0, keep, OIIO::TypeDesc::FLOAT, rawF.data());
-    if (!read) return invalidInput(path + ": cannot decode image: " + firstLine(in->geterror()));
-    in->close();
-
-    out.image = Image(spec.width, spec.height);
+//! Decoded samples to linear float RGBA: integer colour through the sRGB tables (unless the
+//! file says linear), floats as they are, non-finite values replaced by 0 and counted.
+std::size_t toLinearRgba(const codec::Raw& raw, Image& image) {
+    const int keep = raw.channels;
+    const bool alpha = keep == 2 || keep == 4;
+    const bool srgb = !raw.header.isFloat && !raw.header.declaredLinear;
+    const auto* u8 = raw.bytes.data();
+    const auto* u16 = reinterpret_cast<const std::uint16_t*>(raw.bytes.data());
+    const auto* f32 = reinterpret_cast<const float*>(raw.bytes.data());
     std::atomic<std::size_t> nonFinite{0};
-    parallelFor(0, spec.height, 16, [&](int y0, int y1) {
+    forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
         std::size_t bad = 0;
-        auto sample = [&](std::size_t i) -> float {
-            if (bytes) return raw8[i] * (1.f / 255.f);
-            const float v = rawF[i];
-            if (std::isfinite(v)) return v;
-            ++bad;
-            return 0.f;
-        };
-        auto colour = [&](std::size_t i) {
-            if (bytes) return srgb8ToLinear(raw8[i]);
-            const float v = sample(i);
-            return decodeSrgb ? srgbToLinear(v) : v;
-        };
-        for (std::size_t p = std::size_t(y0) * std::size_t(spec.width);
-             p < std::size_t(y1) * std::size_t(spec.width); ++p) {
-            const std::size_t s = p * std::size_t(keep);
-            float* d = out.image.data() + p * 4;
-            if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
-                d[0] = d[1] = d[2] = colour(s);
-            } else {
-                d[0] = colour(s);
-                d[1] = colour(s + 1);
-                d[2] = colour(s + 2);
+        auto value = [&](std::size_t i, bool colour) -> float {
+            switch (raw.header.decodeAs) {
+                case SampleType::U8:
+                    return colour && srgb ? srgb8ToLinear(u8[i]) : float(u8[i]) * (1.f / 255.f);
+                case SampleType::U16:
+                    return colour && srgb ? srgb16ToLinear(u16[i])
+                                          : float(u16[i]) * (1.f / 65535.f);
+                case SampleType::F32:
+                    break;
             }
-            d[3] = out.hasAlpha ? sample(s + std::size_t(keep) - 1) : 1.f;
+            const float v = f32[i];
+            if (!std::isfinite(v)) {
+                ++bad;
+                return 0.f;
+            }
+            return colour && srgb ? srgbToLinear(v) : v;
+        };
+        for (std::size_t p = p0; p < p1; ++p) {
+            const std::size_t s = p * std::size_t(keep);
+            float* d = image.data() + p * 4;
+            if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
+                d[0] = d[1] = d[2] = value(s, true);
+            } else {
+                d[0] = value(s, true);
+                d[1] = value(s + 1, true);
+                d[2] = value(s + 2, true);
+            }
+            d[3] = alpha ? value(s + std::size_t(keep) - 1, false) : 1.f;
         }
         nonFinite += bad;
     });
-    out.nonFinite = nonFinite;
-    out.image = reoriented(out.image, spec.get_int_attribute("Orientation", 1));
-    return out;
+    return nonFinite;
 }
 
-namespace {
-//! The OIIO writer for path's extension, or the error naming the unsupported extension. Only
-//! writers that can encode into memory are used: the bytes are then committed by
-//! writeFileSafely, which checks every write (OIIO's file writers do not all report a full disk).
-Result<std::unique_ptr<OIIO::ImageOutput>> createOutput(const std::string& path) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out || !out->supports("ioproxy")) {
-        return invalidInput(
-            path + ": unsupported output format '" + lowerExtension(path) +
-            "': expected .png, .jpg, .tif, .exr, .hdr, .bmp, .tga, .ppm, .webp or .dpx");
-    }
-    return out;
+//! After an EXR read into RGBA: grey copied to G and B, non-finite values replaced and counted.
+std::size_t finishExr(Image& image, bool grey) {
+    std::atomic<std::size_t> nonFinite{0};
+    forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
+        std::size_t bad = 0;
+        for (float* d = image.data() + p0 * 4; d < image.data() + p1 * 4; d += 4) {
+            if (grey) d[1] = d[2] = d[0];
+            for (int c = 0; c < 4; ++c) {
+                if (!std::isfinite(d[c])) {
+                    d[c] = 0.f;
+                    ++bad;
+                }
+            }
+        }
+        nonFinite += bad;
+    });
+    return nonFinite;
 }
+
 }  // namespace
 
-Status checkOutputPath(const std::string& path) {
-    if (Status s = checkWritablePath(path); !s) return s;
-    auto out = createOutput(path);
-    if (!out) return out.error();
-    return Ok{};
+void setPngCompression(int level) {
+    g_pngCompression = std::clamp(level, 0, 9);
+}
+int pngCompression() {
+    return g_pngCompression;
+}
+
+Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
+    if (Status s = checkReadable(path); !s) return s.error();
+    const codec::HeaderCheck check = [&](const codec::Header& h) {
+        return checkHeader(path, h, job);
+    };
+    const Format format = codec::sniffFormat(path);
+    LoadedImage out;
+    if (format == Format::Exr) {
+        auto exr = codec::readExr(path, check);
+        if (exr) {
+            out.fileChannels = exr->header.channels;
+            out.hasAlpha = exr->hasAlpha;
+            out.wasFloat = true;
+            const int kept = (exr->grey ? 1 : 3) + (exr->hasAlpha ? 1 : 0);
+            out.droppedChannels = exr->header.channels - kept;
+            out.nonFinite = finishExr(exr->image, exr->grey);
+            out.image = std::move(exr->image);
+            return out;
+        }
+        if (!leftToOiio(exr.error())) return exr.error();
+    }
+    auto raw = readRaw(path, format, check);
+    if (!raw) return raw.error();
+    out.fileChannels = raw->header.channels;
+    out.droppedChannels = raw->header.channels - raw->channels;
+    out.wasFloat = raw->header.isFloat;
+    out.hasAlpha = raw->channels == 2 || raw->channels == 4;
+    out.image = Image(raw->header.width, raw->header.height);
+    out.nonFinite = toLinearRgba(*raw, out.image);
+    raw->bytes = {};  // the decode buffer goes before reorienting copies the image
+    out.image = reoriented(out.image, raw->orientation);
+    return out;
+}
+
+Result<Image8> readImage8(const std::string& path, const JobMemory& job) {
+    if (Status s = checkReadable(path); !s) return s.error();
+    const codec::HeaderCheck check = [&](const codec::Header& h) -> Status {
+        if (h.decodeAs != SampleType::U8) {
+            return invalidInput(path + ": expected an 8-bit image, got " +
+                                (h.isFloat                       ? "float"
+                                 : h.decodeAs == SampleType::U16 ? "uint16"
+                                                                 : "wider") +
+                                " samples");
+        }
+        if (h.channels > 4) {
+            return invalidInput(path + ": expected 1 to 4 channels, got " +
+                                std::to_string(h.channels));
+        }
+        return checkHeader(path, h, job);
+    };
+    Format format = codec::sniffFormat(path);
+    if (format == Format::Exr) {  // always float: refused by the check without decoding
+        codec::Header h;
+        h.width = h.height = h.channels = 1;
+        h.isFloat = true;
+        h.decodeAs = SampleType::F32;
+        if (Status s = check(h); !s) return s.error();
+    }
+    auto raw = readRaw(path, format, check);
+    if (!raw) return raw.error();
+    Image8 out;
+    out.width = raw->header.width;
+    out.height = raw->header.height;
+    out.channels = raw->channels;
+    out.pixels = std::move(raw->bytes);
+    return out;
 }
 
 namespace {
+
+struct Writer {
+    Format format = Format::Other;
+    bool alpha = true;  //!< the format holds an alpha channel
+    const codec::OiioModule* module = nullptr;
+};
+
+//! The writer for path's extension, or the error naming the unsupported extension. Formats
+//! OpenImageIO writes are used only where it can encode into memory: the bytes are then
+//! committed by writeFileSafely, which checks every write.
+Result<Writer> writerFor(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    Writer w;
+    w.format = codec::formatForExtension(ext);
+    if (w.format != Format::Other) {
+        w.alpha = w.format != Format::Jpeg;
+        return w;
+    }
+    Error error;
+    w.module = moduleFor(path + ": writing '" + ext + "'", &error);
+    if (!w.module) return error;
+    if (!w.module->canWrite(path, &w.alpha)) {
+        return invalidInput(
+            path + ": unsupported output format '" + ext +
+            "': expected .png, .jpg, .tif, .exr, .hdr, .bmp, .tga, .ppm, .webp or .dpx");
+    }
+    return w;
+}
+
+Status encodeAndWrite(const std::string& path, const Writer& w, const codec::Samples& s) {
+    codec::EncodeOptions options;
+    options.pngCompression = g_pngCompression;
+    Result<std::vector<unsigned char>> bytes = internalError("no encoder");
+    switch (w.format) {
+        case Format::Png:
+            bytes = codec::encodePng(s, options);
+            break;
+        case Format::Jpeg:
+            bytes = codec::encodeJpeg(s, options);
+            break;
+        case Format::Tiff:
+            bytes = codec::encodeTiff(s, options);
+            break;
+        case Format::Exr:
+            bytes = codec::encodeExr(s, options);
+            break;
+        case Format::Other:
+            bytes = w.module->encode(path, s);
+            break;
+    }
+    if (!bytes) {
+        Error e = bytes.error();
+        if (e.message.rfind(path, 0) != 0) e.message = path + ": " + e.message;
+        return e;
+    }
+    return writeFileSafely(path, {reinterpret_cast<const char*>(bytes->data()), bytes->size()});
+}
 
 SampleFormat resolveFormat(const std::string& path, SampleFormat requested) {
     if (requested != SampleFormat::Auto) return requested;
@@ -306,20 +423,24 @@ SampleFormat resolveFormat(const std::string& path, SampleFormat requested) {
     return SampleFormat::U8;
 }
 
-//! Encodes through a writer from createOutput (chosen by the final name's extension) into
-//! memory, then commits the bytes with writeFileSafely.
-Status writeWithOiio(OIIO::ImageOutput& out, const std::string& path, const OIIO::ImageSpec& spec,
-                     OIIO::TypeDesc dataType, const void* data) {
-    std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput memory(bytes);
-    if (!out.set_ioproxy(&memory) || !out.open(path, spec) || !out.write_image(dataType, data) ||
-        !out.close()) {
-        return ioError(path + ": cannot encode: " + firstLine(out.geterror()));
-    }
-    return writeFileSafely(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+bool allFinite(const Image& image) {
+    std::atomic<bool> finite{true};
+    forEachChunk(image.pixelCount() * 4, [&](std::size_t i0, std::size_t i1) {
+        bool ok = true;
+        for (std::size_t i = i0; i < i1; ++i) ok &= std::isfinite(image.data()[i]);
+        if (!ok) finite = false;
+    });
+    return finite;
 }
 
 }  // namespace
+
+Status checkOutputPath(const std::string& path) {
+    if (Status s = checkWritablePath(path); !s) return s;
+    auto w = writerFor(path);
+    if (!w) return w.error();
+    return Ok{};
+}
 
 SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested) {
     return resolveFormat(path, requested);
@@ -331,11 +452,10 @@ bool holdsFloatSamples(const std::string& path) {
 }
 
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
-    if (Status s = checkOutputPath(path); !s) return s;
-    auto out = createOutput(path);
-    if (!out) return out.error();
-    OIIO::ImageOutput& writer = **out;
-    const bool alpha = options.alpha && writer.supports("alpha");
+    if (Status s = checkWritablePath(path); !s) return s;
+    auto writer = writerFor(path);
+    if (!writer) return writer.error();
+    const bool alpha = options.alpha && writer->alpha;
     const int channels = alpha ? 4 : 3;
     const SampleFormat format = resolveFormat(path, options.format);
     const bool isFloat = isFloatFormat(format);
@@ -344,86 +464,83 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
                             ": half/float samples need a float format (.exr, .tif, .hdr), not '" +
                             lowerExtension(path) + "'");
     }
-
-    OIIO::TypeDesc fileType = format == SampleFormat::U8     ? OIIO::TypeDesc::UINT8
-                              : format == SampleFormat::U16  ? OIIO::TypeDesc::UINT16
-                              : format == SampleFormat::Half ? OIIO::TypeDesc::HALF
-                                                             : OIIO::TypeDesc::FLOAT;
-    OIIO::ImageSpec spec(image.width(), image.height(), channels, fileType);
-    if (alpha) {
-        spec.alpha_channel = 3;
-        spec.attribute("oiio:UnassociatedAlpha", 1);  // written as held: no division by alpha
-    }
-    spec.attribute("oiio:ColorSpace", isFloat ? "Linear" : "sRGB");
-    spec.attribute("Software", "flarekit");
-
-    // Convert to the file's encoding here so the code values are flarekit's, not a plugin's.
-    const std::size_t count = image.pixelCount() * std::size_t(channels);
-    const float* src = image.data();
-    auto sample = [&](std::size_t i) {
-        const std::size_t pixel = i / std::size_t(channels), c = i % std::size_t(channels);
-        const float v = src[pixel * 4 + c];
-        return std::isfinite(v) ? v : 0.f;
-    };
-    auto encode = [&](std::size_t i) {  // sRGB for colour, linear alpha, in [0, 1]
-        const float v = std::clamp(sample(i), 0.f, 1.f);
-        return i % std::size_t(channels) < 3 ? linearToSrgb(v) : v;
-    };
+    codec::Samples s;
+    s.width = image.width();
+    s.height = image.height();
+    s.channels = channels;
+    s.srgb = !isFloat;
+    const std::size_t pixels = image.pixelCount();
+    // Encoded here, so the code values are flarekit's, not a library's.
     if (format == SampleFormat::U8) {
-        std::vector<std::uint8_t> bytes(count);
-        forEachSample(count, [&](std::size_t i) {
-            bytes[i] = i % std::size_t(channels) < 3 ? linearToSrgb8(sample(i))
-                                                     : std::uint8_t(std::lround(encode(i) * 255.f));
+        std::vector<std::uint8_t> codes(pixels * std::size_t(channels));
+        forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
+            encodeSrgb8(image.data() + p0 * 4, p1 - p0, channels,
+                        codes.data() + p0 * std::size_t(channels));
         });
-        return writeWithOiio(writer, path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+        s.type = SampleType::U8;
+        s.data = codes.data();
+        return encodeAndWrite(path, *writer, s);
     }
     if (format == SampleFormat::U16) {
-        std::vector<std::uint16_t> words(count);
-        forEachSample(count, [&](std::size_t i) {
-            words[i] = std::uint16_t(std::lround(encode(i) * 65535.f));
+        std::vector<std::uint16_t> codes(pixels * std::size_t(channels));
+        forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
+            encodeSrgb16(image.data() + p0 * 4, p1 - p0, channels,
+                         codes.data() + p0 * std::size_t(channels));
         });
-        return writeWithOiio(writer, path, spec, OIIO::TypeDesc::UINT16, words.data());
+        s.type = SampleType::U16;
+        s.data = codes.data();
+        return encodeAndWrite(path, *writer, s);
     }
-    std::vector<float> linear(count);
-    forEachSample(count, [&](std::size_t i) { linear[i] = sample(i); });
-    return writeWithOiio(writer, path, spec, OIIO::TypeDesc::FLOAT, linear.data());
-}
-
-Result<Image8> readImage8(const std::string& path, const JobMemory& job) {
-    auto opened = openInput(path, job);
-    if (!opened) return opened.error();
-    auto& in = opened.value();
-    const OIIO::ImageSpec spec = in->spec();
-    if (spec.format != OIIO::TypeDesc::UINT8) {
-        return invalidInput(path + ": expected an 8-bit image, got " +
-                            std::string(spec.format.c_str()) + " samples");
+    // Floats, linear, NaN and infinities as 0. EXR takes the image's own pixels (strided) when
+    // they are all finite, or half floats converted here; other writers take packed samples.
+    s.type = SampleType::F32;
+    s.half = format == SampleFormat::Half;
+    if (writer->format == Format::Exr && s.half) {
+        std::vector<std::uint16_t> halves(pixels * std::size_t(channels));
+        forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
+            codec::floatsToHalf(image.data() + p0 * 4, p1 - p0, channels,
+                                halves.data() + p0 * std::size_t(channels));
+        });
+        s.data = halves.data();
+        return encodeAndWrite(path, *writer, s);
     }
-    if (spec.nchannels > 4) {
-        return invalidInput(path + ": expected 1 to 4 channels, got " +
-                            std::to_string(spec.nchannels));
+    if (writer->format == Format::Exr && allFinite(image)) {
+        s.data = image.data();
+        s.pixelStride = 4 * sizeof(float);
+        return encodeAndWrite(path, *writer, s);
     }
-    Image8 out;
-    out.width = spec.width;
-    out.height = spec.height;
-    out.channels = spec.nchannels;
-    out.pixels.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, out.pixels.data())) {
-        return invalidInput(path + ": cannot decode image: " + firstLine(in->geterror()));
-    }
-    return out;
+    std::vector<float> linear(pixels * std::size_t(channels));
+    forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
+        for (std::size_t p = p0; p < p1; ++p) {
+            for (int c = 0; c < channels; ++c) {
+                const float v = image.data()[p * 4 + std::size_t(c)];
+                linear[p * std::size_t(channels) + std::size_t(c)] = std::isfinite(v) ? v : 0.f;
+            }
+        }
+    });
+    s.data = linear.data();
+    return encodeAndWrite(path, *writer, s);
 }
 
 Status writeImage8(const std::string& path, const Image8& image) {
-    if (Status s = checkOutputPath(path); !s) return s;
-    auto out = createOutput(path);
-    if (!out) return out.error();
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
-    if (image.channels == 2 || image.channels == 4) {
-        spec.alpha_channel = image.channels - 1;
-        spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (Status s = checkWritablePath(path); !s) return s;
+    auto writer = writerFor(path);
+    if (!writer) return writer.error();
+    Writer w = *writer;
+    // JPEG holds no alpha: grey+alpha and RGBA go to OpenImageIO's writer, as before.
+    if (w.format == Format::Jpeg && (image.channels == 2 || image.channels == 4)) {
+        Error error;
+        w.module = moduleFor(path + ": writing JPEG with alpha", &error);
+        if (!w.module) return error;
+        w.format = Format::Other;
     }
-    spec.attribute("Software", "flarekit");
-    return writeWithOiio(**out, path, spec, OIIO::TypeDesc::UINT8, image.pixels.data());
+    codec::Samples s;
+    s.width = image.width;
+    s.height = image.height;
+    s.channels = image.channels;
+    s.type = SampleType::U8;
+    s.data = image.pixels.data();
+    return encodeAndWrite(path, w, s);
 }
 
 }  // namespace flarekit

@@ -1,12 +1,11 @@
 // The contact sheet of `flarekit elements`: every element of a preset in its own cell, with a
-// label drawn by OpenImageIO's text renderer.
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+// label drawn by OpenImageIO's text renderer (through its module, core/codecs/OiioModule.h).
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "core/codecs/OiioModule.h"
 #include "flarekit/Flare.h"
 #include "flarekit/Limits.h"
 
@@ -45,10 +44,9 @@ Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
     ContactSheet sheet;
     sheet.image = Image(columns * cellSize, rows * cellSize);
     sheet.image.fill({0.f, 0.f, 0.f, 1.f});
-    sheet.labelled = true;
 
-    OIIO::ImageSpec spec(sheet.image.width(), sheet.image.height(), 4, OIIO::TypeDesc::FLOAT);
-    OIIO::ImageBuf canvas(spec, sheet.image.data());  // wraps our pixels, no copy
+    const codec::OiioModule* text = codec::oiioModule();
+    sheet.labelled = text != nullptr;
     const int fontSize = std::max(10, cellSize / 16);
     const float labelColour[] = {0.8f, 0.8f, 0.8f, 1.f};
 
@@ -69,10 +67,10 @@ Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
                           &sheet.image.at(x0, y).r, std::size_t(x1 - x0));
         }
         if (sheet.labelled) {
-            sheet.labelled = OIIO::ImageBufAlgo::render_text(
-                canvas, cellX + fontSize / 2, cellY + fontSize + fontSize / 2,
-                label(std::size_t(i), e), fontSize, kFontFile, labelColour);
-            OIIO::geterror();  // clear a font error; `labelled` reports it
+            sheet.labelled =
+                text->renderText(sheet.image.data(), sheet.image.width(), sheet.image.height(),
+                                 cellX + fontSize / 2, cellY + fontSize + fontSize / 2,
+                                 label(std::size_t(i), e), fontSize, kFontFile, labelColour);
         }
     }
     return sheet;

@@ -1,0 +1,53 @@
+// The codecs flarekit runs itself (see Codec.h). Each read opens the file, reports the header
+// to `check`, and only then allocates and decodes; each encode returns the file's bytes, which
+// ImageIO commits with writeFileSafely.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "core/codecs/Codec.h"
+#include "flarekit/Image.h"
+
+namespace flarekit::codec {
+
+enum class Format { Png, Jpeg, Tiff, Exr, Other };
+
+//! The format of a file from its first bytes (not its name): a misnamed file still reads.
+Format sniffFormat(const std::string& path);
+//! The format an output name asks for, from its extension.
+Format formatForExtension(const std::string& lowerExtension);
+
+Result<Raw> readPng(const std::string& path, const HeaderCheck& check);
+Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check);
+//! TIFF files libtiff can hand over as plain interleaved samples (grey or RGB, with or without
+//! alpha, 8 or 16-bit integer or 32-bit float, strips or tiles); Unsupported for the rest
+//! (palette, CMYK, planar, YCbCr, bit depths below 8), which ImageIO sends to OpenImageIO.
+Result<Raw> readTiff(const std::string& path, const HeaderCheck& check);
+
+//! An EXR read straight into float RGBA (no intermediate buffer), on OpenEXR's thread pool:
+//! R, G, B (and A) or Y (and A) channels; Unsupported for other layouts (layers, chroma).
+struct ExrRead {
+    Header header;
+    Image image;
+    bool hasAlpha = false;
+    bool grey = false;
+};
+Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check);
+
+Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptions& options);
+Result<std::vector<unsigned char>> encodeJpeg(const Samples& s, const EncodeOptions& options);
+Result<std::vector<unsigned char>> encodeTiff(const Samples& s, const EncodeOptions& options);
+//! Float RGBA pixels to `channels` packed half floats (IEEE binary16 bits, round to nearest
+//! even, as Imath's half), NaN and infinities as 0.
+void floatsToHalf(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out);
+Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions& options);
+
+//! The message of a layout a native codec leaves to OpenImageIO; ImageIO checks for it.
+inline constexpr const char* kUnsupportedLayout = "layout left to OpenImageIO";
+
+//! The EXIF orientation (1-8) in a TIFF-structured EXIF block (as in a JPEG's APP1 segment
+//! after "Exif\0\0", or a PNG's eXIf chunk); 1 when absent or malformed.
+int exifOrientation(const unsigned char* tiff, std::size_t size);
+
+}  // namespace flarekit::codec

@@ -1,0 +1,162 @@
+// OpenEXR through its own C++ library, on its thread pool: reads land straight in flarekit's
+// float RGBA image (each channel a strided slice of it) and writes take their slices from it.
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfThreading.h>
+#include <half.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "core/FirstLine.h"
+#include "core/codecs/Codecs.h"
+
+namespace flarekit::codec {
+
+namespace {
+
+//! OpenEXR decodes and encodes line blocks in parallel when its global pool has threads; one
+//! per core, as OpenImageIO sets it.
+void startThreadPool() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency())));
+    });
+}
+
+}  // namespace
+
+Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
+    startThreadPool();
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        const Imath::Box2i window = header.dataWindow();
+        const Imf::ChannelList& channels = header.channels();
+        int count = 0;
+        bool subsampled = false;
+        for (auto c = channels.begin(); c != channels.end(); ++c) {
+            ++count;
+            subsampled |= c.channel().xSampling != 1 || c.channel().ySampling != 1;
+        }
+        const bool rgb = channels.findChannel("R") && channels.findChannel("G") &&
+                         channels.findChannel("B");
+        const bool grey = !rgb && channels.findChannel("Y") && !channels.findChannel("RY");
+        if ((!rgb && !grey) || subsampled) return invalidInput(kUnsupportedLayout);
+        ExrRead out;
+        out.header.width = int(std::min<long>(long(window.max.x) - window.min.x + 1, 1L << 30));
+        out.header.height = int(std::min<long>(long(window.max.y) - window.min.y + 1, 1L << 30));
+        out.header.channels = count;
+        out.header.isFloat = true;
+        out.header.decodeAs = SampleType::F32;
+        out.header.format = "openexr";
+        if (out.header.width < 1 || out.header.height < 1) {
+            return invalidInput(path + ": image size " + std::to_string(out.header.width) + "x" +
+                                std::to_string(out.header.height) +
+                                ": expected width and height in [1, 32768]");
+        }
+        if (Status s = check(out.header); !s) return s.error();
+        out.image = Image(out.header.width, out.header.height);
+        out.hasAlpha = channels.findChannel("A") != nullptr;
+        out.grey = grey;
+        // Slices into the RGBA floats; a channel the file lacks is filled (alpha with 1).
+        char* base = reinterpret_cast<char*>(out.image.data());
+        const std::size_t xStride = 4 * sizeof(float), yStride = xStride * std::size_t(out.header.width);
+        Imf::FrameBuffer frame;
+        auto slice = [&](const char* name, int offset, double fill) {
+            frame.insert(name, Imf::Slice::Make(Imf::FLOAT, base + offset * sizeof(float), window,
+                                                xStride, yStride, 1, 1, fill));
+        };
+        if (rgb) {
+            slice("R", 0, 0.0);
+            slice("G", 1, 0.0);
+            slice("B", 2, 0.0);
+        } else {
+            slice("Y", 0, 0.0);
+        }
+        slice("A", 3, 1.0);
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        return out;
+    } catch (const std::exception& e) {
+        return invalidInput(path + ": cannot decode image: " + excerpt(firstLine(e.what()), 200));
+    }
+}
+
+namespace {
+
+//! The encoded file in memory; OpenEXR seeks back to write its line offset table.
+class MemoryStream : public Imf::OStream {
+  public:
+    MemoryStream() : Imf::OStream("memory") {}
+    void write(const char c[], int n) override {
+        if (m_at + std::size_t(n) > m_bytes.size()) m_bytes.resize(m_at + std::size_t(n));
+        std::memcpy(m_bytes.data() + m_at, c, std::size_t(n));
+        m_at += std::size_t(n);
+    }
+    uint64_t tellp() override { return m_at; }
+    void seekp(uint64_t pos) override { m_at = std::size_t(pos); }
+    std::vector<unsigned char>& bytes() { return m_bytes; }
+
+  private:
+    std::vector<unsigned char> m_bytes;
+    std::size_t m_at = 0;
+};
+
+}  // namespace
+
+void floatsToHalf(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
+        for (int c = 0; c < channels; ++c) {
+            const float v = rgba[c];
+            out[c] = half(std::isfinite(v) ? v : 0.f).bits();
+        }
+    }
+}
+
+Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions&) {
+    startThreadPool();
+    if (s.type != SampleType::F32) return internalError("EXR takes float or half samples");
+    try {
+        // ZIP (16-line blocks): OpenImageIO's default, lossless and decoded in parallel.
+        Imf::Header header(s.width, s.height, 1.f, Imath::V2f(0, 0), 1.f, Imf::INCREASING_Y,
+                           Imf::ZIP_COMPRESSION);
+        header.insert("software", Imf::StringAttribute("flarekit"));
+        // OpenEXR's writer takes samples of the file's own type: half samples come packed
+        // (converted by the caller), floats straight from the image with its stride.
+        const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
+        const std::size_t sample = s.half ? sizeof(half) : sizeof(float);
+        const char* names[] = {"R", "G", "B", "A"};
+        const std::size_t xStride =
+            s.pixelStride ? s.pixelStride : std::size_t(s.channels) * sample;
+        const std::size_t yStride = xStride * std::size_t(s.width);
+        Imf::FrameBuffer frame;
+        for (int c = 0; c < s.channels; ++c) {
+            header.channels().insert(names[c], Imf::Channel(type));
+            frame.insert(names[c], Imf::Slice(type,
+                                              const_cast<char*>(static_cast<const char*>(s.data)) +
+                                                  sample * std::size_t(c),
+                                              xStride, yStride));
+        }
+        MemoryStream memory;
+        {
+            Imf::OutputFile file(memory, header);
+            file.setFrameBuffer(frame);
+            file.writePixels(s.height);
+        }
+        return std::move(memory.bytes());
+    } catch (const std::exception& e) {
+        return ioError(std::string("cannot encode EXR: ") + firstLine(e.what()));
+    }
+}
+
+}  // namespace flarekit::codec
