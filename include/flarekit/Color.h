@@ -13,6 +13,10 @@ float srgbToLinear(float encoded);
 float linearToSrgb(float linear);
 //! Exact decode of an 8-bit code value through a 256-entry table.
 float srgb8ToLinear(std::uint8_t code);
+//! The 256 and 65536 decoded values behind srgb8ToLinear and srgb16ToLinear, for loops that
+//! look up many codes.
+const float* srgb8DecodeTable();
+const float* srgb16DecodeTable();
 //! Exact decode of a 16-bit code value (code / 65535) through a 65536-entry table.
 float srgb16ToLinear(std::uint16_t code);
 //! Encode, clamp to [0, 1] and round to the nearest 8-bit code: correctly rounded (the code

@@ -85,22 +85,30 @@ const Encode16& encode16() {
 
 }  // namespace
 
-float srgb8ToLinear(std::uint8_t code) {
+const float* srgb8DecodeTable() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
         for (int i = 0; i < 256; ++i) t[std::size_t(i)] = srgbToLinear(float(i) / 255.f);
         return t;
     }();
-    return table[code];
+    return table.data();
 }
 
-float srgb16ToLinear(std::uint16_t code) {
+const float* srgb16DecodeTable() {
     static const std::vector<float> table = [] {
         std::vector<float> t(65536);
         for (std::size_t i = 0; i < t.size(); ++i) t[i] = srgbToLinear(float(i) / 65535.f);
         return t;
     }();
-    return table[code];
+    return table.data();
+}
+
+float srgb8ToLinear(std::uint8_t code) {
+    return srgb8DecodeTable()[code];
+}
+
+float srgb16ToLinear(std::uint16_t code) {
+    return srgb16DecodeTable()[code];
 }
 
 std::uint8_t linearToSrgb8(float linear) {

@@ -213,49 +213,74 @@ void forEachChunk(std::size_t count, Fn fn) {
     });
 }
 
+//! One pixel of `keep` samples (1 grey, 2 grey+alpha, 3 RGB, 4 RGBA) to RGBA, through
+//! `colour` and `alpha` (sample index to value).
+template <typename Colour, typename Alpha>
+inline void promote(float* d, std::size_t s, int keep, Colour colour, Alpha alpha) {
+    if (keep <= 2) {
+        d[0] = d[1] = d[2] = colour(s);
+    } else {
+        d[0] = colour(s);
+        d[1] = colour(s + 1);
+        d[2] = colour(s + 2);
+    }
+    d[3] = keep == 2 || keep == 4 ? alpha(s + std::size_t(keep) - 1) : 1.f;
+}
+
 //! Decoded samples to linear float RGBA: integer colour through the sRGB tables (unless the
 //! file says linear), floats as they are, non-finite values replaced by 0 and counted.
 std::size_t toLinearRgba(const codec::Raw& raw, Image& image) {
     const int keep = raw.channels;
-    const bool alpha = keep == 2 || keep == 4;
     const bool srgb = !raw.header.isFloat && !raw.header.declaredLinear;
-    const auto* u8 = raw.bytes.data();
-    const auto* u16 = reinterpret_cast<const std::uint16_t*>(raw.bytes.data());
-    const auto* f32 = reinterpret_cast<const float*>(raw.bytes.data());
     std::atomic<std::size_t> nonFinite{0};
-    forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
-        std::size_t bad = 0;
-        auto value = [&](std::size_t i, bool colour) -> float {
-            switch (raw.header.decodeAs) {
-                case SampleType::U8:
-                    return colour && srgb ? srgb8ToLinear(u8[i]) : float(u8[i]) * (1.f / 255.f);
-                case SampleType::U16:
-                    return colour && srgb ? srgb16ToLinear(u16[i])
-                                          : float(u16[i]) * (1.f / 65535.f);
-                case SampleType::F32:
-                    break;
+    auto run = [&](auto sample, auto colour, auto alpha) {
+        forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
+            for (std::size_t p = p0; p < p1; ++p) {
+                promote(
+                    image.data() + p * 4, p * std::size_t(keep), keep,
+                    [&](std::size_t i) { return colour(sample[i]); },
+                    [&](std::size_t i) { return alpha(sample[i]); });
             }
-            const float v = f32[i];
-            if (!std::isfinite(v)) {
+        });
+    };
+    if (raw.header.decodeAs == SampleType::U8) {
+        const float* table = srgb8DecodeTable();
+        auto linear = [](std::uint8_t v) { return float(v) * (1.f / 255.f); };
+        if (srgb) {
+            run(
+                raw.bytes.data(), [table](std::uint8_t v) { return table[v]; }, linear);
+        } else {
+            run(raw.bytes.data(), linear, linear);
+        }
+    } else if (raw.header.decodeAs == SampleType::U16) {
+        const float* table = srgb16DecodeTable();
+        const auto* u16 = reinterpret_cast<const std::uint16_t*>(raw.bytes.data());
+        auto linear = [](std::uint16_t v) { return float(v) * (1.f / 65535.f); };
+        if (srgb) {
+            run(
+                u16, [table](std::uint16_t v) { return table[v]; }, linear);
+        } else {
+            run(u16, linear, linear);
+        }
+    } else {
+        const auto* f32 = reinterpret_cast<const float*>(raw.bytes.data());
+        forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
+            std::size_t bad = 0;
+            auto finite = [&](std::size_t i) {
+                const float v = f32[i];
+                if (std::isfinite(v)) return v;
                 ++bad;
                 return 0.f;
-            }
-            return colour && srgb ? srgbToLinear(v) : v;
-        };
-        for (std::size_t p = p0; p < p1; ++p) {
-            const std::size_t s = p * std::size_t(keep);
-            float* d = image.data() + p * 4;
-            if (keep <= 2) {  // grey (+ alpha) promoted to RGB(A)
-                d[0] = d[1] = d[2] = value(s, true);
-            } else {
-                d[0] = value(s, true);
-                d[1] = value(s + 1, true);
-                d[2] = value(s + 2, true);
-            }
-            d[3] = alpha ? value(s + std::size_t(keep) - 1, false) : 1.f;
-        }
-        nonFinite += bad;
-    });
+            };
+            auto colour = [&](std::size_t i) {
+                const float v = finite(i);
+                return srgb ? srgbToLinear(v) : v;
+            };
+            for (std::size_t p = p0; p < p1; ++p)
+                promote(image.data() + p * 4, p * std::size_t(keep), keep, colour, finite);
+            nonFinite += bad;
+        });
+    }
     return nonFinite;
 }
 

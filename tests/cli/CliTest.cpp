@@ -455,3 +455,25 @@ TEST(CliApply, FloatDepthIntoAnIntegerFormatIsRefused) {
     EXPECT_EQ(runCli({"apply", kSunsetHdr, "-o", dir.file("o.tif"), "--depth", "float"}).exitCode,
               0);
 }
+
+// Start-up: OpenImageIO and its 263 libraries are loaded only for a format flarekit does not
+// run itself. The dynamic loader's own log (LD_DEBUG=files) names every library it opens.
+TEST(Startup, JobsOnPngJpegTiffAndExrNeverLoadOpenImageIo) {
+    TempDir dir;
+    auto loads = [&](const std::vector<std::string>& args) {
+        setenv("LD_DEBUG", "files", 1);
+        const CliResult r = runCli(args);
+        unsetenv("LD_DEBUG");
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.err.find("libOpenImageIO") != std::string::npos;
+    };
+    EXPECT_FALSE(loads({"--version"}));
+    EXPECT_FALSE(loads({"apply", kSunset, "-o", dir.file("a.jpg")}));
+    EXPECT_FALSE(loads({"postfx", kSunsetHdr, "-o", dir.file("b.tif")}));
+    EXPECT_FALSE(loads(
+        {"blend", dir.file("a.jpg"), dir.file("a.jpg"), "--mode", "add", "-o", dir.file("c.png")}));
+    EXPECT_FALSE(loads({"postfx", dir.file("b.tif"), "-o", dir.file("d.exr")}));
+    // ... and it is loaded, and works, for one it does not.
+    EXPECT_TRUE(loads({"apply", kSunset, "-o", dir.file("e.bmp")}));
+    EXPECT_TRUE(loads({"apply", dir.file("e.bmp"), "-o", dir.file("f.png")}));
+}

@@ -15,8 +15,12 @@ using namespace flarekit;
 
 namespace {
 
-double decode(double e) { return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4); }
-double encode(double x) { return x <= 0.0031308 ? x * 12.92 : 1.055 * std::pow(x, 1 / 2.4) - 0.055; }
+double decode(double e) {
+    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+double encode(double x) {
+    return x <= 0.0031308 ? x * 12.92 : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
+}
 
 //! The code of x by binary search over the levels' boundaries (each the decode of a half code).
 int referenceCode(float x, int levels) {

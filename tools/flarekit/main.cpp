@@ -5,6 +5,7 @@
 
 #include "Common.h"
 #include "core/Interrupt.h"
+#include "flarekit/ImageIO.h"
 #include "flarekit/Limits.h"
 
 namespace {
@@ -52,6 +53,12 @@ int main(int argc, char** argv) {
                    "refuse images over 16 MP claiming more pixels per file byte than this "
                    "(default 10000: decompression bombs, truncated files)")
         ->check(CLI::PositiveNumber);
+    int pngLevel = flarekit::pngCompression();
+    app.add_option("--png-compression", pngLevel,
+                   "zlib level of the PNGs written, 0 (none) to 9 (smallest). Default 1: on an "
+                   "8-megapixel photograph, 6 (libpng's default) writes a file 10% smaller "
+                   "taking 10x as long to compress (2.4 s against 0.23 s on 2 cores)")
+        ->check(CLI::Range(0, 9));
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);
@@ -67,6 +74,7 @@ int main(int argc, char** argv) {
     app.parse_complete_callback([&] {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)
             throw CLI::ValidationError(s.error().message);
+        flarekit::setPngCompression(pngLevel);
     });
     flarekit::installInterruptHandlers();
     try {

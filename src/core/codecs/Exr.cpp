@@ -48,8 +48,8 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
             ++count;
             subsampled |= c.channel().xSampling != 1 || c.channel().ySampling != 1;
         }
-        const bool rgb = channels.findChannel("R") && channels.findChannel("G") &&
-                         channels.findChannel("B");
+        const bool rgb =
+            channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
         const bool grey = !rgb && channels.findChannel("Y") && !channels.findChannel("RY");
         if ((!rgb && !grey) || subsampled) return invalidInput(kUnsupportedLayout);
         ExrRead out;
@@ -70,7 +70,8 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         out.grey = grey;
         // Slices into the RGBA floats; a channel the file lacks is filled (alpha with 1).
         char* base = reinterpret_cast<char*>(out.image.data());
-        const std::size_t xStride = 4 * sizeof(float), yStride = xStride * std::size_t(out.header.width);
+        const std::size_t xStride = 4 * sizeof(float),
+                          yStride = xStride * std::size_t(out.header.width);
         Imf::FrameBuffer frame;
         auto slice = [&](const char* name, int offset, double fill) {
             frame.insert(name, Imf::Slice::Make(Imf::FLOAT, base + offset * sizeof(float), window,

@@ -117,7 +117,8 @@ Result<std::vector<unsigned char>> encodeJpeg(const Samples& s, const EncodeOpti
     st.info.err = jpeg_std_error(&st.errors.manager);
     st.errors.manager.error_exit = onError;
     st.errors.manager.emit_message = onMessage;
-    if (setjmp(st.errors.jump)) return ioError(std::string("cannot encode JPEG: ") + st.errors.message);
+    if (setjmp(st.errors.jump))
+        return ioError(std::string("cannot encode JPEG: ") + st.errors.message);
     jpeg_create_compress(&st.info);
     st.created = true;
     jpeg_mem_dest(&st.info, &st.buffer, &st.size);

@@ -100,8 +100,8 @@ Result<std::vector<unsigned char>> encode(const std::string& path, const Samples
     return bytes;
 }
 
-bool renderText(float* rgba, int width, int height, int x, int y, const std::string& text,
-                int size, const std::string& fontPath, const float colour[4]) {
+bool renderText(float* rgba, int width, int height, int x, int y, const std::string& text, int size,
+                const std::string& fontPath, const float colour[4]) {
     OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::FLOAT);
     OIIO::ImageBuf canvas(spec, rgba);  // wraps the caller's pixels, no copy
     const bool drawn = OIIO::ImageBufAlgo::render_text(canvas, x, y, text, size, fontPath,
@@ -110,8 +110,8 @@ bool renderText(float* rgba, int width, int height, int x, int y, const std::str
     return drawn;
 }
 
-const OiioModule kModule{kOiioModuleAbi, sizeof(Raw), sizeof(Samples), read, canWrite, encode,
-                         renderText};
+const OiioModule kModule{kOiioModuleAbi, sizeof(Raw), sizeof(Samples), read,
+                         canWrite,       encode,      renderText};
 
 }  // namespace
 

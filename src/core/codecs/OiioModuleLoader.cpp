@@ -29,8 +29,8 @@ std::vector<std::string> candidates() {
     std::error_code ec;
     const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
     if (!ec) {
-        out.push_back((exe.parent_path().parent_path() / "lib" / "flarekit" /
-                       "libflarekit_oiio.so").string());
+        out.push_back((exe.parent_path().parent_path() / "lib" / "flarekit" / "libflarekit_oiio.so")
+                          .string());
     }
     out.push_back(FLAREKIT_BUILD_OIIO_MODULE);
     out.push_back(FLAREKIT_INSTALL_OIIO_MODULE);

@@ -22,7 +22,7 @@ void onError(png_structp png, png_const_charp message) {
     png_longjmp(png, 1);
 }
 void onWarning(png_structp, png_const_charp) {}  // benign (an unknown chunk, a bad CRC in a
-                                                  // text chunk): the image still decodes
+                                                 // text chunk): the image still decodes
 
 struct ReadState {
     PngErrors errors;
@@ -68,7 +68,8 @@ Result<Raw> readPng(const std::string& path, const HeaderCheck& check) {
     raw.header.width = int(png_get_image_width(st.png, st.info));
     raw.header.height = int(png_get_image_height(st.png, st.info));
     raw.header.channels = png_get_channels(st.png, st.info);
-    raw.header.decodeAs = png_get_bit_depth(st.png, st.info) == 16 ? SampleType::U16 : SampleType::U8;
+    raw.header.decodeAs =
+        png_get_bit_depth(st.png, st.info) == 16 ? SampleType::U16 : SampleType::U8;
     raw.header.format = "png";
     double gamma = 0;
     // A gAMA of 1.0 without an sRGB chunk declares linear samples.

@@ -143,7 +143,9 @@ struct MemoryTiff {
     }
     static toff_t seek(thandle_t h, toff_t offset, int whence) {
         auto* m = static_cast<MemoryTiff*>(h);
-        const std::size_t base = whence == SEEK_SET ? 0 : whence == SEEK_CUR ? m->at : m->bytes.size();
+        const std::size_t base = whence == SEEK_SET   ? 0
+                                 : whence == SEEK_CUR ? m->at
+                                                      : m->bytes.size();
         m->at = base + std::size_t(offset);
         return m->at;
     }
@@ -173,7 +175,8 @@ Result<std::vector<unsigned char>> encodeTiff(const Samples& s, const EncodeOpti
     TIFFSetField(tif, TIFFTAG_BITSPERSAMPLE, std::uint16_t(sample * 8));
     TIFFSetField(tif, TIFFTAG_SAMPLEFORMAT,
                  s.type == SampleType::F32 ? SAMPLEFORMAT_IEEEFP : SAMPLEFORMAT_UINT);
-    TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, s.channels >= 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
+    TIFFSetField(tif, TIFFTAG_PHOTOMETRIC,
+                 s.channels >= 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
     TIFFSetField(tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
     if (s.channels == 2 || s.channels == 4) {
         const std::uint16_t extra[] = {EXTRASAMPLE_UNASSALPHA};
@@ -188,7 +191,8 @@ Result<std::vector<unsigned char>> encodeTiff(const Samples& s, const EncodeOpti
     TIFFSetField(tif, TIFFTAG_SOFTWARE, "flarekit");
     std::vector<unsigned char> row(rowBytes);  // TIFFWriteScanline may modify its input
     for (int y = 0; y < s.height; ++y) {
-        std::memcpy(row.data(), static_cast<const unsigned char*>(s.data) + std::size_t(y) * rowBytes,
+        std::memcpy(row.data(),
+                    static_cast<const unsigned char*>(s.data) + std::size_t(y) * rowBytes,
                     rowBytes);
         if (TIFFWriteScanline(tif, row.data(), std::uint32_t(y), 0) < 0)
             return ioError("cannot encode TIFF: " + lastTiffError);

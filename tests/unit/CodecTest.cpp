@@ -1,0 +1,223 @@
+// flarekit's own PNG, JPEG, TIFF and EXR codecs against an independent implementation:
+// OpenImageIO (linked by the tests only) writes each layout and reads back what flarekit
+// writes. Sample values must agree exactly (JPEG: the same libjpeg-turbo decode).
+#include <OpenImageIO/imageio.h>
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include "RawFiles.h"
+#include "TempDir.h"
+#include "flarekit/Color.h"
+#include "flarekit/ImageIO.h"
+
+using namespace flarekit;
+using flarekit::test::TempDir;
+
+namespace {
+
+constexpr int kW = 37, kH = 23;  // odd sizes: no row happens to fall on a block edge
+
+std::string fileName(int channels, OIIO::TypeDesc type, int tile, const char* extension) {
+    std::ostringstream os;
+    os << "c" << channels << "-" << type.c_str() << "-" << tile << extension;
+    return os.str();
+}
+
+//! OIIO's reader with straight alpha kept (by default it multiplies colour by alpha).
+std::unique_ptr<OIIO::ImageInput> openStraight(const std::string& path) {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return OIIO::ImageInput::open(path, &config);
+}
+
+//! Writes `channels` samples of `type` with OIIO (tiled when tile > 0); returns the values it
+//! wrote as floats in [0, 1] (or as written, for float types).
+std::vector<float> writeWithOiio(const std::string& path, int channels, OIIO::TypeDesc type,
+                                 int tile = 0) {
+    std::mt19937 rng(unsigned(channels * 31 + int(type.basetype)));
+    std::uniform_real_distribution<float> unit(0.f, 1.f);
+    std::vector<float> values(std::size_t(kW * kH * channels));
+    for (float& v : values) v = unit(rng);
+    if (type == OIIO::TypeDesc::UINT8)
+        for (float& v : values) v = std::round(v * 255.f) / 255.f;
+    if (type == OIIO::TypeDesc::UINT16)
+        for (float& v : values) v = std::round(v * 65535.f) / 65535.f;
+    if (type == OIIO::TypeDesc::HALF)
+        for (float& v : values) v = float(half(v * 8.f));  // HDR values past 1
+    if (type == OIIO::TypeDesc::FLOAT)
+        for (float& v : values) v *= 8.f;
+    auto out = OIIO::ImageOutput::create(path);
+    OIIO::ImageSpec spec(kW, kH, channels, type);
+    if (channels == 2 || channels == 4) {
+        spec.alpha_channel = channels - 1;
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
+    if (tile) spec.tile_width = spec.tile_height = tile;
+    EXPECT_TRUE(out && out->open(path, spec) &&
+                out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close())
+        << path;
+    return values;
+}
+
+//! What readImage must return for the samples OIIO wrote: sRGB-decoded colour for integer
+//! files, grey promoted, alpha as stored, 1 when absent.
+void expectRead(const std::string& path, const std::vector<float>& v, int channels, bool srgb) {
+    auto r = readImage(path);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->image.width(), kW);
+    ASSERT_EQ(r->image.height(), kH);
+    EXPECT_EQ(r->fileChannels, channels);
+    EXPECT_EQ(r->hasAlpha, channels == 2 || channels == 4);
+    for (int p = 0; p < kW * kH; ++p) {
+        const float* s = v.data() + std::size_t(p * channels);
+        const float* d = r->image.data() + std::size_t(p) * 4;
+        for (int c = 0; c < 3; ++c) {
+            const float stored = channels <= 2 ? s[0] : s[c];
+            const float expected = srgb ? srgbToLinear(stored) : stored;
+            ASSERT_NEAR(d[c], expected, std::abs(expected) * 1e-6f + 1e-7f) << path << " " << p;
+        }
+        const float alpha = channels == 2 || channels == 4 ? s[channels - 1] : 1.f;
+        ASSERT_NEAR(d[3], alpha, 1e-6f) << path << " " << p;
+    }
+}
+
+}  // namespace
+
+TEST(Codec, PngLayoutsReadAsOpenImageIoWroteThem) {
+    TempDir dir;
+    for (int channels : {1, 2, 3, 4}) {
+        for (auto type : {OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT16}) {
+            const std::string path = dir.file(fileName(channels, type, 0, ".png"));
+            expectRead(path, writeWithOiio(path, channels, type), channels, true);
+        }
+    }
+}
+
+TEST(Codec, TiffLayoutsReadAsOpenImageIoWroteThem) {
+    TempDir dir;
+    for (int channels : {1, 3, 4}) {
+        for (auto type : {OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT16, OIIO::TypeDesc::FLOAT}) {
+            for (int tile : {0, 16}) {
+                const std::string path = dir.file(fileName(channels, type, tile, ".tif"));
+                expectRead(path, writeWithOiio(path, channels, type, tile), channels,
+                           type != OIIO::TypeDesc::FLOAT);
+            }
+        }
+    }
+}
+
+TEST(Codec, ExrLayoutsReadStraightIntoRgba) {
+    TempDir dir;
+    for (int channels : {3, 4}) {
+        for (auto type : {OIIO::TypeDesc::HALF, OIIO::TypeDesc::FLOAT}) {
+            for (int tile : {0, 16}) {
+                const std::string path = dir.file(fileName(channels, type, tile, ".exr"));
+                expectRead(path, writeWithOiio(path, channels, type, tile), channels, false);
+            }
+        }
+    }
+    // A luminance-only file (channel Y): grey promoted, as OIIO reads it.
+    const std::string grey = dir.file("y.exr");
+    expectRead(grey, writeWithOiio(grey, 1, OIIO::TypeDesc::HALF), 1, false);
+}
+
+TEST(Codec, JpegDecodesAsOpenImageIoDecodesIt) {
+    TempDir dir;
+    for (int channels : {1, 3}) {
+        const std::string path = dir.file(fileName(channels, OIIO::TypeDesc::UINT8, 0, ".jpg"));
+        writeWithOiio(path, channels, OIIO::TypeDesc::UINT8);
+        auto in = OIIO::ImageInput::open(path);
+        ASSERT_TRUE(in);
+        std::vector<float> decoded(std::size_t(kW * kH * channels));
+        ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, decoded.data()));
+        expectRead(path, decoded, channels, true);
+    }
+}
+
+TEST(Codec, WritesReadBackExactlyThroughOpenImageIo) {
+    TempDir dir;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> value(-0.1f, 1.2f);
+    Image image(kW, kH);
+    for (std::size_t i = 0; i < image.pixelCount() * 4; ++i) image.data()[i] = value(rng);
+    struct Case {
+        const char* name;
+        SampleFormat format;
+        bool alpha;
+    };
+    for (const Case& c : {Case{"a.png", SampleFormat::U8, true}, Case{"b.png", SampleFormat::U16, false},
+                          Case{"c.tif", SampleFormat::U16, true}, Case{"d.tif", SampleFormat::Float, false},
+                          Case{"e.exr", SampleFormat::Half, true}, Case{"f.exr", SampleFormat::Float, false},
+                          Case{"g.bmp", SampleFormat::U8, false}}) {
+        const std::string path = dir.file(c.name);
+        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha}).ok()) << c.name;
+        auto in = openStraight(path);
+        ASSERT_TRUE(in) << c.name;
+        const int channels = c.alpha ? 4 : 3;
+        ASSERT_EQ(in->spec().nchannels, channels) << c.name;
+        std::vector<float> back(image.pixelCount() * std::size_t(channels));
+        ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, back.data()));
+        for (std::size_t p = 0; p < image.pixelCount(); ++p) {
+            for (int ch = 0; ch < channels; ++ch) {
+                const float v = image.data()[p * 4 + std::size_t(ch)];
+                float expected = v;
+                if (c.format == SampleFormat::U8)
+                    expected = (ch < 3 ? linearToSrgb8(v) : alphaTo8(v)) / 255.f;
+                if (c.format == SampleFormat::U16)
+                    expected = (ch < 3 ? linearToSrgb16(v) : alphaTo16(v)) / 65535.f;
+                if (c.format == SampleFormat::Half) expected = float(half(v));
+                ASSERT_FLOAT_EQ(back[p * std::size_t(channels) + std::size_t(ch)], expected)
+                    << c.name << " " << p << " " << ch;
+            }
+        }
+    }
+}
+
+TEST(Codec, OtherFormatsGoThroughTheOpenImageIoModule) {
+    TempDir dir;
+    Image image(kW, kH);
+    image.fill({0.25f, 2.5f, 0.125f, 1.f});
+    ASSERT_TRUE(writeImage(dir.file("x.hdr"), image).ok());
+    auto back = readImage(dir.file("x.hdr"));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_TRUE(back->wasFloat);
+    EXPECT_NEAR(back->image.at(3, 4).g, 2.5f, 0.02f);  // RGBE: 8-bit mantissas
+    // A file named .png holding a BMP is read by what its bytes are.
+    ASSERT_TRUE(writeImage(dir.file("y.bmp"), image).ok());
+    std::filesystem::rename(dir.file("y.bmp"), dir.file("y.png"));
+    auto misnamed = readImage(dir.file("y.png"));
+    ASSERT_TRUE(misnamed.ok()) << misnamed.error().message;
+    EXPECT_EQ(linearToSrgb8(misnamed->image.at(0, 0).r), linearToSrgb8(0.25f));
+}
+
+TEST(Codec, PngCompressionLevelChangesSizeNotPixels) {
+    TempDir dir;
+    Image image(256, 128);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> value(0.f, 1.f);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            image.at(x, y) = {float(x) / 256.f, value(rng) * 0.1f, float(y) / 128.f, 1.f};
+    const int before = pngCompression();
+    std::vector<std::uintmax_t> sizes;
+    for (int level : {0, 1, 9}) {
+        setPngCompression(level);
+        const std::string path = dir.file(fileName(3, OIIO::TypeDesc::UINT8, level, ".png"));
+        ASSERT_TRUE(writeImage(path, image).ok());
+        sizes.push_back(std::filesystem::file_size(path));
+        auto back = readImage(path);
+        ASSERT_TRUE(back.ok());
+        for (int x = 0; x < image.width(); ++x)
+            ASSERT_EQ(linearToSrgb8(back->image.at(x, 5).g), linearToSrgb8(image.at(x, 5).g));
+    }
+    setPngCompression(before);
+    EXPECT_GT(sizes[0], std::uintmax_t(256 * 128 * 3));  // stored: every byte plus framing
+    EXPECT_LT(sizes[1], sizes[0]);
+    EXPECT_LT(sizes[2], sizes[1]);
+}
