@@ -16,6 +16,7 @@ struct LoadedImage {
     bool wasFloat = false;      //!< half/float file, kept linear; integer files are sRGB-decoded
     std::size_t nonFinite = 0;  //!< NaN/Inf values replaced by 0
     int droppedChannels = 0;    //!< channels past the 4th, not kept
+    bool halfExact = false;     //!< every value came from a half-float channel (an EXR's)
 };
 
 //! What the job reading an image will need, per pixel of the image and in all, so that its peak

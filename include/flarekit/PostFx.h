@@ -45,6 +45,12 @@ struct PassTime {
 struct PostFxOptions {
     bool keepLayers = false;                 //!< fill bloom/ghosts/halo/streaks/lens
     std::vector<PassTime>* times = nullptr;  //!< when set, each pass is timed (GL: waits per pass)
+    //! GL: every input value is exactly a half float (it was read from a half-float EXR), so the
+    //! input goes up as halves into a half-float texture: half the bytes, the same values.
+    bool halfInput = false;
+    //! GL: the result is only kept as half floats (a half-float EXR), so it comes back as
+    //! halves: half the bytes, the same file (each value rounded to half once either way).
+    bool halfReadback = false;
 };
 
 //! The CPU chain (oneTBB threads, 4-wide SIMD per pixel), one run with fresh buffers.

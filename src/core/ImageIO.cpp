@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "core/FirstLine.h"
+#include "core/HalfFloat.h"
 #include "core/Parallel.h"
 #include "core/SafeWrite.h"
 #include "core/codecs/Codecs.h"
@@ -328,6 +329,7 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
             const int kept = (exr->grey ? 1 : 3) + (exr->hasAlpha ? 1 : 0);
             out.droppedChannels = exr->header.channels - kept;
             out.nonFinite = finishExr(exr->image, exr->grey);
+            out.halfExact = exr->allHalf;  // a non-finite half became 0, itself a half
             out.image = std::move(exr->image);
             return out;
         }
@@ -523,8 +525,8 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     if (writer->format == Format::Exr && s.half) {
         std::vector<std::uint16_t> halves(pixels * std::size_t(channels));
         forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
-            codec::floatsToHalf(image.data() + p0 * 4, p1 - p0, channels,
-                                halves.data() + p0 * std::size_t(channels));
+            floatsToHalf(image.data() + p0 * 4, p1 - p0, channels,
+                         halves.data() + p0 * std::size_t(channels));
         });
         s.data = halves.data();
         return encodeAndWrite(path, *writer, s);

@@ -3,12 +3,14 @@
 // order and its uniforms set by the pass's own bindUniforms. Each program is postfx_common.glsl
 // + the pass folder's shader (*Gl.h), after the sizes C++ and GLSL share as #defines. Textures
 // are RGBA32F (half floats would cost the 1e-3 parity) and image row y is GL row y, so
-// gl_FragCoord.y - 0.5 is the CPU's y.
+// gl_FragCoord.y - 0.5 is the CPU's y. The input and the result move through pixel buffers
+// (gl/PixelTransfer.h), as halves where that loses nothing (PostFxOptions).
 #include <chrono>
 
 #include "flarekit/PostFx.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
+#include "gl/PixelTransfer.h"
 #include "postfx/ChainPlan.h"
 #include "postfx/PassClock.h"
 #include "postfx/PassShaders.h"
@@ -129,12 +131,14 @@ struct GpuPostFx::Impl {
     gl::VertexArray vao;
     Size input;
     std::size_t levelCount = 0;
+    bool halfSource = false;
     gl::Texture source;
+    gl::PixelTransfer transfer;
     Target final, dirtT;
     ChainBuffers<Target> buffers;
     LensDirtCache dirt;
 
-    Status allocate(const ChainPlan& plan);
+    Status allocate(const ChainPlan& plan, bool half);
     GLuint texture(BufferId id) const;
     const Target& target(BufferId id) const;
     void execute(const Step& step) const;
@@ -157,10 +161,15 @@ GpuPostFx::~GpuPostFx() = default;
 GpuPostFx::GpuPostFx(GpuPostFx&&) noexcept = default;
 GpuPostFx& GpuPostFx::operator=(GpuPostFx&&) noexcept = default;
 
-Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
+Status GpuPostFx::Impl::allocate(const ChainPlan& plan, bool half) {
     if (input.width == plan.input.width && input.height == plan.input.height &&
-        levelCount == plan.levels.size())
-        return Ok{};
+        levelCount == plan.levels.size()) {
+        if (half != halfSource) {
+            source = gl::makeTexture2D(half ? GL_RGBA16F : GL_RGBA32F, input.width, input.height);
+            halfSource = half;
+        }
+        return gl::checkError("allocating the post-process input");
+    }
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (plan.input.width > maxSize || plan.input.height > maxSize) {
@@ -169,7 +178,8 @@ Status GpuPostFx::Impl::allocate(const ChainPlan& plan) {
                             " exceeds this GL's GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) +
                             " (use --backend cpu)");
     }
-    source = gl::makeTexture2D(GL_RGBA32F, plan.input.width, plan.input.height);
+    source = gl::makeTexture2D(half ? GL_RGBA16F : GL_RGBA32F, plan.input.width, plan.input.height);
+    halfSource = half;
     const auto make = [](Size s, Target& t) -> Status {
         auto r = makeTarget(s);
         if (!r) return r.error();
@@ -230,19 +240,21 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
     auto planned = planChain(input.width(), input.height(), fitToFrame(params, input));
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
-    if (Status s = m->allocate(plan); !s) return s.error();
+    if (Status s = m->allocate(plan, options.halfInput); !s) return s.error();
     Impl& g = *m;
     const Size work = plan.work();
     glDisable(GL_BLEND), glDisable(GL_DEPTH_TEST), glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(g.vao.get());
+    GlClock clock(options.times);
+    Status moved = Ok{};
+    clock.run("upload", plan.input,
+              [&] { moved = g.transfer.upload(g.source.get(), input, options.halfInput); });
+    if (!moved) return moved.error();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(g.source.get(), 0, 0, 0, input.width(), input.height(), GL_RGBA, GL_FLOAT,
-                        input.data());
     if (plan.dirtOn && g.dirt.update(work.width, work.height, plan.dirt)) {
         glTextureSubImage2D(g.dirtT.texture.get(), 0, 0, 0, work.width, work.height, GL_RGBA,
                             GL_FLOAT, g.dirt.image().data());
     }
-    GlClock clock(options.times);
     forEachGroup(
         plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
             const auto group = [&] {
@@ -260,7 +272,11 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
         out = std::move(*image);
         return Ok{};
     };
-    if (Status s = read(g.final, result.final); !s) return s.error();
+    clock.run("read-back", plan.input, [&] {
+        moved = g.transfer.download(g.final.texture.get(), g.final.size.width, g.final.size.height,
+                                    options.halfReadback, result.final);
+    });
+    if (!moved) return moved.error();
     if (options.keepLayers) {
         const ChainBuffers<Target>& l = g.buffers;
         for (auto [t, out] :

@@ -470,9 +470,8 @@ TEST(Startup, JobsOnPngJpegTiffAndExrNeverLoadOpenImageIo) {
     EXPECT_FALSE(loads({"--version"}));
     EXPECT_FALSE(loads({"apply", kSunset, "-o", dir.file("a.jpg")}));
     EXPECT_FALSE(loads({"postfx", kSunsetHdr, "-o", dir.file("b.tif")}));
-    EXPECT_FALSE(loads(
-        {"blend", "--src", dir.file("a.jpg"), "--dst", dir.file("a.jpg"), "--mode", "add", "-o",
-         dir.file("c.png")}));
+    EXPECT_FALSE(loads({"blend", "--src", dir.file("a.jpg"), "--dst", dir.file("a.jpg"), "--mode",
+                        "add", "-o", dir.file("c.png")}));
     EXPECT_FALSE(loads({"postfx", dir.file("b.tif"), "-o", dir.file("d.exr")}));
     // ... and it is loaded, and works, for one it does not.
     EXPECT_TRUE(loads({"apply", kSunset, "-o", dir.file("e.bmp")}));

@@ -1,6 +1,7 @@
 // libFuzzer target: the image-read path with its size, ratio and memory checks (readImage and
-// readImage8). The first byte picks the file extension OpenImageIO sees first (PNG, JPEG, TIFF,
-// EXR, HDR, BMP, TGA, PPM); the rest is the file.
+// readImage8): flarekit's own PNG, JPEG, TIFF and EXR codecs, chosen by the file's first bytes,
+// and the OpenImageIO module for the rest. The first byte picks the file's extension (PNG, JPEG,
+// TIFF, EXR, HDR, BMP, TGA, PPM), which OpenImageIO consults; the rest is the file.
 #include <unistd.h>
 
 #include <cstddef>

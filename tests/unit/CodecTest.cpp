@@ -1,11 +1,12 @@
 // flarekit's own PNG, JPEG, TIFF and EXR codecs against an independent implementation:
 // OpenImageIO (linked by the tests only) writes each layout and reads back what flarekit
 // writes. Sample values must agree exactly (JPEG: the same libjpeg-turbo decode).
-#include <OpenImageIO/imageio.h>
 #include <Imath/half.h>
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <random>
 #include <sstream>
@@ -13,6 +14,7 @@
 
 #include "RawFiles.h"
 #include "TempDir.h"
+#include "core/HalfFloat.h"
 #include "flarekit/Color.h"
 #include "flarekit/ImageIO.h"
 
@@ -151,10 +153,11 @@ TEST(Codec, WritesReadBackExactlyThroughOpenImageIo) {
         SampleFormat format;
         bool alpha;
     };
-    for (const Case& c : {Case{"a.png", SampleFormat::U8, true}, Case{"b.png", SampleFormat::U16, false},
-                          Case{"c.tif", SampleFormat::U16, true}, Case{"d.tif", SampleFormat::Float, false},
-                          Case{"e.exr", SampleFormat::Half, true}, Case{"f.exr", SampleFormat::Float, false},
-                          Case{"g.bmp", SampleFormat::U8, false}}) {
+    for (const Case& c :
+         {Case{"a.png", SampleFormat::U8, true}, Case{"b.png", SampleFormat::U16, false},
+          Case{"c.tif", SampleFormat::U16, true}, Case{"d.tif", SampleFormat::Float, false},
+          Case{"e.exr", SampleFormat::Half, true}, Case{"f.exr", SampleFormat::Float, false},
+          Case{"g.bmp", SampleFormat::U8, false}}) {
         const std::string path = dir.file(c.name);
         ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha}).ok()) << c.name;
         auto in = openStraight(path);
@@ -220,4 +223,32 @@ TEST(Codec, PngCompressionLevelChangesSizeNotPixels) {
     EXPECT_GT(sizes[0], std::uintmax_t(256 * 128 * 3));  // stored: every byte plus framing
     EXPECT_LT(sizes[1], sizes[0]);
     EXPECT_LT(sizes[2], sizes[1]);
+}
+
+TEST(Codec, HalfConversionsAreImathsBitForBit) {
+    // The F16C path (when the CPU has it) against Imath's half, on floats across the whole
+    // half range and past it: subnormals, rounding ties, overflow to infinity.
+    std::vector<float> values;
+    for (std::uint32_t bits = 0x33000000u; bits < 0x47900000u; bits += 4099) {
+        float v;
+        std::memcpy(&v, &bits, 4);
+        values.push_back(v);
+        values.push_back(-v);
+    }
+    values.resize(values.size() / 4 * 4);
+    std::vector<std::uint16_t> halves(values.size());
+    floatsToHalf(values.data(), values.size() / 4, 4, halves.data());
+    std::vector<float> back(values.size());
+    halfsToFloats(halves.data(), halves.size(), back.data());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        ASSERT_EQ(halves[i], half(values[i]).bits()) << values[i];
+        ASSERT_EQ(back[i], float(half(values[i]))) << values[i];
+    }
+    const float odd[4] = {NAN, INFINITY, -INFINITY, 1e6f};
+    std::uint16_t out[4];
+    floatsToHalf(odd, 1, 4, out);
+    EXPECT_EQ(out[0], 0);
+    EXPECT_EQ(out[1], 0);
+    EXPECT_EQ(out[2], 0);
+    EXPECT_EQ(out[3], half(1e6f).bits());  // past 65504: infinity, as Imath
 }

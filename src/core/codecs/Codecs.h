@@ -32,15 +32,13 @@ struct ExrRead {
     Image image;
     bool hasAlpha = false;
     bool grey = false;
+    bool allHalf = false;  //!< every channel read was stored as half floats
 };
 Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check);
 
 Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptions& options);
 Result<std::vector<unsigned char>> encodeJpeg(const Samples& s, const EncodeOptions& options);
 Result<std::vector<unsigned char>> encodeTiff(const Samples& s, const EncodeOptions& options);
-//! Float RGBA pixels to `channels` packed half floats (IEEE binary16 bits, round to nearest
-//! even, as Imath's half), NaN and infinities as 0.
-void floatsToHalf(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out);
 Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions& options);
 
 //! The message of a layout a native codec leaves to OpenImageIO; ImageIO checks for it.

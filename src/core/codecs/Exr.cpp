@@ -68,6 +68,12 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         out.image = Image(out.header.width, out.header.height);
         out.hasAlpha = channels.findChannel("A") != nullptr;
         out.grey = grey;
+        out.allHalf = true;
+        for (const char* name : {"R", "G", "B", "Y", "A"}) {
+            const Imf::Channel* c = channels.findChannel(name);
+            if (c && (rgb || std::strcmp(name, "Y") == 0 || std::strcmp(name, "A") == 0))
+                out.allHalf = out.allHalf && c->type == Imf::HALF;
+        }
         // Slices into the RGBA floats; a channel the file lacks is filled (alpha with 1).
         char* base = reinterpret_cast<char*>(out.image.data());
         const std::size_t xStride = 4 * sizeof(float),
@@ -114,15 +120,6 @@ class MemoryStream : public Imf::OStream {
 };
 
 }  // namespace
-
-void floatsToHalf(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
-    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
-        for (int c = 0; c < channels; ++c) {
-            const float v = rgba[c];
-            out[c] = half(std::isfinite(v) ? v : 0.f).bits();
-        }
-    }
-}
 
 Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions&) {
     startThreadPool();

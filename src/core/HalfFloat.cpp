@@ -1,0 +1,80 @@
+#include "core/HalfFloat.h"
+
+#include <Imath/half.h>
+
+#include <cmath>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace flarekit {
+
+namespace {
+
+float halfBitsToFloat(std::uint16_t bits) {
+    half h;
+    h.setBits(bits);
+    return float(h);
+}
+
+void floatsToHalfPortable(const float* rgba, std::size_t pixels, int channels,
+                          std::uint16_t* out) {
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
+        for (int c = 0; c < channels; ++c) {
+            const float v = rgba[c];
+            out[c] = half(std::isfinite(v) ? v : 0.f).bits();
+        }
+    }
+}
+
+#if defined(__x86_64__)
+//! Four channels at a time: one F16C conversion per pixel; NaN and infinity (exponent all ones)
+//! masked to 0 first.
+__attribute__((target("avx,f16c"))) void floatsToHalfF16c(const float* rgba, std::size_t pixels,
+                                                          int channels, std::uint16_t* out) {
+    const __m128 exponent = _mm_castsi128_ps(_mm_set1_epi32(0x7F800000));
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
+        const __m128 v = _mm_loadu_ps(rgba);
+        const __m128 nonFinite = _mm_cmpeq_ps(_mm_and_ps(v, exponent), exponent);
+        const __m128i h =
+            _mm_cvtps_ph(_mm_andnot_ps(nonFinite, v), _MM_FROUND_TO_NEAREST_INT);
+        alignas(16) std::uint16_t four[8];
+        _mm_store_si128(reinterpret_cast<__m128i*>(four), h);
+        for (int c = 0; c < channels; ++c) out[c] = four[c];
+    }
+}
+
+__attribute__((target("avx,f16c"))) void halfsToFloatsF16c(const std::uint16_t* in,
+                                                           std::size_t count, float* out) {
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8) {
+        const __m128i h = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + i));
+        _mm256_storeu_ps(out + i, _mm256_cvtph_ps(h));
+    }
+    for (; i < count; ++i) out[i] = halfBitsToFloat(in[i]);
+}
+
+bool hasF16c() {
+    static const bool yes = __builtin_cpu_supports("f16c") && __builtin_cpu_supports("avx");
+    return yes;
+}
+#endif
+
+}  // namespace
+
+void floatsToHalf(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
+#if defined(__x86_64__)
+    if (hasF16c()) return floatsToHalfF16c(rgba, pixels, channels, out);
+#endif
+    floatsToHalfPortable(rgba, pixels, channels, out);
+}
+
+void halfsToFloats(const std::uint16_t* in, std::size_t count, float* out) {
+#if defined(__x86_64__)
+    if (hasF16c()) return halfsToFloatsF16c(in, count, out);
+#endif
+    for (std::size_t i = 0; i < count; ++i) out[i] = halfBitsToFloat(in[i]);
+}
+
+}  // namespace flarekit
