@@ -196,7 +196,9 @@ Status GpuPostFx::Impl::allocate(const ChainPlan& plan, bool half) {
             if (Status s = make(plan.levels[i], b.ups[i]); !s) return s;
         }
     }
-    for (Target* t : {&b.ghosts, &b.halo, &b.streaks, &b.right, &b.ping, &b.lens, &dirtT}) {
+    // The dirt texture is made when a preset first uses dirt (most do not).
+    dirtT = {};
+    for (Target* t : {&b.ghosts, &b.halo, &b.streaks, &b.right, &b.ping, &b.lens}) {
         if (Status s = make(plan.work(), *t); !s) return s;
     }
     input = plan.input, levelCount = plan.levels.size();
@@ -251,6 +253,12 @@ Result<PostFxResult> GpuPostFx::run(const Image& input, const PostFxParams& para
               [&] { moved = g.transfer.upload(g.source.get(), input, options.halfInput); });
     if (!moved) return moved.error();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    if (plan.dirtOn && !g.dirtT.texture) {
+        auto t = makeTarget(work);
+        if (!t) return t.error();
+        g.dirtT = std::move(*t);
+        g.dirt.invalidate();
+    }
     if (plan.dirtOn && g.dirt.update(work.width, work.height, plan.dirt)) {
         glTextureSubImage2D(g.dirtT.texture.get(), 0, 0, 0, work.width, work.height, GL_RGBA,
                             GL_FLOAT, g.dirt.image().data());
