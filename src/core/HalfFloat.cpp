@@ -18,8 +18,7 @@ float halfBitsToFloat(std::uint16_t bits) {
     return float(h);
 }
 
-void floatsToHalfPortable(const float* rgba, std::size_t pixels, int channels,
-                          std::uint16_t* out) {
+void floatsToHalfPortable(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
     for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
         for (int c = 0; c < channels; ++c) {
             const float v = rgba[c];
@@ -37,8 +36,7 @@ __attribute__((target("avx,f16c"))) void floatsToHalfF16c(const float* rgba, std
     for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
         const __m128 v = _mm_loadu_ps(rgba);
         const __m128 nonFinite = _mm_cmpeq_ps(_mm_and_ps(v, exponent), exponent);
-        const __m128i h =
-            _mm_cvtps_ph(_mm_andnot_ps(nonFinite, v), _MM_FROUND_TO_NEAREST_INT);
+        const __m128i h = _mm_cvtps_ph(_mm_andnot_ps(nonFinite, v), _MM_FROUND_TO_NEAREST_INT);
         alignas(16) std::uint16_t four[8];
         _mm_store_si128(reinterpret_cast<__m128i*>(four), h);
         for (int c = 0; c < channels; ++c) out[c] = four[c];

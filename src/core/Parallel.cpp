@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace flarekit {
 
@@ -14,6 +15,12 @@ void parallelFor(int begin, int end, int grain, const std::function<void(int, in
     }
     tbb::parallel_for(tbb::blocked_range<int>(begin, end, std::size_t(grain > 0 ? grain : 1)),
                       [&](const tbb::blocked_range<int>& r) { body(r.begin(), r.end()); });
+}
+
+void runOnThisThread(const std::function<void()>& fn) {
+    // An arena of one slot, reserved for its caller: its tasks have no other thread to run on.
+    tbb::task_arena alone(1, 1);
+    alone.execute(fn);
 }
 
 ThreadLimit::ThreadLimit(int threads)

@@ -10,6 +10,10 @@ namespace flarekit {
 //! smallest range worth a task.
 void parallelFor(int begin, int end, int grain, const std::function<void(int, int)>& body);
 
+//! Runs fn with every parallelFor inside it on the calling thread alone (a background thread
+//! that must not take the pool's workers from the foreground: the demo's frame writer).
+void runOnThisThread(const std::function<void()>& fn);
+
 //! Limits worker threads for the lifetime of the returned object (benchmarks: 1 vs 2 cores).
 class ThreadLimit {
   public:

@@ -84,10 +84,11 @@ Status PixelTransfer::upload(GLuint texture, const Image& image, bool half) {
         wait(m_upload, slot);  // the GPU has finished reading this buffer's previous band
         void* to = m_upload.mapped[slot];
         parallelFor(0, n, 16, [&](int r0, int r1) {
-            const std::size_t first = std::size_t(r0) * std::size_t(w), count =
-                                                                             std::size_t(r1 - r0) * std::size_t(w);
+            const std::size_t first = std::size_t(r0) * std::size_t(w),
+                              count = std::size_t(r1 - r0) * std::size_t(w);
             if (half) {
-                floatsToHalf(image.row(y + r0), count, 4, static_cast<std::uint16_t*>(to) + first * 4);
+                floatsToHalf(image.row(y + r0), count, 4,
+                             static_cast<std::uint16_t*>(to) + first * 4);
             } else {
                 std::memcpy(static_cast<float*>(to) + first * 4, image.row(y + r0), count * 16);
             }
@@ -129,7 +130,8 @@ Status PixelTransfer::download(GLuint texture, int w, int h, bool half, Image& o
             const std::size_t first = std::size_t(r0) * std::size_t(w) * 4,
                               count = std::size_t(r1 - r0) * std::size_t(w) * 4;
             if (half) {
-                halfsToFloats(static_cast<const std::uint16_t*>(from) + first, count, out.row(y + r0));
+                halfsToFloats(static_cast<const std::uint16_t*>(from) + first, count,
+                              out.row(y + r0));
             } else {
                 std::memcpy(out.row(y + r0), static_cast<const float*>(from) + first, count * 4);
             }

@@ -64,7 +64,8 @@ TEST(PixelTransfer, TheChainGivesTheSameResultWhicheverWayItsImageTravels) {
     ASSERT_TRUE(chain.ok()) << chain.error().message;
     const Image sky = test::hdrSky(384, 216);
     Image input(sky.width(), sky.height());
-    for (std::size_t i = 0; i < sky.pixelCount() * 4; ++i) input.data()[i] = float(half(sky.data()[i]));
+    for (std::size_t i = 0; i < sky.pixelCount() * 4; ++i)
+        input.data()[i] = float(half(sky.data()[i]));
     const PostFxParams params;
     auto floats = chain->run(input, params, {});
     ASSERT_TRUE(floats.ok());

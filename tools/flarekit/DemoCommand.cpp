@@ -9,13 +9,17 @@
 #include <mutex>
 #include <thread>
 
+#include <pthread.h>
+#include <sched.h>
 #include <sys/statvfs.h>
+#include <unistd.h>
 
 #include "Common.h"
 #include "ParamOptions.h"
 #include "Progress.h"
 #include "Video.h"
 #include "core/Interrupt.h"
+#include "core/Parallel.h"
 #include "flarekit/Demo.h"
 #include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
@@ -32,7 +36,11 @@ struct DemoArgs {
     std::string outDir, size = "1280x720", preset = kDefaultSpritePreset;
     DemoSettings settings;
     bool noVideo = false;
+    bool noFrames = false;  //!< render and time the drive, write nothing (the render stage alone)
 };
+
+//! Nice value of the frame writer's thread: low enough that the render stage always wins a core.
+constexpr int kWriterNice = 19;
 
 //! Writes frames in order on its own thread; at most `capacity` frames wait in memory.
 class FrameWriter {
@@ -61,6 +69,12 @@ class FrameWriter {
 
   private:
     void run() {
+        // Below the render stage: the encoder takes the cores the GL driver and the flare leave
+        // idle (llvmpipe's threads would otherwise share them with it; the queue bounds the
+        // lag). Linux applies a nice value to one thread when given its id; the encode's own
+        // parallel loops stay on this thread (runOnThisThread), off the pool's workers.
+        sched_param idle{};
+        (void)pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle);
         for (;;) {
             std::pair<std::string, Image> job;
             {
@@ -72,7 +86,9 @@ class FrameWriter {
                 m_cv.notify_all();
             }
             if (!m_status) continue;  // after a failure, drain without writing
-            if (Status s = writeImage(job.first, job.second); !s) {
+            Status s = Ok{};
+            runOnThisThread([&] { s = writeImage(job.first, job.second); });
+            if (!s) {
                 m_status = s;
             } else {
                 ++m_written;
@@ -138,8 +154,9 @@ class Strip {
 
 #if FLAREKIT_HAS_GL
 //! Refuses a run whose frames would not fit on the output's file system, before the first
-//! frame: the estimate is ~1.5 bytes per pixel per PNG frame (the drive's 8-bit frames compress
-//! to 1.1-1.4 with OIIO's default zlib level), plus the MP4 at most a tenth of that.
+//! frame: the estimate is ~1.5 bytes per pixel per PNG frame (the drive's 720p frames take ~0.3
+//! at zlib level 1; busier frames and --png-compression 0 take more), plus the MP4 at most a
+//! tenth of that.
 Status checkDemoDisk(const DemoArgs& a, int w, int h) {
     // The output directory may not exist yet: its nearest existing ancestor's file system.
     std::filesystem::path dir = std::filesystem::absolute(a.outDir);
@@ -229,13 +246,22 @@ int runDemo(DemoArgs& a) {
         renderMs += frame->renderMs;
         visibilityMs += frame->visibilityMs;
         flareMs += frame->flareMs;
-        strip.offer(i, frame->image);
-        writer.push(framePath(i), std::move(frame->image));
+        if (!a.noFrames) {
+            strip.offer(i, frame->image);
+            writer.push(framePath(i), std::move(frame->image));
+        }
         progress.update(i + 1);
     }
     if (interrupted()) return stopped();
     progress.finish();
     if (Status s = writer.close(); !s) return report(s.error());
+    if (a.noFrames) {
+        std::printf(
+            "demo: per frame %.1f ms render, %.1f ms visibility (%s), %.1f ms flare + "
+            "tone map (--no-frames: nothing written)\n",
+            renderMs / n, visibilityMs / n, a.settings.method.c_str(), flareMs / n);
+        return kExitOk;
+    }
     if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
     if (Status s = writeImage(dir + "strip.png", strip.image()); !s) return report(s.error());
     std::printf(
@@ -293,6 +319,9 @@ void addDemoCommand(CLI::App& app, int& exitCode) {
     addParamOption<DemoSettings>(cmd, kDemoParams, "msaa", args->settings);
     addParamOptions<TemporalParams>(cmd, kTemporalParams, args->settings.temporal);
     cmd->add_flag("--no-video", args->noVideo, "skip the MP4 even when ffmpeg is installed");
+    cmd->add_flag("--no-frames", args->noFrames,
+                  "render and time the drive but write nothing (the render stage's cost without "
+                  "the frame writer beside it)");
     cmd->callback([args, &exitCode] { exitCode = runDemo(*args); });
 }
 

@@ -123,6 +123,12 @@ bool writeRows(WriteState& st, const Samples& s, int level) {
     png_set_IHDR(st.png, st.info, png_uint_32(s.width), png_uint_32(s.height), depth, colourType,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_compression_level(st.png, level);
+    // Row filters: libpng tries all five on every row and keeps the best, which at fast zlib
+    // levels costs more than the compression. The Sub filter alone, on an 8-megapixel
+    // photograph at level 1, writes a file 2% larger in two thirds of the time (514 against
+    // 776 ms; a 720p demo frame: the same size in 17 against 37 ms). Levels above 3 are asked
+    // for small files: they keep the search.
+    png_set_filter(st.png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
     if (s.srgb) png_set_sRGB_gAMA_and_cHRM(st.png, st.info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_set_text(st.png, st.info, &st.text, 1);
     png_write_info(st.png, st.info);
