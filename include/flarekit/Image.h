@@ -4,9 +4,39 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace flarekit {
+
+//! The allocator of pixel buffers. Large buffers (1 MiB and up) are their own anonymous
+//! mappings, which the kernel hands over zeroed, so a new image is not cleared twice, and are
+//! marked for transparent huge pages: a 4K RGBA float image faults in 64 times instead of
+//! 32,400 (4 KiB pages). Elements are default-initialised: Image zeroes the small ones itself.
+struct PixelMemory {
+    static constexpr std::size_t kMappedBytes = std::size_t(1) << 20;
+    static void* allocate(std::size_t bytes);
+    static void deallocate(void* p, std::size_t bytes) noexcept;
+};
+
+template <typename T>
+struct PixelAllocator {
+    using value_type = T;
+    PixelAllocator() = default;
+    template <typename U>
+    PixelAllocator(const PixelAllocator<U>&) noexcept {}  // NOLINT(google-explicit-constructor)
+    T* allocate(std::size_t n) { return static_cast<T*>(PixelMemory::allocate(n * sizeof(T))); }
+    void deallocate(T* p, std::size_t n) noexcept { PixelMemory::deallocate(p, n * sizeof(T)); }
+    template <typename U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;  // default-initialised: no write to fresh pages
+    }
+    template <typename U, typename... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+    friend bool operator==(const PixelAllocator&, const PixelAllocator&) { return true; }
+};
 
 struct Rgba {
     float r = 0.f, g = 0.f, b = 0.f, a = 0.f;
@@ -37,7 +67,7 @@ class Image {
   private:
     int m_width = 0;
     int m_height = 0;
-    std::vector<float> m_data;
+    std::vector<float, PixelAllocator<float>> m_data;
 };
 
 static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba must alias four packed floats");

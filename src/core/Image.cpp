@@ -1,14 +1,39 @@
 #include "flarekit/Image.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
+#include <cstring>
+#include <new>
 
 #include "core/Check.h"
 
 namespace flarekit {
 
+void* PixelMemory::allocate(std::size_t bytes) {
+    if (bytes < kMappedBytes) return ::operator new(bytes);
+    void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::bad_alloc();
+    (void)::madvise(p, bytes, MADV_HUGEPAGE);  // a hint: without THP, plain pages
+    return p;
+}
+
+void PixelMemory::deallocate(void* p, std::size_t bytes) noexcept {
+    if (!p) return;
+    if (bytes < kMappedBytes) {
+        ::operator delete(p);
+    } else {
+        ::munmap(p, bytes);
+    }
+}
+
 Image::Image(int width, int height) : m_width(width), m_height(height) {
     FK_CHECK(width >= 0 && height >= 0, "width=" << width << " height=" << height);
-    m_data.assign(std::size_t(width) * std::size_t(height) * 4, 0.f);
+    const std::size_t n = std::size_t(width) * std::size_t(height) * 4;
+    m_data.resize(n);  // default-initialised (PixelAllocator)
+    // Mapped buffers arrive zeroed from the kernel; heap ones are cleared here.
+    if (n * sizeof(float) < PixelMemory::kMappedBytes)
+        std::memset(static_cast<void*>(m_data.data()), 0, n * sizeof(float));
 }
 
 void Image::scale(float k) {

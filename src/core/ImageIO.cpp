@@ -344,7 +344,8 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
     out.image = Image(raw->header.width, raw->header.height);
     out.nonFinite = toLinearRgba(*raw, out.image);
     raw->bytes = {};  // the decode buffer goes before reorienting copies the image
-    out.image = reoriented(out.image, raw->orientation);
+    if (raw->orientation >= 2 && raw->orientation <= 8)
+        out.image = reoriented(out.image, raw->orientation);
     return out;
 }
 
