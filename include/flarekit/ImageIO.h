@@ -63,6 +63,11 @@ Status writeImage8(const std::string& path, const Image8& image);
 //! (fast: docs/formats.md has the size trade-off). Clamped to [0, 9].
 void setPngCompression(int level);
 int pngCompression();
+//! OpenEXR compression of every EXR written from now on: none, rle, zips, zip, piz (the
+//! default: lossless, fastest and smallest on photographs), pxr24, b44, b44a, dwaa, dwab (the
+//! last five lossy). InvalidInput for another name.
+Status setExrCompression(const std::string& name);
+std::string exrCompression();
 
 //! Fails with InvalidInput when the directory `path` would be written into does not exist.
 Status checkOutputPath(const std::string& path);

@@ -31,7 +31,7 @@ double decodeDouble(double e) {
 //! number of those boundaries at or below x. A first guess comes from a table indexed by the
 //! float's exponent and top mantissa bits (`kBucketBits` of them): `start[b]` is the code at the
 //! bottom of bucket b, and the answer lies between it and the next bucket's code.
-template <typename Code, int kLevels, int kMinExponent, int kBucketBits>
+template <typename Code, int kLevels, int kMinExponent, int kBucketBits, bool kOneBoundaryPerBucket>
 struct EncodeTable {
     static constexpr int kShift = 23 - kBucketBits;
     //! Bits of 2^kMinExponent: every value below it is below the first boundary (code 0).
@@ -57,18 +57,23 @@ struct EncodeTable {
         if (linear >= 1.f) return Code(kLevels);
         const std::size_t b = (std::bit_cast<std::uint32_t>(linear) - kFirstBits) >> kShift;
         Code code = start[b];
-        while (linear >= bounds[code]) ++code;  // at most a few steps: see the bucket sizes
-        return code;
+        if constexpr (kOneBoundaryPerBucket) {
+            return Code(code + (linear >= bounds[code]));  // branch-free: one step at most
+        } else {
+            while (linear >= bounds[code]) ++code;  // at most a few steps: see the bucket sizes
+            return code;
+        }
     }
 };
 
 // 8-bit: with 8 mantissa bits a bucket is narrower than the code spacing everywhere in [0, 1]
 // (0.002 wide below 1, where codes are 0.009 apart; 3e-4 apart on the linear segment), so the
-// loop runs at most once. Values below 2^-13 (1.2e-4) are under the first boundary (1.5e-4).
-using Encode8 = EncodeTable<std::uint8_t, 255, -13, 8>;
+// loop runs at most once (one comparison, branch-free). Values below 2^-13 (1.2e-4) are under the
+// first boundary (1.5e-4).
+using Encode8 = EncodeTable<std::uint8_t, 255, -13, 8, true>;
 // 16-bit: the first boundary is 5.9e-7, above 2^-21; 10 mantissa bits keep a bucket within
 // about 14 codes near 1.0.
-using Encode16 = EncodeTable<std::uint16_t, 65535, -21, 10>;
+using Encode16 = EncodeTable<std::uint16_t, 65535, -21, 10, false>;
 
 float finiteOr0(float v) {
     return std::isfinite(v) ? v : 0.f;

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 
 #include "core/FirstLine.h"
 #include "core/HalfFloat.h"
@@ -30,6 +31,8 @@ using codec::SampleType;
 namespace {
 
 std::atomic<int> g_pngCompression{codec::EncodeOptions{}.pngCompression};
+std::mutex g_exrMutex;
+std::string g_exrCompression = codec::EncodeOptions{}.exrCompression;
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -313,6 +316,24 @@ int pngCompression() {
     return g_pngCompression;
 }
 
+Status setExrCompression(const std::string& name) {
+    static const char* kNames[] = {"none",  "rle", "zips", "zip",  "piz",
+                                   "pxr24", "b44", "b44a", "dwaa", "dwab"};
+    if (std::find(std::begin(kNames), std::end(kNames), name) == std::end(kNames)) {
+        return invalidInput(
+            "EXR compression: expected none, rle, zips, zip, piz, pxr24, b44, "
+            "b44a, dwaa or dwab, got '" +
+            excerpt(name, 60) + "'");
+    }
+    std::lock_guard lock(g_exrMutex);
+    g_exrCompression = name;
+    return Ok{};
+}
+std::string exrCompression() {
+    std::lock_guard lock(g_exrMutex);
+    return g_exrCompression;
+}
+
 Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
     if (Status s = checkReadable(path); !s) return s.error();
     const codec::HeaderCheck check = [&](const codec::Header& h) {
@@ -416,6 +437,7 @@ Result<Writer> writerFor(const std::string& path) {
 Status encodeAndWrite(const std::string& path, const Writer& w, const codec::Samples& s) {
     codec::EncodeOptions options;
     options.pngCompression = g_pngCompression;
+    options.exrCompression = exrCompression();
     Result<std::vector<unsigned char>> bytes = internalError("no encoder");
     switch (w.format) {
         case Format::Png:

@@ -59,6 +59,13 @@ int main(int argc, char** argv) {
                    "8-megapixel photograph, 6 (libpng's default) writes a file 10% smaller "
                    "taking 10x as long to compress (2.4 s against 0.23 s on 2 cores)")
         ->check(CLI::Range(0, 9));
+    std::string exrCompression = flarekit::exrCompression();
+    app.add_option("--exr-compression", exrCompression,
+                   "compression of the EXRs written: piz (default; lossless, and on an "
+                   "8-megapixel photograph 3x as fast as zip and 13% smaller), zip, zips, rle, "
+                   "none, or lossy pxr24, b44, b44a, dwaa, dwab")
+        ->check(CLI::IsMember(
+            {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}));
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);
@@ -75,6 +82,8 @@ int main(int argc, char** argv) {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)
             throw CLI::ValidationError(s.error().message);
         flarekit::setPngCompression(pngLevel);
+        if (flarekit::Status s = flarekit::setExrCompression(exrCompression); !s)
+            throw CLI::ValidationError(s.error().message);
     });
     flarekit::installInterruptHandlers();
     try {

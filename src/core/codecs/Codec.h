@@ -67,6 +67,10 @@ struct EncodeOptions {
     //! takes 10x as long to compress (docs/formats.md has the figures).
     int pngCompression = 1;
     int jpegQuality = 98;  //!< OpenImageIO's default, kept so outputs did not change
+    //! EXR compression by OpenEXR's name (see exrCompressionNames in ImageIO.h). PIZ by
+    //! default: lossless, and on a photograph both faster and smaller than ZIP (an 8-megapixel
+    //! mosaic of HDR photographs: 218 ms and 26.2 MB against ZIP's 652 ms and 30.0 MB).
+    std::string exrCompression = "piz";
 };
 
 }  // namespace flarekit::codec

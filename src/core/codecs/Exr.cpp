@@ -1,6 +1,7 @@
 // OpenEXR through its own C++ library, on its thread pool: reads land straight in flarekit's
 // float RGBA image (each channel a strided slice of it) and writes take their slices from it.
 #include <ImfChannelList.h>
+#include <ImfCompression.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
@@ -101,6 +102,15 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
 
 namespace {
 
+//! OpenEXR's compressions by the names its documentation and tools use.
+const std::pair<const char*, Imf::Compression> kExrCompressions[] = {
+    {"none", Imf::NO_COMPRESSION},   {"rle", Imf::RLE_COMPRESSION},
+    {"zips", Imf::ZIPS_COMPRESSION}, {"zip", Imf::ZIP_COMPRESSION},
+    {"piz", Imf::PIZ_COMPRESSION},   {"pxr24", Imf::PXR24_COMPRESSION},
+    {"b44", Imf::B44_COMPRESSION},   {"b44a", Imf::B44A_COMPRESSION},
+    {"dwaa", Imf::DWAA_COMPRESSION}, {"dwab", Imf::DWAB_COMPRESSION},
+};
+
 //! The encoded file in memory; OpenEXR seeks back to write its line offset table.
 class MemoryStream : public Imf::OStream {
   public:
@@ -121,13 +131,18 @@ class MemoryStream : public Imf::OStream {
 
 }  // namespace
 
-Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions&) {
+Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions& options) {
     startThreadPool();
     if (s.type != SampleType::F32) return internalError("EXR takes float or half samples");
     try {
-        // ZIP (16-line blocks): OpenImageIO's default, lossless and decoded in parallel.
+        const auto named =
+            std::find_if(std::begin(kExrCompressions), std::end(kExrCompressions),
+                         [&](const auto& c) { return options.exrCompression == c.first; });
+        if (named == std::end(kExrCompressions))
+            return internalError("unknown EXR compression '" + options.exrCompression + "'");
+        const Imf::Compression compression = named->second;
         Imf::Header header(s.width, s.height, 1.f, Imath::V2f(0, 0), 1.f, Imf::INCREASING_Y,
-                           Imf::ZIP_COMPRESSION);
+                           compression);
         header.insert("software", Imf::StringAttribute("flarekit"));
         // OpenEXR's writer takes samples of the file's own type: half samples come packed
         // (converted by the caller), floats straight from the image with its stride.
