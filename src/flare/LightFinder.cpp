@@ -10,8 +10,6 @@
 #include <numbers>
 #include <vector>
 
-#include <tbb/parallel_sort.h>
-
 #include "core/LuminanceSample.h"
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
@@ -284,7 +282,7 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
         std::memcpy(&bits, &m.lum[i], sizeof bits);
         keys.push_back((std::uint64_t(bits) << 32) | (0xFFFFFFFFu - std::uint32_t(i)));
     }
-    tbb::parallel_sort(keys.begin(), keys.end(), std::greater<>());  // every core: ~1/8 of apply
+    sortDescending(keys);  // on every core: it was an eighth of a 1080p `apply`
     std::vector<std::uint8_t> seen(m.lum.size(), 0);
     std::vector<std::size_t> stack, members;
     for (const std::uint64_t key : keys) {
