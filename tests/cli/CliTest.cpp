@@ -477,3 +477,34 @@ TEST(Startup, JobsOnPngJpegTiffAndExrNeverLoadOpenImageIo) {
     EXPECT_TRUE(loads({"apply", kSunset, "-o", dir.file("e.bmp")}));
     EXPECT_TRUE(loads({"apply", dir.file("e.bmp"), "-o", dir.file("f.png")}));
 }
+
+TEST(CliFormats, CompressionOptionsChooseTheEncoderAndRefuseBadValues) {
+    TempDir dir;
+    auto compressionOf = [](const std::string& path) {
+        auto in = OIIO::ImageInput::open(path);
+        return in ? std::string(in->spec().get_string_attribute("compression"))
+                  : std::string("unreadable");
+    };
+    ASSERT_EQ(runCli({"postfx", kSunsetHdr, "-o", dir.file("a.exr")}).exitCode, 0);
+    EXPECT_EQ(compressionOf(dir.file("a.exr")), "piz");
+    ASSERT_EQ(runCli({"--exr-compression", "zip", "postfx", kSunsetHdr, "-o", dir.file("b.exr")})
+                  .exitCode,
+              0);
+    EXPECT_EQ(compressionOf(dir.file("b.exr")), "zip");
+    ASSERT_EQ(
+        runCli({"apply", kSunset, "-o", dir.file("c0.png"), "--png-compression", "0"}).exitCode, 0);
+    ASSERT_EQ(
+        runCli({"apply", kSunset, "-o", dir.file("c9.png"), "--png-compression", "9"}).exitCode, 0);
+    EXPECT_GT(std::filesystem::file_size(dir.file("c0.png")),
+              2 * std::filesystem::file_size(dir.file("c9.png")));
+    for (const auto& bad : {std::vector<std::string>{"--exr-compression", "lzma"},
+                            std::vector<std::string>{"--png-compression", "10"}}) {
+        std::vector<std::string> args = {"apply", kSunset, "-o", dir.file("bad.png")};
+        args.insert(args.end(), bad.begin(), bad.end());
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exitCode, 2) << bad[0];
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find(bad[0]), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir.file("bad.png")));
+    }
+}
