@@ -73,20 +73,27 @@ std::uint8_t binarySearchSrgb8(float linear) {
 }
 
 // range(0): threads. RGB codes from float RGBA in 32K-pixel chunks, as writeImage does.
-void BM_EncodeSrgb8(benchmark::State& state) {
+template <typename Code, void (*Encode)(const float*, std::size_t, int, Code*)>
+void BM_Encode(benchmark::State& state) {
     ThreadLimit limit(int(state.range(0)));
     const Image& image = photo();
-    std::vector<std::uint8_t> codes(image.pixelCount() * 3);
+    std::vector<Code> codes(image.pixelCount() * 3);
     const int chunks = int((image.pixelCount() + 32767) / 32768);
     for (auto _ : state) {
         parallelFor(0, chunks, 1, [&](int c0, int c1) {
             const std::size_t p0 = std::size_t(c0) * 32768,
                               p1 = std::min(image.pixelCount(), std::size_t(c1) * 32768);
-            encodeSrgb8(image.data() + p0 * 4, p1 - p0, 3, codes.data() + p0 * 3);
+            Encode(image.data() + p0 * 4, p1 - p0, 3, codes.data() + p0 * 3);
         });
         benchmark::DoNotOptimize(codes.data());
     }
     setRates(state, image);
+}
+void BM_EncodeSrgb8(benchmark::State& state) {
+    BM_Encode<std::uint8_t, encodeSrgb8>(state);
+}
+void BM_EncodeSrgb16(benchmark::State& state) {
+    BM_Encode<std::uint16_t, encodeSrgb16>(state);
 }
 
 void BM_EncodeSrgb8BinarySearch(benchmark::State& state) {
@@ -100,22 +107,6 @@ void BM_EncodeSrgb8BinarySearch(benchmark::State& state) {
                 for (std::size_t c = 0; c < 3; ++c)
                     codes[p * 3 + c] = binarySearchSrgb8(image.data()[p * 4 + c]);
             }
-        });
-        benchmark::DoNotOptimize(codes.data());
-    }
-    setRates(state, image);
-}
-
-void BM_EncodeSrgb16(benchmark::State& state) {
-    ThreadLimit limit(int(state.range(0)));
-    const Image& image = photo();
-    std::vector<std::uint16_t> codes(image.pixelCount() * 3);
-    const int chunks = int((image.pixelCount() + 32767) / 32768);
-    for (auto _ : state) {
-        parallelFor(0, chunks, 1, [&](int c0, int c1) {
-            const std::size_t p0 = std::size_t(c0) * 32768,
-                              p1 = std::min(image.pixelCount(), std::size_t(c1) * 32768);
-            encodeSrgb16(image.data() + p0 * 4, p1 - p0, 3, codes.data() + p0 * 3);
         });
         benchmark::DoNotOptimize(codes.data());
     }

@@ -521,26 +521,19 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     s.srgb = !isFloat;
     const std::size_t pixels = image.pixelCount();
     // Encoded here, so the code values are flarekit's, not a library's.
-    if (format == SampleFormat::U8) {
-        std::vector<std::uint8_t> codes(pixels * std::size_t(channels));
+    const auto encodeAs = [&](auto code, SampleType type, auto encode) {
+        std::vector<decltype(code)> codes(pixels * std::size_t(channels));
         forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
-            encodeSrgb8(image.data() + p0 * 4, p1 - p0, channels,
-                        codes.data() + p0 * std::size_t(channels));
+            encode(image.data() + p0 * 4, p1 - p0, channels,
+                   codes.data() + p0 * std::size_t(channels));
         });
-        s.type = SampleType::U8;
+        s.type = type;
         s.data = codes.data();
         return encodeAndWrite(path, *writer, s);
-    }
-    if (format == SampleFormat::U16) {
-        std::vector<std::uint16_t> codes(pixels * std::size_t(channels));
-        forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
-            encodeSrgb16(image.data() + p0 * 4, p1 - p0, channels,
-                         codes.data() + p0 * std::size_t(channels));
-        });
-        s.type = SampleType::U16;
-        s.data = codes.data();
-        return encodeAndWrite(path, *writer, s);
-    }
+    };
+    if (format == SampleFormat::U8) return encodeAs(std::uint8_t{}, SampleType::U8, encodeSrgb8);
+    if (format == SampleFormat::U16)
+        return encodeAs(std::uint16_t{}, SampleType::U16, encodeSrgb16);
     // Floats, linear, NaN and infinities as 0. EXR takes the image's own pixels (strided) when
     // they are all finite, or half floats converted here; other writers take packed samples.
     s.type = SampleType::F32;
