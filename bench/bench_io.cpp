@@ -113,6 +113,30 @@ void BM_EncodeSrgb8BinarySearch(benchmark::State& state) {
     setRates(state, image);
 }
 
+// range(0): threads. 8-bit RGB codes to float RGBA through the decode table, as readImage does.
+void BM_DecodeSrgb8(benchmark::State& state) {
+    ThreadLimit limit(int(state.range(0)));
+    const Image& image = photo();
+    std::vector<std::uint8_t> codes(image.pixelCount() * 3);
+    encodeSrgb8(image.data(), image.pixelCount(), 3, codes.data());
+    Image out(image.width(), image.height());
+    const float* table = srgb8DecodeTable();
+    for (auto _ : state) {
+        parallelFor(0, image.height(), 16, [&](int y0, int y1) {
+            for (std::size_t p = std::size_t(y0) * std::size_t(image.width());
+                 p < std::size_t(y1) * std::size_t(image.width()); ++p) {
+                float* d = out.data() + p * 4;
+                d[0] = table[codes[p * 3]];
+                d[1] = table[codes[p * 3 + 1]];
+                d[2] = table[codes[p * 3 + 2]];
+                d[3] = 1.f;
+            }
+        });
+        benchmark::DoNotOptimize(out.data());
+    }
+    setRates(state, image);  // bytes: the float RGBA written
+}
+
 //! range(0): threads; the file is written once per iteration (encode, temp file, rename).
 void writeBench(benchmark::State& state, const char* name, int pngLevel = 1) {
     ThreadLimit limit(int(state.range(0)));
@@ -166,6 +190,7 @@ void BM_ReadJpeg(benchmark::State& state) {
 
 BENCHMARK(BM_EncodeSrgb8)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime();
 BENCHMARK(BM_EncodeSrgb8BinarySearch)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime();
+BENCHMARK(BM_DecodeSrgb8)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime();
 BENCHMARK(BM_EncodeSrgb16)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime();
 BENCHMARK(BM_WritePng)
     ->ArgsProduct({{1, 2}, {0, 1, 6}})

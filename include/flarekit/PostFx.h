@@ -35,7 +35,7 @@ struct PostFxResult {
 
 struct PassTime {
     std::string pass;  //!< "bright", "downsample", "upsample", "ghosts", "halo", "streaks", "lens",
-                       //!< "composite"
+                       //!< "composite"; GL also "upload" and "read-back"
     double milliseconds = 0;  //!< CPU: wall time; GL: GPU time from a timer query
     double wallMilliseconds =
         0;  //!< wall time (GL: glFinish before and after; llvmpipe's timer queries are unreliable)

@@ -85,3 +85,24 @@ TEST(PixelTransfer, TheChainGivesTheSameResultWhicheverWayItsImageTravels) {
     for (std::size_t i = 0; i < input.pixelCount() * 4; ++i)
         ASSERT_EQ(again->final.data()[i], floats->final.data()[i]) << i;
 }
+
+TEST(PixelTransfer, EveryPassAndTransferIsTimedWithinItsWallTime) {
+    // The timer queries bracket each group with two timestamps: a GPU figure is never negative
+    // and never more than the wall time around it (a first draw once read as hours).
+    test::glContext();
+    auto chain = GpuPostFx::create();
+    ASSERT_TRUE(chain.ok()) << chain.error().message;
+    std::vector<PassTime> times;
+    PostFxOptions options;
+    options.times = &times;
+    for (int run = 0; run < 2; ++run)
+        ASSERT_TRUE(chain->run(test::hdrSky(384, 216), {}, options).ok());
+    ASSERT_GE(times.size(), 4u);
+    EXPECT_EQ(times.front().pass, "upload");
+    EXPECT_EQ(times.back().pass, "read-back");
+    for (const PassTime& t : times) {
+        EXPECT_GE(t.milliseconds, 0.0) << t.pass;
+        EXPECT_LE(t.milliseconds, t.wallMilliseconds + 0.5) << t.pass;
+        EXPECT_GT(t.wallMilliseconds, 0.0) << t.pass;
+    }
+}
