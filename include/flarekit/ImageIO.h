@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "flarekit/Image.h"
 #include "flarekit/Result.h"
@@ -67,6 +68,8 @@ int pngCompression();
 //! default: lossless, fastest and smallest on photographs), pxr24, b44, b44a, dwaa, dwab (the
 //! last five lossy). InvalidInput for another name.
 Status setExrCompression(const std::string& name);
+//! The names setExrCompression accepts, in OpenEXR's order.
+std::vector<std::string> exrCompressionNames();
 std::string exrCompression();
 
 //! Fails with InvalidInput when the directory `path` would be written into does not exist.

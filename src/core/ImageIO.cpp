@@ -316,14 +316,17 @@ int pngCompression() {
     return g_pngCompression;
 }
 
+std::vector<std::string> exrCompressionNames() {
+    return codec::exrCompressionNames();
+}
+
 Status setExrCompression(const std::string& name) {
-    static const char* kNames[] = {"none",  "rle", "zips", "zip",  "piz",
-                                   "pxr24", "b44", "b44a", "dwaa", "dwab"};
-    if (std::find(std::begin(kNames), std::end(kNames), name) == std::end(kNames)) {
-        return invalidInput(
-            "EXR compression: expected none, rle, zips, zip, piz, pxr24, b44, "
-            "b44a, dwaa or dwab, got '" +
-            excerpt(name, 60) + "'");
+    const std::vector<std::string> names = codec::exrCompressionNames();
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+        return invalidInput("EXR compression: expected one of " + list + ", got '" +
+                            excerpt(name, 60) + "'");
     }
     std::lock_guard lock(g_exrMutex);
     g_exrCompression = name;

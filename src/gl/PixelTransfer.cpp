@@ -37,7 +37,7 @@ void PixelTransfer::release(Ring& ring) {
     ring.bytes = 0;
 }
 
-Status PixelTransfer::prepare(Ring& ring, GLenum, std::size_t bytes, bool forWriting) {
+Status PixelTransfer::prepare(Ring& ring, std::size_t bytes, bool forWriting) {
     if (ring.bytes >= bytes) return Ok{};
     release(ring);
     // Persistent and coherent: mapped once for the buffer's life; the fences order the CPU's
@@ -74,9 +74,7 @@ Status PixelTransfer::upload(GLuint texture, const Image& image, bool half) {
     const int w = image.width(), h = image.height();
     const std::size_t pixelBytes = half ? 8 : 16;
     const int rows = std::min(h, bandRows(w, pixelBytes));
-    if (Status s = prepare(m_upload, GL_PIXEL_UNPACK_BUFFER,
-                           std::size_t(rows) * std::size_t(w) * pixelBytes, true);
-        !s)
+    if (Status s = prepare(m_upload, std::size_t(rows) * std::size_t(w) * pixelBytes, true); !s)
         return s;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     for (int y = 0, band = 0; y < h; y += rows, ++band) {
@@ -106,9 +104,7 @@ Status PixelTransfer::download(GLuint texture, int w, int h, bool half, Image& o
     if (out.width() != w || out.height() != h) out = Image(w, h);
     const std::size_t pixelBytes = half ? 8 : 16;
     const int rows = std::min(h, bandRows(w, pixelBytes));
-    if (Status s = prepare(m_download, GL_PIXEL_PACK_BUFFER,
-                           std::size_t(rows) * std::size_t(w) * pixelBytes, false);
-        !s)
+    if (Status s = prepare(m_download, std::size_t(rows) * std::size_t(w) * pixelBytes, false); !s)
         return s;
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     const GLenum type = half ? GL_HALF_FLOAT : GL_FLOAT;

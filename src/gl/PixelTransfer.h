@@ -30,7 +30,7 @@ class PixelTransfer {
         GLsync fences[2] = {nullptr, nullptr};
         std::size_t bytes = 0;  //!< per buffer
     };
-    Status prepare(Ring& ring, GLenum target, std::size_t bytes, bool forWriting);
+    Status prepare(Ring& ring, std::size_t bytes, bool forWriting);
     static void wait(Ring& ring, int slot);
     static void release(Ring& ring);
     Ring m_upload, m_download;

@@ -12,7 +12,6 @@
 #include <pthread.h>
 #include <sched.h>
 #include <sys/statvfs.h>
-#include <unistd.h>
 
 #include "Common.h"
 #include "ParamOptions.h"
@@ -38,9 +37,6 @@ struct DemoArgs {
     bool noVideo = false;
     bool noFrames = false;  //!< render and time the drive, write nothing (the render stage alone)
 };
-
-//! Nice value of the frame writer's thread: low enough that the render stage always wins a core.
-constexpr int kWriterNice = 19;
 
 //! Writes frames in order on its own thread; at most `capacity` frames wait in memory.
 class FrameWriter {

@@ -64,8 +64,7 @@ int main(int argc, char** argv) {
                    "compression of the EXRs written: piz (default; lossless, and on an "
                    "8-megapixel photograph 3x as fast as zip and 13% smaller), zip, zips, rle, "
                    "none, or lossy pxr24, b44, b44a, dwaa, dwab")
-        ->check(CLI::IsMember(
-            {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}));
+        ->check(CLI::IsMember(flarekit::exrCompressionNames()));
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);

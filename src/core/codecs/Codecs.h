@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "core/codecs/Codec.h"
 #include "flarekit/Image.h"
@@ -40,6 +41,9 @@ Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptio
 Result<std::vector<unsigned char>> encodeJpeg(const Samples& s, const EncodeOptions& options);
 Result<std::vector<unsigned char>> encodeTiff(const Samples& s, const EncodeOptions& options);
 Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions& options);
+
+//! OpenEXR's compression names encodeExr accepts (EncodeOptions::exrCompression).
+std::vector<std::string> exrCompressionNames();
 
 //! The message of a layout a native codec leaves to OpenImageIO; ImageIO checks for it.
 inline constexpr const char* kUnsupportedLayout = "layout left to OpenImageIO";

@@ -17,6 +17,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "core/FirstLine.h"
 #include "core/codecs/Codecs.h"
@@ -70,10 +71,10 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         out.hasAlpha = channels.findChannel("A") != nullptr;
         out.grey = grey;
         out.allHalf = true;
-        for (const char* name : {"R", "G", "B", "Y", "A"}) {
-            const Imf::Channel* c = channels.findChannel(name);
-            if (c && (rgb || std::strcmp(name, "Y") == 0 || std::strcmp(name, "A") == 0))
-                out.allHalf = out.allHalf && c->type == Imf::HALF;
+        for (const char* name : rgb ? std::vector<const char*>{"R", "G", "B", "A"}
+                                    : std::vector<const char*>{"Y", "A"}) {
+            const Imf::Channel* c = channels.findChannel(name);  // the channels read
+            if (c) out.allHalf = out.allHalf && c->type == Imf::HALF;
         }
         // Slices into the RGBA floats; a channel the file lacks is filled (alpha with 1).
         char* base = reinterpret_cast<char*>(out.image.data());
@@ -110,6 +111,16 @@ const std::pair<const char*, Imf::Compression> kExrCompressions[] = {
     {"b44", Imf::B44_COMPRESSION},   {"b44a", Imf::B44A_COMPRESSION},
     {"dwaa", Imf::DWAA_COMPRESSION}, {"dwab", Imf::DWAB_COMPRESSION},
 };
+
+}  // namespace
+
+std::vector<std::string> exrCompressionNames() {
+    std::vector<std::string> names;
+    for (const auto& c : kExrCompressions) names.emplace_back(c.first);
+    return names;
+}
+
+namespace {
 
 //! The encoded file in memory; OpenEXR seeks back to write its line offset table.
 class MemoryStream : public Imf::OStream {
