@@ -13,6 +13,8 @@ packages=(
   libopenimageio-dev openimageio-tools
   # JSON presets and scenes, CLI parsing, threads
   nlohmann-json3-dev libcli11-dev libtbb-dev
+  # the lens starburst: Fraunhofer diffraction of the aperture through FFTW's real 2-D FFT
+  libfftw3-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # contact-sheet labels are rendered by OIIO with this font

@@ -132,5 +132,6 @@ void addLightsCommand(CLI::App& app, int& exitCode);
 void addDemoCommand(CLI::App& app, int& exitCode);
 void addPspCommand(CLI::App& app, int& exitCode);
 void addPostFxCommand(CLI::App& app, int& exitCode);
+void addLensCommand(CLI::App& app, int& exitCode);
 
 }  // namespace flarekit::cli

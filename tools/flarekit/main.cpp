@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
     addDemoCommand(app, exitCode);
     addPspCommand(app, exitCode);
     addPostFxCommand(app, exitCode);
+    addLensCommand(app, exitCode);
     // The limits are in place before any subcommand's callback runs.
     app.parse_complete_callback([&] {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)

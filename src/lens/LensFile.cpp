@@ -1,0 +1,171 @@
+// Reading presets/lenses/NAME.json: the format's ranges through the parameter tables, then the
+// physical checks a prescription must pass before anything is traced through it.
+#include <cmath>
+#include <sstream>
+
+#include "core/ParamJson.h"
+#include "core/PresetFiles.h"
+#include "flarekit/Lens.h"
+
+namespace flarekit {
+
+namespace {
+
+constexpr std::string_view kLensDir = "lenses";
+
+//! "mgf2", "none" or {"n": 1.38, "thickness_nm": 99.6}.
+Result<LensCoating> readCoating(const nlohmann::json& v, const JsonPlace& place) {
+    if (v.is_string()) {
+        if (v.get<std::string>() == "none") return LensCoating{};
+        if (v.get<std::string>() == "mgf2") return mgf2Coating();
+    }
+    if (v.is_object()) {
+        LensCoating c;
+        for (const auto& [key, value] : v.items()) {
+            if ((key != "n" && key != "thickness_nm") || !value.is_number())
+                return (place / key).fail("expected \"n\" (1-3) or \"thickness_nm\" (0-10000), got " +
+                                          jsonExcerpt(value));
+            (key == "n" ? c.n : c.thicknessNm) = value.get<double>();
+        }
+        if (!(c.n >= 1.0 && c.n <= 3.0))
+            return (place / "n").fail("expected a number in [1, 3], got " + formatParamNumber(c.n));
+        if (!(c.thicknessNm > 0.0 && c.thicknessNm <= 10000.0))
+            return (place / "thickness_nm")
+                .fail("expected a number in (0, 10000], got " + formatParamNumber(c.thicknessNm));
+        return c;
+    }
+    return place.fail("expected \"none\", \"mgf2\" or {\"n\": ..., \"thickness_nm\": ...}, got " +
+                      jsonExcerpt(v));
+}
+
+//! Sag of a sphere of radius r at height h (0 for flat); h <= |r| is checked before.
+double sag(double r, double h) {
+    if (r == 0.0) return 0.0;
+    return r - std::copysign(std::sqrt(r * r - h * h), r);
+}
+
+Status checkPhysics(const Lens& lens, const JsonPlace& place) {
+    const JsonPlace surfaces = place / "surfaces";
+    if (lens.surfaces.size() < 2) return surfaces.fail("expected at least 2 surfaces");
+    int stops = 0;
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+        const LensSurface& s = lens.surfaces[i];
+        const JsonPlace at = surfaces.index(i);
+        if (s.stop) {
+            ++stops;
+            if (s.radius != 0.0) return (at / "radius").fail("the stop is flat: expected no radius");
+        }
+        if (s.radius != 0.0 && s.semiAperture >= std::fabs(s.radius))
+            return (at / "semi_aperture")
+                .fail(formatParamNumber(s.semiAperture) + " is not below |radius| " +
+                      formatParamNumber(std::fabs(s.radius)) + ": the sphere has no such zone");
+        if (i + 1 < lens.surfaces.size()) {
+            const LensSurface& next = lens.surfaces[i + 1];
+            const double h = std::min(s.semiAperture, next.semiAperture);
+            // The axial gap at the rim of the smaller clear aperture: surfaces that cross
+            // there would be glass (or air) of negative thickness.
+            const double edge = s.thickness + sag(next.radius, h) - sag(s.radius, h);
+            if (edge < 0.0)
+                return (at / "thickness")
+                    .fail(formatParamNumber(s.thickness) + " makes surfaces " + std::to_string(i) +
+                          " and " + std::to_string(i + 1) + " cross within their clear apertures " +
+                          "(gap " + formatParamNumber(edge) + " mm at height " +
+                          formatParamNumber(h) + " mm)");
+        } else if (s.thickness <= 0.0) {
+            return (at / "thickness")
+                .fail("expected the sensor behind the last surface (a positive number), got " +
+                      formatParamNumber(s.thickness));
+        }
+    }
+    if (stops != 1)
+        return surfaces.fail("expected exactly one surface with \"stop\": true, found " +
+                             std::to_string(stops));
+    return Ok{};
+}
+
+}  // namespace
+
+int Lens::stopIndex() const {
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        if (surfaces[i].stop) return int(i);
+    }
+    return -1;
+}
+
+std::vector<std::string> lensNames() { return presetNamesIn(std::string(kLensDir)); }
+
+Result<Lens> parseLens(const std::string& text, const std::string& source) {
+    JsonLimits limits;
+    limits.what = "a lens";
+    auto doc = parseJsonText(text, source, limits);
+    if (!doc) return doc.error();
+    const nlohmann::json& j = *doc;
+    const JsonPlace place(source);
+    if (!j.is_object()) return place.fail("expected an object, got " + jsonExcerpt(j));
+    Lens lens;
+    for (const auto& [key, value] : j.items()) {
+        const JsonPlace at = place / key;
+        if (key == "name" || key == "source") {
+            if (!value.is_string()) return at.fail("expected a string, got " + jsonExcerpt(value));
+            (key == "name" ? lens.name : lens.source) = value.get<std::string>();
+        } else if (key == "f_number" || key == "patent_focal_length_mm") {
+            if (!value.is_number() || !(value.get<double>() > 0.0) ||
+                !(value.get<double>() < 1e5))
+                return at.fail("expected a positive number, got " + jsonExcerpt(value));
+            (key == "f_number" ? lens.fNumber : lens.patentFocalLength) = value.get<double>();
+        } else if (key == "surfaces") {
+            if (!value.is_array()) return at.fail("expected an array, got " + jsonExcerpt(value));
+            if (value.size() > 512) return at.fail("expected at most 512 surfaces");
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                LensSurface s;
+                const JsonPlace si = at.index(i);
+                if (auto e = readParams(value[i], std::span<const Param<LensSurface>>(kLensSurfaceParams), s, si, {"coating"}))
+                    return *e;
+                if (value[i].contains("coating")) {
+                    auto c = readCoating(value[i]["coating"], si / "coating");
+                    if (!c) return c.error();
+                    s.coating = *c;
+                }
+                if (!value[i].contains("n_d") && value[i].contains("v_d"))
+                    return (si / "v_d").fail("given without n_d: air does not disperse");
+                lens.surfaces.push_back(s);
+            }
+        } else if (key == "aperture") {
+            if (auto e = readParams(value, std::span<const Param<LensAperture>>(kLensApertureParams), lens.aperture, at))
+                return *e;
+        } else if (key == "sensor") {
+            if (auto e = readParams(value, std::span<const Param<LensSensor>>(kLensSensorParams), lens.sensor, at))
+                return *e;
+        } else {
+            return at.fail(
+                "unknown key (expected one of: name, source, f_number, patent_focal_length_mm, "
+                "surfaces, aperture, sensor)");
+        }
+    }
+    if (!j.contains("surfaces")) return (place / "surfaces").fail("missing; expected an array");
+    if (auto s = checkPhysics(lens, place); !s) return s.error();
+    if (lens.name.empty()) lens.name = source;
+    return lens;
+}
+
+Result<Lens> loadLens(const std::string& nameOrPath) {
+    return loadPresetFile(nameOrPath, std::string(kLensDir), parseLens);
+}
+
+Result<Lens> stopDown(const Lens& lens, double fNumber) {
+    const Paraxial p = paraxial(lens);
+    if (!(fNumber > 0.0) || !std::isfinite(fNumber))
+        return invalidInput("--f-number: expected a positive number");
+    if (fNumber < p.fNumber * (1.0 - 1e-9)) {
+        std::ostringstream os;
+        os << lens.name << ": --f-number " << fNumber << " is wider than the stop as written (F/"
+           << p.fNumber << "): a lens can only be stopped down";
+        return invalidInput(os.str());
+    }
+    Lens out = lens;
+    // Paraxially the entrance pupil scales with the stop, so the f-number goes as 1 / radius.
+    out.surfaces[std::size_t(out.stopIndex())].semiAperture *= p.fNumber / fNumber;
+    return out;
+}
+
+}  // namespace flarekit

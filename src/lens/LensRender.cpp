@@ -1,0 +1,404 @@
+// `lens render`: each source's ghosts as traced meshes (Hullin et al., "Physically-Based
+// Real-Time Lens Flare Rendering", SIGGRAPH 2011): a grid of rays over the first surface is
+// traced along the ghost's path without clipping; every grid triangle is rasterised on the
+// sensor with the irradiance its area change implies, and masked per pixel by the iris polygon
+// (from the interpolated stop coordinates) and by the clear apertures (the interpolated largest
+// r / semi-aperture), so ghosts are the aperture seen through the path: cut by vignetting,
+// stretched off axis, as large as their defocus. Then the aperture's diffraction starburst and
+// a veiling-glare halo.
+#include <algorithm>
+#include <cmath>
+
+#include "core/Parallel.h"
+#include "flarekit/Lens.h"
+#include "lens/LensTrace.h"
+#include "lens/Spectrum.h"
+#include "lens/Starburst.h"
+
+namespace flarekit {
+
+namespace {
+
+using lens::RayResult;
+using lens::TraceLens;
+
+//! How the image sits on the sensor: centred, fitted inside it, `mmPerPixel` square pixels.
+struct SensorMap {
+    double mmPerPixel = 0, width = 0, height = 0;
+    //! Display coordinates: mm from the axis, y up. A camera's image is inverted and the photo
+    //! turned upright; the lens is rotationally symmetric, so tracing in display coordinates
+    //! is the same 180-degree-turned picture.
+    double toMmX(double px) const { return (px - width / 2) * mmPerPixel; }
+    double toMmY(double py) const { return (height / 2 - py) * mmPerPixel; }
+    double toPxX(double mm) const { return mm / mmPerPixel + width / 2; }
+    double toPxY(double mm) const { return height / 2 - mm / mmPerPixel; }
+};
+
+//! The iris and clear-aperture masks soften over this share of the stop radius, so a ghost's
+//! polygon edge is antialiased at any mesh resolution.
+constexpr double kMaskEdge = 0.015;
+
+double edgeMask(double q) { return std::clamp((1.0 - q) / kMaskEdge + 0.5, 0.0, 1.0); }
+
+//! One ghost at one wavelength for one source: the traced grid, in pixels.
+struct Mesh {
+    int side = 0;
+    std::vector<RayResult> rays;
+    std::array<double, 3> weight{};  //!< energy per channel x entrance share of one triangle
+    double minY = 0, maxY = 0;       //!< pixel rows the mesh touches
+};
+
+//! The field angle (degrees) whose direct image's centroid lands at display point (x, y) mm:
+//! paraxial first, then corrected twice by the traced centroid (distortion).
+std::array<double, 2> fieldAngle(const TraceLens& t, double focal, double x, double y) {
+    double tx = x / focal, ty = y / focal;
+    const auto path = lens::ghostPath(int(t.surfaces.size()), -1, -1);
+    const double sa = t.surfaces.front().semiAperture;
+    for (int iter = 0; iter < 2; ++iter) {
+        const lens::Vec dir =
+            lens::beamDirection(std::atan(tx) * 180 / M_PI, std::atan(ty) * 180 / M_PI);
+        double cx = 0, cy = 0;
+        int n = 0;
+        for (int k = 0; k < 64; ++k) {
+            const double gx = sa * (2.0 * ((k % 8) + 0.5) / 8 - 1), gy = sa * (2.0 * ((k / 8) + 0.5) / 8 - 1);
+            const RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, gx, gy), dir, true);
+            if (r.alive) cx += r.x, cy += r.y, ++n;
+        }
+        if (n == 0) break;
+        cx /= n, cy /= n;
+        if (std::fabs(cx) > 1e-9) tx *= x / cx;
+        if (std::fabs(cy) > 1e-9) ty *= y / cy;
+    }
+    return {std::atan(tx) * 180 / M_PI, std::atan(ty) * 180 / M_PI};
+}
+
+Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens::Vec dir,
+               int side, const SensorMap& map) {
+    Mesh m;
+    m.side = side;
+    m.rays.resize(std::size_t(side) * std::size_t(side));
+    const double sa = t.surfaces.front().semiAperture;
+    m.minY = 1e30, m.maxY = -1e30;
+    for (int iy = 0; iy < side; ++iy) {
+        for (int ix = 0; ix < side; ++ix) {
+            const double x = sa * (2.0 * ix / (side - 1) - 1.0), y = sa * (2.0 * iy / (side - 1) - 1.0);
+            RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, x, y), dir, false);
+            if (r.alive) {
+                r.x = map.toPxX(r.x), r.y = map.toPxY(r.y);
+                m.minY = std::min(m.minY, r.y), m.maxY = std::max(m.maxY, r.y);
+            }
+            m.rays[std::size_t(iy) * std::size_t(side) + std::size_t(ix)] = r;
+        }
+    }
+    return m;
+}
+
+//! Below this a contribution is invisible in any output (under a 16-bit sRGB file's smallest
+//! step above black, 1 / 65535 / 12.92 linear): a ghost's triangles fainter than that are not
+//! drawn. Large defocused ghosts spread over many frames' worth of sensor are mostly this.
+constexpr double kInvisible = 1e-6;
+
+//! How a triangle meets a mask (the iris at one crossing, or the clear apertures): the masks
+//! are convex and their coordinates vary linearly over a triangle, so three vertices inside
+//! (by the edge's width) mean all of it is, three outside one half-plane mean none of it.
+enum class Cover { Inside, Outside, Edge };
+
+Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResult& b, const RayResult& c,
+                int k) {
+    const std::size_t i = std::size_t(2 * k);
+    const double qa = lens::irisRadius(iris, a.stop[i], a.stop[i + 1]);
+    const double qb = lens::irisRadius(iris, b.stop[i], b.stop[i + 1]);
+    const double qc = lens::irisRadius(iris, c.stop[i], c.stop[i + 1]);
+    if (std::max({qa, qb, qc}) < 1.0 - kMaskEdge) return Cover::Inside;
+    // Outside together: beyond the same edge line (or, for a circle, a shared tangent side is
+    // not needed; a whole triangle past the circle's edge is caught per pixel).
+    if (iris.blades >= 3 && iris.roundness <= 0) {
+        for (int e = 0; e < iris.blades; ++e) {
+            const double nx = iris.normals[std::size_t(2 * e)], ny = iris.normals[std::size_t(2 * e + 1)];
+            const double limit = iris.cosHalf * (1.0 + kMaskEdge);
+            if (a.stop[i] * nx + a.stop[i + 1] * ny > limit && b.stop[i] * nx + b.stop[i + 1] * ny > limit &&
+                c.stop[i] * nx + c.stop[i + 1] * ny > limit)
+                return Cover::Outside;
+        }
+    }
+    return Cover::Edge;
+}
+
+//! Adds the triangle (a, b, c) of `m` to rows [rowBegin, rowEnd) of `out` (RGB in RGBA).
+void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const RayResult& b,
+               const RayResult& c, Image& out, int rowBegin, int rowEnd) {
+    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (area == 0.0) return;
+    // Irradiance: the triangle's share of the entrance over its area on the sensor.
+    const double pixels = std::fabs(area) * 0.5;
+    const double density = 1.0 / std::max(pixels, 1.0);
+    const double peak = density * std::max({a.throughput, b.throughput, c.throughput}) *
+                        std::max({m.weight[0], m.weight[1], m.weight[2]});
+    if (peak < kInvisible) return;
+    if (std::min({a.vignette, b.vignette, c.vignette}) > 1.0 + kMaskEdge) return;
+    const bool vignetteEdge = std::max({a.vignette, b.vignette, c.vignette}) >= 1.0 - kMaskEdge;
+    std::array<bool, lens::kMaxStopCrossings> irisEdge{};
+    const int crossings = a.stopCrossings;
+    for (int k = 0; k < crossings; ++k) {
+        const Cover cover = irisCover(iris, a, b, c, k);
+        if (cover == Cover::Outside) return;
+        irisEdge[std::size_t(k)] = cover == Cover::Edge;
+    }
+    if (pixels < 1.0) {
+        // Smaller than a pixel (a focused ghost, a caustic): it may cover no pixel centre, so
+        // its whole energy goes to the pixel under its centroid, masked there.
+        const double cx = (a.x + b.x + c.x) / 3, cy = (a.y + b.y + c.y) / 3;
+        const int px = int(std::floor(cx)), py = int(std::floor(cy));
+        if (px < 0 || px >= out.width() || py < rowBegin || py >= rowEnd) return;
+        double mask = edgeMask((a.vignette + b.vignette + c.vignette) / 3);
+        for (int k = 0; k < crossings; ++k) {
+            const std::size_t i = std::size_t(2 * k);
+            mask *= edgeMask(lens::irisRadius(iris, (a.stop[i] + b.stop[i] + c.stop[i]) / 3,
+                                              (a.stop[i + 1] + b.stop[i + 1] + c.stop[i + 1]) / 3));
+        }
+        const double v = mask * (a.throughput + b.throughput + c.throughput) / 3;
+        float* p = out.row(py) + 4 * px;
+        p[0] += float(v * m.weight[0]), p[1] += float(v * m.weight[1]), p[2] += float(v * m.weight[2]);
+        return;
+    }
+    const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
+    const int x1 = std::min(out.width() - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
+    const int y0 = std::max(rowBegin, int(std::floor(std::min({a.y, b.y, c.y}))));
+    const int y1 = std::min(rowEnd - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
+    const double inv = 1.0 / area;
+    for (int y = y0; y <= y1; ++y) {
+        float* row = out.row(y);
+        const double py = y + 0.5;
+        for (int x = x0; x <= x1; ++x) {
+            const double px = x + 0.5;
+            // Barycentric weights of the pixel centre; outside when any is negative.
+            const double wa = ((b.x - px) * (c.y - py) - (c.x - px) * (b.y - py)) * inv;
+            const double wb = ((c.x - px) * (a.y - py) - (a.x - px) * (c.y - py)) * inv;
+            const double wc = 1.0 - wa - wb;
+            if (wa < 0 || wb < 0 || wc < 0) continue;
+            double mask = 1.0;
+            if (vignetteEdge) mask = edgeMask(wa * a.vignette + wb * b.vignette + wc * c.vignette);
+            for (int k = 0; k < crossings && mask > 0; ++k) {
+                if (!irisEdge[std::size_t(k)]) continue;
+                const std::size_t i = std::size_t(2 * k);
+                const double sx = wa * a.stop[i] + wb * b.stop[i] + wc * c.stop[i];
+                const double sy = wa * a.stop[i + 1] + wb * b.stop[i + 1] + wc * c.stop[i + 1];
+                mask *= edgeMask(lens::irisRadius(iris, sx, sy));
+            }
+            if (mask <= 0) continue;
+            const double v = mask * density *
+                             (wa * a.throughput + wb * b.throughput + wc * c.throughput);
+            float* p = row + 4 * x;
+            p[0] += float(v * m.weight[0]), p[1] += float(v * m.weight[1]),
+                p[2] += float(v * m.weight[2]);
+        }
+    }
+}
+
+//! Rows [rowBegin, rowEnd) of every triangle of every mesh.
+void rasteriseBand(const std::vector<Mesh>& meshes, const lens::Iris& iris, Image& out,
+                   int rowBegin, int rowEnd) {
+    for (const Mesh& m : meshes) {
+        if (m.maxY < rowBegin || m.minY > rowEnd) continue;
+        const int s = m.side;
+        for (int iy = 0; iy + 1 < s; ++iy) {
+            for (int ix = 0; ix + 1 < s; ++ix) {
+                const RayResult& a = m.rays[std::size_t(iy) * std::size_t(s) + std::size_t(ix)];
+                const RayResult& b = m.rays[std::size_t(iy) * std::size_t(s) + std::size_t(ix) + 1];
+                const RayResult& c = m.rays[std::size_t(iy + 1) * std::size_t(s) + std::size_t(ix)];
+                const RayResult& d =
+                    m.rays[std::size_t(iy + 1) * std::size_t(s) + std::size_t(ix) + 1];
+                if (!a.alive || !b.alive || !c.alive || !d.alive) continue;
+                const double lo = std::min({a.y, b.y, c.y, d.y}), hi = std::max({a.y, b.y, c.y, d.y});
+                if (hi < rowBegin || lo > rowEnd) continue;
+                rasterise(m, iris, a, b, d, out, rowBegin, rowEnd);
+                rasterise(m, iris, a, d, c, out, rowBegin, rowEnd);
+            }
+        }
+    }
+}
+
+//! Which ghosts to draw: the brightest `count` at the angle of the brightest source.
+std::vector<std::array<int, 2>> pickGhosts(const Lens& lens, std::array<double, 2> angle, int count) {
+    std::vector<std::array<int, 2>> out;
+    if (count <= 0) return out;
+    GhostQuery q;
+    q.angleXDeg = angle[0], q.angleYDeg = angle[1], q.gridSide = 16;
+    auto report = analyseGhosts(lens, q);
+    if (!report) return out;
+    for (const GhostFigure& g : report->ghosts) {
+        if (int(out.size()) >= count) break;
+        if (g.intensity[0] + g.intensity[1] + g.intensity[2] > 0) out.push_back({g.first, g.second});
+    }
+    return out;
+}
+
+//! The starburst of one source: the PSF scaled by wavelength (Fraunhofer: the pattern's size
+//! goes as lambda), summed over the samples, `share` of its energy.
+void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& samples,
+                  const LensLight& light, double share, double radiusPx, Image& out) {
+    if (share <= 0 || radiusPx < 1) return;
+    constexpr int kPsfSize = 512;
+    const lens::Psf& psf = lens::aperturePsf(lens.aperture, kPsfSize);
+    // radiusPx is where the PSF grid's edge lands at 550 nm; the kernel reaches it at 700 nm.
+    const double reach = radiusPx * 700.0 / 550.0;
+    const int x0 = std::max(0, int(light.x - reach)), x1 = std::min(out.width() - 1, int(light.x + reach));
+    const int y0 = std::max(0, int(light.y - reach)), y1 = std::min(out.height() - 1, int(light.y + reach));
+    if (x0 > x1 || y0 > y1) return;
+    // The PSF's values are per PSF sample; a pixel covers (samples per pixel)^2 of them.
+    for (const lens::SpectralSample& s : samples) {
+        const double samplesPerPixel = (kPsfSize / 2.0) / (radiusPx * s.lambdaNm / 550.0);
+        const double perPixel = samplesPerPixel * samplesPerPixel;
+        std::array<double, 3> k{};
+        for (int c = 0; c < 3; ++c) k[std::size_t(c)] = share * light.energy[std::size_t(c)] * s.weight[std::size_t(c)] * perPixel;
+        parallelFor(y0, y1 + 1, 16, [&](int begin, int end) {
+            for (int y = begin; y < end; ++y) {
+                float* row = out.row(y);
+                for (int x = x0; x <= x1; ++x) {
+                    const double v = lens::samplePsf(psf, (x + 0.5 - light.x) * samplesPerPixel,
+                                                     (y + 0.5 - light.y) * samplesPerPixel);
+                    if (v == 0.0) continue;
+                    float* p = row + 4 * x;
+                    p[0] += float(v * k[0]), p[1] += float(v * k[1]), p[2] += float(v * k[2]);
+                }
+            }
+        });
+    }
+}
+
+//! Veiling glare: scattering in the glass and the barrel spreads `share` of the light as a
+//! broad halo, here the kernel (1 + (r/r0)^2)^-1.5 whose integral over the plane is 2 pi r0^2.
+//! It is cut at 40 r0, where 97.5% of it has been drawn.
+void addGlare(const LensLight& light, double share, double r0, Image& out) {
+    if (share <= 0 || r0 <= 0) return;
+    const double reach = 40 * r0;
+    const int x0 = std::max(0, int(light.x - reach)), x1 = std::min(out.width() - 1, int(light.x + reach));
+    const int y0 = std::max(0, int(light.y - reach)), y1 = std::min(out.height() - 1, int(light.y + reach));
+    if (x0 > x1 || y0 > y1) return;
+    const double norm = share / (2 * M_PI * r0 * r0);
+    parallelFor(y0, y1 + 1, 16, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            float* row = out.row(y);
+            const double dy = (y + 0.5 - light.y) / r0;
+            for (int x = x0; x <= x1; ++x) {
+                const double dx = (x + 0.5 - light.x) / r0;
+                const double q = 1.0 + dx * dx + dy * dy;
+                const double v = norm / (q * std::sqrt(q));
+                float* p = row + 4 * x;
+                p[0] += float(v * light.energy[0]), p[1] += float(v * light.energy[1]),
+                    p[2] += float(v * light.energy[2]);
+            }
+        }
+    });
+}
+
+void setOpaque(Image& image) {
+    for (int y = 0; y < image.height(); ++y) {
+        float* row = image.row(y);
+        for (int x = 0; x < image.width(); ++x) row[4 * x + 3] = 1.f;
+    }
+}
+
+}  // namespace
+
+Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
+                                        const std::vector<LensLight>& lights,
+                                        const LensRenderOptions& options) {
+    if (Status s = validateParams(options, std::span<const Param<LensRenderOptions>>(kLensRenderParams), "lens render"); !s)
+        return s.error();
+    if (options.spectral > 0 && options.spectral < 3)
+        return invalidInput("--spectral: expected 0 (RGB) or at least 3 samples, got " +
+                            std::to_string(options.spectral));
+    LensFlareLayers layers{Image(width, height), Image(width, height), Image(width, height)};
+    SensorMap map;
+    map.width = width, map.height = height;
+    map.mmPerPixel = std::min(lens.sensor.width / width, lens.sensor.height / height);
+    const auto samples = lens::spectralSamples(options.spectral);
+    std::vector<TraceLens> traces;
+    for (const auto& s : samples) traces.push_back(lens::prepareTrace(lens, s.lambdaNm));
+    const TraceLens dLine = lens::prepareTrace(lens, kLineD);
+    const lens::Iris iris = lens::makeIris(lens.aperture);
+    const double focal = paraxial(lens).focalLength;
+    const double diagonal = std::hypot(double(width), double(height));
+    const double sa = lens.surfaces.front().semiAperture;
+
+    std::size_t brightest = 0;
+    for (std::size_t i = 1; i < lights.size(); ++i) {
+        const auto sum = [](const LensLight& l) { return l.energy[0] + l.energy[1] + l.energy[2]; };
+        if (sum(lights[i]) > sum(lights[brightest])) brightest = i;
+    }
+    std::vector<std::array<int, 2>> ghosts;
+    if (!lights.empty()) {
+        const LensLight& l = lights[brightest];
+        ghosts = pickGhosts(lens, fieldAngle(dLine, focal, map.toMmX(l.x), map.toMmY(l.y)),
+                            options.ghosts);
+    }
+    const int side = options.gridSide;
+    // Each grid cell is (2 sa / (side - 1))^2 of the entrance; a triangle half of it, and the
+    // light entering is spread over the first surface's clear disc.
+    const double cell = 2.0 * sa / (side - 1);
+    const double triangleShare = 0.5 * cell * cell / (M_PI * sa * sa);
+    for (const LensLight& light : lights) {
+        const auto angle = fieldAngle(dLine, focal, map.toMmX(light.x), map.toMmY(light.y));
+        const lens::Vec dir = lens::beamDirection(angle[0], angle[1]);
+        std::vector<Mesh> meshes(ghosts.size() * samples.size());
+        parallelFor(0, int(meshes.size()), 1, [&](int begin, int end) {
+            for (int k = begin; k < end; ++k) {
+                const std::size_t g = std::size_t(k) / samples.size(), w = std::size_t(k) % samples.size();
+                const auto path = lens::ghostPath(int(lens.surfaces.size()), ghosts[g][0], ghosts[g][1]);
+                Mesh m = traceMesh(traces[w], path, dir, side, map);
+                for (int c = 0; c < 3; ++c)
+                    m.weight[std::size_t(c)] = options.ghostGain * light.energy[std::size_t(c)] *
+                                               samples[w].weight[std::size_t(c)] * triangleShare;
+                meshes[std::size_t(k)] = std::move(m);
+            }
+        });
+        constexpr int kBand = 32;
+        parallelFor(0, (height + kBand - 1) / kBand, 1, [&](int begin, int end) {
+            for (int band = begin; band < end; ++band)
+                rasteriseBand(meshes, iris, layers.ghosts, band * kBand,
+                              std::min(height, (band + 1) * kBand));
+        });
+        addStarburst(lens, samples, light, options.starburst, options.starburstSize * diagonal,
+                     layers.starburst);
+        addGlare(light, options.glare, 0.01 * diagonal, layers.glare);
+    }
+    setOpaque(layers.ghosts), setOpaque(layers.starburst), setOpaque(layers.glare);
+    return layers;
+}
+
+std::vector<LensLight> brightSources(const Image& image, double threshold, int cell,
+                                     int maxSources) {
+    std::vector<LensLight> cells;
+    if (cell < 1) cell = 1;
+    const int cw = (image.width() + cell - 1) / cell, ch = (image.height() + cell - 1) / cell;
+    std::vector<LensLight> grid(std::size_t(cw) * std::size_t(ch));
+    std::vector<double> weight(grid.size());
+    for (int y = 0; y < image.height(); ++y) {
+        const float* row = image.row(y);
+        for (int x = 0; x < image.width(); ++x) {
+            const float* p = row + 4 * x;
+            // Rec. 709 luminance of the linear pixel.
+            const double lum = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            if (!(lum >= threshold)) continue;
+            const std::size_t k = std::size_t(y / cell) * std::size_t(cw) + std::size_t(x / cell);
+            LensLight& l = grid[k];
+            l.x += lum * (x + 0.5), l.y += lum * (y + 0.5);
+            weight[k] += lum;
+            for (int c = 0; c < 3; ++c) l.energy[std::size_t(c)] += p[c];
+        }
+    }
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        if (weight[k] <= 0) continue;
+        LensLight l = grid[k];
+        l.x /= weight[k], l.y /= weight[k];
+        cells.push_back(l);
+    }
+    std::sort(cells.begin(), cells.end(), [](const LensLight& a, const LensLight& b) {
+        return a.energy[0] + a.energy[1] + a.energy[2] > b.energy[0] + b.energy[1] + b.energy[2];
+    });
+    if (int(cells.size()) > maxSources) cells.resize(std::size_t(std::max(0, maxSources)));
+    return cells;
+}
+
+}  // namespace flarekit

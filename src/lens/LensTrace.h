@@ -1,0 +1,94 @@
+// The exact sequential tracer: real spheres, vector Snell refraction, Fresnel and coating
+// weights at every interface, the clear aperture of every surface and the iris polygon at the
+// stop. One wavelength per prepared lens. Shared by the ghost analysis and the renderer.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "flarekit/Lens.h"
+
+namespace flarekit::lens {
+
+struct Vec {
+    double x = 0, y = 0, z = 0;
+};
+
+//! The iris polygon, ready to test points against: its edges' outward normals.
+struct Iris {
+    int blades = 0;          //!< < 3: a circle
+    double cosHalf = 1;      //!< cos(pi / blades): the inscribed polygon's edge distance
+    double roundness = 0;
+    std::array<double, 64> normals{};  //!< (x, y) per edge
+};
+Iris makeIris(const LensAperture& aperture);
+//! q <= 1 inside the iris at normalised stop coordinates (q = r / the edge's radius there).
+double irisRadius(const Iris& iris, double x, double y);
+
+struct TraceSurface {
+    double z = 0;             //!< vertex position on the axis
+    double radius = 0;        //!< 0: flat
+    double semiAperture = 0;
+    double nAfter = 1;        //!< index after the surface at this wavelength
+    bool stop = false;
+    LensCoating coating;
+    //! interfaceReflectance against the incidence cosine, kReflectanceSteps + 1 samples, for
+    //! light arriving from the front (travelling +z) and from the back: the complex thin-film
+    //! sum is too dear to evaluate per ray.
+    std::vector<float> reflectFromFront, reflectFromBack;
+};
+inline constexpr int kReflectanceSteps = 2048;
+
+//! A lens at one wavelength, ready to trace.
+struct TraceLens {
+    std::vector<TraceSurface> surfaces;
+    double sensorZ = 0;
+    double lambdaNm = 587.56;
+    LensAperture aperture;
+    Iris iris;
+    double nBefore(std::size_t i) const { return i == 0 ? 1.0 : surfaces[i - 1].nAfter; }
+};
+TraceLens prepareTrace(const Lens& lens, double lambdaNm);
+
+//! One interaction of a path: refract through `surface`, or reflect off it.
+struct PathStep {
+    int surface = 0;
+    bool reflect = false;
+};
+//! The direct path (first = second = -1) or the ghost reflecting at `first`, then at `second`.
+std::vector<PathStep> ghostPath(int surfaceCount, int first, int second);
+
+//! Whether the surface can reflect at all (an index step or a coating) and is not the stop.
+bool canReflect(const TraceLens& lens, int surface);
+
+//! The largest number of stop crossings a two-reflection path has (forward, back, forward).
+inline constexpr int kMaxStopCrossings = 3;
+
+struct RayResult {
+    bool alive = false;        //!< reached the sensor plane (no miss, no total reflection)
+    double x = 0, y = 0;       //!< sensor-plane position, mm
+    double throughput = 0;     //!< product of the Fresnel/coating factors along the path
+    //! Where the ray crossed the stop, in units of the stop's radius, once per crossing.
+    std::array<double, 2 * kMaxStopCrossings> stop{};
+    int stopCrossings = 0;
+    //! The largest r / semi-aperture over every other surface the path meets: > 1 = vignetted.
+    double vignette = 0;
+};
+
+//! Traces one ray along `path`. With `clip`, a ray past a clear aperture or outside the iris is
+//! dead; without, it continues (the renderer masks per pixel from `stop` and `vignette`).
+RayResult traceRay(const TraceLens& lens, const std::vector<PathStep>& path, Vec origin, Vec dir,
+                   bool clip);
+
+//! irisRadius of the aperture (builds the iris on each call; for one-off tests of a point).
+double apertureRadius(const LensAperture& aperture, double x, double y);
+
+//! The parallel beam of a field angle: direction (tan X, tan Y, 1) normalised, and the origin of
+//! the ray through (x, y) on the first surface's vertex plane, started in front of the lens.
+//! Whether the ray meets the first surface inside its clear aperture (the light that enters).
+bool entersLens(const TraceLens& lens, Vec origin, Vec dir);
+
+Vec beamDirection(double angleXDeg, double angleYDeg);
+Vec beamOrigin(const TraceLens& lens, Vec dir, double x, double y);
+
+}  // namespace flarekit::lens

@@ -1,0 +1,255 @@
+// flarekit lens: flares from real lens prescriptions (presets/lenses). `ghosts` reports every
+// two-reflection ghost of a distant point source, `render` puts the traced flare on an image,
+// `list` names the shipped lenses with their paraxial figures.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "Common.h"
+#include "ParamOptions.h"
+#include "flarekit/Lens.h"
+#include "flarekit/Tonemap.h"
+
+namespace flarekit::cli {
+
+namespace {
+
+struct LensArgs {
+    std::string lens, angle = "0,0", in, out, light = "auto", layersDir, backend = "cpu",
+                      tonemap = "auto";
+    bool json = false;
+    int rays = 64;
+    double fNumber = 0, threshold = 2.0, expandGain = 64.0;
+    int maxSources = 32;
+    LensRenderOptions render;
+};
+
+Result<Lens> openLens(const LensArgs& a) {
+    auto lens = loadLens(a.lens);
+    if (!lens) return lens;
+    if (a.fNumber > 0) return stopDown(*lens, a.fNumber);
+    return lens;
+}
+
+Result<std::array<double, 2>> parseAngle(const std::string& text) {
+    const auto p = parsePoint(text);
+    if (!p) return invalidInput("--angle: expected X,Y in degrees, got '" + text + "'");
+    return std::array<double, 2>{p->x, p->y};
+}
+
+nlohmann::json figureJson(const GhostFigure& g) {
+    nlohmann::json j;
+    if (g.first >= 0) j["surfaces"] = {g.first, g.second};
+    j["center"] = {g.centerX, g.centerY};
+    j["radius_mm"] = g.radius;
+    j["intensity"] = {g.intensity[0], g.intensity[1], g.intensity[2]};
+    return j;
+}
+
+int runGhosts(const LensArgs& a) {
+    auto lens = openLens(a);
+    if (!lens) return report(lens.error());
+    auto angle = parseAngle(a.angle);
+    if (!angle) return report(angle.error());
+    GhostQuery q;
+    q.angleXDeg = (*angle)[0], q.angleYDeg = (*angle)[1], q.gridSide = a.rays;
+    auto r = analyseGhosts(*lens, q);
+    if (!r) return report(r.error());
+    if (a.json) {
+        nlohmann::json j;
+        j["lens"] = lens->name;
+        j["focal_length_mm"] = r->focalLength;
+        j["direct"] = figureJson(r->direct);
+        j["ghosts"] = nlohmann::json::array();
+        for (const GhostFigure& g : r->ghosts) j["ghosts"].push_back(figureJson(g));
+        std::printf("%s\n", j.dump(1).c_str());
+        return kExitOk;
+    }
+    std::printf("%s: f = %.3f mm, %zu ghosts at %g,%g degrees\n", lens->name.c_str(),
+                r->focalLength, r->ghosts.size(), q.angleXDeg, q.angleYDeg);
+    std::printf("%-8s %10s %10s %10s %12s %12s %12s\n", "path", "x mm", "y mm", "radius mm",
+                "R", "G", "B");
+    const auto row = [](const std::string& name, const GhostFigure& g) {
+        std::printf("%-8s %10.3f %10.3f %10.3f %12.3e %12.3e %12.3e\n", name.c_str(), g.centerX,
+                    g.centerY, g.radius, g.intensity[0], g.intensity[1], g.intensity[2]);
+    };
+    row("direct", r->direct);
+    for (const GhostFigure& g : r->ghosts)
+        row(std::to_string(g.first) + "," + std::to_string(g.second), g);
+    return kExitOk;
+}
+
+int runList() {
+    std::printf("%-26s %9s %7s %8s  %s\n", "lens", "f mm", "F/", "surfaces", "source");
+    for (const std::string& name : lensNames()) {
+        auto lens = loadLens(name);
+        if (!lens) return report(lens.error());
+        const Paraxial p = paraxial(*lens);
+        std::printf("%-26s %9.3f %7.2f %8zu  %s\n", name.c_str(), p.focalLength, p.fNumber,
+                    lens->surfaces.size(), excerptLine(lens->source, 60).c_str());
+    }
+    return kExitOk;
+}
+
+//! The render's peak per pixel: the input, the three layers, their sum and the composite.
+JobMemory lensRenderMemory() {
+    return {6 * 16.0, 256.0 * (1 << 20), "lens render: 96 bytes per pixel and the traced meshes"};
+}
+
+Result<std::vector<LensLight>> findLights(const LensArgs& a, const Image& image) {
+    const int diagonal = int(std::hypot(double(image.width()), double(image.height())));
+    if (a.light == "all")
+        return brightSources(image, a.threshold, std::max(1, diagonal / 64), a.maxSources);
+    if (a.light == "auto") {
+        // The brightest region: bright pixels merged over cells a sixteenth of the diagonal.
+        auto lights = brightSources(image, a.threshold, std::max(1, diagonal / 16), 1);
+        if (lights.empty())
+            warn(a.in + ": no pixel at or above --threshold " + std::to_string(a.threshold) +
+                 ": no light, no flare");
+        return lights;
+    }
+    const auto p = parsePoint(a.light);
+    if (!p) return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + a.light + "'");
+    LensLight l;
+    l.x = p->x, l.y = p->y;
+    // Its energy: the bright pixels within a 32nd of the diagonal.
+    const double r = diagonal / 32.0;
+    for (int y = std::max(0, int(l.y - r)); y < std::min(image.height(), int(l.y + r) + 1); ++y) {
+        for (int x = std::max(0, int(l.x - r)); x < std::min(image.width(), int(l.x + r) + 1); ++x) {
+            const Rgba& px = image.at(x, y);
+            const double lum = 0.2126 * px.r + 0.7152 * px.g + 0.0722 * px.b;
+            if (lum >= a.threshold && std::hypot(x + 0.5 - l.x, y + 0.5 - l.y) <= r)
+                l.energy[0] += px.r, l.energy[1] += px.g, l.energy[2] += px.b;
+        }
+    }
+    if (l.energy[0] + l.energy[1] + l.energy[2] <= 0) {
+        warn(a.in + ": nothing at or above --threshold near " + a.light +
+             ": the light is given the energy of a 100-pixel source of 100 x white");
+        l.energy = {1e4, 1e4, 1e4};
+    }
+    return std::vector<LensLight>{l};
+}
+
+Result<ImageOutput> renderJob(const LensArgs& a) {
+    if (a.backend == "gl")
+        return invalidInput("lens render --backend gl: the GL path of the lens renderer is not "
+                            "built yet; use --backend cpu");
+    auto lens = openLens(a);
+    if (!lens) return lens.error();
+    auto loaded = readInputImage(a.in, lensRenderMemory());
+    if (!loaded) return loaded.error();
+    Image& image = loaded->image;
+    // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
+    // a clipped sun carries the energy a flare needs; the output keeps the original pixels.
+    Image sources = image;
+    if (!loaded->wasFloat && a.expandGain > 1.0) expandHighlights(sources, float(a.expandGain));
+    auto lights = findLights(a, sources);
+    if (!lights) return lights.error();
+    auto layers = renderLensFlare(*lens, image.width(), image.height(), *lights, a.render);
+    if (!layers) return layers.error();
+    Image flare(image.width(), image.height());
+    for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
+        flare.data()[i] = layers->ghosts.data()[i] + layers->starburst.data()[i] +
+                          layers->glare.data()[i];
+    for (int y = 0; y < flare.height(); ++y)
+        for (int x = 0; x < flare.width(); ++x) flare.at(x, y).a = 1.f;
+    if (!a.layersDir.empty()) {
+        if (Status s = makeOutputDirectory(a.layersDir); !s) return s.error();
+        const auto path = [&](const char* n) { return (std::filesystem::path(a.layersDir) / n).string(); };
+        for (const auto& [name, img] : {std::pair{"ghosts.exr", &layers->ghosts},
+                                        std::pair{"starburst.exr", &layers->starburst},
+                                        std::pair{"glare.exr", &layers->glare},
+                                        std::pair{"flare.exr", &flare}}) {
+            if (Status s = writeImage(path(name), *img); !s) return s.error();
+        }
+    }
+    Image out = image;
+    for (std::size_t i = 0; i < out.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c) out.data()[4 * i + c] += flare.data()[4 * i + c];
+    }
+    ToneOperator op = defaultDisplayCurve(loaded->wasFloat, a.out);
+    if (const auto named = namedToneOperator(a.tonemap)) op = *named;
+    toneMapImage(out, op, 1.f);
+    ImageOutput result{std::move(out), {}};
+    result.options.alpha = loaded->hasAlpha;
+    std::printf("%s: %zu light(s), flare through %s (f = %.1f mm)\n", a.out.c_str(),
+                lights->size(), lens->name.c_str(), paraxial(*lens).focalLength);
+    return result;
+}
+
+}  // namespace
+
+void addLensCommand(CLI::App& app, int& exitCode) {
+    auto args = std::make_shared<LensArgs>();
+    CLI::App* lens = app.add_subcommand(
+        "lens", "Flares from real lens prescriptions (presets/lenses): traced ghosts, coatings, "
+                "dispersion, the aperture's starburst");
+    lens->require_subcommand(1);
+
+    CLI::App* list = lens->add_subcommand("list", "the shipped lenses and their paraxial figures");
+    list->callback([&exitCode] { exitCode = runList(); });
+
+    const auto addLensOptions = [&](CLI::App* cmd) {
+        cmd->add_option("lens", args->lens, "lens prescription: a shipped name or a JSON file")
+            ->required();
+        cmd->add_option("--f-number", args->fNumber,
+                        "stop the lens down to this working f-number (paraxial)")
+            ->check(CLI::Range(0.1, 1000.0));
+    };
+    CLI::App* ghosts = lens->add_subcommand(
+        "ghosts", "every two-reflection ghost of a distant point source, brightest first");
+    addLensOptions(ghosts);
+    ghosts->add_option("--angle", args->angle,
+                       "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
+        ->capture_default_str();
+    ghosts->add_option("--rays", args->rays, "rays per side over the first clear aperture")
+        ->check(CLI::Range(2, 1024))
+        ->capture_default_str();
+    ghosts->add_flag("--json", args->json, "print the report as JSON");
+    ghosts->callback([args, &exitCode] { exitCode = runGhosts(*args); });
+
+    CLI::App* render = lens->add_subcommand("render", "the lens's flare on an image");
+    // Photographs and HDRIs clip the sun by orders of magnitude (a real one is ~10^5 x the sky),
+    // so the command draws ghosts 100 x their physical share by default; --ghost_gain 1 is the
+    // lens's own figure for an unclipped source.
+    args->render.ghostGain = 100;
+    addLensOptions(render);
+    render->add_option("input", args->in, "input image (EXR kept linear; 8-bit files sRGB)")
+        ->required();
+    render->add_option("-o,--output", args->out, "output image")->required();
+    render->add_option("--light", args->light,
+                       "X,Y in pixels, auto (the brightest region) or all (every bright area "
+                       "is a source, merged on a grid)")
+        ->capture_default_str();
+    render->add_option("--threshold", args->threshold,
+                       "linear luminance at which a pixel is a source")
+        ->check(CLI::Range(0.0, 1e12))
+        ->capture_default_str();
+    render->add_option("--max-sources", args->maxSources, "--light all: at most N sources")
+        ->check(CLI::Range(1, 4096))
+        ->capture_default_str();
+    render->add_option("--expand-highlights", args->expandGain,
+                       "8/16-bit input: clipped pixels count as GAIN x white as sources")
+        ->check(CLI::Range(1.0, 1e6))
+        ->capture_default_str();
+    render->add_option("--layers", args->layersDir,
+                       "also write ghosts, starburst, glare and flare (their sum) as linear EXR "
+                       "into DIR");
+    render->add_option("--backend", args->backend, "cpu (gl: not built yet)")
+        ->check(CLI::IsMember({"cpu", "gl"}))
+        ->capture_default_str();
+    render->add_option("--tonemap", args->tonemap,
+                       "display curve for 8/16-bit outputs: auto (filmic for HDR input), none, "
+                       "aces, filmic")
+        ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
+        ->capture_default_str();
+    for (const auto& p : kLensRenderParams) addParamOption(render, p, args->render);
+    render->callback([args, &exitCode] {
+        exitCode = runImageJob(args->out, [&] { return renderJob(*args); });
+    });
+}
+
+}  // namespace flarekit::cli
