@@ -24,15 +24,17 @@ namespace flarekit {
 //! An anti-reflection coating: none, the classic single quarter-wave MgF2 layer (n = 1.38 at a
 //! 550 nm design wavelength), or any single layer given by its index and thickness.
 struct LensCoating {
-    double n = 1.0;             //!< the layer's index; 1 with thickness 0 = no coating
-    double thicknessNm = 0.0;   //!< physical thickness
+    double n = 1.0;            //!< the layer's index; 1 with thickness 0 = no coating
+    double thicknessNm = 0.0;  //!< physical thickness
     bool present() const { return thicknessNm > 0; }
 };
 
 //! MgF2's index (1.38, the value the format names) and its quarter-wave thickness at 550 nm.
 inline constexpr double kMgF2Index = 1.38;
 inline constexpr double kMgF2DesignNm = 550.0;
-inline LensCoating mgf2Coating() { return {kMgF2Index, kMgF2DesignNm / (4.0 * kMgF2Index)}; }
+inline LensCoating mgf2Coating() {
+    return {kMgF2Index, kMgF2DesignNm / (4.0 * kMgF2Index)};
+}
 
 struct LensSurface {
     double radius = 0.0;        //!< mm; 0 = flat
@@ -85,8 +87,8 @@ inline constexpr Param<LensSensor> kLensSensorParams[] = {
 
 struct Lens {
     std::string name, source;
-    double fNumber = 0.0;              //!< the patent's (recorded, not used)
-    double patentFocalLength = 0.0;    //!< mm, the value the source states; 0 = not stated
+    double fNumber = 0.0;            //!< the patent's (recorded, not used)
+    double patentFocalLength = 0.0;  //!< mm, the value the source states; 0 = not stated
     std::vector<LensSurface> surfaces;
     LensAperture aperture;
     LensSensor sensor;
@@ -119,21 +121,21 @@ double interfaceReflectance(double n0, double n2, double cos0, const LensCoating
                             double lambdaNm);
 
 struct Paraxial {
-    double focalLength = 0.0;      //!< effective focal length, mm
-    double backFocus = 0.0;        //!< last surface to the paraxial focus, mm
-    double entrancePupil = 0.0;    //!< entrance pupil radius, mm
-    double fNumber = 0.0;          //!< focalLength / (2 entrancePupil)
+    double focalLength = 0.0;    //!< effective focal length, mm
+    double backFocus = 0.0;      //!< last surface to the paraxial focus, mm
+    double entrancePupil = 0.0;  //!< entrance pupil radius, mm
+    double fNumber = 0.0;        //!< focalLength / (2 entrancePupil)
 };
 //! The y-nu paraxial trace of the direct path at `lambdaNm`.
 Paraxial paraxial(const Lens& lens, double lambdaNm = kLineD);
 
 //! One ghost (or the direct image) of a distant point source, as `lens ghosts` reports it.
 struct GhostFigure {
-    int first = -1, second = -1;   //!< reflects at `first`, then at `second` (< first); -1: direct
-    double centerX = 0, centerY = 0;  //!< mm, centroid of the rays reaching the sensor (d line)
-    double radius = 0;             //!< mm, centroid to the farthest of those rays
+    int first = -1, second = -1;  //!< reflects at `first`, then at `second` (< first); -1: direct
+    double centerX = 0, centerY = 0;    //!< mm, centroid of the rays reaching the sensor (d line)
+    double radius = 0;                  //!< mm, centroid to the farthest of those rays
     std::array<double, 3> intensity{};  //!< share of the light entering the first surface (RGB)
-    int rays = 0;                  //!< rays of the d-line trace that reached the sensor
+    int rays = 0;                       //!< rays of the d-line trace that reached the sensor
 };
 
 struct GhostQuery {
@@ -159,13 +161,13 @@ struct LensLight {
 };
 
 struct LensRenderOptions {
-    int ghosts = 66;           //!< the brightest ghosts rendered
-    int spectral = 0;          //!< 0: RGB (3 wavelengths); >= 3: that many spectral samples
-    int gridSide = 48;         //!< rays per side of each ghost's traced mesh
-    double starburst = 0.02;   //!< share of a source's energy drawn as the starburst
+    int ghosts = 66;              //!< the brightest ghosts rendered
+    int spectral = 0;             //!< 0: RGB (3 wavelengths); >= 3: that many spectral samples
+    int gridSide = 48;            //!< rays per side of each ghost's traced mesh
+    double starburst = 0.02;      //!< share of a source's energy drawn as the starburst
     double starburstSize = 0.25;  //!< its radius at 550 nm, as a share of the image diagonal
-    double glare = 0.01;       //!< share drawn as the veiling glare halo
-    double ghostGain = 1.0;    //!< multiplies the physical ghost intensities
+    double glare = 0.01;          //!< share drawn as the veiling glare halo
+    double ghostGain = 1.0;       //!< multiplies the physical ghost intensities
 };
 
 inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {

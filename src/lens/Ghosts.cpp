@@ -94,8 +94,8 @@ Result<GhostReport> analyseGhosts(const Lens& lens, const GhostQuery& query) {
     report.ghosts.resize(pairs.size());
     parallelFor(0, int(pairs.size()), 1, [&](int begin, int end) {
         for (int k = begin; k < end; ++k)
-            report.ghosts[std::size_t(k)] = figure(lens, traces, beams, pairs[std::size_t(k)][0],
-                                                   pairs[std::size_t(k)][1]);
+            report.ghosts[std::size_t(k)] =
+                figure(lens, traces, beams, pairs[std::size_t(k)][0], pairs[std::size_t(k)][1]);
     });
     std::stable_sort(report.ghosts.begin(), report.ghosts.end(),
                      [](const GhostFigure& a, const GhostFigure& b) {

@@ -23,8 +23,9 @@ Result<LensCoating> readCoating(const nlohmann::json& v, const JsonPlace& place)
         LensCoating c;
         for (const auto& [key, value] : v.items()) {
             if ((key != "n" && key != "thickness_nm") || !value.is_number())
-                return (place / key).fail("expected \"n\" (1-3) or \"thickness_nm\" (0-10000), got " +
-                                          jsonExcerpt(value));
+                return (place / key)
+                    .fail("expected \"n\" (1-3) or \"thickness_nm\" (0-10000), got " +
+                          jsonExcerpt(value));
             (key == "n" ? c.n : c.thicknessNm) = value.get<double>();
         }
         if (!(c.n >= 1.0 && c.n <= 3.0))
@@ -53,7 +54,8 @@ Status checkPhysics(const Lens& lens, const JsonPlace& place) {
         const JsonPlace at = surfaces.index(i);
         if (s.stop) {
             ++stops;
-            if (s.radius != 0.0) return (at / "radius").fail("the stop is flat: expected no radius");
+            if (s.radius != 0.0)
+                return (at / "radius").fail("the stop is flat: expected no radius");
         }
         if (s.radius != 0.0 && s.semiAperture >= std::fabs(s.radius))
             return (at / "semi_aperture")
@@ -92,7 +94,9 @@ int Lens::stopIndex() const {
     return -1;
 }
 
-std::vector<std::string> lensNames() { return presetNamesIn(std::string(kLensDir)); }
+std::vector<std::string> lensNames() {
+    return presetNamesIn(std::string(kLensDir));
+}
 
 Result<Lens> parseLens(const std::string& text, const std::string& source) {
     JsonLimits limits;
@@ -109,8 +113,7 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
             if (!value.is_string()) return at.fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? lens.name : lens.source) = value.get<std::string>();
         } else if (key == "f_number" || key == "patent_focal_length_mm") {
-            if (!value.is_number() || !(value.get<double>() > 0.0) ||
-                !(value.get<double>() < 1e5))
+            if (!value.is_number() || !(value.get<double>() > 0.0) || !(value.get<double>() < 1e5))
                 return at.fail("expected a positive number, got " + jsonExcerpt(value));
             (key == "f_number" ? lens.fNumber : lens.patentFocalLength) = value.get<double>();
         } else if (key == "surfaces") {
@@ -119,7 +122,9 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
             for (std::size_t i = 0; i < value.size(); ++i) {
                 LensSurface s;
                 const JsonPlace si = at.index(i);
-                if (auto e = readParams(value[i], std::span<const Param<LensSurface>>(kLensSurfaceParams), s, si, {"coating"}))
+                if (auto e = readParams(value[i],
+                                        std::span<const Param<LensSurface>>(kLensSurfaceParams), s,
+                                        si, {"coating"}))
                     return *e;
                 if (value[i].contains("coating")) {
                     auto c = readCoating(value[i]["coating"], si / "coating");
@@ -131,10 +136,13 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
                 lens.surfaces.push_back(s);
             }
         } else if (key == "aperture") {
-            if (auto e = readParams(value, std::span<const Param<LensAperture>>(kLensApertureParams), lens.aperture, at))
+            if (auto e =
+                    readParams(value, std::span<const Param<LensAperture>>(kLensApertureParams),
+                               lens.aperture, at))
                 return *e;
         } else if (key == "sensor") {
-            if (auto e = readParams(value, std::span<const Param<LensSensor>>(kLensSensorParams), lens.sensor, at))
+            if (auto e = readParams(value, std::span<const Param<LensSensor>>(kLensSensorParams),
+                                    lens.sensor, at))
                 return *e;
         } else {
             return at.fail(

@@ -38,7 +38,9 @@ struct SensorMap {
 //! polygon edge is antialiased at any mesh resolution.
 constexpr double kMaskEdge = 0.015;
 
-double edgeMask(double q) { return std::clamp((1.0 - q) / kMaskEdge + 0.5, 0.0, 1.0); }
+double edgeMask(double q) {
+    return std::clamp((1.0 - q) / kMaskEdge + 0.5, 0.0, 1.0);
+}
 
 //! One ghost at one wavelength for one source: the traced grid, in pixels.
 struct Mesh {
@@ -60,8 +62,10 @@ std::array<double, 2> fieldAngle(const TraceLens& t, double focal, double x, dou
         double cx = 0, cy = 0;
         int n = 0;
         for (int k = 0; k < 64; ++k) {
-            const double gx = sa * (2.0 * ((k % 8) + 0.5) / 8 - 1), gy = sa * (2.0 * ((k / 8) + 0.5) / 8 - 1);
-            const RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, gx, gy), dir, true);
+            const double gx = sa * (2.0 * ((k % 8) + 0.5) / 8 - 1),
+                         gy = sa * (2.0 * ((k / 8) + 0.5) / 8 - 1);
+            const RayResult r =
+                lens::traceRay(t, path, lens::beamOrigin(t, dir, gx, gy), dir, true);
             if (r.alive) cx += r.x, cy += r.y, ++n;
         }
         if (n == 0) break;
@@ -72,8 +76,8 @@ std::array<double, 2> fieldAngle(const TraceLens& t, double focal, double x, dou
     return {std::atan(tx) * 180 / M_PI, std::atan(ty) * 180 / M_PI};
 }
 
-Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens::Vec dir,
-               int side, const SensorMap& map) {
+Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens::Vec dir, int side,
+               const SensorMap& map) {
     Mesh m;
     m.side = side;
     m.rays.resize(std::size_t(side) * std::size_t(side));
@@ -81,7 +85,8 @@ Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens
     m.minY = 1e30, m.maxY = -1e30;
     for (int iy = 0; iy < side; ++iy) {
         for (int ix = 0; ix < side; ++ix) {
-            const double x = sa * (2.0 * ix / (side - 1) - 1.0), y = sa * (2.0 * iy / (side - 1) - 1.0);
+            const double x = sa * (2.0 * ix / (side - 1) - 1.0),
+                         y = sa * (2.0 * iy / (side - 1) - 1.0);
             RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, x, y), dir, false);
             if (r.alive) {
                 r.x = map.toPxX(r.x), r.y = map.toPxY(r.y);
@@ -114,9 +119,11 @@ Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResult& b, 
     // not needed; a whole triangle past the circle's edge is caught per pixel).
     if (iris.blades >= 3 && iris.roundness <= 0) {
         for (int e = 0; e < iris.blades; ++e) {
-            const double nx = iris.normals[std::size_t(2 * e)], ny = iris.normals[std::size_t(2 * e + 1)];
+            const double nx = iris.normals[std::size_t(2 * e)],
+                         ny = iris.normals[std::size_t(2 * e + 1)];
             const double limit = iris.cosHalf * (1.0 + kMaskEdge);
-            if (a.stop[i] * nx + a.stop[i + 1] * ny > limit && b.stop[i] * nx + b.stop[i + 1] * ny > limit &&
+            if (a.stop[i] * nx + a.stop[i + 1] * ny > limit &&
+                b.stop[i] * nx + b.stop[i + 1] * ny > limit &&
                 c.stop[i] * nx + c.stop[i + 1] * ny > limit)
                 return Cover::Outside;
         }
@@ -158,7 +165,8 @@ void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const 
         }
         const double v = mask * (a.throughput + b.throughput + c.throughput) / 3;
         float* p = out.row(py) + 4 * px;
-        p[0] += float(v * m.weight[0]), p[1] += float(v * m.weight[1]), p[2] += float(v * m.weight[2]);
+        p[0] += float(v * m.weight[0]), p[1] += float(v * m.weight[1]),
+            p[2] += float(v * m.weight[2]);
         return;
     }
     const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
@@ -186,8 +194,8 @@ void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const 
                 mask *= edgeMask(lens::irisRadius(iris, sx, sy));
             }
             if (mask <= 0) continue;
-            const double v = mask * density *
-                             (wa * a.throughput + wb * b.throughput + wc * c.throughput);
+            const double v =
+                mask * density * (wa * a.throughput + wb * b.throughput + wc * c.throughput);
             float* p = row + 4 * x;
             p[0] += float(v * m.weight[0]), p[1] += float(v * m.weight[1]),
                 p[2] += float(v * m.weight[2]);
@@ -209,7 +217,8 @@ void rasteriseBand(const std::vector<Mesh>& meshes, const lens::Iris& iris, Imag
                 const RayResult& d =
                     m.rays[std::size_t(iy + 1) * std::size_t(s) + std::size_t(ix) + 1];
                 if (!a.alive || !b.alive || !c.alive || !d.alive) continue;
-                const double lo = std::min({a.y, b.y, c.y, d.y}), hi = std::max({a.y, b.y, c.y, d.y});
+                const double lo = std::min({a.y, b.y, c.y, d.y}),
+                             hi = std::max({a.y, b.y, c.y, d.y});
                 if (hi < rowBegin || lo > rowEnd) continue;
                 rasterise(m, iris, a, b, d, out, rowBegin, rowEnd);
                 rasterise(m, iris, a, d, c, out, rowBegin, rowEnd);
@@ -219,7 +228,8 @@ void rasteriseBand(const std::vector<Mesh>& meshes, const lens::Iris& iris, Imag
 }
 
 //! Which ghosts to draw: the brightest `count` at the angle of the brightest source.
-std::vector<std::array<int, 2>> pickGhosts(const Lens& lens, std::array<double, 2> angle, int count) {
+std::vector<std::array<int, 2>> pickGhosts(const Lens& lens, std::array<double, 2> angle,
+                                           int count) {
     std::vector<std::array<int, 2>> out;
     if (count <= 0) return out;
     GhostQuery q;
@@ -228,7 +238,8 @@ std::vector<std::array<int, 2>> pickGhosts(const Lens& lens, std::array<double, 
     if (!report) return out;
     for (const GhostFigure& g : report->ghosts) {
         if (int(out.size()) >= count) break;
-        if (g.intensity[0] + g.intensity[1] + g.intensity[2] > 0) out.push_back({g.first, g.second});
+        if (g.intensity[0] + g.intensity[1] + g.intensity[2] > 0)
+            out.push_back({g.first, g.second});
     }
     return out;
 }
@@ -242,15 +253,19 @@ void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& sam
     const lens::Psf& psf = lens::aperturePsf(lens.aperture, kPsfSize);
     // radiusPx is where the PSF grid's edge lands at 550 nm; the kernel reaches it at 700 nm.
     const double reach = radiusPx * 700.0 / 550.0;
-    const int x0 = std::max(0, int(light.x - reach)), x1 = std::min(out.width() - 1, int(light.x + reach));
-    const int y0 = std::max(0, int(light.y - reach)), y1 = std::min(out.height() - 1, int(light.y + reach));
+    const int x0 = std::max(0, int(light.x - reach)),
+              x1 = std::min(out.width() - 1, int(light.x + reach));
+    const int y0 = std::max(0, int(light.y - reach)),
+              y1 = std::min(out.height() - 1, int(light.y + reach));
     if (x0 > x1 || y0 > y1) return;
     // The PSF's values are per PSF sample; a pixel covers (samples per pixel)^2 of them.
     for (const lens::SpectralSample& s : samples) {
         const double samplesPerPixel = (kPsfSize / 2.0) / (radiusPx * s.lambdaNm / 550.0);
         const double perPixel = samplesPerPixel * samplesPerPixel;
         std::array<double, 3> k{};
-        for (int c = 0; c < 3; ++c) k[std::size_t(c)] = share * light.energy[std::size_t(c)] * s.weight[std::size_t(c)] * perPixel;
+        for (int c = 0; c < 3; ++c)
+            k[std::size_t(c)] =
+                share * light.energy[std::size_t(c)] * s.weight[std::size_t(c)] * perPixel;
         parallelFor(y0, y1 + 1, 16, [&](int begin, int end) {
             for (int y = begin; y < end; ++y) {
                 float* row = out.row(y);
@@ -272,8 +287,10 @@ void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& sam
 void addGlare(const LensLight& light, double share, double r0, Image& out) {
     if (share <= 0 || r0 <= 0) return;
     const double reach = 40 * r0;
-    const int x0 = std::max(0, int(light.x - reach)), x1 = std::min(out.width() - 1, int(light.x + reach));
-    const int y0 = std::max(0, int(light.y - reach)), y1 = std::min(out.height() - 1, int(light.y + reach));
+    const int x0 = std::max(0, int(light.x - reach)),
+              x1 = std::min(out.width() - 1, int(light.x + reach));
+    const int y0 = std::max(0, int(light.y - reach)),
+              y1 = std::min(out.height() - 1, int(light.y + reach));
     if (x0 > x1 || y0 > y1) return;
     const double norm = share / (2 * M_PI * r0 * r0);
     parallelFor(y0, y1 + 1, 16, [&](int begin, int end) {
@@ -304,7 +321,9 @@ void setOpaque(Image& image) {
 Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
                                         const std::vector<LensLight>& lights,
                                         const LensRenderOptions& options) {
-    if (Status s = validateParams(options, std::span<const Param<LensRenderOptions>>(kLensRenderParams), "lens render"); !s)
+    if (Status s = validateParams(
+            options, std::span<const Param<LensRenderOptions>>(kLensRenderParams), "lens render");
+        !s)
         return s.error();
     if (options.spectral > 0 && options.spectral < 3)
         return invalidInput("--spectral: expected 0 (RGB) or at least 3 samples, got " +
@@ -344,8 +363,10 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
         std::vector<Mesh> meshes(ghosts.size() * samples.size());
         parallelFor(0, int(meshes.size()), 1, [&](int begin, int end) {
             for (int k = begin; k < end; ++k) {
-                const std::size_t g = std::size_t(k) / samples.size(), w = std::size_t(k) % samples.size();
-                const auto path = lens::ghostPath(int(lens.surfaces.size()), ghosts[g][0], ghosts[g][1]);
+                const std::size_t g = std::size_t(k) / samples.size(),
+                                  w = std::size_t(k) % samples.size();
+                const auto path =
+                    lens::ghostPath(int(lens.surfaces.size()), ghosts[g][0], ghosts[g][1]);
                 Mesh m = traceMesh(traces[w], path, dir, side, map);
                 for (int c = 0; c < 3; ++c)
                     m.weight[std::size_t(c)] = options.ghostGain * light.energy[std::size_t(c)] *

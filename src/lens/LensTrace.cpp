@@ -8,9 +8,15 @@ namespace flarekit::lens {
 
 namespace {
 
-Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec operator*(Vec a, double k) { return {a.x * k, a.y * k, a.z * k}; }
-double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec operator+(Vec a, Vec b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+Vec operator*(Vec a, double k) {
+    return {a.x * k, a.y * k, a.z * k};
+}
+double dot(Vec a, Vec b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 //! Distance along dir to the surface's cap on the vertex side; negative when it misses.
 double intersect(const TraceSurface& s, Vec o, Vec d) {
@@ -115,7 +121,8 @@ double irisRadius(const Iris& iris, double x, double y) {
     // the edge distance cos(pi / n).
     double d = 0;
     for (int k = 0; k < iris.blades; ++k)
-        d = std::max(d, x * iris.normals[std::size_t(2 * k)] + y * iris.normals[std::size_t(2 * k + 1)]);
+        d = std::max(
+            d, x * iris.normals[std::size_t(2 * k)] + y * iris.normals[std::size_t(2 * k + 1)]);
     d /= iris.cosHalf;
     if (iris.roundness <= 0 || r == 0) return d;
     // Roundness rho blends the edge's radius at this angle, P = r / d, toward the circle's 1:
@@ -123,7 +130,9 @@ double irisRadius(const Iris& iris, double x, double y) {
     return r * d / (r + (d - r) * iris.roundness);
 }
 
-double apertureRadius(const LensAperture& a, double x, double y) { return irisRadius(makeIris(a), x, y); }
+double apertureRadius(const LensAperture& a, double x, double y) {
+    return irisRadius(makeIris(a), x, y);
+}
 
 Vec beamDirection(double angleXDeg, double angleYDeg) {
     Vec d{std::tan(angleXDeg * M_PI / 180.0), std::tan(angleYDeg * M_PI / 180.0), 1.0};
@@ -161,9 +170,9 @@ RayResult traceRay(const TraceLens& lens, const std::vector<PathStep>& path, Vec
             r.vignette = std::max(r.vignette, radial);
         }
         // The normal facing the incoming ray.
-        Vec normal = s.radius == 0.0 ? Vec{0, 0, 1}
-                                     : Vec{o.x / s.radius, o.y / s.radius,
-                                           (o.z - (s.z + s.radius)) / s.radius};
+        Vec normal = s.radius == 0.0
+                         ? Vec{0, 0, 1}
+                         : Vec{o.x / s.radius, o.y / s.radius, (o.z - (s.z + s.radius)) / s.radius};
         if (dot(normal, d) > 0) normal = normal * -1.0;
         const double cosi = std::min(1.0, -dot(normal, d));
         const bool forward = d.z > 0;

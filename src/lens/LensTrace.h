@@ -16,8 +16,8 @@ struct Vec {
 
 //! The iris polygon, ready to test points against: its edges' outward normals.
 struct Iris {
-    int blades = 0;          //!< < 3: a circle
-    double cosHalf = 1;      //!< cos(pi / blades): the inscribed polygon's edge distance
+    int blades = 0;      //!< < 3: a circle
+    double cosHalf = 1;  //!< cos(pi / blades): the inscribed polygon's edge distance
     double roundness = 0;
     std::array<double, 64> normals{};  //!< (x, y) per edge
 };
@@ -26,10 +26,10 @@ Iris makeIris(const LensAperture& aperture);
 double irisRadius(const Iris& iris, double x, double y);
 
 struct TraceSurface {
-    double z = 0;             //!< vertex position on the axis
-    double radius = 0;        //!< 0: flat
+    double z = 0;       //!< vertex position on the axis
+    double radius = 0;  //!< 0: flat
     double semiAperture = 0;
-    double nAfter = 1;        //!< index after the surface at this wavelength
+    double nAfter = 1;  //!< index after the surface at this wavelength
     bool stop = false;
     LensCoating coating;
     //! interfaceReflectance against the incidence cosine, kReflectanceSteps + 1 samples, for
@@ -65,9 +65,9 @@ bool canReflect(const TraceLens& lens, int surface);
 inline constexpr int kMaxStopCrossings = 3;
 
 struct RayResult {
-    bool alive = false;        //!< reached the sensor plane (no miss, no total reflection)
-    double x = 0, y = 0;       //!< sensor-plane position, mm
-    double throughput = 0;     //!< product of the Fresnel/coating factors along the path
+    bool alive = false;     //!< reached the sensor plane (no miss, no total reflection)
+    double x = 0, y = 0;    //!< sensor-plane position, mm
+    double throughput = 0;  //!< product of the Fresnel/coating factors along the path
     //! Where the ray crossed the stop, in units of the stop's radius, once per crossing.
     std::array<double, 2 * kMaxStopCrossings> stop{};
     int stopCrossings = 0;

@@ -36,7 +36,9 @@ double interfaceReflectance(double n0, double n2, double cos0, const LensCoating
     if (n0 == n2 && !coating.present()) return 0.0;
     const double sin0 = std::sqrt(std::max(0.0, 1.0 - cos0 * cos0));
     // Cosines in each medium from Snell's invariant n sin; complex past the critical angle.
-    const auto cosIn = [&](double n) { return std::sqrt(Complex(1.0 - (n0 * sin0 / n) * (n0 * sin0 / n))); };
+    const auto cosIn = [&](double n) {
+        return std::sqrt(Complex(1.0 - (n0 * sin0 / n) * (n0 * sin0 / n)));
+    };
     const Complex c0 = cos0, c2 = cosIn(n2);
     if (n0 * sin0 >= n2) return 1.0;  // total internal reflection
     if (!coating.present()) {
@@ -50,7 +52,8 @@ double interfaceReflectance(double n0, double n2, double cos0, const LensCoating
     const double n1 = coating.n;
     const Complex c1 = cosIn(n1);
     const Amplitudes r01 = fresnel(n0, c0, n1, c1), r12 = fresnel(n1, c1, n2, c2);
-    const Complex phase = std::exp(Complex(0.0, -2.0) * (2.0 * M_PI * n1 * coating.thicknessNm / lambdaNm) * c1);
+    const Complex phase =
+        std::exp(Complex(0.0, -2.0) * (2.0 * M_PI * n1 * coating.thicknessNm / lambdaNm) * c1);
     const Complex rs = (r01.s + r12.s * phase) / (1.0 + r01.s * r12.s * phase);
     const Complex rp = (r01.p + r12.p * phase) / (1.0 + r01.p * r12.p * phase);
     return std::min(1.0, 0.5 * (std::norm(rs) + std::norm(rp)));

@@ -71,7 +71,8 @@ std::vector<float> computePsf(const LensAperture& aperture, int n) {
 const Psf& aperturePsf(const LensAperture& aperture, int size) {
     static std::mutex mutex;
     static std::map<std::tuple<int, double, double, int>, Psf> cache;
-    const auto key = std::make_tuple(aperture.blades, aperture.rotationDeg, aperture.roundness, size);
+    const auto key =
+        std::make_tuple(aperture.blades, aperture.rotationDeg, aperture.roundness, size);
     std::lock_guard<std::mutex> lock(mutex);
     auto it = cache.find(key);
     if (it == cache.end()) {

@@ -39,8 +39,9 @@ TEST(Lens, ShippedPrescriptionsMatchTheirPatentsFocalLengths) {
         const Lens lens = shipped(name);
         longest = std::max(longest, lens.surfaces.size());
         const double f = paraxial(lens).focalLength;
-        if (lens.patentFocalLength > 0)
+        if (lens.patentFocalLength > 0) {
             EXPECT_NEAR(f, lens.patentFocalLength, 0.01 * lens.patentFocalLength) << name;
+        }
     }
     EXPECT_GE(longest, 15u) << "a zoom of 15+ surfaces";
     // The zoom's table is scaled (see its source): its two ends must keep the patent's 80-200
@@ -60,34 +61,41 @@ TEST(Lens, ThinLensFocalLengthIsTheLensmakersFormula) {
 }
 
 TEST(Lens, BadPrescriptionsAreRefusedWithTheirField) {
-    EXPECT_EQ(lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
+    EXPECT_EQ(
+        lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
         {"stop": true, "thickness": 1, "semi_aperture": 5}, {"radius": 0, "thickness": 1, "semi_aperture": 5},
         {"radius": 0, "thickness": 40, "semi_aperture": -2}]})"),
-              "lens.json: surfaces[3].semi_aperture: expected a positive number, got -2");
-    EXPECT_NE(lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 0.9, "semi_aperture": 10},
+        "lens.json: surfaces[3].semi_aperture: expected a positive number, got -2");
+    EXPECT_NE(
+        lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 0.9, "semi_aperture": 10},
         {"stop": true, "thickness": 40, "semi_aperture": 5}]})")
-                  .find("lens.json: surfaces[0].n_d: expected a number in [1, 3], got 0.9"),
-              std::string::npos);
-    EXPECT_EQ(lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
+            .find("lens.json: surfaces[0].n_d: expected a number in [1, 3], got 0.9"),
+        std::string::npos);
+    EXPECT_EQ(
+        lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
         {"radius": -50, "thickness": 40, "semi_aperture": 10}]})"),
-              "lens.json: surfaces: expected exactly one surface with \"stop\": true, found 0");
+        "lens.json: surfaces: expected exactly one surface with \"stop\": true, found 0");
     EXPECT_NE(lensError(R"({"surfaces": [{"stop": true, "thickness": 5, "semi_aperture": 10},
         {"stop": true, "thickness": 40, "semi_aperture": 10}]})")
                   .find("found 2"),
               std::string::npos);
     // A biconvex element 1 mm thick with a 20 mm clear radius: its faces cross at the rim.
-    EXPECT_NE(lensError(R"({"surfaces": [{"radius": 50, "thickness": 1, "n_d": 1.5, "semi_aperture": 20},
+    EXPECT_NE(
+        lensError(R"({"surfaces": [{"radius": 50, "thickness": 1, "n_d": 1.5, "semi_aperture": 20},
         {"radius": -50, "thickness": 5, "semi_aperture": 20}, {"stop": true, "thickness": 40, "semi_aperture": 5}]})")
-                  .find("surfaces[0].thickness: 1 makes surfaces 0 and 1 cross"),
-              std::string::npos);
-    EXPECT_NE(lensError(R"({"surfaces": [{"radius": 10, "thickness": 5, "n_d": 1.5, "semi_aperture": 12},
+            .find("surfaces[0].thickness: 1 makes surfaces 0 and 1 cross"),
+        std::string::npos);
+    EXPECT_NE(
+        lensError(R"({"surfaces": [{"radius": 10, "thickness": 5, "n_d": 1.5, "semi_aperture": 12},
         {"stop": true, "thickness": 40, "semi_aperture": 5}]})")
-                  .find("surfaces[0].semi_aperture: 12 is not below |radius| 10"),
-              std::string::npos);
-    EXPECT_NE(lensError(R"({"surfaces": [{"radius": 50, "thickness": 5, "semi_aperture": 10, "coating": "gold"},
+            .find("surfaces[0].semi_aperture: 12 is not below |radius| 10"),
+        std::string::npos);
+    EXPECT_NE(
+        lensError(
+            R"({"surfaces": [{"radius": 50, "thickness": 5, "semi_aperture": 10, "coating": "gold"},
         {"stop": true, "thickness": 40, "semi_aperture": 5}]})")
-                  .find("surfaces[0].coating: expected \"none\", \"mgf2\""),
-              std::string::npos);
+            .find("surfaces[0].coating: expected \"none\", \"mgf2\""),
+        std::string::npos);
     EXPECT_NE(lensError("{\"surfaces\": [], \"focus\": 1}").find("lens.json: focus: unknown key"),
               std::string::npos);
 }
@@ -96,7 +104,8 @@ TEST(Lens, DispersionHoldsTheDLineAndTheAbbeNumber) {
     LensSurface s;
     s.nd = 1.5168, s.vd = 64.17;
     EXPECT_NEAR(refractiveIndex(s, kLineD), 1.5168, 1e-12);
-    EXPECT_NEAR((s.nd - 1) / (refractiveIndex(s, kLineF) - refractiveIndex(s, kLineC)), 64.17, 1e-9);
+    EXPECT_NEAR((s.nd - 1) / (refractiveIndex(s, kLineF) - refractiveIndex(s, kLineC)), 64.17,
+                1e-9);
     EXPECT_GT(refractiveIndex(s, 450), refractiveIndex(s, 650));  // normal dispersion
 }
 
@@ -107,7 +116,8 @@ namespace {
 double matrixReflectance(double n0, double n1, double d, double n2, double cos0, double lambda) {
     using C = std::complex<double>;
     const double sin0 = std::sqrt(1 - cos0 * cos0);
-    const C c1 = std::sqrt(C(1 - std::pow(n0 * sin0 / n1, 2))), c2 = std::sqrt(C(1 - std::pow(n0 * sin0 / n2, 2)));
+    const C c1 = std::sqrt(C(1 - std::pow(n0 * sin0 / n1, 2))),
+            c2 = std::sqrt(C(1 - std::pow(n0 * sin0 / n2, 2)));
     double r = 0;
     for (int pol = 0; pol < 2; ++pol) {
         // Tilted admittances: n cos for s, n / cos for p.
@@ -132,7 +142,8 @@ TEST(Lens, CoatingMatchesTheQuarterWaveClosedFormAndTheMatrixMethod) {
         EXPECT_NEAR(interfaceReflectance(1.0, n2, 1.0, mgf2, 550.0), closed, 1e-12) << n2;
         EXPECT_NEAR(interfaceReflectance(n2, 1.0, 1.0, mgf2, 550.0), closed, 1e-12) << n2;
         // Bare glass: Fresnel's ((n1 - n2) / (n1 + n2))^2.
-        EXPECT_NEAR(interfaceReflectance(1.0, n2, 1.0, {}, 550.0), std::pow((n2 - 1) / (n2 + 1), 2), 1e-12);
+        EXPECT_NEAR(interfaceReflectance(1.0, n2, 1.0, {}, 550.0), std::pow((n2 - 1) / (n2 + 1), 2),
+                    1e-12);
         for (const double deg : {0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0}) {
             for (const double lambda : {450.0, 550.0, 650.0}) {
                 const double c = std::cos(deg * M_PI / 180);
@@ -200,7 +211,9 @@ TEST(Lens, GhostEnergyIsBoundedByItsReflectances) {
         double total = all->direct.intensity[1];
         for (const GhostFigure& g : all->ghosts) {
             total += g.intensity[1];
-            if (g.rays == 0) EXPECT_EQ(g.intensity[1] + g.intensity[0] + g.intensity[2], 0.0) << name;
+            if (g.rays == 0) {
+                EXPECT_EQ(g.intensity[1] + g.intensity[0] + g.intensity[2], 0.0) << name;
+            }
         }
         EXPECT_LT(total, 1.0) << name;
     }
@@ -259,14 +272,16 @@ ParaxialPath paraxialGhost(const Lens& lens, int first, int second) {
 
 //! The paraxial ghost's centroid (x only; the field is along x) over the entrance points that
 //! pass every clear aperture, on a fine grid.
-bool paraxialCentroid(const Lens& lens, const ParaxialPath& p, double tanX, double& cx, double& share) {
+bool paraxialCentroid(const Lens& lens, const ParaxialPath& p, double tanX, double& cx,
+                      double& share) {
     const double sa = lens.surfaces.front().semiAperture;
     constexpr int kGrid = 300;
     double sum = 0;
     int count = 0;
     for (int iy = 0; iy < kGrid; ++iy) {
         for (int ix = 0; ix < kGrid; ++ix) {
-            const double x = sa * (2.0 * (ix + 0.5) / kGrid - 1), y = sa * (2.0 * (iy + 0.5) / kGrid - 1);
+            const double x = sa * (2.0 * (ix + 0.5) / kGrid - 1),
+                         y = sa * (2.0 * (iy + 0.5) / kGrid - 1);
             bool pass = true;
             for (std::size_t k = 0; k < p.atSurface.size() && pass; ++k) {
                 const double hx = p.atSurface[k].a * x + p.atSurface[k].b * tanX;
@@ -318,8 +333,10 @@ TEST(Lens, GhostCentresAgreeWithAParaxialTraceAtSmallAngles) {
                     if (d >= 0.01) ++overOnePercent;
                 }
             }
-            std::printf("paraxial check %-24s %4.0f deg: %3d ghosts, largest centre difference %.4f of the diagonal\n",
-                        name.c_str(), deg, compared, worst);
+            std::printf(
+                "paraxial check %-24s %4.0f deg: %3d ghosts, largest centre difference %.4f of the "
+                "diagonal\n",
+                name.c_str(), deg, compared, worst);
             if (deg == 1.0) total += compared;
         }
     }
@@ -351,5 +368,7 @@ TEST(Lens, RenderedGhostsCarryTheirReportedEnergy) {
     ASSERT_TRUE(report.ok());
     const GhostFigure& g = report->ghosts.front();
     for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(sum[c], 1e7 * g.intensity[std::size_t(c)], 0.03 * 1e7 * g.intensity[std::size_t(c)]) << c;
+        EXPECT_NEAR(sum[c], 1e7 * g.intensity[std::size_t(c)],
+                    0.03 * 1e7 * g.intensity[std::size_t(c)])
+            << c;
 }

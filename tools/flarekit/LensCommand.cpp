@@ -70,8 +70,8 @@ int runGhosts(const LensArgs& a) {
     }
     std::printf("%s: f = %.3f mm, %zu ghosts at %g,%g degrees\n", lens->name.c_str(),
                 r->focalLength, r->ghosts.size(), q.angleXDeg, q.angleYDeg);
-    std::printf("%-8s %10s %10s %10s %12s %12s %12s\n", "path", "x mm", "y mm", "radius mm",
-                "R", "G", "B");
+    std::printf("%-8s %10s %10s %10s %12s %12s %12s\n", "path", "x mm", "y mm", "radius mm", "R",
+                "G", "B");
     const auto row = [](const std::string& name, const GhostFigure& g) {
         std::printf("%-8s %10.3f %10.3f %10.3f %12.3e %12.3e %12.3e\n", name.c_str(), g.centerX,
                     g.centerY, g.radius, g.intensity[0], g.intensity[1], g.intensity[2]);
@@ -112,13 +112,15 @@ Result<std::vector<LensLight>> findLights(const LensArgs& a, const Image& image)
         return lights;
     }
     const auto p = parsePoint(a.light);
-    if (!p) return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + a.light + "'");
+    if (!p)
+        return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + a.light + "'");
     LensLight l;
     l.x = p->x, l.y = p->y;
     // Its energy: the bright pixels within a 32nd of the diagonal.
     const double r = diagonal / 32.0;
     for (int y = std::max(0, int(l.y - r)); y < std::min(image.height(), int(l.y + r) + 1); ++y) {
-        for (int x = std::max(0, int(l.x - r)); x < std::min(image.width(), int(l.x + r) + 1); ++x) {
+        for (int x = std::max(0, int(l.x - r)); x < std::min(image.width(), int(l.x + r) + 1);
+             ++x) {
             const Rgba& px = image.at(x, y);
             const double lum = 0.2126 * px.r + 0.7152 * px.g + 0.0722 * px.b;
             if (lum >= a.threshold && std::hypot(x + 0.5 - l.x, y + 0.5 - l.y) <= r)
@@ -135,8 +137,9 @@ Result<std::vector<LensLight>> findLights(const LensArgs& a, const Image& image)
 
 Result<ImageOutput> renderJob(const LensArgs& a) {
     if (a.backend == "gl")
-        return invalidInput("lens render --backend gl: the GL path of the lens renderer is not "
-                            "built yet; use --backend cpu");
+        return invalidInput(
+            "lens render --backend gl: the GL path of the lens renderer is not "
+            "built yet; use --backend cpu");
     auto lens = openLens(a);
     if (!lens) return lens.error();
     auto loaded = readInputImage(a.in, lensRenderMemory());
@@ -152,17 +155,19 @@ Result<ImageOutput> renderJob(const LensArgs& a) {
     if (!layers) return layers.error();
     Image flare(image.width(), image.height());
     for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
-        flare.data()[i] = layers->ghosts.data()[i] + layers->starburst.data()[i] +
-                          layers->glare.data()[i];
+        flare.data()[i] =
+            layers->ghosts.data()[i] + layers->starburst.data()[i] + layers->glare.data()[i];
     for (int y = 0; y < flare.height(); ++y)
         for (int x = 0; x < flare.width(); ++x) flare.at(x, y).a = 1.f;
     if (!a.layersDir.empty()) {
         if (Status s = makeOutputDirectory(a.layersDir); !s) return s.error();
-        const auto path = [&](const char* n) { return (std::filesystem::path(a.layersDir) / n).string(); };
-        for (const auto& [name, img] : {std::pair{"ghosts.exr", &layers->ghosts},
-                                        std::pair{"starburst.exr", &layers->starburst},
-                                        std::pair{"glare.exr", &layers->glare},
-                                        std::pair{"flare.exr", &flare}}) {
+        const auto path = [&](const char* n) {
+            return (std::filesystem::path(a.layersDir) / n).string();
+        };
+        for (const auto& [name, img] :
+             {std::pair{"ghosts.exr", &layers->ghosts},
+              std::pair{"starburst.exr", &layers->starburst},
+              std::pair{"glare.exr", &layers->glare}, std::pair{"flare.exr", &flare}}) {
             if (Status s = writeImage(path(name), *img); !s) return s.error();
         }
     }
@@ -175,8 +180,8 @@ Result<ImageOutput> renderJob(const LensArgs& a) {
     toneMapImage(out, op, 1.f);
     ImageOutput result{std::move(out), {}};
     result.options.alpha = loaded->hasAlpha;
-    std::printf("%s: %zu light(s), flare through %s (f = %.1f mm)\n", a.out.c_str(),
-                lights->size(), lens->name.c_str(), paraxial(*lens).focalLength);
+    std::printf("%s: %zu light(s), flare through %s (f = %.1f mm)\n", a.out.c_str(), lights->size(),
+                lens->name.c_str(), paraxial(*lens).focalLength);
     return result;
 }
 
@@ -185,8 +190,9 @@ Result<ImageOutput> renderJob(const LensArgs& a) {
 void addLensCommand(CLI::App& app, int& exitCode) {
     auto args = std::make_shared<LensArgs>();
     CLI::App* lens = app.add_subcommand(
-        "lens", "Flares from real lens prescriptions (presets/lenses): traced ghosts, coatings, "
-                "dispersion, the aperture's starburst");
+        "lens",
+        "Flares from real lens prescriptions (presets/lenses): traced ghosts, coatings, "
+        "dispersion, the aperture's starburst");
     lens->require_subcommand(1);
 
     CLI::App* list = lens->add_subcommand("list", "the shipped lenses and their paraxial figures");
@@ -202,8 +208,9 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     CLI::App* ghosts = lens->add_subcommand(
         "ghosts", "every two-reflection ghost of a distant point source, brightest first");
     addLensOptions(ghosts);
-    ghosts->add_option("--angle", args->angle,
-                       "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
+    ghosts
+        ->add_option("--angle", args->angle,
+                     "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
         ->capture_default_str();
     ghosts->add_option("--rays", args->rays, "rays per side over the first clear aperture")
         ->check(CLI::Range(2, 1024))
@@ -220,19 +227,22 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     render->add_option("input", args->in, "input image (EXR kept linear; 8-bit files sRGB)")
         ->required();
     render->add_option("-o,--output", args->out, "output image")->required();
-    render->add_option("--light", args->light,
-                       "X,Y in pixels, auto (the brightest region) or all (every bright area "
-                       "is a source, merged on a grid)")
+    render
+        ->add_option("--light", args->light,
+                     "X,Y in pixels, auto (the brightest region) or all (every bright area "
+                     "is a source, merged on a grid)")
         ->capture_default_str();
-    render->add_option("--threshold", args->threshold,
-                       "linear luminance at which a pixel is a source")
+    render
+        ->add_option("--threshold", args->threshold,
+                     "linear luminance at which a pixel is a source")
         ->check(CLI::Range(0.0, 1e12))
         ->capture_default_str();
     render->add_option("--max-sources", args->maxSources, "--light all: at most N sources")
         ->check(CLI::Range(1, 4096))
         ->capture_default_str();
-    render->add_option("--expand-highlights", args->expandGain,
-                       "8/16-bit input: clipped pixels count as GAIN x white as sources")
+    render
+        ->add_option("--expand-highlights", args->expandGain,
+                     "8/16-bit input: clipped pixels count as GAIN x white as sources")
         ->check(CLI::Range(1.0, 1e6))
         ->capture_default_str();
     render->add_option("--layers", args->layersDir,
@@ -241,15 +251,15 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     render->add_option("--backend", args->backend, "cpu (gl: not built yet)")
         ->check(CLI::IsMember({"cpu", "gl"}))
         ->capture_default_str();
-    render->add_option("--tonemap", args->tonemap,
-                       "display curve for 8/16-bit outputs: auto (filmic for HDR input), none, "
-                       "aces, filmic")
+    render
+        ->add_option("--tonemap", args->tonemap,
+                     "display curve for 8/16-bit outputs: auto (filmic for HDR input), none, "
+                     "aces, filmic")
         ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
         ->capture_default_str();
     for (const auto& p : kLensRenderParams) addParamOption(render, p, args->render);
-    render->callback([args, &exitCode] {
-        exitCode = runImageJob(args->out, [&] { return renderJob(*args); });
-    });
+    render->callback(
+        [args, &exitCode] { exitCode = runImageJob(args->out, [&] { return renderJob(*args); }); });
 }
 
 }  // namespace flarekit::cli

@@ -1,0 +1,57 @@
+// Lens flares from prescriptions on 2 cores: the exact ghost analysis (`lens ghosts`), and the
+// CPU render of one light at 1920x1080 through the 22-surface zoom's brightest 66 ghosts (RGB
+// and 16 spectral samples), and `--light all` as the number of sources grows.
+#include <benchmark/benchmark.h>
+
+#include "flarekit/Lens.h"
+
+using namespace flarekit;
+
+namespace {
+
+const Lens& zoom() {
+    static const Lens lens = *loadLens("nikon-zoom-80-200");
+    return lens;
+}
+
+void BM_GhostAnalysis(benchmark::State& state) {
+    GhostQuery q;
+    q.angleXDeg = 5, q.angleYDeg = 2;
+    for (auto _ : state) benchmark::DoNotOptimize(analyseGhosts(zoom(), q).ok());
+}
+BENCHMARK(BM_GhostAnalysis)->Unit(benchmark::kMillisecond);
+
+//! `sources` lights spread over the upper half of a 1080p frame, each a 10^6 sun.
+std::vector<LensLight> lights(int sources) {
+    std::vector<LensLight> out;
+    for (int i = 0; i < sources; ++i) {
+        LensLight l;
+        l.x = 1920 * (0.2 + 0.6 * (i + 0.5) / sources);
+        l.y = 1080 * (0.2 + 0.2 * ((i * 7) % 5) / 5.0);
+        l.energy = {1e6, 1e6, 1e6};
+        out.push_back(l);
+    }
+    return out;
+}
+
+void BM_Render1080p(benchmark::State& state) {
+    LensRenderOptions o;
+    o.ghosts = 66;
+    o.spectral = int(state.range(0));
+    const auto one = lights(1);
+    for (auto _ : state) benchmark::DoNotOptimize(renderLensFlare(zoom(), 1920, 1080, one, o).ok());
+    state.counters["MP/s"] = benchmark::Counter(1920.0 * 1080 / 1e6, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_Render1080p)->Arg(0)->Arg(16)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_RenderSources(benchmark::State& state) {
+    LensRenderOptions o;
+    o.ghosts = 16;
+    const auto many = lights(int(state.range(0)));
+    for (auto _ : state) benchmark::DoNotOptimize(renderLensFlare(zoom(), 1920, 1080, many, o).ok());
+}
+BENCHMARK(BM_RenderSources)->Arg(1)->Arg(4)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

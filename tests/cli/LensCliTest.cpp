@@ -1,0 +1,90 @@
+// flarekit lens as a user runs it: the ghosts report's JSON contract, a render with its layers
+// (the composite is the input plus the flare layer), and bad input in one line with exit 2.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "Cli.h"
+#include "flarekit/ImageIO.h"
+
+using namespace flarekit;
+using namespace flarekit::test;
+
+TEST(LensCli, GhostsJsonFollowsTheContract) {
+    const CliResult r = runCli({"lens", "ghosts", "nikon-zoom-80-200", "--angle", "3,1", "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["lens"], "nikon-zoom-80-200");
+    EXPECT_NEAR(j["focal_length_mm"].get<double>(), 57.206, 0.01);
+    // The direct image of a source at (tan 3, tan 1) lands near f (tan X, tan Y).
+    const double f = j["focal_length_mm"].get<double>();
+    EXPECT_NEAR(j["direct"]["center"][0].get<double>(), f * std::tan(3 * M_PI / 180), 0.02 * f * 0.05);
+    EXPECT_NEAR(j["direct"]["center"][1].get<double>(), f * std::tan(1 * M_PI / 180), 0.02 * f * 0.05);
+    const auto& ghosts = j["ghosts"];
+    // 22 surfaces, one of them the stop, 21 reflecting; cemented pairs still reflect a little.
+    ASSERT_EQ(ghosts.size(), 21u * 20u / 2u);
+    double last = 1e9;
+    for (const auto& g : ghosts) {
+        ASSERT_EQ(g["surfaces"].size(), 2u);
+        EXPECT_GT(g["surfaces"][0].get<int>(), g["surfaces"][1].get<int>());
+        EXPECT_NE(g["surfaces"][0].get<int>(), 17);  // the stop never reflects
+        EXPECT_NE(g["surfaces"][1].get<int>(), 17);
+        const double sum = g["intensity"][0].get<double>() + g["intensity"][1].get<double>() +
+                           g["intensity"][2].get<double>();
+        EXPECT_LE(sum, last + 1e-15);
+        last = sum;
+        EXPECT_GE(g["radius_mm"].get<double>(), 0.0);
+    }
+}
+
+TEST(LensCli, RenderWritesTheCompositeAndItsLayers) {
+    TempDir dir;
+    const std::string in = std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr";
+    const CliResult r = runCli({"lens", "render", "kodak-petzval", in, "-o", dir.file("out.exr"),
+                                "--layers", dir.file("layers"), "--ghosts", "8"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto input = readImage(in), out = readImage(dir.file("out.exr"));
+    auto flare = readImage(dir.file("layers/flare.exr"));
+    ASSERT_TRUE(input.ok() && out.ok() && flare.ok());
+    for (const char* layer : {"ghosts.exr", "starburst.exr", "glare.exr"})
+        EXPECT_TRUE(std::filesystem::exists(dir.file(std::string("layers/") + layer))) << layer;
+    // out = input + flare, to the precision of the half-float files.
+    double worst = 0, flareSum = 0;
+    for (int y = 0; y < out->image.height(); y += 3)
+        for (int x = 0; x < out->image.width(); x += 3) {
+            const Rgba &o = out->image.at(x, y), &i = input->image.at(x, y), &f = flare->image.at(x, y);
+            const double expect = i.g + f.g;
+            worst = std::max(worst, std::fabs(o.g - expect) / std::max(1e-3, expect));
+            flareSum += f.g;
+        }
+    EXPECT_LT(worst, 2e-3);
+    EXPECT_GT(flareSum, 0.0);
+}
+
+TEST(LensCli, BadInputIsOneLineAndExitTwo) {
+    TempDir dir;
+    const auto rejected = [&](const std::vector<std::string>& args, const std::string& mention) {
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    };
+    const std::string bad = dir.file("bad.json");
+    std::ofstream(bad) << R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
+        {"radius": -50, "thickness": 40, "semi_aperture": 10}]})";
+    rejected({"lens", "ghosts", bad}, "bad.json: surfaces: expected exactly one surface with \"stop\"");
+    rejected({"lens", "ghosts", "no-such-lens"}, "lenses preset 'no-such-lens'");
+    rejected({"lens", "ghosts", "nikon-zoom-80-200", "--angle", "60,0"}, "no ray reaches the sensor");
+    rejected({"lens", "ghosts", "nikon-zoom-80-200", "--f-number", "1.4"}, "can only be stopped down");
+    const std::string in = std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr";
+    rejected({"lens", "render", "kodak-petzval", in, "-o", dir.file("o.png"), "--spectral", "1000"},
+             "--spectral");
+    rejected({"lens", "render", "kodak-petzval", in, "-o", dir.file("o.png"), "--spectral", "2"},
+             "--spectral");
+    rejected({"lens", "render", bad, in, "-o", dir.file("o.png")}, "bad.json");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
+}
