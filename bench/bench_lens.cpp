@@ -40,7 +40,8 @@ void BM_Render1080p(benchmark::State& state) {
     o.spectral = int(state.range(0));
     const auto one = lights(1);
     for (auto _ : state) benchmark::DoNotOptimize(renderLensFlare(zoom(), 1920, 1080, one, o).ok());
-    state.counters["MP/s"] = benchmark::Counter(1920.0 * 1080 / 1e6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["MP/s"] =
+        benchmark::Counter(1920.0 * 1080 / 1e6, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_Render1080p)->Arg(0)->Arg(16)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -48,9 +49,16 @@ void BM_RenderSources(benchmark::State& state) {
     LensRenderOptions o;
     o.ghosts = 16;
     const auto many = lights(int(state.range(0)));
-    for (auto _ : state) benchmark::DoNotOptimize(renderLensFlare(zoom(), 1920, 1080, many, o).ok());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(renderLensFlare(zoom(), 1920, 1080, many, o).ok());
 }
-BENCHMARK(BM_RenderSources)->Arg(1)->Arg(4)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderSources)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

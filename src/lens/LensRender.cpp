@@ -38,6 +38,12 @@ struct SensorMap {
 //! polygon edge is antialiased at any mesh resolution.
 constexpr double kMaskEdge = 0.015;
 
+//! floor(v) as an int within [lo, hi]: ghost rays can land far outside any frame, where a plain
+//! cast would overflow.
+int pixelIndex(double v, int lo, int hi) {
+    return int(std::clamp(std::floor(v), double(lo), double(hi)));
+}
+
 double edgeMask(double q) {
     return std::clamp((1.0 - q) / kMaskEdge + 0.5, 0.0, 1.0);
 }
@@ -155,8 +161,8 @@ void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const 
         // Smaller than a pixel (a focused ghost, a caustic): it may cover no pixel centre, so
         // its whole energy goes to the pixel under its centroid, masked there.
         const double cx = (a.x + b.x + c.x) / 3, cy = (a.y + b.y + c.y) / 3;
-        const int px = int(std::floor(cx)), py = int(std::floor(cy));
-        if (px < 0 || px >= out.width() || py < rowBegin || py >= rowEnd) return;
+        if (!(cx >= 0 && cx < out.width() && cy >= rowBegin && cy < rowEnd)) return;
+        const int px = int(cx), py = int(cy);
         double mask = edgeMask((a.vignette + b.vignette + c.vignette) / 3);
         for (int k = 0; k < crossings; ++k) {
             const std::size_t i = std::size_t(2 * k);
@@ -169,10 +175,10 @@ void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const 
             p[2] += float(v * m.weight[2]);
         return;
     }
-    const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
-    const int x1 = std::min(out.width() - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
-    const int y0 = std::max(rowBegin, int(std::floor(std::min({a.y, b.y, c.y}))));
-    const int y1 = std::min(rowEnd - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
+    const int x0 = pixelIndex(std::min({a.x, b.x, c.x}), 0, out.width());
+    const int x1 = pixelIndex(std::ceil(std::max({a.x, b.x, c.x})), -1, out.width() - 1);
+    const int y0 = pixelIndex(std::min({a.y, b.y, c.y}), rowBegin, rowEnd);
+    const int y1 = pixelIndex(std::ceil(std::max({a.y, b.y, c.y})), rowBegin - 1, rowEnd - 1);
     const double inv = 1.0 / area;
     for (int y = y0; y <= y1; ++y) {
         float* row = out.row(y);

@@ -22,8 +22,10 @@ TEST(LensCli, GhostsJsonFollowsTheContract) {
     EXPECT_NEAR(j["focal_length_mm"].get<double>(), 57.206, 0.01);
     // The direct image of a source at (tan 3, tan 1) lands near f (tan X, tan Y).
     const double f = j["focal_length_mm"].get<double>();
-    EXPECT_NEAR(j["direct"]["center"][0].get<double>(), f * std::tan(3 * M_PI / 180), 0.02 * f * 0.05);
-    EXPECT_NEAR(j["direct"]["center"][1].get<double>(), f * std::tan(1 * M_PI / 180), 0.02 * f * 0.05);
+    EXPECT_NEAR(j["direct"]["center"][0].get<double>(), f * std::tan(3 * M_PI / 180),
+                0.02 * f * 0.05);
+    EXPECT_NEAR(j["direct"]["center"][1].get<double>(), f * std::tan(1 * M_PI / 180),
+                0.02 * f * 0.05);
     const auto& ghosts = j["ghosts"];
     // 22 surfaces, one of them the stop, 21 reflecting; cemented pairs still reflect a little.
     ASSERT_EQ(ghosts.size(), 21u * 20u / 2u);
@@ -56,7 +58,8 @@ TEST(LensCli, RenderWritesTheCompositeAndItsLayers) {
     double worst = 0, flareSum = 0;
     for (int y = 0; y < out->image.height(); y += 3)
         for (int x = 0; x < out->image.width(); x += 3) {
-            const Rgba &o = out->image.at(x, y), &i = input->image.at(x, y), &f = flare->image.at(x, y);
+            const Rgba &o = out->image.at(x, y), &i = input->image.at(x, y),
+                       &f = flare->image.at(x, y);
             const double expect = i.g + f.g;
             worst = std::max(worst, std::fabs(o.g - expect) / std::max(1e-3, expect));
             flareSum += f.g;
@@ -74,12 +77,16 @@ TEST(LensCli, BadInputIsOneLineAndExitTwo) {
         EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
     };
     const std::string bad = dir.file("bad.json");
-    std::ofstream(bad) << R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
+    std::ofstream(bad)
+        << R"({"surfaces": [{"radius": 50, "thickness": 5, "n_d": 1.5, "semi_aperture": 10},
         {"radius": -50, "thickness": 40, "semi_aperture": 10}]})";
-    rejected({"lens", "ghosts", bad}, "bad.json: surfaces: expected exactly one surface with \"stop\"");
+    rejected({"lens", "ghosts", bad},
+             "bad.json: surfaces: expected exactly one surface with \"stop\"");
     rejected({"lens", "ghosts", "no-such-lens"}, "lenses preset 'no-such-lens'");
-    rejected({"lens", "ghosts", "nikon-zoom-80-200", "--angle", "60,0"}, "no ray reaches the sensor");
-    rejected({"lens", "ghosts", "nikon-zoom-80-200", "--f-number", "1.4"}, "can only be stopped down");
+    rejected({"lens", "ghosts", "nikon-zoom-80-200", "--angle", "60,0"},
+             "no ray reaches the sensor");
+    rejected({"lens", "ghosts", "nikon-zoom-80-200", "--f-number", "1.4"},
+             "can only be stopped down");
     const std::string in = std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr";
     rejected({"lens", "render", "kodak-petzval", in, "-o", dir.file("o.png"), "--spectral", "1000"},
              "--spectral");
