@@ -259,10 +259,10 @@ void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& sam
     const lens::Psf& psf = lens::aperturePsf(lens.aperture, kPsfSize);
     // radiusPx is where the PSF grid's edge lands at 550 nm; the kernel reaches it at 700 nm.
     const double reach = radiusPx * 700.0 / 550.0;
-    const int x0 = std::max(0, int(light.x - reach)),
-              x1 = std::min(out.width() - 1, int(light.x + reach));
-    const int y0 = std::max(0, int(light.y - reach)),
-              y1 = std::min(out.height() - 1, int(light.y + reach));
+    const int x0 = pixelIndex(light.x - reach, 0, out.width()),
+              x1 = pixelIndex(light.x + reach, -1, out.width() - 1);
+    const int y0 = pixelIndex(light.y - reach, 0, out.height()),
+              y1 = pixelIndex(light.y + reach, -1, out.height() - 1);
     if (x0 > x1 || y0 > y1) return;
     // The PSF's values are per PSF sample; a pixel covers (samples per pixel)^2 of them.
     for (const lens::SpectralSample& s : samples) {
@@ -293,10 +293,10 @@ void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& sam
 void addGlare(const LensLight& light, double share, double r0, Image& out) {
     if (share <= 0 || r0 <= 0) return;
     const double reach = 40 * r0;
-    const int x0 = std::max(0, int(light.x - reach)),
-              x1 = std::min(out.width() - 1, int(light.x + reach));
-    const int y0 = std::max(0, int(light.y - reach)),
-              y1 = std::min(out.height() - 1, int(light.y + reach));
+    const int x0 = pixelIndex(light.x - reach, 0, out.width()),
+              x1 = pixelIndex(light.x + reach, -1, out.width() - 1);
+    const int y0 = pixelIndex(light.y - reach, 0, out.height()),
+              y1 = pixelIndex(light.y + reach, -1, out.height() - 1);
     if (x0 > x1 || y0 > y1) return;
     const double norm = share / (2 * M_PI * r0 * r0);
     parallelFor(y0, y1 + 1, 16, [&](int begin, int end) {
