@@ -202,5 +202,8 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
 //! grid of cells `cell` pixels wide, at most `maxSources` (the brightest kept).
 std::vector<LensLight> brightSources(const Image& image, double threshold, int cell,
                                      int maxSources);
+//! The source at pixel (x, y): the energy of the pixels at or above `threshold` within `radius`
+//! pixels of it (zero when there are none).
+LensLight sourceAt(const Image& image, double x, double y, double radius, double threshold);
 
 }  // namespace flarekit

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/Parallel.h"
+#include "flarekit/Color.h"
 #include "flarekit/Lens.h"
 #include "lens/LensTrace.h"
 #include "lens/Spectrum.h"
@@ -342,7 +343,6 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
     std::vector<TraceLens> traces;
     for (const auto& s : samples) traces.push_back(lens::prepareTrace(lens, s.lambdaNm));
     const TraceLens dLine = lens::prepareTrace(lens, kLineD);
-    const lens::Iris iris = lens::makeIris(lens.aperture);
     const double focal = paraxial(lens).focalLength;
     const double diagonal = std::hypot(double(width), double(height));
     const double sa = lens.surfaces.front().semiAperture;
@@ -383,7 +383,7 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
         constexpr int kBand = 32;
         parallelFor(0, (height + kBand - 1) / kBand, 1, [&](int begin, int end) {
             for (int band = begin; band < end; ++band)
-                rasteriseBand(meshes, iris, layers.ghosts, band * kBand,
+                rasteriseBand(meshes, dLine.iris, layers.ghosts, band * kBand,
                               std::min(height, (band + 1) * kBand));
         });
         addStarburst(lens, samples, light, options.starburst, options.starburstSize * diagonal,
@@ -405,8 +405,7 @@ std::vector<LensLight> brightSources(const Image& image, double threshold, int c
         const float* row = image.row(y);
         for (int x = 0; x < image.width(); ++x) {
             const float* p = row + 4 * x;
-            // Rec. 709 luminance of the linear pixel.
-            const double lum = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            const double lum = luminance(p[0], p[1], p[2]);
             if (!(lum >= threshold)) continue;
             const std::size_t k = std::size_t(y / cell) * std::size_t(cw) + std::size_t(x / cell);
             LensLight& l = grid[k];
@@ -426,6 +425,24 @@ std::vector<LensLight> brightSources(const Image& image, double threshold, int c
     });
     if (int(cells.size()) > maxSources) cells.resize(std::size_t(std::max(0, maxSources)));
     return cells;
+}
+
+LensLight sourceAt(const Image& image, double x, double y, double radius, double threshold) {
+    LensLight l;
+    l.x = x, l.y = y;
+    const int x0 = pixelIndex(x - radius, 0, image.width()),
+              x1 = pixelIndex(x + radius, -1, image.width() - 1);
+    const int y0 = pixelIndex(y - radius, 0, image.height()),
+              y1 = pixelIndex(y + radius, -1, image.height() - 1);
+    for (int py = y0; py <= y1; ++py) {
+        for (int px = x0; px <= x1; ++px) {
+            const Rgba& p = image.at(px, py);
+            if (luminance(p.r, p.g, p.b) >= threshold &&
+                std::hypot(px + 0.5 - x, py + 0.5 - y) <= radius)
+                l.energy[0] += p.r, l.energy[1] += p.g, l.energy[2] += p.b;
+        }
+    }
+    return l;
 }
 
 }  // namespace flarekit

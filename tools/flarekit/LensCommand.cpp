@@ -114,19 +114,8 @@ Result<std::vector<LensLight>> findLights(const LensArgs& a, const Image& image)
     const auto p = parsePoint(a.light);
     if (!p)
         return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + a.light + "'");
-    LensLight l;
-    l.x = p->x, l.y = p->y;
     // Its energy: the bright pixels within a 32nd of the diagonal.
-    const double r = diagonal / 32.0;
-    for (int y = std::max(0, int(l.y - r)); y < std::min(image.height(), int(l.y + r) + 1); ++y) {
-        for (int x = std::max(0, int(l.x - r)); x < std::min(image.width(), int(l.x + r) + 1);
-             ++x) {
-            const Rgba& px = image.at(x, y);
-            const double lum = 0.2126 * px.r + 0.7152 * px.g + 0.0722 * px.b;
-            if (lum >= a.threshold && std::hypot(x + 0.5 - l.x, y + 0.5 - l.y) <= r)
-                l.energy[0] += px.r, l.energy[1] += px.g, l.energy[2] += px.b;
-        }
-    }
+    LensLight l = sourceAt(image, p->x, p->y, diagonal / 32.0, a.threshold);
     if (l.energy[0] + l.energy[1] + l.energy[2] <= 0) {
         warn(a.in + ": nothing at or above --threshold near " + a.light +
              ": the light is given the energy of a 100-pixel source of 100 x white");
@@ -147,18 +136,22 @@ Result<ImageOutput> renderJob(const LensArgs& a) {
     Image& image = loaded->image;
     // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
     // a clipped sun carries the energy a flare needs; the output keeps the original pixels.
-    Image sources = image;
-    if (!loaded->wasFloat && a.expandGain > 1.0) expandHighlights(sources, float(a.expandGain));
-    auto lights = findLights(a, sources);
+    const bool expand = !loaded->wasFloat && a.expandGain > 1.0;
+    Image expanded;
+    if (expand) {
+        expanded = image;
+        expandHighlights(expanded, float(a.expandGain));
+    }
+    auto lights = findLights(a, expand ? expanded : image);
     if (!lights) return lights.error();
     auto layers = renderLensFlare(*lens, image.width(), image.height(), *lights, a.render);
     if (!layers) return layers.error();
+    // The flare layer: the three parts' colour, opaque like each of them.
     Image flare(image.width(), image.height());
     for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
-        flare.data()[i] =
-            layers->ghosts.data()[i] + layers->starburst.data()[i] + layers->glare.data()[i];
-    for (int y = 0; y < flare.height(); ++y)
-        for (int x = 0; x < flare.width(); ++x) flare.at(x, y).a = 1.f;
+        flare.data()[i] = i % 4 == 3 ? 1.f
+                                     : layers->ghosts.data()[i] + layers->starburst.data()[i] +
+                                           layers->glare.data()[i];
     if (!a.layersDir.empty()) {
         if (Status s = makeOutputDirectory(a.layersDir); !s) return s.error();
         const auto path = [&](const char* n) {
