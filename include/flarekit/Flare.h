@@ -34,6 +34,9 @@ Status validatePreset(const Preset& preset);
 //! Parses and validates a preset. `source` names the file in error messages, e.g.
 //! "my.json: element[3].size: expected a number in [0, 4], got \"big\"".
 Result<Preset> parsePreset(const std::string& jsonText, const std::string& source);
+//! The preset as JSON that parsePreset reads back to the same preset (the keys that differ from
+//! an element's defaults, one element per line).
+std::string presetToJson(const Preset& preset);
 //! A shipped preset by name (see presetSearchPath) or a JSON file by path.
 Result<Preset> loadPreset(const std::string& nameOrPath);
 //! Directories searched for shipped presets: $FLAREKIT_PRESET_PATH (colon-separated), then

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flarekit/Flare.h"
 #include "flarekit/Image.h"
 #include "flarekit/Param.h"
 #include "flarekit/Result.h"
@@ -186,6 +187,16 @@ inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {
     param<&LensRenderOptions::ghostGain>("ghost_gain", 0, 1e9, "",
                                          "multiplies the physical ghost intensities"),
 };
+
+//! The lens as a sprite preset: a glow and (for a bladed iris) its diffraction spikes at the
+//! light, then its `ghosts` brightest ghosts traced at one field angle, each a polygon (disc for
+//! a round iris) at its traced position on the flare vector, with its size, colour and
+//! intensity relative to the others.
+Result<Preset> bakeLens(const Lens& lens, int ghosts);
+
+//! The lens drawn in cross-section with the rays of its direct image (on axis and off axis)
+//! and of its brightest ghost, above its flare at three field angles; `width` x width 9/16.
+Result<Image> renderLensSheet(const Lens& lens, int width);
 
 //! The flare's parts over black, linear, on the input's size.
 struct LensFlareLayers {

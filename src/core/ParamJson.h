@@ -3,7 +3,9 @@
 // every error "source: field: expected ..., got <excerpt>".
 #pragma once
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -132,6 +134,57 @@ std::optional<Error> readParams(const nlohmann::json& v, std::span<const Param<O
         }
     }
     return std::nullopt;
+}
+
+//! A float member's value as the shortest decimal that reads back to the same float (0.1, not
+//! 0.10000000149011612).
+inline double shortestFloat(double x) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, float(x)).ptr;
+    *end = '\0';
+    return std::strtod(text, nullptr);
+}
+
+//! The JSON value of a parameter: the writer's twin of readParamValue.
+template <class Owner>
+nlohmann::json paramJsonValue(const Param<Owner>& p, const ParamValue& v) {
+    const auto number = [&](double x) { return p.singlePrecision ? shortestFloat(x) : x; };
+    switch (p.type) {
+        case ParamType::Number:
+            return number(v.number);
+        case ParamType::Integer:
+            return int(v.number);
+        case ParamType::Seed:
+            return std::uint32_t(v.number);
+        case ParamType::Bool:
+            return v.number != 0;
+        case ParamType::Color:
+        case ParamType::OptionalColor:
+            return {number(v.color[0]), number(v.color[1]), number(v.color[2])};
+        case ParamType::Vector:
+            return {v.vector.x, v.vector.y, v.vector.z};
+        case ParamType::Choice:
+            return std::string(p.choices[std::size_t(v.number)]);
+    }
+    return nullptr;
+}
+
+//! The keys of `table` (those `mask` applies to) where `owner` differs from `defaults`, as a
+//! JSON object that readParams reads back to the same values.
+template <class Owner>
+nlohmann::json writeParams(const Owner& owner, std::span<const Param<Owner>> table,
+                           const Owner& defaults, std::uint32_t mask = ~0u) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const Param<Owner>& p : table) {
+        if (!(p.appliesTo & mask)) continue;
+        const ParamValue v = p.get(owner), d = p.get(defaults);
+        if (p.type == ParamType::OptionalColor && !v.hasColor) continue;
+        const bool same = v.number == d.number && v.color == d.color && v.hasColor == d.hasColor &&
+                          v.vector.x == d.vector.x && v.vector.y == d.vector.y &&
+                          v.vector.z == d.vector.z;
+        if (!same || p.required) out[std::string(p.key)] = paramJsonValue(p, v);
+    }
+    return out;
 }
 
 }  // namespace flarekit

@@ -105,6 +105,31 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
     return preset;
 }
 
+std::string presetToJson(const Preset& preset) {
+    json doc;
+    doc["name"] = preset.name;
+    if (!preset.description.empty()) doc["description"] = preset.description;
+    if (preset.intensity != Preset{}.intensity) doc["intensity"] = preset.intensity;
+    doc["elements"] = json::array();
+    for (const ElementParams& e : preset.elements) {
+        json element =
+            writeParams<ElementParams>(e, kElementParams, defaultElement(e.type), typeBit(e.type));
+        element["type"] = std::string(elementTypeName(e.type));
+        doc["elements"].push_back(std::move(element));
+    }
+    // One element per line, as the shipped presets are written.
+    std::string text = "{\n";
+    for (auto it = doc.begin(); it != doc.end(); ++it) {
+        if (it.key() == "elements") continue;
+        text += "  \"" + it.key() + "\": " + it.value().dump() + ",\n";
+    }
+    text += "  \"elements\": [\n";
+    for (std::size_t i = 0; i < doc["elements"].size(); ++i)
+        text +=
+            "    " + doc["elements"][i].dump() + (i + 1 < doc["elements"].size() ? ",\n" : "\n");
+    return text + "  ]\n}\n";
+}
+
 std::vector<std::string> shippedPresetNames() {
     return presetNamesIn("");
 }

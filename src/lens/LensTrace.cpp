@@ -148,14 +148,16 @@ Vec beamOrigin(const TraceLens& lens, Vec dir, double x, double y) {
 }
 
 RayResult traceRay(const TraceLens& lens, const std::vector<PathStep>& path, Vec o, Vec d,
-                   bool clip) {
+                   bool clip, std::vector<Vec>* points) {
     RayResult r;
     double n = 1.0, throughput = 1.0;
+    if (points) points->push_back(o);
     for (const PathStep& step : path) {
         const TraceSurface& s = lens.surfaces[std::size_t(step.surface)];
         const double t = intersect(s, o, d);
         if (t < 0) return r;
         o = o + d * t;
+        if (points) points->push_back(o);
         const double radial = std::hypot(o.x, o.y) / s.semiAperture;
         if (s.stop) {
             const double q = irisRadius(lens.iris, o.x / s.semiAperture, o.y / s.semiAperture);
@@ -198,6 +200,7 @@ RayResult traceRay(const TraceLens& lens, const std::vector<PathStep>& path, Vec
     const double t = (lens.sensorZ - o.z) / d.z;
     if (t < 0) return r;
     o = o + d * t;
+    if (points) points->push_back(o);
     r.alive = true;
     r.x = o.x, r.y = o.y;
     r.throughput = throughput;

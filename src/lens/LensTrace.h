@@ -77,8 +77,10 @@ struct RayResult {
 
 //! Traces one ray along `path`. With `clip`, a ray past a clear aperture or outside the iris is
 //! dead; without, it continues (the renderer masks per pixel from `stop` and `vignette`).
+//! `points`, when given, receives the ray's start, every surface it meets and its sensor hit
+//! (the cross-section drawing of `lens sheet`).
 RayResult traceRay(const TraceLens& lens, const std::vector<PathStep>& path, Vec origin, Vec dir,
-                   bool clip);
+                   bool clip, std::vector<Vec>* points = nullptr);
 
 //! irisRadius of the aperture (builds the iris on each call; for one-off tests of a point).
 double apertureRadius(const LensAperture& aperture, double x, double y);

@@ -95,3 +95,25 @@ TEST(LensCli, BadInputIsOneLineAndExitTwo) {
     rejected({"lens", "render", bad, in, "-o", dir.file("o.png")}, "bad.json");
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
 }
+
+TEST(LensCli, BakeWritesAPresetApplyUsesAndSheetDrawsTheLens) {
+    TempDir dir;
+    const std::string preset = dir.file("takumar.json");
+    CliResult r = runCli({"lens", "bake", "asahi-takumar-50", "-o", preset, "--ghosts", "8"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = runCli({"presets", "--check", preset});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = runCli({"apply", std::string(FLAREKIT_SAMPLES) + "/sunset.png", "-o", dir.file("a.png"),
+                "--preset", preset});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    r = runCli({"lens", "sheet", "kodak-petzval", "-o", dir.file("sheet.png"), "--width", "800"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto sheet = readImage(dir.file("sheet.png"));
+    ASSERT_TRUE(sheet.ok());
+    EXPECT_EQ(sheet->image.width(), 800);
+    EXPECT_EQ(sheet->image.height(), 450);
+    r = runCli({"lens", "sheet", "kodak-petzval", "-o", dir.file("bad.png"), "--width", "10"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("bad.png")));
+}

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "flarekit/Flare.h"
+#include "flarekit/Lens.h"
 #include "flarekit/PostFx.h"
 #include "flarekit/Tonemap.h"
 
@@ -43,6 +44,34 @@ TEST(Golden, EverySpritePresetOnTheHdrSunset) {
         tonemapAcesFitted(image,
                           1.f);  // HDR to display range so the 8-bit reference keeps the flare
         golden::expectMatches("sprite-" + name, image);
+    }
+}
+
+TEST(Golden, EveryLensOnTheRealSunrise) {
+    // `lens render` on the blender-data sunrise: the light found as --light auto finds it, the
+    // brightest 32 ghosts at the command's default gain of 100, RGB, composite, ACES.
+    auto loaded = readImage(std::string(FLAREKIT_GOLDEN_INPUT) + "/sunrise-blender-320x180.exr");
+    ASSERT_TRUE(loaded.ok());
+    const Image& input = loaded->image;
+    const auto lights = brightSources(input, 2.0, int(std::hypot(320.0, 180.0)) / 16, 1);
+    ASSERT_EQ(lights.size(), 1u);
+    const std::vector<std::string> names = lensNames();
+    ASSERT_GE(names.size(), 5u);
+    for (const std::string& name : names) {
+        auto lens = loadLens(name);
+        ASSERT_TRUE(lens.ok()) << name;
+        LensRenderOptions o;
+        o.ghosts = 32, o.ghostGain = 100;
+        auto layers = renderLensFlare(*lens, 320, 180, lights, o);
+        ASSERT_TRUE(layers.ok()) << name << ": " << layers.error().message;
+        Image image = input;
+        for (std::size_t i = 0; i < image.pixelCount() * 4; ++i) {
+            if (i % 4 != 3)
+                image.data()[i] += layers->ghosts.data()[i] + layers->starburst.data()[i] +
+                                   layers->glare.data()[i];
+        }
+        tonemapAcesFitted(image, 1.f);
+        golden::expectMatches("lens-" + name, image);
     }
 }
 

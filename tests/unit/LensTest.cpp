@@ -372,3 +372,53 @@ TEST(Lens, RenderedGhostsCarryTheirReportedEnergy) {
                     0.03 * 1e7 * g.intensity[std::size_t(c)])
             << c;
 }
+
+TEST(Lens, BakedPresetsPlaceEachGhostWhereTheTraceDoes) {
+    const Lens lens = shipped("nikon-zoom-80-200");
+    auto preset = bakeLens(lens, 12);
+    ASSERT_TRUE(preset.ok()) << preset.error().message;
+    // A glow and the 9-bladed iris's 18 spikes at the light, then the ghosts.
+    ASSERT_GE(preset->elements.size(), 3u);
+    EXPECT_EQ(preset->elements[0].type, ElementType::Glow);
+    EXPECT_EQ(preset->elements[1].type, ElementType::Streaks);
+    EXPECT_EQ(preset->elements[1].count, 18);
+    // The same trace the bake makes: each ghost's t is its centre over the light's image.
+    GhostQuery q;
+    q.angleXDeg = std::atan(0.3 * lens.sensor.height / paraxial(lens).focalLength) * 180 / M_PI;
+    auto report = analyseGhosts(lens, q);
+    ASSERT_TRUE(report.ok());
+    std::size_t matched = 0;
+    for (std::size_t i = 2; i < preset->elements.size(); ++i) {
+        const ElementParams& e = preset->elements[i];
+        EXPECT_EQ(e.type, ElementType::Polygon);
+        EXPECT_EQ(e.blades, 9);
+        EXPECT_LE(e.intensity, 0.35f + 1e-6f);
+        for (const GhostFigure& g : report->ghosts) {
+            if (std::fabs(float(g.centerX / report->direct.centerX) - e.t) < 1e-6f &&
+                std::fabs(float(g.radius / lens.sensor.height) - e.size) < 1e-6f) {
+                ++matched;
+                break;
+            }
+        }
+    }
+    EXPECT_EQ(matched, preset->elements.size() - 2);
+    // Its JSON reads back to the same preset, and so does every shipped one's.
+    auto back = parsePreset(presetToJson(*preset), "baked.json");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(presetToJson(*back), presetToJson(*preset));
+    for (const std::string& name : shippedPresetNames()) {
+        auto p = loadPreset(name);
+        ASSERT_TRUE(p.ok());
+        auto again = parsePreset(presetToJson(*p), name + ".json");
+        ASSERT_TRUE(again.ok()) << name << ": " << again.error().message;
+        ASSERT_EQ(again->elements.size(), p->elements.size());
+        for (std::size_t i = 0; i < p->elements.size(); ++i) {
+            EXPECT_EQ(again->elements[i].t, p->elements[i].t) << name;
+            EXPECT_EQ(again->elements[i].size, p->elements[i].size) << name;
+            EXPECT_EQ(again->elements[i].color, p->elements[i].color) << name;
+            EXPECT_EQ(again->elements[i].innerColor, p->elements[i].innerColor) << name;
+            EXPECT_EQ(again->elements[i].blend, p->elements[i].blend) << name;
+            EXPECT_EQ(again->elements[i].seed, p->elements[i].seed) << name;
+        }
+    }
+}

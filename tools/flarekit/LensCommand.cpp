@@ -23,7 +23,7 @@ struct LensArgs {
     bool json = false;
     int rays = 64;
     double fNumber = 0, threshold = 2.0, expandGain = 64.0;
-    int maxSources = 32;
+    int maxSources = 32, bakeGhosts = 16, sheetWidth = 1600;
     LensRenderOptions render;
 };
 
@@ -178,6 +178,21 @@ Result<ImageOutput> renderJob(const LensArgs& a) {
     return result;
 }
 
+int runBake(const LensArgs& a) {
+    auto lens = openLens(a);
+    if (!lens) return report(lens.error());
+    auto preset = bakeLens(*lens, a.render.ghosts);
+    if (!preset) return report(preset.error());
+    const std::string text = presetToJson(*preset);
+    // What is written must load as any preset does.
+    if (auto check = parsePreset(text, a.out); !check)
+        return report(internalError("baked preset does not read back: " + check.error().message));
+    if (Status s = writeText(a.out, text); !s) return report(s.error());
+    std::printf("%s: %zu elements baked from %s\n", a.out.c_str(), preset->elements.size(),
+                lens->name.c_str());
+    return kExitOk;
+}
+
 }  // namespace
 
 void addLensCommand(CLI::App& app, int& exitCode) {
@@ -210,6 +225,35 @@ void addLensCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     ghosts->add_flag("--json", args->json, "print the report as JSON");
     ghosts->callback([args, &exitCode] { exitCode = runGhosts(*args); });
+
+    CLI::App* bake = lens->add_subcommand(
+        "bake", "compile the lens into a sprite preset (for apply, render and the engine API)");
+    addLensOptions(bake);
+    bake->add_option("-o,--output", args->out, "preset JSON to write")->required();
+    bake->add_option("--ghosts", args->bakeGhosts, "the brightest N ghosts baked")
+        ->check(CLI::Range(1, 254))
+        ->capture_default_str();
+    bake->callback([args, &exitCode] {
+        args->render.ghosts = args->bakeGhosts;
+        exitCode = runBake(*args);
+    });
+
+    CLI::App* sheet = lens->add_subcommand(
+        "sheet", "the lens in cross-section with its ghost paths, and its flare at three angles");
+    addLensOptions(sheet);
+    sheet->add_option("-o,--output", args->out, "image to write")->required();
+    sheet->add_option("--width", args->sheetWidth, "sheet width in pixels (height: 9/16 of it)")
+        ->check(CLI::Range(320, 8192))
+        ->capture_default_str();
+    sheet->callback([args, &exitCode] {
+        exitCode = runImageJob(args->out, [&]() -> Result<ImageOutput> {
+            auto opened = openLens(*args);
+            if (!opened) return opened.error();
+            auto image = renderLensSheet(*opened, args->sheetWidth);
+            if (!image) return image.error();
+            return ImageOutput{std::move(*image), {}};
+        });
+    });
 
     CLI::App* render = lens->add_subcommand("render", "the lens's flare on an image");
     // Photographs and HDRIs clip the sun by orders of magnitude (a real one is ~10^5 x the sky),
