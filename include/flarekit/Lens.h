@@ -169,6 +169,8 @@ struct LensRenderOptions {
     double starburstSize = 0.25;  //!< its radius at 550 nm, as a share of the image diagonal
     double glare = 0.01;          //!< share drawn as the veiling glare halo
     double ghostGain = 1.0;       //!< multiplies the physical ghost intensities
+    double dirt = 0.0;            //!< dust and scratches on the iris plane (starburst fringes)
+    std::uint32_t dirtSeed = 1;
 };
 
 inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {
@@ -186,6 +188,11 @@ inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {
                                      "share of each source's energy in the glare halo"),
     param<&LensRenderOptions::ghostGain>("ghost_gain", 0, 1e9, "",
                                          "multiplies the physical ghost intensities"),
+    param<&LensRenderOptions::dirt>("dirt", 0, 1, "",
+                                    "dust and scratches on the iris plane: 0 clean, 1 a badly "
+                                    "kept lens; they break the starburst into rainbow fringes"),
+    param<&LensRenderOptions::dirtSeed>("dirt_seed", 0, 4294967295.0, "",
+                                        "the dirt pattern (same seed, same pattern)"),
 };
 
 //! The lens as a sprite preset: a glow and (for a bladed iris) its diffraction spikes at the

@@ -68,8 +68,9 @@ Result<Preset> bakeLens(const Lens& lens, int ghostCount) {
     Preset preset;
     preset.name = lens.name + "-baked";
     std::ostringstream os;
-    os << "baked from the lens " << lens.name << " (" << lens.source.substr(0, lens.source.find(';'))
-       << "): its " << baked.size() << " brightest ghosts traced at " << q.angleXDeg
+    os << "baked from the lens " << lens.name << " ("
+       << lens.source.substr(0, lens.source.find(';')) << "): its " << baked.size()
+       << " brightest ghosts traced at " << q.angleXDeg
        << " degrees, their traced positions, sizes, colours and relative intensities";
     preset.description = os.str();
     ElementParams glow = defaultElement(ElementType::Glow);

@@ -253,11 +253,12 @@ std::vector<std::array<int, 2>> pickGhosts(const Lens& lens, std::array<double, 
 
 //! The starburst of one source: the PSF scaled by wavelength (Fraunhofer: the pattern's size
 //! goes as lambda), summed over the samples, `share` of its energy.
-void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& samples,
-                  const LensLight& light, double share, double radiusPx, Image& out) {
+void addStarburst(const Lens& lens, const lens::PupilDirt& dirt,
+                  const std::vector<lens::SpectralSample>& samples, const LensLight& light,
+                  double share, double radiusPx, Image& out) {
     if (share <= 0 || radiusPx < 1) return;
     constexpr int kPsfSize = 512;
-    const lens::Psf& psf = lens::aperturePsf(lens.aperture, kPsfSize);
+    const lens::Psf& psf = lens::aperturePsf(lens.aperture, dirt, kPsfSize);
     // radiusPx is where the PSF grid's edge lands at 550 nm; the kernel reaches it at 700 nm.
     const double reach = radiusPx * 700.0 / 550.0;
     const int x0 = pixelIndex(light.x - reach, 0, out.width()),
@@ -265,14 +266,23 @@ void addStarburst(const Lens& lens, const std::vector<lens::SpectralSample>& sam
     const int y0 = pixelIndex(light.y - reach, 0, out.height()),
               y1 = pixelIndex(light.y + reach, -1, out.height() - 1);
     if (x0 > x1 || y0 > y1) return;
-    // The PSF's values are per PSF sample; a pixel covers (samples per pixel)^2 of them.
+    // Sampled at pixel centres the PSF's sum over the pattern's whole footprint (inside the
+    // frame or not) is not exactly its integral: each wavelength's pattern is normalised by
+    // that sum, so the pixels hold exactly `share` of the light, less what falls off the frame.
+    const int fx0 = int(std::floor(-reach)), fx1 = int(std::ceil(reach));
     for (const lens::SpectralSample& s : samples) {
         const double samplesPerPixel = (kPsfSize / 2.0) / (radiusPx * s.lambdaNm / 550.0);
-        const double perPixel = samplesPerPixel * samplesPerPixel;
+        const double ox = light.x - std::floor(light.x), oy = light.y - std::floor(light.y);
+        double total = 0;
+        for (int dy = fx0; dy <= fx1; ++dy)
+            for (int dx = fx0; dx <= fx1; ++dx)
+                total += lens::samplePsf(psf, (dx + 0.5 - ox) * samplesPerPixel,
+                                         (dy + 0.5 - oy) * samplesPerPixel);
+        if (total <= 0) continue;
         std::array<double, 3> k{};
         for (int c = 0; c < 3; ++c)
             k[std::size_t(c)] =
-                share * light.energy[std::size_t(c)] * s.weight[std::size_t(c)] * perPixel;
+                share * light.energy[std::size_t(c)] * s.weight[std::size_t(c)] / total;
         parallelFor(y0, y1 + 1, 16, [&](int begin, int end) {
             for (int y = begin; y < end; ++y) {
                 float* row = out.row(y);
@@ -386,8 +396,8 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
                 rasteriseBand(meshes, dLine.iris, layers.ghosts, band * kBand,
                               std::min(height, (band + 1) * kBand));
         });
-        addStarburst(lens, samples, light, options.starburst, options.starburstSize * diagonal,
-                     layers.starburst);
+        addStarburst(lens, {options.dirt, options.dirtSeed}, samples, light, options.starburst,
+                     options.starburstSize * diagonal, layers.starburst);
         addGlare(light, options.glare, 0.01 * diagonal, layers.glare);
     }
     setOpaque(layers.ghosts), setOpaque(layers.starburst), setOpaque(layers.glare);

@@ -35,7 +35,8 @@ struct Canvas {
     //! A line from (z, y) to (z, y) in mm, one sample per pixel of its length.
     void line(double za, double ya, double zb, double yb, const Rgb& c) {
         const double x0 = px(za), y0 = py(ya), x1 = px(zb), y1 = py(yb);
-        const int steps = int(std::min(1e5, std::ceil(std::max(std::fabs(x1 - x0), std::fabs(y1 - y0))))) + 1;
+        const int steps =
+            int(std::min(1e5, std::ceil(std::max(std::fabs(x1 - x0), std::fabs(y1 - y0))))) + 1;
         for (int i = 0; i <= steps; ++i) {
             const double t = double(i) / steps;
             add(int(std::floor(x0 + (x1 - x0) * t)), int(std::floor(y0 + (y1 - y0) * t)), c);
@@ -64,13 +65,15 @@ void drawLens(const Lens& lens, const lens::TraceLens& t, double reach, Canvas& 
             const double h = std::min(s.semiAperture, next.semiAperture);
             for (int row = int(cv.py(h)); row <= int(cv.py(-h)); ++row) {
                 const double y = (cv.yMid - row) / cv.scale;
-                const int a = int(cv.px(s.z + sag(s.radius, y))), b = int(cv.px(next.z + sag(next.radius, y)));
+                const int a = int(cv.px(s.z + sag(s.radius, y))),
+                          b = int(cv.px(next.z + sag(next.radius, y)));
                 for (int x = a; x <= b; ++x) cv.add(x, row, glass);
             }
         }
         const int n = 200;
         for (int k = 0; k < n; ++k) {
-            const double ya = s.semiAperture * (2.0 * k / n - 1), yb = s.semiAperture * (2.0 * (k + 1) / n - 1);
+            const double ya = s.semiAperture * (2.0 * k / n - 1),
+                         yb = s.semiAperture * (2.0 * (k + 1) / n - 1);
             cv.line(s.z + sag(s.radius, ya), ya, s.z + sag(s.radius, yb), yb, white);
         }
     }
@@ -85,7 +88,8 @@ void drawBeam(const lens::TraceLens& t, const std::vector<lens::PathStep>& path,
     for (int k = 0; k < kRaysPerBeam; ++k) {
         const double y = sa * (2.0 * (k + 0.5) / kRaysPerBeam - 1);
         std::vector<lens::Vec> points;
-        const lens::RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, 0, y), dir, true, &points);
+        const lens::RayResult r =
+            lens::traceRay(t, path, lens::beamOrigin(t, dir, 0, y), dir, true, &points);
         if (!r.alive) continue;
         for (std::size_t i = 1; i < points.size(); ++i)
             cv.line(points[i - 1].z, points[i - 1].y, points[i].z, points[i].y, colour);
@@ -150,7 +154,8 @@ Result<Image> renderLensSheet(const Lens& lens, int width) {
                 Rgba& out = sheet.at(k * panelW + x, sectionHeight + y);
                 // A gentle roll-off so the light's core does not flatten the panel.
                 const auto roll = [](float v) { return v / (1.f + v); };
-                out.r = roll(a.r + b.r + c.r), out.g = roll(a.g + b.g + c.g), out.b = roll(a.b + b.b + c.b);
+                out.r = roll(a.r + b.r + c.r), out.g = roll(a.g + b.g + c.g),
+                out.b = roll(a.b + b.b + c.b);
             }
         }
     }

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <tuple>
 
+#include "core/Random.h"
 #include "lens/LensTrace.h"
 
 namespace flarekit::lens {
@@ -23,7 +24,51 @@ constexpr double kPupilShare = 0.125;
 //! The iris edge is antialiased over this many samples, so the spikes are not aliased stairs.
 constexpr double kEdgeSamples = 1.0;
 
-std::vector<float> computePsf(const LensAperture& aperture, int n) {
+//! Specks and scratches at full dirt; their sizes are shares of the pupil's radius. Dust on a
+//! rear element is out of focus at the iris, so it darkens soft discs rather than points.
+constexpr int kMaxSpecks = 400, kMaxScratches = 8;
+constexpr double kSpeckMin = 0.01, kSpeckMax = 0.04, kScratchWidth = 0.004;
+
+//! Multiplies the pupil by opaque specks and thin scratches.
+void addDirt(std::vector<double>& pupil, int n, double radius, const PupilDirt& dirt) {
+    if (dirt.amount <= 0) return;
+    SplitMix64 rng(dirt.seed);
+    const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.nextFloat(); };
+    const auto shade = [&](int x, int y, double opacity) {
+        if (x < 0 || y < 0 || x >= n || y >= n) return;
+        pupil[std::size_t(y) * std::size_t(n) + std::size_t(x)] *= 1.0 - opacity;
+    };
+    const int specks = int(std::lround(kMaxSpecks * dirt.amount));
+    for (int k = 0; k < specks; ++k) {
+        const double cx = n / 2 + uniform(-1, 1) * radius, cy = n / 2 + uniform(-1, 1) * radius;
+        const double r = uniform(kSpeckMin, kSpeckMax) * radius;
+        for (int y = int(cy - r) - 1; y <= int(cy + r) + 1; ++y) {
+            for (int x = int(cx - r) - 1; x <= int(cx + r) + 1; ++x) {
+                const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+                shade(x, y, 0.8 * std::clamp(r + 0.5 - d, 0.0, 1.0));
+            }
+        }
+    }
+    const int scratches = int(std::lround(kMaxScratches * dirt.amount));
+    for (int k = 0; k < scratches; ++k) {
+        const double angle = uniform(0, M_PI), length = uniform(0.3, 1.2) * radius;
+        const double cx = n / 2 + uniform(-0.6, 0.6) * radius,
+                     cy = n / 2 + uniform(-0.6, 0.6) * radius;
+        const double w = std::max(0.5, kScratchWidth * radius);
+        const int steps = int(length * 2);
+        for (int i = 0; i <= steps; ++i) {
+            const double t = (double(i) / steps - 0.5) * length;
+            const double px = cx + t * std::cos(angle), py = cy + t * std::sin(angle);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const double d = std::hypot(dx, dy);
+                    shade(int(px) + dx, int(py) + dy, 0.5 * std::clamp(w + 0.5 - d, 0.0, 1.0));
+                }
+        }
+    }
+}
+
+std::vector<float> computePsf(const LensAperture& aperture, const PupilDirt& dirt, int n) {
     std::vector<double> pupil(std::size_t(n) * std::size_t(n));
     const double radius = kPupilShare * n;
     for (int y = 0; y < n; ++y) {
@@ -34,6 +79,7 @@ std::vector<float> computePsf(const LensAperture& aperture, int n) {
             pupil[std::size_t(y) * std::size_t(n) + std::size_t(x)] = inside;
         }
     }
+    addDirt(pupil, n, radius, dirt);
     const int half = n / 2 + 1;
     fftw_complex* spectrum = fftw_alloc_complex(std::size_t(n) * std::size_t(half));
     static std::mutex planner;  // FFTW's planner is not thread-safe; execution is
@@ -68,17 +114,17 @@ std::vector<float> computePsf(const LensAperture& aperture, int n) {
 
 }  // namespace
 
-const Psf& aperturePsf(const LensAperture& aperture, int size) {
+const Psf& aperturePsf(const LensAperture& aperture, const PupilDirt& dirt, int size) {
     static std::mutex mutex;
-    static std::map<std::tuple<int, double, double, int>, Psf> cache;
-    const auto key =
-        std::make_tuple(aperture.blades, aperture.rotationDeg, aperture.roundness, size);
+    static std::map<std::tuple<int, double, double, double, std::uint32_t, int>, Psf> cache;
+    const auto key = std::make_tuple(aperture.blades, aperture.rotationDeg, aperture.roundness,
+                                     dirt.amount, dirt.seed, size);
     std::lock_guard<std::mutex> lock(mutex);
     auto it = cache.find(key);
     if (it == cache.end()) {
         Psf p;
         p.size = size;
-        p.values = computePsf(aperture, size);
+        p.values = computePsf(aperture, dirt, size);
         p.pupilShare = kPupilShare;
         it = cache.emplace(key, std::move(p)).first;
     }

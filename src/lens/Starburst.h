@@ -1,6 +1,7 @@
 // The iris's diffraction pattern (see Starburst.cpp).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "flarekit/Lens.h"
@@ -17,8 +18,16 @@ struct Psf {
     std::vector<float> values;
 };
 
-//! The PSF of an iris shape, computed once per shape and size in the process.
-const Psf& aperturePsf(const LensAperture& aperture, int size);
+//! Dust and scratches on the iris plane: `amount` 0 is clean, 1 a badly kept lens (400 specks,
+//! 8 scratches); the same seed gives the same pattern everywhere.
+struct PupilDirt {
+    double amount = 0;
+    std::uint32_t seed = 1;
+};
+
+//! The PSF of an iris shape (with its dirt), computed once per shape, dirt and size in the
+//! process.
+const Psf& aperturePsf(const LensAperture& aperture, const PupilDirt& dirt, int size);
 //! Bilinear sample at (x, y) samples from the centre; 0 outside.
 double samplePsf(const Psf& psf, double x, double y);
 

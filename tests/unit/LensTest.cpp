@@ -422,3 +422,44 @@ TEST(Lens, BakedPresetsPlaceEachGhostWhereTheTraceDoes) {
         }
     }
 }
+
+TEST(Lens, StarburstCarriesItsShareAndDirtChangesOnlyItsPattern) {
+    const Lens lens = shipped("angenieux-double-gauss");
+    LensLight light;
+    light.x = 200, light.y = 200;
+    light.energy = {1000, 2000, 3000};
+    const auto starburst = [&](double dirt, std::uint32_t seed) {
+        LensRenderOptions o;
+        o.ghosts = 0, o.glare = 0, o.starburst = 0.1, o.starburstSize = 0.2;
+        o.dirt = dirt, o.dirtSeed = seed;
+        auto layers = renderLensFlare(lens, 400, 400, {light}, o);
+        EXPECT_TRUE(layers.ok());
+        return layers.ok() ? layers->starburst : Image();
+    };
+    const auto sums = [](const Image& image) {
+        std::array<double, 3> s{};
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const Rgba& p = image.at(x, y);
+                s[0] += p.r, s[1] += p.g, s[2] += p.b;
+            }
+        return s;
+    };
+    // The PSF integrates to 1, so the layer holds the share of each channel's energy (the
+    // pattern reaches 0.2 x 700 / 550 of the diagonal: inside the frame, bar its faint tails).
+    const Image clean = starburst(0, 1), dusty = starburst(1, 7), again = starburst(1, 7);
+    const auto c = sums(clean), d = sums(dusty);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(c[std::size_t(k)], 0.1 * light.energy[std::size_t(k)],
+                    0.02 * 0.1 * light.energy[std::size_t(k)]);
+        EXPECT_NEAR(d[std::size_t(k)], 0.1 * light.energy[std::size_t(k)],
+                    0.05 * 0.1 * light.energy[std::size_t(k)]);
+    }
+    double differs = 0;
+    for (int y = 0; y < 400; ++y)
+        for (int x = 0; x < 400; ++x) {
+            differs += std::fabs(clean.at(x, y).g - dusty.at(x, y).g);
+            EXPECT_EQ(dusty.at(x, y).g, again.at(x, y).g);  // same seed, same dirt
+        }
+    EXPECT_GT(differs, 0.05 * c[1]);
+}
