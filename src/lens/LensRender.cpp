@@ -12,50 +12,46 @@
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
 #include "flarekit/Lens.h"
+#include "lens/GhostMesh.h"
 #include "lens/LensTrace.h"
 #include "lens/Spectrum.h"
 #include "lens/Starburst.h"
 
 namespace flarekit {
 
+namespace lens {
+
+TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, const RayResult& b,
+                          const RayResult& c) {
+    TrianglePlan plan;
+    plan.area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (plan.area == 0.0) return plan;
+    const double pixels = std::fabs(plan.area) * 0.5;
+    plan.density = 1.0 / std::max(pixels, 1.0);
+    const double peak = plan.density * std::max({a.throughput, b.throughput, c.throughput}) *
+                        std::max({m.weight[0], m.weight[1], m.weight[2]});
+    if (peak < kInvisible) return plan;
+    if (std::min({a.vignette, b.vignette, c.vignette}) > 1.0 + kMaskEdge) return plan;
+    for (int k = 0; k < a.stopCrossings; ++k) {
+        if (irisCover(iris, a, b, c, k) == Cover::Outside) return plan;
+    }
+    plan.draw = true;
+    plan.point = pixels < 1.0;
+    return plan;
+}
+
+}  // namespace lens
+
 namespace {
 
+using lens::Cover;
+using lens::edgeMask;
+using lens::kMaskEdge;
+using lens::Mesh;
+using lens::pixelIndex;
 using lens::RayResult;
+using lens::SensorMap;
 using lens::TraceLens;
-
-//! How the image sits on the sensor: centred, fitted inside it, `mmPerPixel` square pixels.
-struct SensorMap {
-    double mmPerPixel = 0, width = 0, height = 0;
-    //! Display coordinates: mm from the axis, y up. A camera's image is inverted and the photo
-    //! turned upright; the lens is rotationally symmetric, so tracing in display coordinates
-    //! is the same 180-degree-turned picture.
-    double toMmX(double px) const { return (px - width / 2) * mmPerPixel; }
-    double toMmY(double py) const { return (height / 2 - py) * mmPerPixel; }
-    double toPxX(double mm) const { return mm / mmPerPixel + width / 2; }
-    double toPxY(double mm) const { return height / 2 - mm / mmPerPixel; }
-};
-
-//! The iris and clear-aperture masks soften over this share of the stop radius, so a ghost's
-//! polygon edge is antialiased at any mesh resolution.
-constexpr double kMaskEdge = 0.015;
-
-//! floor(v) as an int within [lo, hi]: ghost rays can land far outside any frame, where a plain
-//! cast would overflow.
-int pixelIndex(double v, int lo, int hi) {
-    return int(std::clamp(std::floor(v), double(lo), double(hi)));
-}
-
-double edgeMask(double q) {
-    return std::clamp((1.0 - q) / kMaskEdge + 0.5, 0.0, 1.0);
-}
-
-//! One ghost at one wavelength for one source: the traced grid, in pixels.
-struct Mesh {
-    int side = 0;
-    std::vector<RayResult> rays;
-    std::array<double, 3> weight{};  //!< energy per channel x entrance share of one triangle
-    double minY = 0, maxY = 0;       //!< pixel rows the mesh touches
-};
 
 //! The field angle (degrees) whose direct image's centroid lands at display point (x, y) mm:
 //! paraxial first, then corrected twice by the traced centroid (distortion).
@@ -105,60 +101,20 @@ Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens
     return m;
 }
 
-//! Below this a contribution is invisible in any output (under a 16-bit sRGB file's smallest
-//! step above black, 1 / 65535 / 12.92 linear): a ghost's triangles fainter than that are not
-//! drawn. Large defocused ghosts spread over many frames' worth of sensor are mostly this.
-constexpr double kInvisible = 1e-6;
-
-//! How a triangle meets a mask (the iris at one crossing, or the clear apertures): the masks
-//! are convex and their coordinates vary linearly over a triangle, so three vertices inside
-//! (by the edge's width) mean all of it is, three outside one half-plane mean none of it.
-enum class Cover { Inside, Outside, Edge };
-
-Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResult& b, const RayResult& c,
-                int k) {
-    const std::size_t i = std::size_t(2 * k);
-    const double qa = lens::irisRadius(iris, a.stop[i], a.stop[i + 1]);
-    const double qb = lens::irisRadius(iris, b.stop[i], b.stop[i + 1]);
-    const double qc = lens::irisRadius(iris, c.stop[i], c.stop[i + 1]);
-    if (std::max({qa, qb, qc}) < 1.0 - kMaskEdge) return Cover::Inside;
-    // Outside together: beyond the same edge line (or, for a circle, a shared tangent side is
-    // not needed; a whole triangle past the circle's edge is caught per pixel).
-    if (iris.blades >= 3 && iris.roundness <= 0) {
-        for (int e = 0; e < iris.blades; ++e) {
-            const double nx = iris.normals[std::size_t(2 * e)],
-                         ny = iris.normals[std::size_t(2 * e + 1)];
-            const double limit = iris.cosHalf * (1.0 + kMaskEdge);
-            if (a.stop[i] * nx + a.stop[i + 1] * ny > limit &&
-                b.stop[i] * nx + b.stop[i + 1] * ny > limit &&
-                c.stop[i] * nx + c.stop[i + 1] * ny > limit)
-                return Cover::Outside;
-        }
-    }
-    return Cover::Edge;
-}
-
 //! Adds the triangle (a, b, c) of `m` to rows [rowBegin, rowEnd) of `out` (RGB in RGBA).
 void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const RayResult& b,
                const RayResult& c, Image& out, int rowBegin, int rowEnd) {
-    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    if (area == 0.0) return;
-    // Irradiance: the triangle's share of the entrance over its area on the sensor.
-    const double pixels = std::fabs(area) * 0.5;
-    const double density = 1.0 / std::max(pixels, 1.0);
-    const double peak = density * std::max({a.throughput, b.throughput, c.throughput}) *
-                        std::max({m.weight[0], m.weight[1], m.weight[2]});
-    if (peak < kInvisible) return;
-    if (std::min({a.vignette, b.vignette, c.vignette}) > 1.0 + kMaskEdge) return;
+    const lens::TrianglePlan plan = lens::planTriangle(m, iris, a, b, c);
+    if (!plan.draw) return;
+    const double area = plan.area, density = plan.density;
+    // Which masks can cut this triangle: the others are 1 over all of it (each mask is convex
+    // and its coordinates vary linearly, so vertices inside by the edge's width mean all is).
     const bool vignetteEdge = std::max({a.vignette, b.vignette, c.vignette}) >= 1.0 - kMaskEdge;
     std::array<bool, lens::kMaxStopCrossings> irisEdge{};
     const int crossings = a.stopCrossings;
-    for (int k = 0; k < crossings; ++k) {
-        const Cover cover = irisCover(iris, a, b, c, k);
-        if (cover == Cover::Outside) return;
-        irisEdge[std::size_t(k)] = cover == Cover::Edge;
-    }
-    if (pixels < 1.0) {
+    for (int k = 0; k < crossings; ++k)
+        irisEdge[std::size_t(k)] = lens::irisCover(iris, a, b, c, k) != Cover::Inside;
+    if (plan.point) {
         // Smaller than a pixel (a focused ghost, a caustic): it may cover no pixel centre, so
         // its whole energy goes to the pixel under its centroid, masked there.
         const double cx = (a.x + b.x + c.x) / 3, cy = (a.y + b.y + c.y) / 3;
@@ -326,6 +282,29 @@ void addGlare(const LensLight& light, double share, double r0, Image& out) {
     });
 }
 
+//! The CPU rasteriser: each light's triangles in row bands over the cores.
+class CpuGhostDrawer final : public lens::GhostDrawer {
+  public:
+    CpuGhostDrawer(int width, int height) : m_image(width, height) {}
+    Status draw(const std::vector<Mesh>& meshes, const lens::Iris& iris) override {
+        constexpr int kBand = 32;
+        const int height = m_image.height();
+        parallelFor(0, (height + kBand - 1) / kBand, 1, [&](int begin, int end) {
+            for (int band = begin; band < end; ++band)
+                rasteriseBand(meshes, iris, m_image, band * kBand,
+                              std::min(height, (band + 1) * kBand));
+        });
+        return Ok{};
+    }
+    Status finish(Image& ghosts) override {
+        ghosts = std::move(m_image);
+        return Ok{};
+    }
+
+  private:
+    Image m_image;
+};
+
 void setOpaque(Image& image) {
     for (int y = 0; y < image.height(); ++y) {
         float* row = image.row(y);
@@ -338,6 +317,17 @@ void setOpaque(Image& image) {
 Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
                                         const std::vector<LensLight>& lights,
                                         const LensRenderOptions& options) {
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+        return invalidInput("lens render: expected an image of 1 to " +
+                            std::to_string(kMaxImageSide) + " pixels a side");
+    CpuGhostDrawer drawer(width, height);
+    return lens::renderLensFlareWith(lens, width, height, lights, options, drawer);
+}
+
+Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, int height,
+                                                  const std::vector<LensLight>& lights,
+                                                  const LensRenderOptions& options,
+                                                  GhostDrawer& drawer) {
     if (Status s = validateParams(
             options, std::span<const Param<LensRenderOptions>>(kLensRenderParams), "lens render");
         !s)
@@ -345,7 +335,7 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
     if (options.spectral > 0 && options.spectral < 3)
         return invalidInput("--spectral: expected 0 (RGB) or at least 3 samples, got " +
                             std::to_string(options.spectral));
-    LensFlareLayers layers{Image(width, height), Image(width, height), Image(width, height)};
+    LensFlareLayers layers{Image(), Image(width, height), Image(width, height)};
     SensorMap map;
     map.width = width, map.height = height;
     map.mmPerPixel = std::min(lens.sensor.width / width, lens.sensor.height / height);
@@ -390,16 +380,12 @@ Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
                 meshes[std::size_t(k)] = std::move(m);
             }
         });
-        constexpr int kBand = 32;
-        parallelFor(0, (height + kBand - 1) / kBand, 1, [&](int begin, int end) {
-            for (int band = begin; band < end; ++band)
-                rasteriseBand(meshes, dLine.iris, layers.ghosts, band * kBand,
-                              std::min(height, (band + 1) * kBand));
-        });
+        if (Status s = drawer.draw(meshes, dLine.iris); !s) return s.error();
         addStarburst(lens, {options.dirt, options.dirtSeed}, samples, light, options.starburst,
                      options.starburstSize * diagonal, layers.starburst);
         addGlare(light, options.glare, 0.01 * diagonal, layers.glare);
     }
+    if (Status s = drawer.finish(layers.ghosts); !s) return s.error();
     setOpaque(layers.ghosts), setOpaque(layers.starburst), setOpaque(layers.glare);
     return layers;
 }
