@@ -4,6 +4,10 @@
 #include <benchmark/benchmark.h>
 
 #include "flarekit/Lens.h"
+#if FLAREKIT_HAS_GL
+#include "flarekit/GpuLens.h"
+#include "flarekit/HeadlessGl.h"
+#endif
 
 using namespace flarekit;
 
@@ -59,6 +63,36 @@ BENCHMARK(BM_RenderSources)
     ->Arg(32)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+#if FLAREKIT_HAS_GL
+//! The same frame with the ghosts rasterised by OpenGL; counters: GPU ms of the ghost draws
+//! (timer queries) and the read-back's wall ms. `state.range(0)` x `range(1)` pixels.
+void BM_RenderGl(benchmark::State& state) {
+    static auto context = gl::HeadlessGl::create();
+    if (!context) {
+        state.SkipWithError(context.error().message.c_str());
+        return;
+    }
+    const int w = int(state.range(0)), h = int(state.range(1));
+    LensRenderOptions o;
+    o.ghosts = 66;
+    std::vector<LensLight> one(1);
+    one[0].x = 0.7 * w, one[0].y = 0.3 * h, one[0].energy = {1e6, 1e6, 1e6};
+    LensGlTimes times, sum;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(renderLensFlareGl(zoom(), w, h, one, o, &times).ok());
+        sum.ghostsGpuMs += times.ghostsGpuMs, sum.readbackMs += times.readbackMs;
+    }
+    state.counters["ghosts GPU ms"] = sum.ghostsGpuMs / double(state.iterations());
+    state.counters["read-back ms"] = sum.readbackMs / double(state.iterations());
+}
+BENCHMARK(BM_RenderGl)
+    ->Args({1920, 1080})
+    ->Args({10172, 5370})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+#endif
 
 }  // namespace
 

@@ -25,6 +25,14 @@ struct SensorMap {
     double toPxY(double mm) const { return height / 2 - mm / mmPerPixel; }
 };
 
+//! Vertices sit on a grid of 1/256 pixel, the 8 bits of sub-pixel precision GPUs (Mesa's
+//! llvmpipe, NVIDIA's) snap them to: both rasterisers then cover exactly the same pixel centres.
+//! Far off-frame vertices (a caustic's fold) are left as they are.
+inline constexpr double kSubpixelReach = 65536;  //!< past this a float has no 1/256 steps
+inline double snapToSubpixel(double px) {
+    return std::fabs(px) < kSubpixelReach ? std::round(px * 256.0) / 256.0 : px;
+}
+
 //! The iris and clear-aperture masks soften over this share of the stop radius, so a ghost's
 //! polygon edge is antialiased at any mesh resolution.
 constexpr double kMaskEdge = 0.015;
@@ -42,7 +50,7 @@ inline double edgeMask(double q) {
 //! One ghost at one wavelength for one source: the traced grid, in pixels.
 struct Mesh {
     int side = 0;
-    std::vector<RayResult> rays;  //!< side x side, row-major; x, y in pixels
+    std::vector<RayResult> rays;     //!< side x side, row-major; x, y in pixels
     std::array<double, 3> weight{};  //!< energy per channel x entrance share of one triangle
     double minY = 0, maxY = 0;       //!< pixel rows the mesh touches
 };
@@ -57,13 +65,16 @@ constexpr double kInvisible = 1e-6;
 //! (by the edge's width) mean all of it is, three outside one half-plane mean none of it.
 enum class Cover { Inside, Outside, Edge };
 
-inline Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResult& b, const RayResult& c,
-                int k) {
+inline Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResult& b,
+                       const RayResult& c, int k) {
     const std::size_t i = std::size_t(2 * k);
     const double qa = lens::irisRadius(iris, a.stop[i], a.stop[i + 1]);
     const double qb = lens::irisRadius(iris, b.stop[i], b.stop[i + 1]);
     const double qc = lens::irisRadius(iris, c.stop[i], c.stop[i + 1]);
-    if (std::max({qa, qb, qc}) < 1.0 - kMaskEdge) return Cover::Inside;
+    // q is convex (so its largest value over the triangle is at a vertex) for the polygon and
+    // the circle; a rounded polygon's blend is not, and is always tested per pixel.
+    const bool convex = iris.blades < 3 || iris.roundness <= 0;
+    if (convex && std::max({qa, qb, qc}) < 1.0 - kMaskEdge) return Cover::Inside;
     // Outside together: beyond the same edge line (or, for a circle, a shared tangent side is
     // not needed; a whole triangle past the circle's edge is caught per pixel).
     if (iris.blades >= 3 && iris.roundness <= 0) {
@@ -91,6 +102,14 @@ struct TrianglePlan {
 };
 TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, const RayResult& b,
                           const RayResult& c);
+
+//! The triangle (a, b, c) cut to the image rectangle [0, width] x [0, height] (Sutherland and
+//! Hodgman), as a fan of triangles whose new vertices carry the linearly interpolated
+//! attributes and sit on the sub-pixel grid: both rasterisers draw exactly these pieces, so
+//! OpenGL never clips (its clipper would place new vertices its own way). A triangle inside
+//! the image is itself; one outside, nothing.
+std::vector<std::array<RayResult, 3>> clipToImage(const RayResult& a, const RayResult& b,
+                                                  const RayResult& c, int width, int height);
 
 //! Where the ghost meshes of each light go: the CPU rasteriser, or OpenGL's.
 class GhostDrawer {

@@ -24,6 +24,12 @@ namespace lens {
 TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, const RayResult& b,
                           const RayResult& c) {
     TrianglePlan plan;
+    // A vertex off the sub-pixel grid (a fold of the mesh toward infinity): the triangle is a
+    // sliver whose energy is spread over far more than any frame, and no rasteriser can place
+    // its edges exactly; it is not drawn.
+    for (const RayResult* r : {&a, &b, &c}) {
+        if (!(std::fabs(r->x) < kSubpixelReach && std::fabs(r->y) < kSubpixelReach)) return plan;
+    }
     plan.area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
     if (plan.area == 0.0) return plan;
     const double pixels = std::fabs(plan.area) * 0.5;
@@ -38,6 +44,44 @@ TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, c
     plan.draw = true;
     plan.point = pixels < 1.0;
     return plan;
+}
+
+std::vector<std::array<RayResult, 3>> clipToImage(const RayResult& a, const RayResult& b,
+                                                  const RayResult& c, int width, int height) {
+    const double w = width, h = height;
+    if (std::min({a.x, b.x, c.x}) >= 0 && std::max({a.x, b.x, c.x}) <= w &&
+        std::min({a.y, b.y, c.y}) >= 0 && std::max({a.y, b.y, c.y}) <= h)
+        return {{a, b, c}};
+    // The point of the segment p-q where `f` (linear) is zero, attributes included.
+    const auto cut = [](const RayResult& p, const RayResult& q, double fp, double fq) {
+        const double t = fp / (fp - fq);
+        RayResult r = p;
+        r.x = snapToSubpixel(p.x + (q.x - p.x) * t), r.y = snapToSubpixel(p.y + (q.y - p.y) * t);
+        r.throughput = p.throughput + (q.throughput - p.throughput) * t;
+        r.vignette = p.vignette + (q.vignette - p.vignette) * t;
+        for (std::size_t i = 0; i < r.stop.size(); ++i)
+            r.stop[i] = p.stop[i] + (q.stop[i] - p.stop[i]) * t;
+        return r;
+    };
+    std::vector<RayResult> polygon{a, b, c}, next;
+    const std::array<std::array<double, 3>, 4> planes{
+        {{1, 0, 0}, {-1, 0, w}, {0, 1, 0}, {0, -1, h}}};
+    for (const auto& pl : planes) {
+        next.clear();
+        const auto f = [&](const RayResult& r) { return pl[0] * r.x + pl[1] * r.y + pl[2]; };
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const RayResult &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+            const double fp = f(p), fq = f(q);
+            if (fp >= 0) next.push_back(p);
+            if ((fp >= 0) != (fq >= 0)) next.push_back(cut(p, q, fp, fq));
+        }
+        polygon.swap(next);
+        if (polygon.size() < 3) return {};
+    }
+    std::vector<std::array<RayResult, 3>> fan;
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+        fan.push_back({polygon[0], polygon[i], polygon[i + 1]});
+    return fan;
 }
 
 }  // namespace lens
@@ -92,7 +136,8 @@ Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens
                          y = sa * (2.0 * iy / (side - 1) - 1.0);
             RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, x, y), dir, false);
             if (r.alive) {
-                r.x = map.toPxX(r.x), r.y = map.toPxY(r.y);
+                r.x = lens::snapToSubpixel(map.toPxX(r.x)),
+                r.y = lens::snapToSubpixel(map.toPxY(r.y));
                 m.minY = std::min(m.minY, r.y), m.maxY = std::max(m.maxY, r.y);
             }
             m.rays[std::size_t(iy) * std::size_t(side) + std::size_t(ix)] = r;
@@ -101,12 +146,17 @@ Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens
     return m;
 }
 
+void rasterisePiece(const Mesh& m, const lens::Iris& iris, const RayResult& a, const RayResult& b,
+                    const RayResult& c, double density, bool vignetteEdge,
+                    const std::array<bool, lens::kMaxStopCrossings>& irisEdge, int crossings,
+                    Image& out, int rowBegin, int rowEnd);
+
 //! Adds the triangle (a, b, c) of `m` to rows [rowBegin, rowEnd) of `out` (RGB in RGBA).
 void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const RayResult& b,
                const RayResult& c, Image& out, int rowBegin, int rowEnd) {
     const lens::TrianglePlan plan = lens::planTriangle(m, iris, a, b, c);
     if (!plan.draw) return;
-    const double area = plan.area, density = plan.density;
+    const double density = plan.density;
     // Which masks can cut this triangle: the others are 1 over all of it (each mask is convex
     // and its coordinates vary linearly, so vertices inside by the edge's width mean all is).
     const bool vignetteEdge = std::max({a.vignette, b.vignette, c.vignette}) >= 1.0 - kMaskEdge;
@@ -132,21 +182,43 @@ void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const 
             p[2] += float(v * m.weight[2]);
         return;
     }
+    for (const auto& piece : lens::clipToImage(a, b, c, out.width(), out.height()))
+        rasterisePiece(m, iris, piece[0], piece[1], piece[2], density, vignetteEdge, irisEdge,
+                       crossings, out, rowBegin, rowEnd);
+}
+
+void rasterisePiece(const Mesh& m, const lens::Iris& iris, const RayResult& a, const RayResult& b,
+                    const RayResult& c, double density, bool vignetteEdge,
+                    const std::array<bool, lens::kMaxStopCrossings>& irisEdge, int crossings,
+                    Image& out, int rowBegin, int rowEnd) {
+    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (area == 0.0) return;
     const int x0 = pixelIndex(std::min({a.x, b.x, c.x}), 0, out.width());
     const int x1 = pixelIndex(std::ceil(std::max({a.x, b.x, c.x})), -1, out.width() - 1);
     const int y0 = pixelIndex(std::min({a.y, b.y, c.y}), rowBegin, rowEnd);
     const int y1 = pixelIndex(std::ceil(std::max({a.y, b.y, c.y})), rowBegin - 1, rowEnd - 1);
     const double inv = 1.0 / area;
+    // A pixel centre exactly on an edge belongs to one of the two triangles sharing it: the
+    // top-left rule (of this y-down image; OpenGL's bottom-left in its y-up window), so the
+    // CPU covers the pixels a GPU does. Vertices sit on the 1/256 grid, so these are exact.
+    const double sign = area > 0 ? 1.0 : -1.0;
+    const auto covers = [&](double e, const RayResult& from, const RayResult& to) {
+        if (e != 0) return e * sign > 0;
+        const double dx = (to.x - from.x) * sign, dy = (to.y - from.y) * sign;
+        return dy < 0 || (dy == 0 && dx > 0);
+    };
     for (int y = y0; y <= y1; ++y) {
         float* row = out.row(y);
         const double py = y + 0.5;
         for (int x = x0; x <= x1; ++x) {
             const double px = x + 0.5;
-            // Barycentric weights of the pixel centre; outside when any is negative.
-            const double wa = ((b.x - px) * (c.y - py) - (c.x - px) * (b.y - py)) * inv;
-            const double wb = ((c.x - px) * (a.y - py) - (a.x - px) * (c.y - py)) * inv;
-            const double wc = 1.0 - wa - wb;
-            if (wa < 0 || wb < 0 || wc < 0) continue;
+            // Edge functions of the pixel centre: twice the signed areas opposite each vertex.
+            const double ea = (c.x - b.x) * (py - b.y) - (c.y - b.y) * (px - b.x);
+            const double eb = (a.x - c.x) * (py - c.y) - (a.y - c.y) * (px - c.x);
+            const double ec = (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
+            if (!covers(ea, b, c) || !covers(eb, c, a) || !covers(ec, a, b)) continue;
+            // Barycentric weights.
+            const double wa = ea * inv, wb = eb * inv, wc = ec * inv;
             double mask = 1.0;
             if (vignetteEdge) mask = edgeMask(wa * a.vignette + wb * b.vignette + wc * c.vignette);
             for (int k = 0; k < crossings && mask > 0; ++k) {

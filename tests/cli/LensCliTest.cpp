@@ -117,3 +117,26 @@ TEST(LensCli, BakeWritesAPresetApplyUsesAndSheetDrawsTheLens) {
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("bad.png")));
 }
+
+#if FLAREKIT_HAS_GL
+TEST(LensCli, GlBackendDrawsTheSameGhosts) {
+    TempDir dir;
+    const std::string in = std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr";
+    for (const char* backend : {"cpu", "gl"}) {
+        const CliResult r = runCli({"lens", "render", "asahi-takumar-50", in, "-o",
+                                    dir.file(std::string(backend) + ".exr"), "--backend", backend,
+                                    "--layers", dir.file(backend), "--ghosts", "12"});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    auto cpu = readImage(dir.file("cpu/ghosts.exr")), gl = readImage(dir.file("gl/ghosts.exr"));
+    ASSERT_TRUE(cpu.ok() && gl.ok());
+    double sumCpu = 0, sumGl = 0;
+    for (std::size_t i = 0; i < cpu->image.pixelCount() * 4; ++i) {
+        if (i % 4 == 3) continue;
+        sumCpu += cpu->image.data()[i], sumGl += gl->image.data()[i];
+    }
+    ASSERT_GT(sumCpu, 0.0);
+    // The layers are half-float files: the sums agree far inside their rounding.
+    EXPECT_NEAR(sumGl, sumCpu, 1e-3 * sumCpu);
+}
+#endif
