@@ -16,9 +16,9 @@ namespace {
 //! One vertex: pixel x, y; throughput, vignette, the three stop crossings; density.
 constexpr int kFloatsPerVertex = 11;
 
-void appendVertex(std::vector<float>& out, const lens::RayResult& r, double density,
-                  double x, double y) {
-    const float v[kFloatsPerVertex] = {float(x),         float(y),         float(r.throughput),
+void appendVertex(std::vector<float>& out, const lens::RayResult& r, double density, double x,
+                  double y) {
+    const float v[kFloatsPerVertex] = {float(x),          float(y),         float(r.throughput),
                                        float(r.vignette), float(r.stop[0]), float(r.stop[1]),
                                        float(r.stop[2]),  float(r.stop[3]), float(r.stop[4]),
                                        float(r.stop[5]),  float(density)};
@@ -33,7 +33,8 @@ lens::RayResult centroid(const lens::RayResult& a, const lens::RayResult& b,
     m.x = std::floor((a.x + b.x + c.x) / 3) + 0.5, m.y = std::floor((a.y + b.y + c.y) / 3) + 0.5;
     m.throughput = (a.throughput + b.throughput + c.throughput) / 3;
     m.vignette = (a.vignette + b.vignette + c.vignette) / 3;
-    for (std::size_t i = 0; i < m.stop.size(); ++i) m.stop[i] = (a.stop[i] + b.stop[i] + c.stop[i]) / 3;
+    for (std::size_t i = 0; i < m.stop.size(); ++i)
+        m.stop[i] = (a.stop[i] + b.stop[i] + c.stop[i]) / 3;
     return m;
 }
 
@@ -71,7 +72,8 @@ class GlGhostDrawer final : public lens::GhostDrawer {
         int offset = 0;
         for (GLuint a = 0; a < 4; ++a) {
             glEnableVertexArrayAttrib(vao, a);
-            glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, GLuint(offset * sizeof(float)));
+            glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE,
+                                      GLuint(offset * sizeof(float)));
             glVertexArrayAttribBinding(vao, a, 0);
             offset += sizes[a];
         }
@@ -138,15 +140,16 @@ class GlGhostDrawer final : public lens::GhostDrawer {
                     const auto at = [&](int x, int y) -> const lens::RayResult& {
                         return m.rays[std::size_t(y) * std::size_t(s) + std::size_t(x)];
                     };
-                    const lens::RayResult &a = at(ix, iy), &b = at(ix + 1, iy),
-                                          &c = at(ix, iy + 1), &d = at(ix + 1, iy + 1);
+                    const lens::RayResult &a = at(ix, iy), &b = at(ix + 1, iy), &c = at(ix, iy + 1),
+                                          &d = at(ix + 1, iy + 1);
                     if (!a.alive || !b.alive || !c.alive || !d.alive) continue;
                     add(a, b, d);
                     add(a, d, c);
                 }
             }
             if (triangles.empty()) continue;
-            glProgramUniform3f(p, weight, float(m.weight[0]), float(m.weight[1]), float(m.weight[2]));
+            glProgramUniform3f(p, weight, float(m.weight[0]), float(m.weight[1]),
+                               float(m.weight[2]));
             glProgramUniform1i(p, crossings, stopCrossings);
             glNamedBufferData(m_vbo.get(), GLsizeiptr(triangles.size() * sizeof(float)),
                               triangles.data(), GL_STREAM_DRAW);
@@ -166,7 +169,9 @@ class GlGhostDrawer final : public lens::GhostDrawer {
         auto image = gl::readTextureRgba(m_target.get(), m_width, m_height);
         if (!image) return image.error();
         ghosts = std::move(*image);
-        m_readbackMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        m_readbackMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         return Ok{};
     }
 
