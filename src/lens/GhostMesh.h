@@ -98,7 +98,6 @@ inline Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResu
 struct TrianglePlan {
     bool draw = false, point = false;
     double density = 0;
-    double area = 0;  //!< signed, twice the triangle's area in pixels
 };
 TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, const RayResult& b,
                           const RayResult& c);

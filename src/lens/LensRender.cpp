@@ -30,9 +30,9 @@ TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, c
     for (const RayResult* r : {&a, &b, &c}) {
         if (!(std::fabs(r->x) < kSubpixelReach && std::fabs(r->y) < kSubpixelReach)) return plan;
     }
-    plan.area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    if (plan.area == 0.0) return plan;
-    const double pixels = std::fabs(plan.area) * 0.5;
+    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (area == 0.0) return plan;
+    const double pixels = std::fabs(area) * 0.5;
     plan.density = 1.0 / std::max(pixels, 1.0);
     const double peak = plan.density * std::max({a.throughput, b.throughput, c.throughput}) *
                         std::max({m.weight[0], m.weight[1], m.weight[2]});
