@@ -91,6 +91,34 @@ inline Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResu
     return Cover::Edge;
 }
 
+//! Calls f(a, b, c) for each triangle of the mesh: every grid cell is two triangles split
+//! along its a-d diagonal, and a cell with one dead ray (total internal reflection, a missed
+//! surface) keeps the triangle of its three live ones, so a ghost cut by dead rays has a
+//! diagonal edge rather than a staircase of whole cells.
+template <class F>
+void forEachTriangle(const Mesh& m, F f) {
+    const int s = m.side;
+    const auto at = [&](int x, int y) -> const RayResult& {
+        return m.rays[std::size_t(y) * std::size_t(s) + std::size_t(x)];
+    };
+    for (int iy = 0; iy + 1 < s; ++iy) {
+        for (int ix = 0; ix + 1 < s; ++ix) {
+            const RayResult &a = at(ix, iy), &b = at(ix + 1, iy), &c = at(ix, iy + 1),
+                            &d = at(ix + 1, iy + 1);
+            const int dead = !a.alive + !b.alive + !c.alive + !d.alive;
+            if (dead == 0) {
+                f(a, b, d);
+                f(a, d, c);
+            } else if (dead == 1) {
+                if (!a.alive) f(b, d, c);
+                if (!b.alive) f(a, d, c);
+                if (!c.alive) f(a, b, d);
+                if (!d.alive) f(a, b, c);
+            }
+        }
+    }
+}
+
 //! How a triangle of a mesh is drawn: not at all (culled: invisible, or wholly outside a
 //! mask), as a point at its centroid (smaller than a pixel: it may cover no pixel centre, so
 //! its whole energy goes to the pixel under its centroid), or rasterised with `density`, the

@@ -243,22 +243,10 @@ void rasteriseBand(const std::vector<Mesh>& meshes, const lens::Iris& iris, Imag
                    int rowBegin, int rowEnd) {
     for (const Mesh& m : meshes) {
         if (m.maxY < rowBegin || m.minY > rowEnd) continue;
-        const int s = m.side;
-        for (int iy = 0; iy + 1 < s; ++iy) {
-            for (int ix = 0; ix + 1 < s; ++ix) {
-                const RayResult& a = m.rays[std::size_t(iy) * std::size_t(s) + std::size_t(ix)];
-                const RayResult& b = m.rays[std::size_t(iy) * std::size_t(s) + std::size_t(ix) + 1];
-                const RayResult& c = m.rays[std::size_t(iy + 1) * std::size_t(s) + std::size_t(ix)];
-                const RayResult& d =
-                    m.rays[std::size_t(iy + 1) * std::size_t(s) + std::size_t(ix) + 1];
-                if (!a.alive || !b.alive || !c.alive || !d.alive) continue;
-                const double lo = std::min({a.y, b.y, c.y, d.y}),
-                             hi = std::max({a.y, b.y, c.y, d.y});
-                if (hi < rowBegin || lo > rowEnd) continue;
-                rasterise(m, iris, a, b, d, out, rowBegin, rowEnd);
-                rasterise(m, iris, a, d, c, out, rowBegin, rowEnd);
-            }
-        }
+        lens::forEachTriangle(m, [&](const RayResult& a, const RayResult& b, const RayResult& c) {
+            if (std::max({a.y, b.y, c.y}) < rowBegin || std::min({a.y, b.y, c.y}) > rowEnd) return;
+            rasterise(m, iris, a, b, c, out, rowBegin, rowEnd);
+        });
     }
 }
 

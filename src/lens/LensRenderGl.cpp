@@ -114,7 +114,6 @@ class GlGhostDrawer final : public lens::GhostDrawer {
         std::vector<float> triangles;
         for (const lens::Mesh& m : meshes) {
             triangles.clear();
-            const int s = m.side;
             int stopCrossings = 0;
             const auto add = [&](const lens::RayResult& a, const lens::RayResult& b,
                                  const lens::RayResult& c) {
@@ -135,18 +134,7 @@ class GlGhostDrawer final : public lens::GhostDrawer {
                     }
                 }
             };
-            for (int iy = 0; iy + 1 < s; ++iy) {
-                for (int ix = 0; ix + 1 < s; ++ix) {
-                    const auto at = [&](int x, int y) -> const lens::RayResult& {
-                        return m.rays[std::size_t(y) * std::size_t(s) + std::size_t(x)];
-                    };
-                    const lens::RayResult &a = at(ix, iy), &b = at(ix + 1, iy), &c = at(ix, iy + 1),
-                                          &d = at(ix + 1, iy + 1);
-                    if (!a.alive || !b.alive || !c.alive || !d.alive) continue;
-                    add(a, b, d);
-                    add(a, d, c);
-                }
-            }
+            lens::forEachTriangle(m, add);
             if (triangles.empty()) continue;
             glProgramUniform3f(p, weight, float(m.weight[0]), float(m.weight[1]),
                                float(m.weight[2]));
