@@ -71,10 +71,9 @@ inline Cover irisCover(const lens::Iris& iris, const RayResult& a, const RayResu
     const double qa = lens::irisRadius(iris, a.stop[i], a.stop[i + 1]);
     const double qb = lens::irisRadius(iris, b.stop[i], b.stop[i + 1]);
     const double qc = lens::irisRadius(iris, c.stop[i], c.stop[i + 1]);
-    // q is convex (so its largest value over the triangle is at a vertex) for the polygon and
-    // the circle; a rounded polygon's blend is not, and is always tested per pixel.
-    const bool convex = iris.blades < 3 || iris.roundness <= 0;
-    if (convex && std::max({qa, qb, qc}) < 1.0 - kMaskEdge) return Cover::Inside;
+    // Where the shape is convex q's largest value over the triangle is at a vertex; a
+    // non-convex rounded iris (few blades, little roundness) is tested per pixel.
+    if (iris.convex && std::max({qa, qb, qc}) < 1.0 - kMaskEdge) return Cover::Inside;
     // Outside together: beyond the same edge line (or, for a circle, a shared tangent side is
     // not needed; a whole triangle past the circle's edge is caught per pixel).
     if (iris.blades >= 3 && iris.roundness <= 0) {
@@ -135,6 +134,12 @@ TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, c
 //! attributes and sit on the sub-pixel grid: both rasterisers draw exactly these pieces, so
 //! OpenGL never clips (its clipper would place new vertices its own way). A triangle inside
 //! the image is itself; one outside, nothing.
+//! Whether the triangle lies within [0, width] x [0, height] (no clipping needed).
+inline bool insideImage(const RayResult& a, const RayResult& b, const RayResult& c, int width,
+                        int height) {
+    return std::min({a.x, b.x, c.x}) >= 0 && std::max({a.x, b.x, c.x}) <= width &&
+           std::min({a.y, b.y, c.y}) >= 0 && std::max({a.y, b.y, c.y}) <= height;
+}
 std::vector<std::array<RayResult, 3>> clipToImage(const RayResult& a, const RayResult& b,
                                                   const RayResult& c, int width, int height);
 

@@ -49,9 +49,7 @@ TrianglePlan planTriangle(const Mesh& m, const Iris& iris, const RayResult& a, c
 std::vector<std::array<RayResult, 3>> clipToImage(const RayResult& a, const RayResult& b,
                                                   const RayResult& c, int width, int height) {
     const double w = width, h = height;
-    if (std::min({a.x, b.x, c.x}) >= 0 && std::max({a.x, b.x, c.x}) <= w &&
-        std::min({a.y, b.y, c.y}) >= 0 && std::max({a.y, b.y, c.y}) <= h)
-        return {{a, b, c}};
+    if (insideImage(a, b, c, width, height)) return {{a, b, c}};
     // The point of the segment p-q where `f` (linear) is zero, attributes included.
     const auto cut = [](const RayResult& p, const RayResult& q, double fp, double fq) {
         const double t = fp / (fp - fq);
@@ -180,6 +178,12 @@ void rasterise(const Mesh& m, const lens::Iris& iris, const RayResult& a, const 
         float* p = out.row(py) + 4 * px;
         p[0] += float(v * m.weight[0]), p[1] += float(v * m.weight[1]),
             p[2] += float(v * m.weight[2]);
+        return;
+    }
+    // Most triangles lie inside the image and are drawn as they are (no copy, no allocation).
+    if (lens::insideImage(a, b, c, out.width(), out.height())) {
+        rasterisePiece(m, iris, a, b, c, density, vignetteEdge, irisEdge, crossings, out, rowBegin,
+                       rowEnd);
         return;
     }
     for (const auto& piece : lens::clipToImage(a, b, c, out.width(), out.height()))

@@ -128,6 +128,11 @@ class GlGhostDrawer final : public lens::GhostDrawer {
                     appendVertex(triangles, mid, plan.density, mid.x + 0.25, mid.y - 0.25);
                     appendVertex(triangles, mid, plan.density, mid.x, mid.y + 0.25);
                 } else {
+                    if (lens::insideImage(a, b, c, m_width, m_height)) {
+                        for (const lens::RayResult* r : {&a, &b, &c})
+                            appendVertex(triangles, *r, plan.density, r->x, r->y);
+                        return;
+                    }
                     for (const auto& piece : lens::clipToImage(a, b, c, m_width, m_height)) {
                         for (const lens::RayResult& r : piece)
                             appendVertex(triangles, r, plan.density, r.x, r.y);

@@ -104,6 +104,13 @@ Iris makeIris(const LensAperture& a) {
     iris.blades = std::min(a.blades, 32);
     const double sector = 2.0 * M_PI / iris.blades;
     iris.cosHalf = std::cos(sector / 2.0);
+    // The bowed blade r(phi) = (1 - rho) P(phi) + rho, P the straight blade's polar radius, is
+    // convex where r^2 + 2 r'^2 - r r'' >= 0; P itself gives 0 (a line), so this reduces to
+    // (1 - rho) (1 - 2 tan^2(pi / n)) + rho >= 0 at the vertices, where P'' is largest: every
+    // iris of 6 or more blades, a 5-bladed one from rho = 0.053, 4 from 0.5, 3 from 5/6.
+    const double t = std::tan(sector / 2.0);
+    iris.convex =
+        iris.roundness <= 0 || (1 - iris.roundness) * (1 - 2 * t * t) + iris.roundness >= 0;
     // Vertex k sits at rotation + k sector; the edge between vertices k and k+1 faces the
     // half-way angle.
     for (int k = 0; k < iris.blades; ++k) {

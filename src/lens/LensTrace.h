@@ -20,6 +20,8 @@ struct Iris {
     double cosHalf = 1;  //!< cos(pi / blades): the inscribed polygon's edge distance
     double roundness = 0;
     std::array<double, 64> normals{};  //!< (x, y) per edge
+    //! Whether the shape is convex, so q's largest value over a triangle is at a vertex.
+    bool convex = true;
 };
 Iris makeIris(const LensAperture& aperture);
 //! q <= 1 inside the iris at normalised stop coordinates (q = r / the edge's radius there).

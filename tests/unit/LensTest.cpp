@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "flarekit/Lens.h"
+#include "lens/LensTrace.h"
 
 using namespace flarekit;
 
@@ -509,4 +510,38 @@ TEST(Lens, SmallMeshGridsAgreeWithTheExactTrace) {
             EXPECT_LT(std::fabs(centreError), 0.5 * mm) << grid;
         }
     }
+}
+
+TEST(Lens, IrisConvexityIsWhatTheRendererAssumes) {
+    // The renderer skips the iris mask on triangles whose vertices are inside a convex iris;
+    // check the convexity rule against the shape itself: along random chords q never exceeds
+    // its ends' larger value where the rule says convex. (The rule is sufficient, not
+    // necessary: a shape it calls non-convex is merely tested per pixel.)
+    std::uint64_t state = 12345;
+    const auto uniform = [&] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return double(state >> 11) * 0x1.0p-53 * 2 - 1;
+    };
+    int checked = 0;
+    for (const int blades : {3, 4, 5, 6, 9}) {
+        for (const double roundness : {0.0, 0.03, 0.3, 0.6, 0.9}) {
+            const lens::Iris iris = lens::makeIris({blades, 10.0, roundness});
+            double worst = 0;
+            for (int k = 0; k < 20000; ++k) {
+                const double ax = uniform(), ay = uniform(), bx = uniform(), by = uniform();
+                const double qa = lens::irisRadius(iris, ax, ay),
+                             qb = lens::irisRadius(iris, bx, by);
+                const double qm = lens::irisRadius(iris, (ax + bx) / 2, (ay + by) / 2);
+                worst = std::max(worst, qm - std::max(qa, qb));
+            }
+            if (iris.convex) {
+                EXPECT_LE(worst, 1e-12) << blades << " blades, roundness " << roundness;
+            }
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 25);
+    // A 3-bladed iris barely rounded bows inward between its corners: flagged non-convex.
+    const lens::Iris bowed = lens::makeIris({3, 0.0, 0.03});
+    EXPECT_FALSE(bowed.convex);
 }
