@@ -15,8 +15,6 @@ namespace {
 //! Share of a cell's half-size the element's radius takes, leaving room for the label.
 constexpr float kCellFill = 0.8f;
 constexpr int kMaxColumns = 4;
-//! Font shipped by Debian's fonts-dejavu-core (installed by scripts/install-deps.sh).
-constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 std::string label(std::size_t index, const ElementParams& e) {
     std::ostringstream os;
@@ -67,10 +65,10 @@ Result<ContactSheet> renderContactSheet(const Preset& preset, int cellSize) {
                           &sheet.image.at(x0, y).r, std::size_t(x1 - x0));
         }
         if (sheet.labelled) {
-            sheet.labelled =
-                text->renderText(sheet.image.data(), sheet.image.width(), sheet.image.height(),
-                                 cellX + fontSize / 2, cellY + fontSize + fontSize / 2,
-                                 label(std::size_t(i), e), fontSize, kFontFile, labelColour);
+            sheet.labelled = text->renderText(
+                sheet.image.data(), sheet.image.width(), sheet.image.height(), cellX + fontSize / 2,
+                cellY + fontSize + fontSize / 2, label(std::size_t(i), e), fontSize,
+                codec::kLabelFontFile, labelColour);
         }
     }
     return sheet;

@@ -6,6 +6,7 @@
 #include "core/ParamJson.h"
 #include "core/PresetFiles.h"
 #include "flarekit/Lens.h"
+#include "lens/LensTrace.h"
 
 namespace flarekit {
 
@@ -39,12 +40,6 @@ Result<LensCoating> readCoating(const nlohmann::json& v, const JsonPlace& place)
                       jsonExcerpt(v));
 }
 
-//! Sag of a sphere of radius r at height h (0 for flat); h <= |r| is checked before.
-double sag(double r, double h) {
-    if (r == 0.0) return 0.0;
-    return r - std::copysign(std::sqrt(r * r - h * h), r);
-}
-
 Status checkPhysics(const Lens& lens, const JsonPlace& place) {
     const JsonPlace surfaces = place / "surfaces";
     if (lens.surfaces.size() < 2) return surfaces.fail("expected at least 2 surfaces");
@@ -66,7 +61,8 @@ Status checkPhysics(const Lens& lens, const JsonPlace& place) {
             const double h = std::min(s.semiAperture, next.semiAperture);
             // The axial gap at the rim of the smaller clear aperture: surfaces that cross
             // there would be glass (or air) of negative thickness.
-            const double edge = s.thickness + sag(next.radius, h) - sag(s.radius, h);
+            const double edge =
+                s.thickness + lens::surfaceSag(next.radius, h) - lens::surfaceSag(s.radius, h);
             if (edge < 0.0)
                 return (at / "thickness")
                     .fail(formatParamNumber(s.thickness) + " makes surfaces " + std::to_string(i) +

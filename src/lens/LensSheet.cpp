@@ -13,8 +13,6 @@ namespace flarekit {
 
 namespace {
 
-//! Font shipped by Debian's fonts-dejavu-core, as the element contact sheet uses.
-constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 //! The drawing's share of the sheet's height; the three flare panels take the rest.
 constexpr double kSectionShare = 0.62;
 //! Meridional rays drawn per beam.
@@ -44,11 +42,6 @@ struct Canvas {
     }
 };
 
-double sag(double r, double h) {
-    if (r == 0.0) return 0.0;
-    return r - std::copysign(std::sqrt(std::max(0.0, r * r - h * h)), r);
-}
-
 void drawLens(const Lens& lens, const lens::TraceLens& t, double reach, Canvas& cv) {
     const Rgb white{0.9f, 0.9f, 0.9f}, glass{0.05f, 0.09f, 0.14f}, stop{0.9f, 0.55f, 0.2f};
     for (std::size_t i = 0; i < t.surfaces.size(); ++i) {
@@ -65,8 +58,8 @@ void drawLens(const Lens& lens, const lens::TraceLens& t, double reach, Canvas& 
             const double h = std::min(s.semiAperture, next.semiAperture);
             for (int row = int(cv.py(h)); row <= int(cv.py(-h)); ++row) {
                 const double y = (cv.yMid - row) / cv.scale;
-                const int a = int(cv.px(s.z + sag(s.radius, y))),
-                          b = int(cv.px(next.z + sag(next.radius, y)));
+                const int a = int(cv.px(s.z + lens::surfaceSag(s.radius, y))),
+                          b = int(cv.px(next.z + lens::surfaceSag(next.radius, y)));
                 for (int x = a; x <= b; ++x) cv.add(x, row, glass);
             }
         }
@@ -74,7 +67,8 @@ void drawLens(const Lens& lens, const lens::TraceLens& t, double reach, Canvas& 
         for (int k = 0; k < n; ++k) {
             const double ya = s.semiAperture * (2.0 * k / n - 1),
                          yb = s.semiAperture * (2.0 * (k + 1) / n - 1);
-            cv.line(s.z + sag(s.radius, ya), ya, s.z + sag(s.radius, yb), yb, white);
+            cv.line(s.z + lens::surfaceSag(s.radius, ya), ya, s.z + lens::surfaceSag(s.radius, yb),
+                    yb, white);
         }
     }
     cv.line(t.sensorZ, -lens.sensor.height / 2, t.sensorZ, lens.sensor.height / 2, white);
@@ -168,7 +162,7 @@ Result<Image> renderLensSheet(const Lens& lens, int width) {
         const float colour[] = {0.85f, 0.85f, 0.85f, 1.f};
         const int size = std::max(12, width / 80);
         text->renderText(sheet.data(), width, height, size / 2, size + size / 2, title.str(), size,
-                         kFontFile, colour);
+                         codec::kLabelFontFile, colour);
     }
     return sheet;
 }

@@ -3,7 +3,9 @@
 // stop. One wavelength per prepared lens. Shared by the ghost analysis and the renderer.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "flarekit/Lens.h"
@@ -26,6 +28,13 @@ struct Iris {
 Iris makeIris(const LensAperture& aperture);
 //! q <= 1 inside the iris at normalised stop coordinates (q = r / the edge's radius there).
 double irisRadius(const Iris& iris, double x, double y);
+
+//! The sag of a sphere of radius r (0: flat) at height h from the axis: how far the surface
+//! lies behind its vertex there. Heights past |r| are clamped to the sphere's rim.
+inline double surfaceSag(double r, double h) {
+    if (r == 0.0) return 0.0;
+    return r - std::copysign(std::sqrt(std::max(0.0, r * r - h * h)), r);
+}
 
 struct TraceSurface {
     double z = 0;       //!< vertex position on the axis

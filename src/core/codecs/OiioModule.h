@@ -32,6 +32,10 @@ struct OiioModule {
                        int size, const std::string& fontPath, const float colour[4]);
 };
 
+//! The labels' font (the element contact sheet, the lens sheet): Debian's fonts-dejavu-core,
+//! installed by scripts/install-deps.sh.
+inline constexpr const char* kLabelFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
 //! The module, opened on first use; nullptr with the reason in `why` when it cannot be loaded.
 const OiioModule* oiioModule(std::string* why = nullptr);
 
