@@ -2,11 +2,15 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <mutex>
 #include <utility>
 #include <vector>
 
 #include "Common.h"
 #include "ParamOptions.h"
+#include "ShotCoverage.h"
+#include "ShotRun.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Tonemap.h"
 
@@ -19,6 +23,9 @@ struct ApplyArgs {
     float intensity = 1.f, exposure = 1.f;
     LightSearchOptions lightSearch;
     bool verbose = false;
+    std::string lightTrack;
+    ShotArgs shot;
+    OcclusionArgs occlusion;
 };
 inline constexpr Param<ApplyArgs> kApplyArgParams[] = {
     param<&ApplyArgs::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
@@ -68,39 +75,44 @@ void printCandidates(const LightSearch& search) {
             c.verdict.c_str());
 }
 
-Result<ImageOutput> applyFlare(const ApplyArgs& a) {
-    const bool autoLight = a.light == "auto";
-    const std::optional<Point> fixed = autoLight ? std::nullopt : parsePoint(a.light);
-    if (!autoLight && !fixed)
-        return invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'");
+//! The lights of one frame, each a position and an intensity.
+using Lights = std::vector<std::pair<Point, float>>;
+using LightsOf = std::function<Result<Lights>(const Image&)>;
+
+//! Measured peak (12 MP, both depths): ~135 MiB of process plus ~43 bytes per pixel: the RGBA
+//! floats, the orientation copy, the encoded samples and the file bytes (plus the decode buffer,
+//! which readImage adds).
+const JobMemory kApplyMemory{40, 160.0 * (1 << 20), "apply: 40 bytes per pixel"};
+
+//! --light auto: the lights the finder keeps in the frame, each scaled by its flare scale.
+Result<Lights> autoLights(const ApplyArgs& a, const std::string& in, const Image& image) {
+    const LightSearch search = findLights(image, a.lightSearch);
+    if (a.verbose) printCandidates(search);
+    if (search.lights.empty())
+        warn(in + ": " + search.whyNone + "; image written unchanged (--light X,Y places one)");
+    Lights lights;
+    for (const LightCandidate& light : search.lights)
+        lights.push_back({light.position, a.intensity * light.flareScale});
+    return lights;
+}
+
+Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const std::string& out,
+                               const LightsOf& lightsOf) {
     const SampleFormat depth = *parseDepth(a.depth);
-    if (Status s = checkDepthFits(a.out, depth); !s) return s.error();
+    if (Status s = checkDepthFits(out, depth); !s) return s.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
-    // Measured peak (12 MP, both depths): ~135 MiB of process plus ~43 bytes per pixel: the
-    // RGBA floats, the orientation copy, the encoded samples and the file bytes (plus the decode
-    // buffer, which readImage adds).
-    auto loaded = readInputImage(a.in, {40, 160.0 * (1 << 20), "apply: 40 bytes per pixel"});
+    auto loaded = readInputImage(in, kApplyMemory);
     if (!loaded) return loaded.error();
     Image& image = loaded->image;
-    std::vector<std::pair<Point, float>> flares;  // position, intensity
-    if (fixed) {
-        flares.push_back({*fixed, a.intensity});
-    } else {
-        const LightSearch search = findLights(image, a.lightSearch);
-        if (a.verbose) printCandidates(search);
-        if (search.lights.empty())
-            warn(a.in + ": " + search.whyNone +
-                 "; image written unchanged (--light X,Y places one)");
-        for (const LightCandidate& light : search.lights)
-            flares.push_back({light.position, a.intensity * light.flareScale});
-    }
+    auto flares = lightsOf(image);
+    if (!flares) return flares.error();
     if (Status s =
-            checkFlareWork(*preset, image.width(), image.height(), int(flares.size()), a.preset);
+            checkFlareWork(*preset, image.width(), image.height(), int(flares->size()), a.preset);
         !s) {
         return s.error();
     }
-    for (const auto& [light, intensity] : flares) {
+    for (const auto& [light, intensity] : *flares) {
         if (!(intensity > 0.f)) continue;
         const FlareStats stats = renderFlare(image, *preset, light, intensity);
         if (a.verbose)
@@ -110,16 +122,106 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a) {
     }
     // --tonemap auto: defaultDisplayCurve (filmic for HDR input to an 8/16-bit file).
     const ToneOperator curve =
-        namedToneOperator(a.tonemap).value_or(defaultDisplayCurve(loaded->wasFloat, a.out, depth));
+        namedToneOperator(a.tonemap).value_or(defaultDisplayCurve(loaded->wasFloat, out, depth));
     toneMapImage(image, curve, a.exposure);
-    ImageOutput out{std::move(image), {}};
-    out.options.alpha = loaded->hasAlpha;
-    out.options.format = depth;
-    return out;
+    ImageOutput result{std::move(image), {}};
+    result.options.alpha = loaded->hasAlpha;
+    result.options.format = depth;
+    return result;
+}
+
+//! One image: the light given or found, dimmed by the matte's coverage when one is given.
+int runApplyImage(const ApplyArgs& a, const std::optional<Point>& fixed) {
+    if (!a.lightTrack.empty())
+        return report(
+            invalidInput("--light-track: the input is one image, not a frame pattern "
+                         "(shot.####.exr) whose frames the track keys"));
+    std::optional<ShotCoverage> coverage;
+    if (a.occlusion.enabled())
+        coverage.emplace(a.occlusion, nullptr, a.occlusion.matte, [&](int) { return *fixed; });
+    return runImageJob(a.out, [&] {
+        return applyFlare(a, a.in, a.out, [&](const Image& image) -> Result<Lights> {
+            if (!fixed) return autoLights(a, a.in, image);
+            float intensity = a.intensity;
+            if (coverage) {
+                auto row = coverage->at(0, image);
+                if (!row) return row.error();
+                intensity *= float(row->raw);
+                if (a.verbose) std::printf("coverage %.4f\n", row->raw);
+            }
+            return Lights{{*fixed, intensity}};
+        });
+    });
+}
+
+//! A frame pattern: every frame of the range, the light fixed, tracked or found per frame, its
+//! coverage filtered over the shot and written to coverage.csv.
+int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
+    std::vector<FramePattern> otherInputs;
+    if (!a.occlusion.matte.empty()) {
+        auto matte = parseFramePattern(a.occlusion.matte);
+        if (!matte)
+            return report(invalidInput("--matte " + a.occlusion.matte +
+                                       ": the input is a frame pattern, so the matte must be one "
+                                       "too (matte.####.exr)"));
+        otherInputs.push_back(*matte);
+    }
+    auto plan = planShot(a.in, a.out, a.shot, otherInputs);
+    if (!plan) return report(plan.error());
+    std::optional<LightTrack> track;
+    if (!a.lightTrack.empty()) {
+        auto loaded = loadLightTrack(a.lightTrack);
+        if (!loaded) return report(loaded.error());
+        track = std::move(*loaded);
+        std::vector<int> held;
+        for (int f : plan->frames)
+            if (track->at(f).held) held.push_back(f);
+        if (!held.empty())
+            warn(a.lightTrack + ": frames " + describeFrames(held) + " are outside the keys (" +
+                 std::to_string(track->keys.front().frame) + " to " +
+                 std::to_string(track->keys.back().frame) + "): the end keys are held");
+    }
+    const auto lightAt = [&](int frame) { return track ? track->at(frame).position : *fixed; };
+    std::optional<ShotCoverage> coverage;
+    if (a.occlusion.enabled()) coverage.emplace(a.occlusion, &*plan, "", lightAt);
+    std::mutex rowsMutex;
+    std::vector<CoverageRow> rows;
+    const int parallel = framesInFlight(plan->in.path(plan->frames.front()), kApplyMemory, false);
+    const int code = runShot(*plan, "apply", parallel, [&](const ShotFrame& f) {
+        return applyFlare(a, f.in, f.out, [&](const Image& image) -> Result<Lights> {
+            if (!track && !fixed) return autoLights(a, f.in, image);
+            float intensity = a.intensity * (track ? track->at(f.frame).intensity : 1.f);
+            if (coverage) {
+                auto row = coverage->at(f.frame, image);
+                if (!row) return row.error();
+                intensity *= float(row->filtered);
+                std::lock_guard lock(rowsMutex);
+                rows.push_back(*row);
+            }
+            return Lights{{lightAt(f.frame), intensity}};
+        });
+    });
+    if (code == kExitOk && coverage) {
+        if (Status s = coverage->writeCsv(plan->outDir, rows); !s) return report(s.error());
+    }
+    return code;
 }
 
 int runApply(const ApplyArgs& a) {
-    return runImageJob(a.out, [&] { return applyFlare(a); });
+    const bool autoLight = a.light == "auto";
+    const std::optional<Point> fixed = autoLight ? std::nullopt : parsePoint(a.light);
+    if (!autoLight && !fixed)
+        return report(
+            invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'"));
+    if (!a.lightTrack.empty() && fixed)
+        return report(invalidInput("--light and --light-track: give one of them"));
+    if (a.occlusion.enabled()) {
+        if (Status s = checkOcclusionArgs(a.occlusion); !s) return report(s.error());
+        if (!fixed && a.lightTrack.empty())
+            return report(invalidInput("--matte/--matte-channel/--depth-channel need the light's " +
+                                       std::string("position: --light X,Y or --light-track FILE")));
+    }
+    return isFramePattern(a.in) ? runApplyShot(a, fixed) : runApplyImage(a, fixed);
 }
 }  // namespace
 
@@ -128,10 +230,12 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand(
         "apply", "Put a sprite lens flare on an image (linear-light additive compositing)");
     cmd->add_option("input", args->in,
-                    "input image (EXR, PNG, JPEG, TIFF, ...; 8-bit files are sRGB-decoded)")
+                    "input image (EXR, PNG, JPEG, TIFF, ...; 8-bit files are sRGB-decoded), or a "
+                    "frame pattern (shot.####.exr, shot.%04d.exr) for a sequence")
         ->required();
     cmd->add_option("-o,--output", args->out,
-                    "output image; format and bit depth follow the extension")
+                    "output image (a frame pattern for a sequence); format and bit depth follow "
+                    "the extension")
         ->required();
     cmd->add_option("--preset", args->preset,
                     "shipped preset name (see `flarekit presets`) or a JSON file")
@@ -152,6 +256,12 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "none, aces, filmic")
         ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
         ->capture_default_str();
+    cmd->add_option("--light-track", args->lightTrack,
+                    "the light per frame of a sequence: CSV (frame,x,y or frame,x,y,intensity; "
+                    "pixels from the top-left, centres at +0.5) or JSON; linear between keys, the "
+                    "end keys held outside them");
+    addShotOptions(cmd, args->shot);
+    addOcclusionOptions(cmd, args->occlusion);
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print every light candidate (position, radius, flux, score) and the work done");
     cmd->callback([args, &exitCode] { exitCode = runApply(*args); });

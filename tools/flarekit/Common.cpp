@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iterator>
+#include <mutex>
 
 namespace flarekit::cli {
 
@@ -60,30 +61,61 @@ void warn(const std::string& message) {
     std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str());
 }
 
+namespace {
+//! The one capture of stderr that every live filter shares: file descriptor 2 is the process's,
+//! so filters alive at once on several threads (a shot's frames read in parallel) must not each
+//! swap it, or the last to finish would restore another's capture. The first filter starts the
+//! capture, the last ends it and replays it, dropping what any of them dropped.
+struct SharedCapture {
+    std::mutex mutex;
+    int users = 0;
+    std::FILE* file = nullptr;
+    int saved = -1;
+    std::vector<std::string> dropped;
+};
+SharedCapture& sharedCapture() {
+    static SharedCapture capture;
+    return capture;
+}
+}  // namespace
+
 LibraryNoiseFilter::LibraryNoiseFilter(std::vector<std::string> dropped)
     : m_dropped(std::move(dropped)) {
+    SharedCapture& c = sharedCapture();
+    std::lock_guard lock(c.mutex);
+    c.dropped.insert(c.dropped.end(), m_dropped.begin(), m_dropped.end());
+    m_active = true;
+    if (c.users++ > 0) return;
     std::fflush(stderr);
-    m_capture = std::tmpfile();
-    if (!m_capture) return;
-    m_saved = ::dup(STDERR_FILENO);
-    if (m_saved < 0 || ::dup2(::fileno(m_capture), STDERR_FILENO) < 0) {
-        if (m_saved >= 0) ::close(m_saved);
-        m_saved = -1;
-        std::fclose(m_capture);
-        m_capture = nullptr;
+    c.file = std::tmpfile();
+    if (!c.file) return;
+    c.saved = ::dup(STDERR_FILENO);
+    if (c.saved < 0 || ::dup2(::fileno(c.file), STDERR_FILENO) < 0) {
+        if (c.saved >= 0) ::close(c.saved);
+        c.saved = -1;
+        std::fclose(c.file);
+        c.file = nullptr;
     }
 }
 
 std::string LibraryNoiseFilter::finish() {
-    if (!m_capture) return m_firstDropped;
+    if (!m_active) return m_firstDropped;
+    m_active = false;
+    SharedCapture& c = sharedCapture();
+    std::lock_guard lock(c.mutex);
+    if (--c.users > 0 || !c.file) {
+        if (c.users == 0) c.dropped.clear();
+        return m_firstDropped;
+    }
     std::fflush(stderr);
-    ::dup2(m_saved, STDERR_FILENO);
-    ::close(m_saved);
-    std::rewind(m_capture);
+    ::dup2(c.saved, STDERR_FILENO);
+    ::close(c.saved);
+    c.saved = -1;
+    std::rewind(c.file);
     char line[4096];
-    while (std::fgets(line, sizeof line, m_capture)) {
+    while (std::fgets(line, sizeof line, c.file)) {
         bool drop = false;
-        for (const std::string& prefix : m_dropped)
+        for (const std::string& prefix : c.dropped)
             drop = drop || std::strncmp(line, prefix.c_str(), prefix.size()) == 0;
         if (!drop) {
             std::fputs(line, stderr);
@@ -94,8 +126,9 @@ std::string LibraryNoiseFilter::finish() {
                 m_firstDropped.pop_back();
         }
     }
-    std::fclose(m_capture);
-    m_capture = nullptr;
+    std::fclose(c.file);
+    c.file = nullptr;
+    c.dropped.clear();
     return m_firstDropped;
 }
 

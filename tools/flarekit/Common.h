@@ -39,7 +39,8 @@ void warn(const std::string& message);
 
 //! Holds back what libraries print on stderr while it lives; on destruction replays it except
 //! the lines starting with one of `dropped` (by default libpng's own "libpng error: ..." lines,
-//! which repeat what flarekit reports in its one line).
+//! which repeat what flarekit reports in its one line). Filters alive at once on several threads
+//! share one capture, replayed when the last ends (its first dropped line goes to that one).
 class LibraryNoiseFilter {
   public:
     explicit LibraryNoiseFilter(std::vector<std::string> dropped = {"libpng "});
@@ -52,8 +53,7 @@ class LibraryNoiseFilter {
   private:
     std::vector<std::string> m_dropped;
     std::string m_firstDropped;
-    std::FILE* m_capture = nullptr;
-    int m_saved = -1;
+    bool m_active = false;
 };
 
 //! readImage8 with library noise filtered.

@@ -7,6 +7,7 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
+#include "ShotRun.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFx.h"
 #include "flarekit/Tonemap.h"
@@ -26,6 +27,7 @@ struct PostFxArgs {
     std::string expandHighlights;
     int repeat = 1;
     bool verbose = false;
+    ShotArgs shot;
 };
 inline constexpr Param<PostFxArgs> kPostFxArgParams[] = {
     param<&PostFxArgs::repeat>(
@@ -39,8 +41,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 //! Runs the chain `repeat` times (buffers kept, as in a video) and, when repeating, prints the
 //! mean time of the runs after the first: the figure bench/peers/run_blender_peer.sh compares.
-Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const PostFxParams& params,
-                                const PostFxOptions& options) {
+Result<PostFxResult> runBackend(const PostFxArgs& a, const std::string& in, const Image& image,
+                                const PostFxParams& params, const PostFxOptions& options) {
     PostFxResult result;
     double warmSeconds = 0;
     if (a.backend == "cpu") {
@@ -54,7 +56,7 @@ Result<PostFxResult> runBackend(const PostFxArgs& a, const Image& image, const P
 #if FLAREKIT_HAS_GL
         auto context = createHeadlessGl();
         if (!context) return context.error();
-        if (Status s = checkGlFrame(image.width(), image.height(), 1, a.in + ": image"); !s)
+        if (Status s = checkGlFrame(image.width(), image.height(), 1, in + ": image"); !s)
             return s.error();
         auto chain = GpuPostFx::create();
         if (!chain) return chain.error();
@@ -112,22 +114,25 @@ JobMemory postFxMemory(const PostFxArgs& a) {
                 " bytes per pixel"};
 }
 
-Result<ImageOutput> runChain(const PostFxArgs& a) {
+//! One image (a sequence's frame): `in` through the chain to the image for `out`; the layers
+//! into `layersDir` when it is not empty.
+Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const std::string& out,
+                             const std::string& layersDir) {
     auto params = loadPostFxPreset(a.preset);
     if (!params) return params.error();
     if (const auto op = namedToneOperator(a.tonemap)) params->tone.op = *op;
     if (a.exposure) params->tone.exposure = *a.exposure;
     if (a.threshold) params->bright.threshold = *a.threshold;
     if (a.knee) params->bright.knee = *a.knee;
-    auto loaded = readInputImage(a.in, postFxMemory(a));
+    auto loaded = readInputImage(in, postFxMemory(a));
     if (!loaded) return loaded.error();
     // --tonemap preset, and the preset has no curve: the default display curve, as `apply`'s.
     if (a.tonemap == "preset" && params->tone.op == ToneOperator::None)
-        params->tone.op = defaultDisplayCurve(loaded->wasFloat, a.out);
+        params->tone.op = defaultDisplayCurve(loaded->wasFloat, out);
 
     std::vector<PassTime> times;
     PostFxOptions options;
-    options.keepLayers = !a.layersDir.empty();
+    options.keepLayers = !layersDir.empty();
     options.times = a.verbose ? &times : nullptr;
     // --expand-highlights: the chain sees the expanded image, the output keeps the original
     // pixels (the expansion is taken back off the additive composite).
@@ -145,16 +150,16 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
     // result only kept as a half EXR (the layers and --expand-highlights use the floats).
     options.halfInput = loaded->halfExact;
     options.halfReadback =
-        outputSampleFormat(a.out) == SampleFormat::Half && a.layersDir.empty() && !expand;
+        outputSampleFormat(out) == SampleFormat::Half && layersDir.empty() && !expand;
     if (gain > 0.f && loaded->wasFloat)
-        warn(a.in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
+        warn(in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
     Image expanded;
     if (expand) {
         expanded = loaded->image;
         expandHighlights(expanded, gain);
         params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
-    auto result = runBackend(a, expand ? expanded : loaded->image, *params, options);
+    auto result = runBackend(a, in, expand ? expanded : loaded->image, *params, options);
     if (!result) return result.error();
     if (expand && params->tone.op == ToneOperator::None) {
         float* f = result->final.data();
@@ -173,16 +178,30 @@ Result<ImageOutput> runChain(const PostFxArgs& a) {
             std::printf("\n");
         }
     }
-    if (!a.layersDir.empty()) {
-        if (Status s = writeLayers(a.layersDir, *result); !s) return s.error();
+    if (!layersDir.empty()) {
+        if (Status s = writeLayers(layersDir, *result); !s) return s.error();
     }
-    ImageOutput out{std::move(result->final), {}};
-    out.options.alpha = loaded->hasAlpha;
-    return out;
+    ImageOutput output{std::move(result->final), {}};
+    output.options.alpha = loaded->hasAlpha;
+    return output;
 }
 
 int runPostFx(const PostFxArgs& a) {
-    return runImageJob(a.out, [&] { return runChain(a); });
+    if (!isFramePattern(a.in))
+        return runImageJob(a.out, [&] { return runChain(a, a.in, a.out, a.layersDir); });
+    if (a.repeat > 1) return report(invalidInput("--repeat: for one image, not a sequence"));
+    auto plan = planShot(a.in, a.out, a.shot);
+    if (!plan) return report(plan.error());
+    const int parallel =
+        framesInFlight(plan->in.path(plan->frames.front()), postFxMemory(a), a.backend == "gl");
+    return runShot(*plan, "postfx", parallel, [&](const ShotFrame& f) {
+        // A sequence's layers go into a folder per frame: DIR/1001/bloom.exr, ...
+        const std::string layers =
+            a.layersDir.empty()
+                ? ""
+                : (std::filesystem::path(a.layersDir) / std::to_string(f.frame)).string();
+        return runChain(a, f.in, f.out, layers);
+    });
 }
 }  // namespace
 
@@ -193,7 +212,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                                        "halo, streaks, dirt) on any image");
     cmd->add_option("input", args->in,
                     "input image (EXR kept linear; 8-bit files are sRGB-decoded; grey and "
-                    "grey+alpha promoted)")
+                    "grey+alpha promoted), or a frame pattern (shot.####.exr) for a sequence")
         ->required();
     cmd->add_option("-o,--output", args->out,
                     "output image; format and bit depth follow the extension")
@@ -213,7 +232,8 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     cmd->add_option(
         "--save-layers", args->layersDir,
-        "also write bloom, ghosts, halo, streaks, lens and final (linear EXR) into DIR");
+        "also write bloom, ghosts, halo, streaks, lens and final (linear EXR) into DIR (for a "
+        "sequence, into DIR/FRAME/)");
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve: preset (the preset's; filmic for HDR input to an 8/16-bit file "
                     "when the preset has none), none, aces, filmic")
@@ -232,6 +252,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxArgs>(cmd, kPostFxArgParams, *args);
+    addShotOptions(cmd, args->shot);
     cmd->callback([args, &exitCode] { exitCode = runPostFx(*args); });
 }
 

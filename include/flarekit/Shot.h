@@ -1,0 +1,87 @@
+// Shots: numbered image sequences (shot.####.exr, shot.%04d.exr), frame ranges as a render
+// farm hands them out (A-B:step), a light's position keyed per frame (a track file), and how
+// much of the light's disc a foreground hides (a matte or a depth pass). What a compositor's
+// flare tools (Nuke's Flare node, Optical Flares, Knoll Light Factory) take as their input.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flarekit/Flare.h"
+#include "flarekit/Image.h"
+#include "flarekit/Result.h"
+
+namespace flarekit {
+
+//! A sequence's file name: everything around one frame-number token. "####" pads to as many
+//! digits as there are '#' (Nuke, Houdini, Deadline); "%04d" (printf, ffmpeg, OpenCue) pads to
+//! its width; "%d" does not pad. Frame numbers are whole numbers from 0.
+struct FramePattern {
+    std::string prefix, suffix;
+    int padding = 0;
+    //! The file of `frame`: "shot." + "1001" + ".exr".
+    std::string path(int frame) const;
+};
+
+//! Whether `text` holds a frame token ("#" run, "%d", "%0Nd"): a sequence, not a single file.
+bool isFramePattern(const std::string& text);
+//! The pattern `text` names; an error when it has no frame token or more than one.
+Result<FramePattern> parseFramePattern(const std::string& text);
+//! The frames whose files exist, ascending: the directory listed once, names matched against
+//! the pattern (a number of exactly `padding` digits, or more without a leading zero).
+std::vector<int> framesOnDisk(const FramePattern& pattern);
+
+//! --frames: "A-B" or "A-B:step" or "N" (a farm chunk), every frame from A to B that is A plus
+//! a multiple of step.
+struct FrameRange {
+    int first = 0, last = 0, step = 1;
+    std::vector<int> frames() const;
+};
+//! `option` names the flag in messages ("--frames: expected A-B[:step] ...").
+Result<FrameRange> parseFrameRange(const std::string& text, const std::string& option);
+//! Gaps as ranges: {5, 6, 7, 10} -> "5-7, 10".
+std::string describeFrames(const std::vector<int>& frames);
+
+//! A light's position per frame: pixels from the top-left, pixel centres at +0.5 (the same
+//! convention as --light X,Y), with an optional intensity multiplier per key.
+struct LightKey {
+    double frame = 0;
+    double x = 0, y = 0;
+    double intensity = 1;
+};
+struct LightTrack {
+    std::vector<LightKey> keys;  //!< strictly ascending frames, finite values
+    bool hasIntensity = false;
+    struct Sample {
+        Point position;
+        float intensity = 1;
+        bool held = false;  //!< before the first key or after the last: the end key held
+    };
+    //! Linear between the two keys around `frame`; the nearest end key outside them.
+    Sample at(double frame) const;
+};
+//! A track from CSV (header line "frame,x,y" or "frame,x,y,intensity") or JSON (an array, or
+//! {"keys": [...]}, of {"frame", "x", "y"[, "intensity"]}), told apart by the first character.
+//! Errors name the file, the line or key and the field: unsorted frames, non-finite values,
+//! negative intensities, a bad header.
+Result<LightTrack> parseLightTrack(const std::string& text, const std::string& source);
+Result<LightTrack> loadLightTrack(const std::string& path);
+//! The track as CSV, in the format parseLightTrack reads (--write-track).
+std::string lightTrackCsv(const LightTrack& track);
+
+//! What hides the light in a frame.
+struct Occluder {
+    int channel = 3;  //!< the channel of the image holding the matte or the depth
+    //! Matte (nullopt): a pixel hides the light by its value (1 = opaque foreground). Depth: a
+    //! pixel hides it when it is nearer than this distance (same units as the depth pass).
+    std::optional<float> lightDepth;
+};
+//! The light's visibility in one frame: the mean, over its disc of `radius` px around
+//! `centre`, of each pixel's visibility (1 - matte, or depth >= lightDepth), each pixel weighed
+//! by the share of its area inside the disc (pixels the rim crosses are sampled 16 x 16). Only
+//! the part of the disc inside the frame counts; a disc wholly outside it is visible (1).
+//! A radius under half a pixel is the one pixel under the centre.
+double discVisibility(const Image& image, const Occluder& occluder, Point centre, double radius);
+
+}  // namespace flarekit

@@ -1,0 +1,68 @@
+// A light's visibility over a shot: per frame, the mean visibility of its disc in a matte or
+// depth pass (raw), then the attack/release filter over the frames before it (filtered), and
+// coverage.csv. The filter looks back a fixed number of the shot's frames, starting fresh at
+// the first of them, so a frame's value is the same whichever chunk of the shot renders it.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ShotRun.h"
+#include "flarekit/Temporal.h"
+
+namespace flarekit::cli {
+
+struct OcclusionArgs {
+    std::string matte;         //!< --matte PATTERN (or one file for a single image)
+    std::string matteChannel;  //!< --matte-channel R|G|B|A (of the matte, else of the input)
+    std::string depthChannel;  //!< --depth-channel R|G|B|A (of --matte's file, else the input)
+    std::optional<float> lightDepth;
+    float lightRadius = 8;
+    TemporalParams temporal;
+    bool enabled() const { return !matte.empty() || !matteChannel.empty() || !depthChannel.empty(); }
+};
+void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args);
+//! The option combinations, checked before any work (a depth channel needs --light-depth, ...).
+Status checkOcclusionArgs(const OcclusionArgs& args);
+
+//! One row of coverage.csv.
+struct CoverageRow {
+    int frame = 0;
+    Point position;
+    double raw = 1, filtered = 1;
+};
+
+class ShotCoverage {
+  public:
+    //! `lightAt`: the light's position in a frame. `plan` null: a single image (`single`, the
+    //! matte file or none), no filter.
+    ShotCoverage(const OcclusionArgs& args, const ShotPlan* plan, std::string single,
+                 std::function<Point(int)> lightAt);
+    //! The frame's raw and filtered coverage; `image` is the frame being rendered (its size is
+    //! what a matte must have; its pixels serve when the channel is the input's own).
+    Result<CoverageRow> at(int frame, const Image& image);
+    //! coverage.csv in the output folder: this run's rows merged into the rows other chunks
+    //! wrote (under a lock, so chunks finishing together keep each other's rows).
+    Status writeCsv(const std::string& dir, const std::vector<CoverageRow>& rows) const;
+    //! Frames the filter looks back: its slowest time constant decays to 1e-4 over them.
+    int lookBack() const { return m_lookBack; }
+
+  private:
+    //! `current`: the frame being rendered, whose pixels are `image`.
+    Result<double> raw(int frame, int current, const Image& image);
+
+    OcclusionArgs m_args;
+    const ShotPlan* m_plan;
+    std::optional<FramePattern> m_mattePattern;
+    std::string m_single;
+    std::function<Point(int)> m_lightAt;
+    int m_lookBack = 0;
+    std::mutex m_mutex;
+    std::map<int, double> m_raw;  //!< cache: frames the look-back of several frames shares
+};
+
+}  // namespace flarekit::cli

@@ -1,0 +1,147 @@
+#include "ShotRun.h"
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "Progress.h"
+#include "ParamOptions.h"
+#include "core/Interrupt.h"
+#include "flarekit/Limits.h"
+
+namespace flarekit::cli {
+
+void addShotOptions(CLI::App* cmd, ShotArgs& args) {
+    cmd->add_option("--frames", args.frames,
+                    "with a frame pattern (shot.####.exr or shot.%04d.exr) in and out: the frames "
+                    "A-B[:step] to render (default: every frame found); a farm chunk renders "
+                    "exactly these, each output bit-identical however the shot is chunked");
+    cmd->add_flag("--skip-missing", args.skipMissing,
+                  "render the frames that exist and list the gaps, instead of stopping at the "
+                  "first missing frame");
+    cmd->add_option("--fps", args.fps,
+                    "the shot's frame rate (the temporal filter's time between frames)")
+        ->check(CLI::Range(1.0, 1000.0))
+        ->capture_default_str();
+}
+
+Result<ShotPlan> planShot(const std::string& in, const std::string& out, const ShotArgs& args,
+                          const std::vector<FramePattern>& otherInputs) {
+    if (!isFramePattern(out))
+        return invalidInput(out + ": the input is a frame pattern, so the output must be one too " +
+                            "(e.g. out.####.exr)");
+    auto inPattern = parseFramePattern(in);
+    if (!inPattern) return inPattern.error();
+    auto outPattern = parseFramePattern(out);
+    if (!outPattern) return outPattern.error();
+    ShotPlan plan{*inPattern, *outPattern, {}, framesOnDisk(*inPattern), {}, args.fps};
+    if (plan.shotFrames.empty()) return invalidInput(in + ": no frame of this pattern exists");
+    std::vector<int> wanted = plan.shotFrames;
+    if (!args.frames.empty()) {
+        auto range = parseFrameRange(args.frames, "--frames");
+        if (!range) return range.error();
+        wanted = range->frames();
+    }
+    std::vector<int> missing;
+    for (int f : wanted) {
+        if (std::binary_search(plan.shotFrames.begin(), plan.shotFrames.end(), f))
+            plan.frames.push_back(f);
+        else
+            missing.push_back(f);
+    }
+    if (!missing.empty() && !args.skipMissing) {
+        return invalidInput(plan.in.path(missing.front()) + ": frame " +
+                            std::to_string(missing.front()) + " is missing (" +
+                            std::to_string(missing.size()) +
+                            " of the range in all); --skip-missing renders the others");
+    }
+    if (!missing.empty()) warn(in + ": skipping missing frames " + describeFrames(missing));
+    if (plan.frames.empty()) return invalidInput(in + ": no frame of the range exists");
+    // An output that is one of the inputs would be replaced before it is read.
+    namespace fs = std::filesystem;
+    std::vector<FramePattern> inputs = otherInputs;
+    inputs.push_back(plan.in);
+    for (int f : plan.frames) {
+        const std::string target = plan.out.path(f);
+        for (const FramePattern& input : inputs) {
+            std::error_code ec;
+            const std::string source = input.path(f);
+            if (source == target || (fs::exists(target, ec) && fs::equivalent(source, target, ec)))
+                return invalidInput(out + ": frame " + std::to_string(f) +
+                                    " would overwrite its input " + source +
+                                    "; write the output elsewhere");
+        }
+    }
+    plan.outDir = fs::path(plan.out.path(plan.frames.front())).parent_path().string();
+    if (plan.outDir.empty()) plan.outDir = ".";
+    if (Status s = checkOutputPath(plan.out.path(plan.frames.front())); !s) return s.error();
+    return plan;
+}
+
+int framesInFlight(const std::string& firstFrame, const JobMemory& perFrame, bool gl) {
+    if (gl) return 1;  // one GL context renders one frame at a time
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    auto loaded = readImage(firstFrame, perFrame);
+    if (!loaded) return 1;  // the frame's own error comes when it is rendered
+    const double frameBytes = perFrame.bytesPerPixel * double(loaded->image.pixelCount());
+    const double budget = double(resourceLimits().maxMemoryBytes) - perFrame.fixedBytes;
+    const int fit = frameBytes > 0 ? int(budget / frameBytes) : cores;
+    return std::clamp(fit, 1, cores);
+}
+
+int runShot(const ShotPlan& plan, const std::string& label, int parallel,
+            const std::function<Result<ImageOutput>(const ShotFrame&)>& render) {
+    const int total = int(plan.frames.size());
+    std::atomic<int> next{0};
+    std::atomic<bool> stop{false};
+    std::mutex mutex;  // guards everything below
+    std::vector<int> written;
+    std::optional<std::pair<int, Error>> failure;  // the first failed frame
+    int done = 0;
+    Progress progress(label, total);
+    auto worker = [&] {
+        for (;;) {
+            if (stop || interrupted()) return;
+            const int i = next++;
+            if (i >= total) return;
+            const int f = plan.frames[std::size_t(i)];
+            const ShotFrame frame{f, plan.in.path(f), plan.out.path(f)};
+            Status status = checkOutputPath(frame.out);
+            if (status) {
+                auto result = render(frame);
+                status = result ? writeImage(frame.out, result->image, result->options)
+                                : Status(result.error());
+            }
+            std::lock_guard lock(mutex);
+            if (!status) {
+                if (!failure || f < failure->first) failure.emplace(f, status.error());
+                stop = true;
+                continue;
+            }
+            written.push_back(f);
+            progress.update(++done);
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int t = 1; t < std::clamp(parallel, 1, total); ++t) threads.emplace_back(worker);
+    worker();
+    for (std::thread& t : threads) t.join();
+    progress.finish();
+    std::sort(written.begin(), written.end());
+    const std::string writtenText =
+        written.empty() ? "no frame was written"
+                        : std::to_string(written.size()) + " frame(s) written and complete: " +
+                              describeFrames(written);
+    if (failure) {
+        Error e = failure->second;
+        e.message = "frame " + std::to_string(failure->first) + ": " + e.message + "; " +
+                    writtenText;
+        return report(e);
+    }
+    if (interrupted()) return report(interruptedError(writtenText));
+    return kExitOk;
+}
+
+}  // namespace flarekit::cli
