@@ -95,8 +95,7 @@ std::vector<int> framesOnDisk(const FramePattern& pattern) {
         if (digits.find_first_not_of("0123456789") != std::string_view::npos) continue;
         const auto frame = wholeNumber(digits);
         // The name the pattern gives that frame, exactly: 1001 matches "####" but 01001 does not.
-        if (frame && fs::path(pattern.path(*frame)).filename() == name)
-            frames.push_back(*frame);
+        if (frame && fs::path(pattern.path(*frame)).filename() == name) frames.push_back(*frame);
     }
     std::sort(frames.begin(), frames.end());
     return frames;

@@ -151,8 +151,8 @@ LightTrack::Sample LightTrack::at(double frame) const {
     const LightKey &a = keys[i - 1], &b = keys[i];
     const double t = (frame - a.frame) / (b.frame - a.frame);
     auto mix = [t](double u, double v) { return u + (v - u) * t; };
-    return {{float(mix(a.x, b.x)), float(mix(a.y, b.y))}, float(mix(a.intensity, b.intensity)),
-            false};
+    return {
+        {float(mix(a.x, b.x)), float(mix(a.y, b.y))}, float(mix(a.intensity, b.intensity)), false};
 }
 
 Result<LightTrack> parseLightTrack(const std::string& text, const std::string& source) {

@@ -186,8 +186,9 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     if (a.occlusion.enabled()) coverage.emplace(a.occlusion, &*plan, "", lightAt);
     std::mutex rowsMutex;
     std::vector<CoverageRow> rows;
-    const int parallel = framesInFlight(plan->in.path(plan->frames.front()), kApplyMemory, false);
-    const int code = runShot(*plan, "apply", parallel, [&](const ShotFrame& f) {
+    auto parallel = framesInFlight(*plan, kApplyMemory, false);
+    if (!parallel) return report(parallel.error());
+    const int code = runShot(*plan, "apply", *parallel, [&](const ShotFrame& f) {
         return applyFlare(a, f.in, f.out, [&](const Image& image) -> Result<Lights> {
             if (!track && !fixed) return autoLights(a, f.in, image);
             float intensity = a.intensity * (track ? track->at(f.frame).intensity : 1.f);

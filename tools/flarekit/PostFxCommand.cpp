@@ -192,9 +192,9 @@ int runPostFx(const PostFxArgs& a) {
     if (a.repeat > 1) return report(invalidInput("--repeat: for one image, not a sequence"));
     auto plan = planShot(a.in, a.out, a.shot);
     if (!plan) return report(plan.error());
-    const int parallel =
-        framesInFlight(plan->in.path(plan->frames.front()), postFxMemory(a), a.backend == "gl");
-    return runShot(*plan, "postfx", parallel, [&](const ShotFrame& f) {
+    auto parallel = framesInFlight(*plan, postFxMemory(a), a.backend == "gl");
+    if (!parallel) return report(parallel.error());
+    return runShot(*plan, "postfx", *parallel, [&](const ShotFrame& f) {
         // A sequence's layers go into a folder per frame: DIR/1001/bloom.exr, ...
         const std::string layers =
             a.layersDir.empty()

@@ -1,7 +1,7 @@
 #include "ShotCoverage.h"
 
-#include <sys/file.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -134,9 +134,8 @@ Result<CoverageRow> ShotCoverage::at(int frame, const Image& image) {
         auto value = *it == frame ? now : raw(*it, frame, image);
         if (!value) return value.error();
         const double dt = previous ? (*it - *previous) / m_plan->fps : 0.0;
-        row.filtered = filter.update(*value, m_lightAt(*it), true, image.width(), image.height(),
-                                     dt)
-                           .coverage;
+        row.filtered =
+            filter.update(*value, m_lightAt(*it), true, image.width(), image.height(), dt).coverage;
         previous = *it;
     }
     return row;
@@ -144,10 +143,10 @@ Result<CoverageRow> ShotCoverage::at(int frame, const Image& image) {
 
 Status ShotCoverage::writeCsv(const std::string& dir, const std::vector<CoverageRow>& rows) const {
     const std::string path = (std::filesystem::path(dir) / "coverage.csv").string();
-    const std::string lockPath = path + ".lock";
     // Chunks of one shot on a farm can finish at once: the merge is done under an exclusive
-    // lock on a file beside it, so no chunk's rows are lost to another's rename.
-    const int lockFd = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    // lock on the output folder itself (no lock file to leave behind), so no chunk's rows are
+    // lost to another's rename.
+    const int lockFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (lockFd >= 0) ::flock(lockFd, LOCK_EX);
     static constexpr const char* kHeader = "frame,x,y,coverage,filtered_coverage";
     std::map<int, std::string> lines;

@@ -23,7 +23,9 @@ struct OcclusionArgs {
     std::optional<float> lightDepth;
     float lightRadius = 8;
     TemporalParams temporal;
-    bool enabled() const { return !matte.empty() || !matteChannel.empty() || !depthChannel.empty(); }
+    bool enabled() const {
+        return !matte.empty() || !matteChannel.empty() || !depthChannel.empty();
+    }
 };
 void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args);
 //! The option combinations, checked before any work (a depth channel needs --light-depth, ...).

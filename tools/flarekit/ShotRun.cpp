@@ -6,8 +6,8 @@
 #include <mutex>
 #include <thread>
 
-#include "Progress.h"
 #include "ParamOptions.h"
+#include "Progress.h"
 #include "core/Interrupt.h"
 #include "flarekit/Limits.h"
 
@@ -80,11 +80,13 @@ Result<ShotPlan> planShot(const std::string& in, const std::string& out, const S
     return plan;
 }
 
-int framesInFlight(const std::string& firstFrame, const JobMemory& perFrame, bool gl) {
+Result<int> framesInFlight(ShotPlan& plan, const JobMemory& perFrame, bool gl) {
+    auto loaded = readInputImage(plan.in.path(plan.frames.front()), perFrame);
+    if (!loaded) return loaded.error();
+    plan.width = loaded->image.width();
+    plan.height = loaded->image.height();
     if (gl) return 1;  // one GL context renders one frame at a time
     const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    auto loaded = readImage(firstFrame, perFrame);
-    if (!loaded) return 1;  // the frame's own error comes when it is rendered
     const double frameBytes = perFrame.bytesPerPixel * double(loaded->image.pixelCount());
     const double budget = double(resourceLimits().maxMemoryBytes) - perFrame.fixedBytes;
     const int fit = frameBytes > 0 ? int(budget / frameBytes) : cores;
@@ -111,8 +113,17 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
             Status status = checkOutputPath(frame.out);
             if (status) {
                 auto result = render(frame);
-                status = result ? writeImage(frame.out, result->image, result->options)
-                                : Status(result.error());
+                if (!result)
+                    status = result.error();
+                else if (result->image.width() != plan.width ||
+                         result->image.height() != plan.height)
+                    status = invalidInput(
+                        frame.in + ": " + std::to_string(result->image.width()) + "x" +
+                        std::to_string(result->image.height()) + ", but the sequence's frame " +
+                        plan.in.path(plan.frames.front()) + " is " + std::to_string(plan.width) +
+                        "x" + std::to_string(plan.height) + "; a sequence's frames share one size");
+                else
+                    status = writeImage(frame.out, result->image, result->options);
             }
             std::lock_guard lock(mutex);
             if (!status) {
@@ -132,12 +143,12 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
     std::sort(written.begin(), written.end());
     const std::string writtenText =
         written.empty() ? "no frame was written"
-                        : std::to_string(written.size()) + " frame(s) written and complete: " +
-                              describeFrames(written);
+                        : std::to_string(written.size()) +
+                              " frame(s) written and complete: " + describeFrames(written);
     if (failure) {
         Error e = failure->second;
-        e.message = "frame " + std::to_string(failure->first) + ": " + e.message + "; " +
-                    writtenText;
+        e.message =
+            "frame " + std::to_string(failure->first) + ": " + e.message + "; " + writtenText;
         return report(e);
     }
     if (interrupted()) return report(interruptedError(writtenText));

@@ -28,6 +28,7 @@ struct ShotPlan {
     std::vector<int> shotFrames;  //!< every input frame on disk (the filters look back over them)
     std::string outDir;           //!< where coverage.csv goes
     double fps = 24;
+    int width = 0, height = 0;  //!< the first frame's size, which every frame must have
 };
 
 //! The frames of `in` to render into `out`, checked before any work: both are patterns, the
@@ -48,8 +49,9 @@ struct ShotFrame {
 int runShot(const ShotPlan& plan, const std::string& label, int parallel,
             const std::function<Result<ImageOutput>(const ShotFrame&)>& render);
 
-//! How many frames of `firstFrame`'s size fit in the memory budget at once (each `perFrame`,
-//! the process's own fixed cost counted once), at most one per core; 1 for a GL backend.
-int framesInFlight(const std::string& firstFrame, const JobMemory& perFrame, bool gl);
+//! Reads the first frame's size into the plan (every frame must have it) and returns how many
+//! frames of that size fit in the memory budget at once (each `perFrame`, the process's own
+//! fixed cost counted once), at most one per core; 1 for a GL backend.
+Result<int> framesInFlight(ShotPlan& plan, const JobMemory& perFrame, bool gl);
 
 }  // namespace flarekit::cli

@@ -1,0 +1,246 @@
+// Shots through the CLI: a generated sequence (a disc light behind a foreground edge that moves
+// across it) whose covered share is known per frame in closed form; coverage.csv against it and
+// the filter against an independent exponential smoother; frames bit-identical however the range
+// is chunked; sequence frames equal to single-image calls; every bad input of a shot.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "Cli.h"
+#include "flarekit/ImageIO.h"
+
+using namespace flarekit;
+using namespace flarekit::test;
+namespace fs = std::filesystem;
+
+namespace {
+constexpr int kW = 160, kH = 90, kFrames = 12;
+constexpr double kLightX = 100.5, kLightY = 45.5, kRadius = 6;
+
+//! The covered pixels of frame f: every column left of this one.
+int edgeAt(int f) {
+    return 88 + 2 * f;
+}
+
+double segmentShare(double d, double r) {
+    if (d >= r) return 0;
+    if (d <= -r) return 1;
+    return (r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d)) / (M_PI * r * r);
+}
+
+//! frame f: dim sky, a disc of 50 (an HDR sun) at the light; its matte covers x < edgeAt(f).
+void writeShot(const TempDir& dir, int frames = kFrames, int oddSizeFrame = 0) {
+    for (int f = 1; f <= frames; ++f) {
+        const int w = f == oddSizeFrame ? kW / 2 : kW;
+        Image frame(w, kH), matte(w, kH);
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < w; ++x) {
+                const double d = std::hypot(x + 0.5 - kLightX, y + 0.5 - kLightY);
+                const float v = d < kRadius ? 50.f : 0.05f + 0.001f * float(x);
+                frame.at(x, y) = {v, v * 0.9f, v * 0.8f, 1.f};
+                matte.at(x, y).a = x < edgeAt(f) ? 1.f : 0.f;
+            }
+        char name[64];
+        std::snprintf(name, sizeof name, "in.%04d.exr", f);
+        ASSERT_TRUE(writeImage(dir.file(name), frame));
+        std::snprintf(name, sizeof name, "matte.%04d.exr", f);
+        WriteOptions alpha;
+        alpha.alpha = true;
+        ASSERT_TRUE(writeImage(dir.file(name), matte, alpha));
+    }
+}
+
+struct Row {
+    double x, y, raw, filtered;
+};
+std::map<int, Row> readCoverage(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "frame,x,y,coverage,filtered_coverage");
+    std::map<int, Row> rows;
+    while (std::getline(in, line)) {
+        int f = 0;
+        Row r{};
+        EXPECT_EQ(std::sscanf(line.c_str(), "%d,%lf,%lf,%lf,%lf", &f, &r.x, &r.y, &r.raw,
+                              &r.filtered),
+                  5)
+            << line;
+        rows[f] = r;
+    }
+    return rows;
+}
+
+std::vector<std::string> shotArgs(const TempDir& in, const std::string& out) {
+    return {"apply",   in.file("in.####.exr"),   "-o",   out,      "--light",
+            "100.5,45.5", "--matte", in.file("matte.####.exr"), "--light-radius", "6"};
+}
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+std::size_t filesIn(const fs::path& dir) {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+    return n;
+}
+}  // namespace
+
+TEST(ShotCli, CoverageFollowsTheEdgeFrameByFrameAndTheFilterIsAnExponentialSmoother) {
+    TempDir in, out;
+    writeShot(in);
+    const CliResult r = runCli(shotArgs(in, out.file("o.####.exr")));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto rows = readCoverage(out.file("coverage.csv"));
+    ASSERT_EQ(rows.size(), std::size_t(kFrames));
+    // Independent filter: attack 0.04 s / release 0.12 s at 24 fps from the first frame on.
+    double smoothed = 0;
+    for (int f = 1; f <= kFrames; ++f) {
+        const Row& row = rows.at(f);
+        EXPECT_DOUBLE_EQ(row.x, kLightX);
+        EXPECT_DOUBLE_EQ(row.y, kLightY);
+        const double expected = 1 - segmentShare(kLightX - edgeAt(f), kRadius);
+        EXPECT_NEAR(row.raw, expected, 0.01) << "frame " << f;
+        const double tau = row.raw > smoothed ? 0.04 : 0.12;
+        smoothed = f == 1 ? row.raw : smoothed + (1 - std::exp(-1.0 / 24 / tau)) * (row.raw - smoothed);
+        EXPECT_NEAR(row.filtered, smoothed, 1e-3) << "frame " << f;
+    }
+    // The edge sweeps the disc: visible at first, hidden at the end.
+    EXPECT_EQ(rows.at(1).raw, 1.0);
+    EXPECT_EQ(rows.at(kFrames).raw, 0.0);
+    // The flare dims with it: the light a frame's flare adds over its input is in proportion
+    // to the filtered coverage (the sprite flare is linear in its intensity; 0.005: the frames
+    // are written as half floats, 2^-11 of each value).
+    auto added = [&](int f) {
+        char name[32];
+        std::snprintf(name, sizeof name, "%04d.exr", f);
+        auto flared = readImage(out.file(std::string("o.") + name));
+        auto input = readImage(in.file(std::string("in.") + name));
+        double sum = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) sum += flared->image.at(x, y).g - input->image.at(x, y).g;
+        return sum;
+    };
+    const double full = added(1);
+    EXPECT_GT(full, 10.0);
+    for (int f = 2; f <= kFrames; ++f)
+        EXPECT_NEAR(added(f) / full, rows.at(f).filtered, 0.005) << "frame " << f;
+}
+
+TEST(ShotCli, FramesAreBitIdenticalHoweverTheShotIsChunked) {
+    TempDir in, whole, chunks;
+    writeShot(in);
+    ASSERT_EQ(runCli(shotArgs(in, whole.file("o.####.exr"))).exitCode, 0);
+    for (const char* chunk : {"1-5", "6", "7-12:2", "8-12:2"}) {
+        const CliResult r = runCli(with(shotArgs(in, chunks.file("o.####.exr")), {"--frames", chunk}));
+        ASSERT_EQ(r.exitCode, 0) << chunk << ": " << r.err;
+    }
+    for (int f = 1; f <= kFrames; ++f) {
+        char name[32];
+        std::snprintf(name, sizeof name, "o.%04d.exr", f);
+        EXPECT_EQ(slurp(whole.file(name)), slurp(chunks.file(name))) << name;
+    }
+    // Each chunk merged its rows into the one coverage.csv.
+    EXPECT_EQ(slurp(whole.file("coverage.csv")), slurp(chunks.file("coverage.csv")));
+}
+
+TEST(ShotCli, ATrackMovesTheLightAndSequenceFramesEqualSingleImageCalls) {
+    TempDir in, out;
+    writeShot(in, 4);
+    std::ofstream(in.file("track.csv")) << "frame,x,y,intensity\n1,20,20,1\n3,60,40,2\n";
+    CliResult r = runCli({"apply", in.file("in.%04d.exr"), "-o", out.file("t.%04d.exr"),
+                          "--light-track", in.file("track.csv")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("frames 4 are outside the keys"), std::string::npos) << r.err;
+    // Frame 2 is halfway: the light at 40,30 with intensity 1.5, exactly as one call places it.
+    r = runCli({"apply", in.file("in.0002.exr"), "-o", out.file("single.exr"), "--light", "40,30",
+                "--intensity", "1.5"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(slurp(out.file("t.0002.exr")), slurp(out.file("single.exr")));
+    // postfx over the sequence gives what it gives each frame alone.
+    r = runCli({"postfx", in.file("in.####.exr"), "-o", out.file("p.####.exr")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = runCli({"postfx", in.file("in.0003.exr"), "-o", out.file("p3.exr")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(slurp(out.file("p.0003.exr")), slurp(out.file("p3.exr")));
+}
+
+TEST(ShotCli, AMissingFrameStopsBeforeAnyWorkOrIsSkippedAndNamed) {
+    TempDir in, out;
+    writeShot(in, 8);
+    fs::remove(in.file("in.0005.exr"));
+    CliResult r = runCli({"postfx", in.file("in.####.exr"), "-o", out.file("o.####.exr"),
+                          "--frames", "1-8"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("frame 5 is missing"), std::string::npos) << r.err;
+    EXPECT_EQ(filesIn(out.path()), 0u);
+    r = runCli({"postfx", in.file("in.####.exr"), "-o", out.file("o.####.exr"), "--frames", "1-9",
+                "--skip-missing"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("skipping missing frames 5, 9"), std::string::npos) << r.err;
+    EXPECT_EQ(filesIn(out.path()), 7u);
+}
+
+TEST(ShotCli, AFrameOfAnotherSizeFailsNamingItAndTheFinishedFramesStayComplete) {
+    TempDir in, out;
+    writeShot(in, 10, 6);
+    const CliResult r = runCli(shotArgs(in, out.file("o.####.exr")));
+    EXPECT_EQ(r.exitCode, 2);
+    // One error line (the progress lines before it are not errors).
+    EXPECT_NE(r.err.find("flarekit: frame 6: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("written and complete"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("flarekit:", r.err.find("flarekit: frame 6") + 1), std::string::npos);
+    EXPECT_FALSE(fs::exists(out.file("o.0006.exr")));
+    for (const auto& e : fs::directory_iterator(out.path())) {
+        const std::string name = e.path().filename().string();
+        EXPECT_EQ(name.rfind("o.", 0), 0u) << "left behind: " << name;
+        EXPECT_TRUE(readImage(e.path().string())) << name << " is not a complete image";
+    }
+    EXPECT_FALSE(fs::exists(out.file("coverage.csv")));
+}
+
+TEST(ShotCli, EveryBadShotInputIsOneLineAndWritesNothing) {
+    TempDir in, out;
+    writeShot(in, 3);
+    std::ofstream(in.file("unsorted.csv")) << "frame,x,y\n3,1,1\n1,2,2\n";
+    std::ofstream(in.file("nan.csv")) << "frame,x,y\n1,nan,1\n";
+    Image small(8, 8);
+    ASSERT_TRUE(writeImage(in.file("smallmatte.0001.exr"), small));
+    ASSERT_TRUE(writeImage(in.file("smallmatte.0002.exr"), small));
+    ASSERT_TRUE(writeImage(in.file("smallmatte.0003.exr"), small));
+    const std::string seq = in.file("in.####.exr"), o = out.file("o.####.exr");
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{"apply", seq, "-o", o, "--light-track", in.file("unsorted.csv")},
+         "line 3: frame 1 does not come after frame 3"},
+        {{"apply", seq, "-o", o, "--light-track", in.file("nan.csv")},
+         "line 2: x: expected a finite number"},
+        {{"apply", seq, "-o", seq}, "would overwrite its input"},
+        {{"apply", seq, "-o", out.file("plain.exr")}, "the output must be one too"},
+        {{"apply", seq, "-o", o, "--frames", "3-1"}, "--frames: expected A-B[:step]"},
+        {{"apply", seq, "-o", o, "--light", "9,9", "--matte", in.file("smallmatte.####.exr")},
+         "8x8, but the frame 1 it must match is 160x90"},
+        {{"apply", in.file("in.0001.exr"), "-o", out.file("x.exr"), "--light-track",
+          in.file("nan.csv")},
+         "the input is one image"},
+        {{"apply", seq, "-o", o, "--matte", in.file("matte.####.exr")}, "need the light's position"},
+        {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "R"}, "needs --light-depth"},
+        {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "Z", "--light-depth", "3"},
+         "split a depth channel"},
+        {{"postfx", in.file("nothing.####.exr"), "-o", o}, "no frame of this pattern exists"},
+        {{"postfx", seq, "-o", out.file("missing-dir/o.####.exr")}, "does not exist"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exitCode, 2) << args.back();
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+        EXPECT_EQ(filesIn(out.path()), 0u) << r.err;
+    }
+}

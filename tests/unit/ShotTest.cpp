@@ -1,0 +1,184 @@
+// Shots: frame patterns and farm ranges, light tracks (both formats, interpolation, every bad
+// input), and a light disc's visibility against the closed-form area of a circular segment.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+
+#include "TempDir.h"
+#include "flarekit/Shot.h"
+
+using namespace flarekit;
+using flarekit::test::TempDir;
+
+namespace {
+//! The share of a disc of radius r on the far side of a line at signed distance d from its
+//! centre (d > 0: the line misses the centre): the circular segment's area over the disc's.
+double segmentShare(double d, double r) {
+    if (d >= r) return 0;
+    if (d <= -r) return 1;
+    const double segment = r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d);
+    return segment / (M_PI * r * r);
+}
+
+//! A matte that covers (1) every pixel left of x = edge, in its alpha.
+Image edgeMatte(int w, int h, int edge) {
+    Image m(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) m.at(x, y).a = x < edge ? 1.f : 0.f;
+    return m;
+}
+}  // namespace
+
+TEST(FramePattern, HashesAndPrintfTokensGiveTheSameNames) {
+    auto hashes = parseFramePattern("dir/shot.####.exr");
+    ASSERT_TRUE(hashes);
+    EXPECT_EQ(hashes->prefix, "dir/shot.");
+    EXPECT_EQ(hashes->suffix, ".exr");
+    EXPECT_EQ(hashes->path(1001), "dir/shot.1001.exr");
+    EXPECT_EQ(hashes->path(7), "dir/shot.0007.exr");
+    EXPECT_EQ(hashes->path(123456), "dir/shot.123456.exr");  // padding is a minimum
+    auto printfStyle = parseFramePattern("dir/shot.%04d.exr");
+    ASSERT_TRUE(printfStyle);
+    EXPECT_EQ(printfStyle->path(7), "dir/shot.0007.exr");
+    EXPECT_EQ(parseFramePattern("f%d.png")->path(7), "f7.png");
+    EXPECT_TRUE(isFramePattern("a.#.exr"));
+    EXPECT_FALSE(isFramePattern("plain.exr"));
+    EXPECT_FALSE(isFramePattern("100%.png"));
+}
+
+TEST(FramePattern, RefusesNoTokenOrTwo) {
+    EXPECT_FALSE(parseFramePattern("shot.exr"));
+    const auto two = parseFramePattern("v##/shot.####.exr");
+    ASSERT_FALSE(two);
+    EXPECT_NE(two.error().message.find("found 2"), std::string::npos) << two.error().message;
+}
+
+TEST(FramePattern, FramesOnDiskMatchTheExactNameOfEachFrame) {
+    TempDir dir;
+    for (const char* name : {"shot.0001.exr", "shot.0002.exr", "shot.01003.exr", "shot.10000.exr",
+                             "shot.0004.png", "other.0005.exr", "shot.00x6.exr"})
+        std::ofstream(dir.file(name)) << "x";
+    auto pattern = parseFramePattern(dir.file("shot.####.exr"));
+    ASSERT_TRUE(pattern);
+    // 01003 is not what #### names frame 1003 (that is 1003), so it is not a frame.
+    EXPECT_EQ(framesOnDisk(*pattern), (std::vector<int>{1, 2, 10000}));
+}
+
+TEST(FrameRange, FarmChunksAndSteps) {
+    EXPECT_EQ(parseFrameRange("1-10:3", "--frames")->frames(), (std::vector<int>{1, 4, 7, 10}));
+    EXPECT_EQ(parseFrameRange("1001-1040", "--frames")->frames().size(), 40u);
+    EXPECT_EQ(parseFrameRange("17", "--frames")->frames(), (std::vector<int>{17}));
+    for (const char* bad : {"10-1", "a-b", "1-5:0", "-3", "", "1-", "1-5:x", "1.5-3"}) {
+        const auto r = parseFrameRange(bad, "--frames");
+        ASSERT_FALSE(r) << bad;
+        EXPECT_EQ(r.error().message.rfind("--frames: expected A-B[:step]", 0), 0u)
+            << r.error().message;
+    }
+    EXPECT_EQ(describeFrames({5, 6, 7, 10, 12, 13}), "5-7, 10, 12-13");
+}
+
+TEST(LightTrack, CsvKeysInterpolateLinearlyAndHoldTheEnds) {
+    auto t = parseLightTrack("frame,x,y,intensity\r\n10,0,0,1\r\n20,100,50,3\r\n", "t.csv");
+    ASSERT_TRUE(t) << t.error().message;
+    const auto mid = t->at(15);
+    EXPECT_FLOAT_EQ(mid.position.x, 50.f);
+    EXPECT_FLOAT_EQ(mid.position.y, 25.f);
+    EXPECT_FLOAT_EQ(mid.intensity, 2.f);
+    EXPECT_FALSE(mid.held);
+    EXPECT_TRUE(t->at(5).held);
+    EXPECT_FLOAT_EQ(t->at(5).position.x, 0.f);
+    EXPECT_TRUE(t->at(25).held);
+    EXPECT_FLOAT_EQ(t->at(25).position.y, 50.f);
+    EXPECT_FALSE(t->at(20).held);
+}
+
+TEST(LightTrack, JsonGivesTheSameTrackAndCsvRoundTrips) {
+    const auto csv = parseLightTrack("frame,x,y\n1,10.25,20\n4,40,80.5\n", "t.csv");
+    const auto json = parseLightTrack(
+        R"({"keys": [{"frame": 1, "x": 10.25, "y": 20}, {"frame": 4, "x": 40, "y": 80.5}]})",
+        "t.json");
+    const auto array = parseLightTrack(R"([{"frame": 1, "x": 10.25, "y": 20},
+                                           {"frame": 4, "x": 40, "y": 80.5}])",
+                                       "t.json");
+    ASSERT_TRUE(csv && json && array);
+    for (double f : {0.0, 1.0, 2.0, 3.5, 9.0}) {
+        EXPECT_EQ(csv->at(f).position.x, json->at(f).position.x);
+        EXPECT_EQ(csv->at(f).position.y, array->at(f).position.y);
+    }
+    const auto again = parseLightTrack(lightTrackCsv(*csv), "again.csv");
+    ASSERT_TRUE(again);
+    ASSERT_EQ(again->keys.size(), 2u);
+    EXPECT_EQ(again->keys[1].y, 80.5);
+    EXPECT_FALSE(again->hasIntensity);
+}
+
+TEST(LightTrack, EveryBadInputNamesItsLineAndField) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"frame,x,y\n1,0,0\n1,5,5\n", "t.csv: line 3: frame 1 does not come after frame 1"},
+        {"frame,x,y\n5,0,0\n2,5,5\n", "t.csv: line 3: frame 2 does not come after frame 5"},
+        {"frame,x,y\n1,nan,0\n", "t.csv: line 2: x: expected a finite number"},
+        {"frame,x,y\n1,inf,0\n", "t.csv: line 2: x: expected a finite number"},
+        {"frame,x,y\n1,2\n", "t.csv: line 2: expected 3 comma-separated numbers, got 2"},
+        {"frame,x,y\n1,2,abc\n", "t.csv: line 2: y: expected a number, got 'abc'"},
+        {"frame;x;y\n", "t.csv: line 1: expected the header frame,x,y"},
+        {"frame,x,y,intensity\n1,2,3,-1\n", "t.csv: line 2: intensity: expected a number >= 0"},
+        {"frame,x,y\n", "t.csv: the track has no keys"},
+        {"", "t.csv: empty track"},
+        {R"([{"frame": 1, "x": 2}])", "t.csv: keys[0]: missing \"y\""},
+        {R"([{"frame": 1, "x": 2, "y": "3"}])", "t.csv: keys[0].y: expected a number"},
+        {R"([{"frame": 1, "x": 2, "y": 3, "z": 1}])", "t.csv: keys[0]: unknown key 'z'"},
+        {R"({"keys": 3})", "t.csv: keys: expected an array"},
+        {R"([{"frame": 2, "x": 2, "y": 3}, {"frame": 1, "x": 2, "y": 3}])",
+         "t.csv: keys[1]: frame 1 does not come after frame 2"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const auto t = parseLightTrack(text, "t.csv");
+        ASSERT_FALSE(t) << text;
+        EXPECT_EQ(t.error().message.rfind(expected, 0), 0u) << t.error().message;
+    }
+}
+
+TEST(DiscVisibility, AnEdgeHidesTheCircularSegmentsShare) {
+    const int w = 160, h = 120;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    double worst = 0;
+    for (int i = 0; i < 200; ++i) {
+        const double r = 1 + 30 * u(rng);
+        const Point c{float(40 + 80 * u(rng)), float(35 + 50 * u(rng))};
+        const int edge = int(c.x - r - 2 + (2 * r + 4) * u(rng));
+        const Image matte = edgeMatte(w, h, edge);
+        // Covered: the part of the disc left of x = edge, at distance c.x - edge from the centre.
+        const double expected = 1 - segmentShare(double(c.x) - edge, r);
+        const double got = discVisibility(matte, {}, c, r);
+        worst = std::max(worst, std::abs(got - expected));
+    }
+    EXPECT_LT(worst, 0.003);
+}
+
+TEST(DiscVisibility, FullCoverNoneAndTheFramesEdge) {
+    Image covered(64, 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) covered.at(x, y).a = 1;
+    EXPECT_EQ(discVisibility(covered, {}, {32, 32}, 10), 0.0);
+    EXPECT_EQ(discVisibility(Image(64, 64), {}, {32, 32}, 10), 1.0);
+    // Half the disc outside the frame: the half inside counts, here half covered.
+    const Image half = edgeMatte(64, 64, 4);
+    EXPECT_NEAR(discVisibility(half, {}, {0, 32}, 8), 1 - (segmentShare(-4, 8) - 0.5) / 0.5, 0.01);
+    EXPECT_EQ(discVisibility(covered, {}, {-50, 32}, 10), 1.0);  // wholly outside
+    // A sub-pixel light is the pixel under it.
+    EXPECT_EQ(discVisibility(half, {}, {2.5f, 9.5f}, 0.2), 0.0);
+    EXPECT_EQ(discVisibility(half, {}, {4.5f, 9.5f}, 0.2), 1.0);
+}
+
+TEST(DiscVisibility, DepthHidesWhereNearerThanTheLight) {
+    Image depth(64, 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) depth.at(x, y).r = x < 32 ? 5.f : 1000.f;
+    Occluder near{0, 100.f};
+    EXPECT_NEAR(discVisibility(depth, near, {32, 32}, 12), 0.5, 0.002);
+    Occluder far{0, 2.f};  // the light in front of everything
+    EXPECT_EQ(discVisibility(depth, far, {32, 32}, 12), 1.0);
+}
