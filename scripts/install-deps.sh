@@ -25,6 +25,10 @@ packages=(
   libglfw3-dev
   # the embedding example's window test runs it on a private X server (Xvfb, local socket only)
   xvfb
+  # shots on a farm: the Slurm test runs a one-node cluster (its own munged, slurmctld, slurmd)
+  slurmctld slurmd slurm-client munge
+  # shots: colour spaces through OpenColorIO
+  libopencolorio-dev
   # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
   clang libclang-rt-14-dev
 )

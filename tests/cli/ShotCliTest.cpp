@@ -66,9 +66,8 @@ std::map<int, Row> readCoverage(const std::string& path) {
     while (std::getline(in, line)) {
         int f = 0;
         Row r{};
-        EXPECT_EQ(std::sscanf(line.c_str(), "%d,%lf,%lf,%lf,%lf", &f, &r.x, &r.y, &r.raw,
-                              &r.filtered),
-                  5)
+        EXPECT_EQ(
+            std::sscanf(line.c_str(), "%d,%lf,%lf,%lf,%lf", &f, &r.x, &r.y, &r.raw, &r.filtered), 5)
             << line;
         rows[f] = r;
     }
@@ -76,8 +75,16 @@ std::map<int, Row> readCoverage(const std::string& path) {
 }
 
 std::vector<std::string> shotArgs(const TempDir& in, const std::string& out) {
-    return {"apply",   in.file("in.####.exr"),   "-o",   out,      "--light",
-            "100.5,45.5", "--matte", in.file("matte.####.exr"), "--light-radius", "6"};
+    return {"apply",
+            in.file("in.####.exr"),
+            "-o",
+            out,
+            "--light",
+            "100.5,45.5",
+            "--matte",
+            in.file("matte.####.exr"),
+            "--light-radius",
+            "6"};
 }
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
@@ -108,7 +115,8 @@ TEST(ShotCli, CoverageFollowsTheEdgeFrameByFrameAndTheFilterIsAnExponentialSmoot
         const double expected = 1 - segmentShare(kLightX - edgeAt(f), kRadius);
         EXPECT_NEAR(row.raw, expected, 0.01) << "frame " << f;
         const double tau = row.raw > smoothed ? 0.04 : 0.12;
-        smoothed = f == 1 ? row.raw : smoothed + (1 - std::exp(-1.0 / 24 / tau)) * (row.raw - smoothed);
+        smoothed =
+            f == 1 ? row.raw : smoothed + (1 - std::exp(-1.0 / 24 / tau)) * (row.raw - smoothed);
         EXPECT_NEAR(row.filtered, smoothed, 1e-3) << "frame " << f;
     }
     // The edge sweeps the disc: visible at first, hidden at the end.
@@ -138,7 +146,8 @@ TEST(ShotCli, FramesAreBitIdenticalHoweverTheShotIsChunked) {
     writeShot(in);
     ASSERT_EQ(runCli(shotArgs(in, whole.file("o.####.exr"))).exitCode, 0);
     for (const char* chunk : {"1-5", "6", "7-12:2", "8-12:2"}) {
-        const CliResult r = runCli(with(shotArgs(in, chunks.file("o.####.exr")), {"--frames", chunk}));
+        const CliResult r =
+            runCli(with(shotArgs(in, chunks.file("o.####.exr")), {"--frames", chunk}));
         ASSERT_EQ(r.exitCode, 0) << chunk << ": " << r.err;
     }
     for (int f = 1; f <= kFrames; ++f) {
@@ -175,8 +184,8 @@ TEST(ShotCli, AMissingFrameStopsBeforeAnyWorkOrIsSkippedAndNamed) {
     TempDir in, out;
     writeShot(in, 8);
     fs::remove(in.file("in.0005.exr"));
-    CliResult r = runCli({"postfx", in.file("in.####.exr"), "-o", out.file("o.####.exr"),
-                          "--frames", "1-8"});
+    CliResult r =
+        runCli({"postfx", in.file("in.####.exr"), "-o", out.file("o.####.exr"), "--frames", "1-8"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("frame 5 is missing"), std::string::npos) << r.err;
@@ -229,7 +238,8 @@ TEST(ShotCli, EveryBadShotInputIsOneLineAndWritesNothing) {
         {{"apply", in.file("in.0001.exr"), "-o", out.file("x.exr"), "--light-track",
           in.file("nan.csv")},
          "the input is one image"},
-        {{"apply", seq, "-o", o, "--matte", in.file("matte.####.exr")}, "need the light's position"},
+        {{"apply", seq, "-o", o, "--matte", in.file("matte.####.exr")},
+         "need the light's position"},
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "R"}, "needs --light-depth"},
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "Z", "--light-depth", "3"},
          "split a depth channel"},

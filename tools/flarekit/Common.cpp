@@ -1,5 +1,7 @@
 #include "Common.h"
 
+#include "ShotRun.h"
+
 #include "core/FirstLine.h"
 #include "core/Interrupt.h"
 #include "core/SafeWrite.h"
@@ -10,6 +12,7 @@
 
 #include <unistd.h>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 
 #include <cstdio>
@@ -218,10 +221,12 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text) {
 }
 
 Result<LoadedImage> readInputImage(const std::string& path, const JobMemory& job) {
+    const auto start = std::chrono::steady_clock::now();
     auto loaded = [&] {
         LibraryNoiseFilter filter;
         return readImage(path, job);
     }();
+    addReadSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (!loaded) return loaded.error();
     if (loaded->droppedChannels > 0) {
         return invalidInput(

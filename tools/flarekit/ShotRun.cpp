@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <mutex>
 #include <thread>
@@ -93,8 +95,25 @@ Result<int> framesInFlight(ShotPlan& plan, const JobMemory& perFrame, bool gl) {
     return std::clamp(fit, 1, cores);
 }
 
+namespace {
+//! Seconds the frames spent reading their input (readInputImage adds to it), summed over the
+//! threads: the read share of the summary line.
+std::atomic<double> g_readSeconds{0};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+void addReadSeconds(double seconds) {
+    g_readSeconds += seconds;
+}
+
 int runShot(const ShotPlan& plan, const std::string& label, int parallel,
             const std::function<Result<ImageOutput>(const ShotFrame&)>& render) {
+    const auto start = std::chrono::steady_clock::now();
+    g_readSeconds = 0;
+    std::atomic<double> renderSeconds{0}, writeSeconds{0};
     const int total = int(plan.frames.size());
     std::atomic<int> next{0};
     std::atomic<bool> stop{false};
@@ -112,7 +131,10 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
             const ShotFrame frame{f, plan.in.path(f), plan.out.path(f)};
             Status status = checkOutputPath(frame.out);
             if (status) {
+                const auto renderStart = std::chrono::steady_clock::now();
                 auto result = render(frame);
+                renderSeconds += secondsSince(renderStart);
+                const auto writeStart = std::chrono::steady_clock::now();
                 if (!result)
                     status = result.error();
                 else if (result->image.width() != plan.width ||
@@ -124,6 +146,7 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
                         "x" + std::to_string(plan.height) + "; a sequence's frames share one size");
                 else
                     status = writeImage(frame.out, result->image, result->options);
+                writeSeconds += secondsSince(writeStart);
             }
             std::lock_guard lock(mutex);
             if (!status) {
@@ -152,6 +175,15 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
         return report(e);
     }
     if (interrupted()) return report(interruptedError(writtenText));
+    // Where the frames' time went (summed over the threads working at once).
+    const double wall = secondsSince(start), read = g_readSeconds,
+                 effect = std::max(0.0, renderSeconds - read), write = writeSeconds;
+    const double busy = std::max(1e-9, read + effect + write);
+    std::fprintf(stderr,
+                 "%s: %d frames in %.2f s, %.2f frames/s, %d at once; of the frames' time: read "
+                 "%.0f%%, effect %.0f%%, write %.0f%%\n",
+                 label.c_str(), total, wall, total / std::max(wall, 1e-9), parallel,
+                 100 * read / busy, 100 * effect / busy, 100 * write / busy);
     return kExitOk;
 }
 

@@ -49,6 +49,9 @@ struct ShotFrame {
 int runShot(const ShotPlan& plan, const std::string& label, int parallel,
             const std::function<Result<ImageOutput>(const ShotFrame&)>& render);
 
+//! Adds a frame's read time to the summary runShot prints (readInputImage calls it).
+void addReadSeconds(double seconds);
+
 //! Reads the first frame's size into the plan (every frame must have it) and returns how many
 //! frames of that size fit in the memory budget at once (each `perFrame`, the process's own
 //! fixed cost counted once), at most one per core; 1 for a GL backend.

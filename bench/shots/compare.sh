@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Whole-process throughput on a shot: N frames of 1920x1080 half-float EXR through `postfx` and
+# `apply` in one process (frames in parallel, reading and writing beside rendering) against N
+# one-frame processes, with the peak memory of each, and `lens render` per frame. Not part of
+# the test suite: run it on a quiet machine.
+#   bench/shots/compare.sh [build/flarekit] [frames, default 100]
+set -euo pipefail
+flarekit="$(realpath "${1:-build/flarekit}")"
+frames="${2:-100}"
+here="$(cd "$(dirname "$0")" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# The frames: the sample HDR sunset at 1080p as half floats (the same picture each frame: the
+# cost of a frame does not depend on what it shows, within a few percent).
+oiiotool "$here/../../samples/sunset-hdr.exr" --resize 1920x1080 -d half -o "$work/src.exr"
+mkdir -p "$work/in" "$work/one" "$work/many"
+for ((f = 1; f <= frames; f++)); do cp "$work/src.exr" "$(printf "$work/in/shot.%04d.exr" "$f")"; done
+
+seconds() { /usr/bin/time -f "%e %M" -o "$work/time" "$@" >/dev/null 2>"$work/err" || {
+  cat "$work/err" >&2; exit 1; }; cat "$work/time"; }
+
+for job in postfx apply; do
+  one=$(seconds "$flarekit" "$job" "$work/in/shot.####.exr" -o "$work/one/out.####.exr")
+  summary=$(grep "frames in" "$work/err" || true)
+  start=$(date +%s.%N)
+  peak=0
+  for ((f = 1; f <= frames; f++)); do
+    name=$(printf "shot.%04d.exr" "$f")
+    r=$(seconds "$flarekit" "$job" "$work/in/$name" -o "$work/many/$name")
+    kb=${r#* }
+    ((kb > peak)) && peak=$kb
+  done
+  many=$(echo "$(date +%s.%N) - $start" | bc)
+  read -r oneS oneKb <<<"$one"
+  printf '%s, %d frames 1080p half EXR: one process %.2f s (%.2f frames/s, peak %d MiB); %d processes %.2f s (%.2f frames/s, peak %d MiB each); %.2fx\n' \
+    "$job" "$frames" "$oneS" "$(echo "$frames / $oneS" | bc -l)" $((oneKb / 1024)) "$frames" \
+    "$many" "$(echo "$frames / $many" | bc -l)" $((peak / 1024)) "$(echo "$many / $oneS" | bc -l)"
+  echo "  $summary"
+  cmp -s "$work/one/out.0001.exr" "$work/many/shot.0001.exr" && echo "  frame 1 bit-identical both ways"
+done
+
+r=$(seconds "$flarekit" lens render nikon-zoom-80-200 "$work/in/shot.0001.exr" -o "$work/lens.exr")
+echo "lens render, nikon-zoom-80-200, one 1080p frame: ${r% *} s, peak $((${r#* } / 1024)) MiB"
