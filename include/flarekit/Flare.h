@@ -84,6 +84,23 @@ struct FlareStats {
 //! elements cover, never the whole image per element.
 FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity);
 
+//! A flare split into the passes a compositor grades separately: each element goes to one layer
+//! by its type (glow: Glow; halo: Ring; ghosts: Disc, Polygon; streaks: Streaks, EdgeStreak;
+//! starburst: Rays). Only the layers the preset has are made, in this order.
+struct FlareLayer {
+    std::string name;
+    Image image;  //!< linear, over transparent black, unclamped
+};
+inline constexpr const char* kFlareLayerNames[] = {"glow", "halo", "ghosts", "streaks",
+                                                   "starburst"};
+//! The layer an element type belongs to (an index into kFlareLayerNames).
+int flareLayerOf(ElementType type);
+//! Every light's flare rendered layer by layer into width x height images, and their sum, the
+//! whole flare (`flare`, what input + flare composites: that sum is exact by construction).
+std::vector<FlareLayer> renderFlareLayers(int width, int height, const Preset& preset,
+                                          const std::vector<std::pair<Point, float>>& lights,
+                                          Image& flare);
+
 //! An estimate of the spike evaluations (the costly inner loop of streaks and rays) of one
 //! flare of `preset` in a width x height image: per spike about 2 x its support x its length in
 //! pixels, clipped to the frame's diagonal.

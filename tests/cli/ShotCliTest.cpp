@@ -254,3 +254,54 @@ TEST(ShotCli, EveryBadShotInputIsOneLineAndWritesNothing) {
         EXPECT_EQ(filesIn(out.path()), 0u) << r.err;
     }
 }
+
+TEST(ShotCli, LayersSumToTheFlareAndTheCompositeIsInputPlusFlareExactly) {
+    TempDir in, out;
+    writeShot(in, 2);
+    const std::string layers = out.file("layers");
+    CliResult r = runCli({"apply", in.file("in.0001.exr"), "-o", out.file("comp.exr"), "--depth",
+                          "float", "--light", "100.5,45.5", "--layers", layers});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto input = readImage(in.file("in.0001.exr"));
+    auto comp = readImage(out.file("comp.exr"));
+    auto flare = readImage(layers + "/flare.exr");
+    ASSERT_TRUE(input && comp && flare);
+    // The passes the preset has, summed in their order, are the flare; input + flare is the
+    // composite, both bit for bit.
+    Image sum(kW, kH);
+    int passes = 0;
+    for (const char* name : {"glow", "halo", "ghosts", "streaks", "starburst"}) {
+        auto layer = readImage(layers + "/" + name + ".exr");
+        if (!layer) continue;
+        ++passes;
+        for (std::size_t i = 0; i < sum.pixelCount() * 4; ++i)
+            sum.data()[i] += layer->image.data()[i];
+    }
+    EXPECT_GE(passes, 3);
+    double flareLight = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const Rgba &f = flare->image.at(x, y), &s = sum.at(x, y), &i = input->image.at(x, y),
+                       &c = comp->image.at(x, y);
+            ASSERT_EQ(f.r, s.r);
+            ASSERT_EQ(f.g, s.g);
+            ASSERT_EQ(c.r, i.r + f.r);
+            ASSERT_EQ(c.g, i.g + f.g);
+            ASSERT_EQ(c.b, i.b + f.b);
+            flareLight += f.g;
+        }
+    EXPECT_GT(flareLight, 10.0);
+    // --flare-only writes that flare alone.
+    r = runCli({"apply", in.file("in.0001.exr"), "-o", out.file("only.exr"), "--depth", "float",
+                "--light", "100.5,45.5", "--flare-only"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto only = readImage(out.file("only.exr"));
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) ASSERT_EQ(only->image.at(x, y).g, flare->image.at(x, y).g);
+    // A sequence's passes are sequences of their own.
+    r = runCli({"apply", in.file("in.####.exr"), "-o", out.file("c.####.exr"), "--light",
+                "100.5,45.5", "--layers", out.file("seq")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out.file("seq/flare.0002.exr")));
+    EXPECT_TRUE(fs::exists(out.file("seq/glow.0001.exr")));
+}

@@ -23,7 +23,8 @@ struct ApplyArgs {
     float intensity = 1.f, exposure = 1.f;
     LightSearchOptions lightSearch;
     bool verbose = false;
-    std::string lightTrack;
+    std::string lightTrack, layersDir;
+    bool flareOnly = false;
     ShotArgs shot;
     OcclusionArgs occlusion;
 };
@@ -96,8 +97,23 @@ Result<Lights> autoLights(const ApplyArgs& a, const std::string& in, const Image
     return lights;
 }
 
+//! --layers: each pass and the whole flare as float EXRs in DIR, named NAME + `suffix` + .exr
+//! (".1001" for a sequence's frame, so each pass is a sequence of its own).
+Status writeFlareLayers(const std::string& dir, const std::string& suffix,
+                        const std::vector<FlareLayer>& layers, const Image& flare) {
+    if (Status s = makeOutputDirectory(dir); !s) return s;
+    WriteOptions linear;
+    linear.format = SampleFormat::Float;
+    auto path = [&](const std::string& name) {
+        return (std::filesystem::path(dir) / (name + suffix + ".exr")).string();
+    };
+    for (const FlareLayer& layer : layers)
+        if (Status s = writeImage(path(layer.name), layer.image, linear); !s) return s;
+    return writeImage(path("flare"), flare, linear);
+}
+
 Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const std::string& out,
-                               const LightsOf& lightsOf) {
+                               const LightsOf& lightsOf, const std::string& layerSuffix = "") {
     const SampleFormat depth = *parseDepth(a.depth);
     if (Status s = checkDepthFits(out, depth); !s) return s.error();
     auto preset = loadPreset(a.preset);
@@ -112,17 +128,38 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const 
         !s) {
         return s.error();
     }
-    for (const auto& [light, intensity] : *flares) {
-        if (!(intensity > 0.f)) continue;
-        const FlareStats stats = renderFlare(image, *preset, light, intensity);
-        if (a.verbose)
-            std::printf("flare at %.1f,%.1f, intensity %.4f: %zu elements, %zu pixels shaded\n",
-                        double(light.x), double(light.y), double(intensity), stats.elementsDrawn,
-                        stats.pixelsShaded);
+    if (!a.layersDir.empty() || a.flareOnly) {
+        // The flare over black, pass by pass; the composite is the input plus exactly that.
+        Image flare;
+        const auto layers =
+            renderFlareLayers(image.width(), image.height(), *preset, *flares, flare);
+        if (!a.layersDir.empty()) {
+            if (Status s = writeFlareLayers(a.layersDir, layerSuffix, layers, flare); !s)
+                return s.error();
+        }
+        if (a.flareOnly) {
+            loaded->hasAlpha = false;
+            image = std::move(flare);
+        } else {
+            float* dst = image.data();
+            const float* add = flare.data();
+            for (std::size_t i = 0; i < image.pixelCount() * 4; ++i)
+                if (i % 4 != 3) dst[i] += add[i];
+        }
+    } else {
+        for (const auto& [light, intensity] : *flares) {
+            if (!(intensity > 0.f)) continue;
+            const FlareStats stats = renderFlare(image, *preset, light, intensity);
+            if (a.verbose)
+                std::printf("flare at %.1f,%.1f, intensity %.4f: %zu elements, %zu pixels shaded\n",
+                            double(light.x), double(light.y), double(intensity),
+                            stats.elementsDrawn, stats.pixelsShaded);
+        }
     }
     // --tonemap auto: defaultDisplayCurve (filmic for HDR input to an 8/16-bit file).
-    const ToneOperator curve =
-        namedToneOperator(a.tonemap).value_or(defaultDisplayCurve(loaded->wasFloat, out, depth));
+    // --flare-only stays linear (it is added in the compositing package) unless a curve is named.
+    const ToneOperator curve = namedToneOperator(a.tonemap).value_or(
+        a.flareOnly ? ToneOperator::None : defaultDisplayCurve(loaded->wasFloat, out, depth));
     toneMapImage(image, curve, a.exposure);
     ImageOutput result{std::move(image), {}};
     result.options.alpha = loaded->hasAlpha;
@@ -189,18 +226,22 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     auto parallel = framesInFlight(*plan, kApplyMemory, false);
     if (!parallel) return report(parallel.error());
     const int code = runShot(*plan, "apply", *parallel, [&](const ShotFrame& f) {
-        return applyFlare(a, f.in, f.out, [&](const Image& image) -> Result<Lights> {
-            if (!track && !fixed) return autoLights(a, f.in, image);
-            float intensity = a.intensity * (track ? track->at(f.frame).intensity : 1.f);
-            if (coverage) {
-                auto row = coverage->at(f.frame, image);
-                if (!row) return row.error();
-                intensity *= float(row->filtered);
-                std::lock_guard lock(rowsMutex);
-                rows.push_back(*row);
-            }
-            return Lights{{lightAt(f.frame), intensity}};
-        });
+        return applyFlare(
+            a, f.in, f.out,
+            [&](const Image& image) -> Result<Lights> {
+                if (!track && !fixed) return autoLights(a, f.in, image);
+                float intensity = a.intensity * (track ? track->at(f.frame).intensity : 1.f);
+                if (coverage) {
+                    auto row = coverage->at(f.frame, image);
+                    if (!row) return row.error();
+                    intensity *= float(row->filtered);
+                    std::lock_guard lock(rowsMutex);
+                    rows.push_back(*row);
+                }
+                return Lights{{lightAt(f.frame), intensity}};
+            },
+            "." + f.in.substr(plan->in.prefix.size(),
+                              f.in.size() - plan->in.prefix.size() - plan->in.suffix.size()));
     });
     if (code == kExitOk && coverage) {
         if (Status s = coverage->writeCsv(plan->outDir, rows); !s) return report(s.error());
@@ -257,6 +298,14 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "none, aces, filmic")
         ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
         ->capture_default_str();
+    cmd->add_option("--layers", args->layersDir,
+                    "also write the flare over black (flare.exr: linear, unclamped, float) and "
+                    "its passes (glow, halo, ghosts, streaks, starburst: those the preset has) "
+                    "into DIR; the output is then exactly input + flare; for a sequence "
+                    "DIR/flare.1001.exr, ...");
+    cmd->add_flag("--flare-only", args->flareOnly,
+                  "write the flare alone over black (linear unless --tonemap names a curve), to "
+                  "add or screen over the plate in the compositing package");
     cmd->add_option("--light-track", args->lightTrack,
                     "the light per frame of a sequence: CSV (frame,x,y or frame,x,y,intensity; "
                     "pixels from the top-left, centres at +0.5) or JSON; linear between keys, the "
