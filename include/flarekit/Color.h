@@ -38,6 +38,10 @@ inline std::uint16_t alphaTo16(float a) {
 //! writers have always done). One pass, no pow.
 void encodeSrgb8(const float* rgba, std::size_t pixels, int channels, std::uint8_t* out);
 void encodeSrgb16(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out);
+//! The same layout with every channel quantised as it is (round(clamp(v, 0, 1) x 255 or
+//! 65535)): values already encoded for their colour space (an OCIO output transform's).
+void encodeDirect8(const float* rgba, std::size_t pixels, int channels, std::uint8_t* out);
+void encodeDirect16(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out);
 //! Rec. 709 luminance of linear RGB.
 inline float luminance(float r, float g, float b) {
     return 0.2126f * r + 0.7152f * g + 0.0722f * b;

@@ -39,6 +39,9 @@ struct WriteOptions {
     SampleFormat format =
         SampleFormat::Auto;  //!< Auto: .exr half, .hdr float, .tif 16-bit, else 8-bit
     bool alpha = false;      //!< write RGBA (ignored by formats without alpha)
+    //! Integer formats: sRGB-encode the linear values (true), or quantise them as they are
+    //! (false: values an OCIO output transform has already encoded; no sRGB tag is written).
+    bool srgbEncode = true;
 };
 
 //! The sample format writeImage will use for `path` (Auto resolved from the extension).

@@ -140,4 +140,14 @@ void encodeSrgb16(const float* rgba, std::size_t pixels, int channels, std::uint
     }
 }
 
+void encodeDirect8(const float* rgba, std::size_t pixels, int channels, std::uint8_t* out) {
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels)
+        for (int c = 0; c < channels; ++c) out[c] = alphaTo8(finiteOr0(rgba[c]));
+}
+
+void encodeDirect16(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
+    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels)
+        for (int c = 0; c < channels; ++c) out[c] = alphaTo16(finiteOr0(rgba[c]));
+}
+
 }  // namespace flarekit

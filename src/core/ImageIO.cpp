@@ -521,7 +521,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     s.width = image.width();
     s.height = image.height();
     s.channels = channels;
-    s.srgb = !isFloat;
+    s.srgb = !isFloat && options.srgbEncode;
     const std::size_t pixels = image.pixelCount();
     // Encoded here, so the code values are flarekit's, not a library's.
     const auto encodeAs = [&](auto code, SampleType type, auto encode) {
@@ -534,9 +534,12 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
         s.data = codes.data();
         return encodeAndWrite(path, *writer, s);
     };
-    if (format == SampleFormat::U8) return encodeAs(std::uint8_t{}, SampleType::U8, encodeSrgb8);
+    if (format == SampleFormat::U8)
+        return encodeAs(std::uint8_t{}, SampleType::U8,
+                        options.srgbEncode ? encodeSrgb8 : encodeDirect8);
     if (format == SampleFormat::U16)
-        return encodeAs(std::uint16_t{}, SampleType::U16, encodeSrgb16);
+        return encodeAs(std::uint16_t{}, SampleType::U16,
+                        options.srgbEncode ? encodeSrgb16 : encodeDirect16);
     // Floats, linear, NaN and infinities as 0. EXR takes the image's own pixels (strided) when
     // they are all finite, or half floats converted here; other writers take packed samples.
     s.type = SampleType::F32;

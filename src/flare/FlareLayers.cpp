@@ -5,13 +5,18 @@ namespace flarekit {
 
 int flareLayerOf(ElementType type) {
     switch (type) {
-        case ElementType::Glow: return 0;
-        case ElementType::Ring: return 1;
+        case ElementType::Glow:
+            return 0;
+        case ElementType::Ring:
+            return 1;
         case ElementType::Disc:
-        case ElementType::Polygon: return 2;
+        case ElementType::Polygon:
+            return 2;
         case ElementType::Streaks:
-        case ElementType::EdgeStreak: return 3;
-        case ElementType::Rays: return 4;
+        case ElementType::EdgeStreak:
+            return 3;
+        case ElementType::Rays:
+            return 4;
     }
     return 0;
 }

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "ColorManagement.h"
 #include "Common.h"
 #include "ParamOptions.h"
 #include "ShotCoverage.h"
@@ -27,6 +28,8 @@ struct ApplyArgs {
     bool flareOnly = false;
     ShotArgs shot;
     OcclusionArgs occlusion;
+    ColorArgs color;
+    std::shared_ptr<const ColorManagement> colors;  //!< built from `color` before the run
 };
 inline constexpr Param<ApplyArgs> kApplyArgParams[] = {
     param<&ApplyArgs::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
@@ -120,6 +123,7 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const 
     if (!preset) return preset.error();
     auto loaded = readInputImage(in, kApplyMemory);
     if (!loaded) return loaded.error();
+    if (a.colors) a.colors->toWorking(*loaded);
     Image& image = loaded->image;
     auto flares = lightsOf(image);
     if (!flares) return flares.error();
@@ -164,6 +168,7 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const 
     ImageOutput result{std::move(image), {}};
     result.options.alpha = loaded->hasAlpha;
     result.options.format = depth;
+    if (a.colors) a.colors->toOutput(result.image, result.options);
     return result;
 }
 
@@ -249,7 +254,13 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     return code;
 }
 
-int runApply(const ApplyArgs& a) {
+int runApply(const ApplyArgs& args) {
+    ApplyArgs a = args;
+    if (a.color.enabled()) {
+        auto colors = ColorManagement::create(a.color);
+        if (!colors) return report(colors.error());
+        a.colors = *colors;
+    }
     const bool autoLight = a.light == "auto";
     const std::optional<Point> fixed = autoLight ? std::nullopt : parsePoint(a.light);
     if (!autoLight && !fixed)
@@ -312,6 +323,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "end keys held outside them");
     addShotOptions(cmd, args->shot);
     addOcclusionOptions(cmd, args->occlusion);
+    addColorOptions(cmd, args->color);
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print every light candidate (position, radius, flux, score) and the work done");
     cmd->callback([args, &exitCode] { exitCode = runApply(*args); });

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "ColorManagement.h"
 #include "Common.h"
 #include "ParamOptions.h"
 #include "ShotRun.h"
@@ -28,6 +29,8 @@ struct PostFxArgs {
     int repeat = 1;
     bool verbose = false;
     ShotArgs shot;
+    ColorArgs color;
+    std::shared_ptr<const ColorManagement> colors;  //!< built from `color` before the run
 };
 inline constexpr Param<PostFxArgs> kPostFxArgParams[] = {
     param<&PostFxArgs::repeat>(
@@ -126,6 +129,7 @@ Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const s
     if (a.knee) params->bright.knee = *a.knee;
     auto loaded = readInputImage(in, postFxMemory(a));
     if (!loaded) return loaded.error();
+    if (a.colors) a.colors->toWorking(*loaded);
     // --tonemap preset, and the preset has no curve: the default display curve, as `apply`'s.
     if (a.tonemap == "preset" && params->tone.op == ToneOperator::None)
         params->tone.op = defaultDisplayCurve(loaded->wasFloat, out);
@@ -183,10 +187,17 @@ Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const s
     }
     ImageOutput output{std::move(result->final), {}};
     output.options.alpha = loaded->hasAlpha;
+    if (a.colors) a.colors->toOutput(output.image, output.options);
     return output;
 }
 
-int runPostFx(const PostFxArgs& a) {
+int runPostFx(const PostFxArgs& args) {
+    PostFxArgs a = args;
+    if (a.color.enabled()) {
+        auto colors = ColorManagement::create(a.color);
+        if (!colors) return report(colors.error());
+        a.colors = *colors;
+    }
     if (!isFramePattern(a.in))
         return runImageJob(a.out, [&] { return runChain(a, a.in, a.out, a.layersDir); });
     if (a.repeat > 1) return report(invalidInput("--repeat: for one image, not a sequence"));
@@ -253,6 +264,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxArgs>(cmd, kPostFxArgParams, *args);
     addShotOptions(cmd, args->shot);
+    addColorOptions(cmd, args->color);
     cmd->callback([args, &exitCode] { exitCode = runPostFx(*args); });
 }
 
