@@ -11,6 +11,7 @@
 #include "flarekit/Flare.h"
 #include "flarekit/Image.h"
 #include "flarekit/Result.h"
+#include "flarekit/Scene.h"
 
 namespace flarekit {
 
@@ -69,6 +70,68 @@ Result<LightTrack> parseLightTrack(const std::string& text, const std::string& s
 Result<LightTrack> loadLightTrack(const std::string& path);
 //! The track as CSV, in the format parseLightTrack reads (--write-track).
 std::string lightTrackCsv(const LightTrack& track);
+
+//! A camera per frame (--camera): keys in the Scene JSON camera form, each with its "frame";
+//! position, look_at, up and fov_y_deg linear between keys, the end keys held outside them.
+struct CameraKey {
+    double frame = 0;
+    SceneCamera camera;
+};
+struct CameraTrack {
+    std::vector<CameraKey> keys;  //!< strictly ascending frames
+    SceneCamera at(double frame, bool* held = nullptr) const;
+};
+//! {"frames": [{"frame": 1001, "position": [...], "look_at": [...], ...}, ...]} or the array
+//! alone; every key checked as a scene's camera is ("cam.json: frames[2].fov_y_deg: ...").
+Result<CameraTrack> parseCameraTrack(const std::string& text, const std::string& source);
+Result<CameraTrack> loadCameraTrack(const std::string& path);
+//! Where a light projects in a width x height frame seen by `camera`: a point in the world
+//! (`isDirection` false) or a direction toward a distant light such as the sun (true). False
+//! when it is behind the camera.
+bool projectLight(const SceneCamera& camera, int width, int height, Vec3 light, bool isDirection,
+                  Point& pixel);
+
+//! --light auto over a sequence: one light followed from frame to frame. It follows the found
+//! light nearest where it is predicted (an alpha-beta filter on the luminance-weighted
+//! centroids: smooth, no lag at constant speed) and changes to another only when that one has
+//! carried more than `switchRatio` times the followed one's flux for `switchFrames` frames in a
+//! row, so a one-frame sparkle elsewhere, however bright, does not move it and two equal
+//! highlights do not trade it back and forth.
+struct TrackerParams {
+    //! Position gain: half the distance to each measurement, a quarter of a pixel of jitter
+    //! passed on per pixel of centroid noise.
+    double alpha = 0.5;
+    //! Velocity gain (the critically damped pair of alpha 0.5, beta = alpha^2 / (2 - alpha)).
+    double beta = 0.5 * 0.5 / 1.5;
+    double switchRatio = 2.0;
+    int switchFrames = 3;  //!< 0.125 s at 24 fps: longer than a glint, short for a real change
+    //! A measurement farther than this from the prediction is another light, in units of the
+    //! followed light's radius plus 4 px.
+    double gate = 3.0;
+};
+struct TrackedLight {
+    bool found = false;  //!< false before any light, or while the followed one is not seen
+    Point position;
+    double flux = 0;
+    float flareScale = 0;
+};
+class LightTracker {
+  public:
+    explicit LightTracker(const TrackerParams& params = {}) : m_params(params) {}
+    //! One frame: the light finder's candidates in it (LightSearch::candidates; only accepted
+    //! ones start or take over the track), `dt` frames since the previous update.
+    TrackedLight update(const std::vector<LightCandidate>& lights, double dt);
+
+  private:
+    TrackerParams m_params;
+    bool m_started = false;
+    Point m_position, m_velocity;
+    float m_radius = 0;
+    double m_flux = 0;
+    int m_challenged = 0;  //!< frames in a row a brighter light stood elsewhere
+    int m_measured = 0;    //!< sightings of the followed light so far
+    Point m_challenger;
+};
 
 //! What hides the light in a frame.
 struct Occluder {

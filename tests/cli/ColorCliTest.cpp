@@ -3,8 +3,8 @@
 // as they are, and the bad names and missing configs.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 
 #include "Cli.h"
 #include "flarekit/ImageIO.h"
@@ -21,9 +21,11 @@ constexpr double kToAp1[3][3] = {{0.6130974024, 0.3395231462, 0.0473794514},
 
 Image swatches() {
     Image img(4, 2);
-    const float values[8][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.18f, 0.18f, 0.18f},
-                                {2, 0.5f, 0.1f}, {0.01f, 0.2f, 0.7f}, {8, 8, 8}, {0, 0, 0}};
-    for (int i = 0; i < 8; ++i) img.at(i % 4, i / 4) = {values[i][0], values[i][1], values[i][2], 1};
+    const float values[8][3] = {
+        {1, 0, 0},       {0, 1, 0},           {0, 0, 1}, {0.18f, 0.18f, 0.18f},
+        {2, 0.5f, 0.1f}, {0.01f, 0.2f, 0.7f}, {8, 8, 8}, {0, 0, 0}};
+    for (int i = 0; i < 8; ++i)
+        img.at(i % 4, i / 4) = {values[i][0], values[i][1], values[i][2], 1};
     return img;
 }
 
@@ -56,15 +58,17 @@ TEST(ColorCli, AcescgInAndOutFollowTheConfigsMatrix) {
     expectAp1Of(swatches(), ap1->image);
     // In: ACEScg read back into the working space gives the swatches again.
     r = runCli({"apply", dir.file("ap1.exr"), "-o", dir.file("back.exr"), "--depth", "float",
-                "--light", "1,1", "--intensity", "0", "--colorspace-in", "acescg",
-                "--ocio-config", kConfig});
+                "--light", "1,1", "--intensity", "0", "--colorspace-in", "acescg", "--ocio-config",
+                kConfig});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto back = readImage(dir.file("back.exr"));
     const Image original = swatches();
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 4; ++x) {
-            EXPECT_NEAR(back->image.at(x, y).r, original.at(x, y).r, 1e-5 * (1 + original.at(x, y).r));
-            EXPECT_NEAR(back->image.at(x, y).b, original.at(x, y).b, 1e-5 * (1 + original.at(x, y).b));
+            EXPECT_NEAR(back->image.at(x, y).r, original.at(x, y).r,
+                        1e-5 * (1 + original.at(x, y).r));
+            EXPECT_NEAR(back->image.at(x, y).b, original.at(x, y).b,
+                        1e-5 * (1 + original.at(x, y).b));
         }
 }
 
@@ -109,8 +113,8 @@ TEST(ColorCli, UnknownNamesListTheConfigsSpacesAndAMissingConfigIsNamed) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("it has: lin_rec709, srgb, acescg, raw"), std::string::npos) << r.err;
-    r = runCli({"postfx", png, "-o", dir.file("x.png"), "--colorspace-out", "srgb",
-                "--ocio-config", dir.file("none.ocio")});
+    r = runCli({"postfx", png, "-o", dir.file("x.png"), "--colorspace-out", "srgb", "--ocio-config",
+                dir.file("none.ocio")});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("not a usable OpenColorIO config"), std::string::npos) << r.err;

@@ -182,3 +182,50 @@ TEST(DiscVisibility, DepthHidesWhereNearerThanTheLight) {
     Occluder far{0, 2.f};  // the light in front of everything
     EXPECT_EQ(discVisibility(depth, far, {32, 32}, 12), 1.0);
 }
+
+namespace {
+LightCandidate lightAt(float x, float y, double flux, float radius = 4) {
+    LightCandidate c;
+    c.position = {x, y};
+    c.flux = flux;
+    c.radius = radius;
+    c.flareScale = float(flux / 1000);
+    c.accepted = true;
+    return c;
+}
+}  // namespace
+
+TEST(LightTracker, AFortyTimesSparkleElsewhereDoesNotMoveIt) {
+    LightTracker tracker;
+    double worst = 0;
+    for (int f = 0; f < 40; ++f) {
+        // The sun moves 3 px a frame; at frame 20 a glint 40x its flux appears for one frame.
+        const float x = 100 + 3.f * float(f), y = 50 + float(f);
+        std::vector<LightCandidate> lights{lightAt(x, y, 1000)};
+        if (f == 20) lights.push_back(lightAt(20, 150, 40000, 2));
+        const TrackedLight t = tracker.update(lights, f == 0 ? 0 : 1);
+        ASSERT_TRUE(t.found);
+        worst = std::max(worst, double(std::hypot(t.position.x - x, t.position.y - y)));
+    }
+    EXPECT_LT(worst, 1e-3);  // on the moving light from the start, the glint ignored
+}
+
+TEST(LightTracker, EqualHighlightsDoNotTradeTheLightAndALastingBrighterOneTakesIt) {
+    LightTracker tracker;
+    for (int f = 0; f < 30; ++f) {
+        // Two highlights of nearly equal flux, each brighter every other frame.
+        const double a = f % 2 ? 1000 : 1100, b = f % 2 ? 1150 : 1000;
+        const TrackedLight t = tracker.update({lightAt(60, 60, a), lightAt(200, 60, b)}, 1);
+        EXPECT_FLOAT_EQ(t.position.x, 60.f) << "frame " << f;
+    }
+    // A light three times as bright appears and stays: followed from its third frame on.
+    for (int f = 0; f < 5; ++f) {
+        const TrackedLight t = tracker.update({lightAt(60, 60, 1000), lightAt(300, 90, 3000)}, 1);
+        EXPECT_FLOAT_EQ(t.position.x, f < 2 ? 60.f : 300.f) << "frame " << f;
+    }
+    // The followed light hidden for a frame: no light that frame, the same one after.
+    EXPECT_FALSE(tracker.update({lightAt(60, 60, 1000)}, 1).found);
+    const TrackedLight back = tracker.update({lightAt(60, 60, 1000), lightAt(300, 90, 3000)}, 1);
+    EXPECT_TRUE(back.found);
+    EXPECT_NEAR(back.position.x, 300.f, 1.0);
+}

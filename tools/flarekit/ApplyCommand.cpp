@@ -1,8 +1,10 @@
 // flarekit apply: composite a preset's sprite flare onto an image, in linear light.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <utility>
 #include <vector>
@@ -12,7 +14,9 @@
 #include "ParamOptions.h"
 #include "ShotCoverage.h"
 #include "ShotRun.h"
+#include "ShotTracking.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/Temporal.h"
 #include "flarekit/Tonemap.h"
 
 namespace flarekit::cli {
@@ -24,7 +28,7 @@ struct ApplyArgs {
     float intensity = 1.f, exposure = 1.f;
     LightSearchOptions lightSearch;
     bool verbose = false;
-    std::string lightTrack, layersDir;
+    std::string lightTrack, layersDir, writeTrack, camera, lightWorld, sunDir;
     bool flareOnly = false;
     ShotArgs shot;
     OcclusionArgs occlusion;
@@ -196,8 +200,119 @@ int runApplyImage(const ApplyArgs& a, const std::optional<Point>& fixed) {
     });
 }
 
-//! A frame pattern: every frame of the range, the light fixed, tracked or found per frame, its
-//! coverage filtered over the shot and written to coverage.csv.
+//! Where a shot's light is per frame and how strong, from whichever source was given: a fixed
+//! point, a track, a camera with a light in the world (or the sun's direction), or the light
+//! the finder follows (--light auto).
+struct ShotLight {
+    std::optional<Point> fixed;
+    std::optional<LightTrack> track;
+    std::optional<CameraTrack> camera;
+    Vec3 world;
+    bool sun = false;
+    double guardBand = 0.08;
+    std::optional<ShotTracking> tracking;
+    const ShotPlan* plan = nullptr;
+
+    Point position(int frame, const Image* image = nullptr) {
+        if (fixed) return *fixed;
+        if (track) return track->at(frame).position;
+        if (camera) {
+            Point p;
+            projectLight(camera->at(frame), plan->width, plan->height, world, sun, p);
+            return p;
+        }
+        auto t = tracking->at(frame, image);
+        return t ? t->position : Point{};
+    }
+    //! The intensity multiplier: the track's, the edge fade of a projected light, the followed
+    //! light's flare scale. `present` false: no light this frame (behind the camera, or the
+    //! followed light not seen).
+    struct Weight {
+        float weight = 1;
+        bool present = true;
+    };
+    Result<Weight> weight(int frame, const Image& image) {
+        if (track) return Weight{track->at(frame).intensity, true};
+        if (camera) {
+            Point p;
+            if (!projectLight(camera->at(frame), plan->width, plan->height, world, sun, p))
+                return Weight{0, false};
+            return Weight{float(edgeFade(p, plan->width, plan->height, guardBand)), true};
+        }
+        if (tracking) {
+            auto t = tracking->at(frame, &image);
+            if (!t) return t.error();
+            return Weight{t->found ? t->flareScale : 0.f, t->found};
+        }
+        return Weight{};
+    }
+};
+
+std::optional<Vec3> parseVec3(const std::string& text) {
+    double v[3];
+    char end = 0;
+    if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &end) != 3)
+        return std::nullopt;
+    for (double c : v)
+        if (!std::isfinite(c)) return std::nullopt;
+    return Vec3{v[0], v[1], v[2]};
+}
+
+//! The light sources given for a shot, loaded and checked before any frame.
+Status loadShotLight(const ApplyArgs& a, const std::optional<Point>& fixed, const ShotPlan& plan,
+                     ShotLight& light) {
+    light.plan = &plan;
+    light.fixed = fixed;
+    light.guardBand = a.occlusion.temporal.guardBand;
+    auto warnHeld = [&](const std::string& file, const std::vector<int>& held, double first,
+                        double last) {
+        if (held.empty()) return;
+        char range[80];
+        std::snprintf(range, sizeof range, " are outside the keys (%g to %g): ", first, last);
+        warn(file + ": frames " + describeFrames(held) + range + "the end keys are held");
+    };
+    if (!a.lightTrack.empty()) {
+        auto loaded = loadLightTrack(a.lightTrack);
+        if (!loaded) return loaded.error();
+        light.track = std::move(*loaded);
+        std::vector<int> held;
+        for (int f : plan.frames)
+            if (light.track->at(f).held) held.push_back(f);
+        warnHeld(a.lightTrack, held, light.track->keys.front().frame,
+                 light.track->keys.back().frame);
+    } else if (!a.camera.empty()) {
+        const std::string& given = a.sunDir.empty() ? a.lightWorld : a.sunDir;
+        const auto v = parseVec3(given);
+        if (!v || (!a.sunDir.empty() && length(*v) <= 0))
+            return invalidInput(std::string(a.sunDir.empty() ? "--light-world" : "--sun-dir") +
+                                ": expected X,Y,Z (three finite numbers" +
+                                (a.sunDir.empty() ? "" : ", not all 0") + "), got '" + given + "'");
+        auto loaded = loadCameraTrack(a.camera);
+        if (!loaded) return loaded.error();
+        light.camera = std::move(*loaded);
+        light.world = a.sunDir.empty() ? *v : normalize(*v);
+        light.sun = !a.sunDir.empty();
+        std::vector<int> held;
+        for (int f : plan.frames) {
+            bool h = false;
+            light.camera->at(f, &h);
+            if (h) held.push_back(f);
+        }
+        warnHeld(a.camera, held, light.camera->keys.front().frame, light.camera->keys.back().frame);
+    } else if (!fixed) {
+        light.tracking.emplace(plan, a.lightSearch);
+    }
+    return Ok{};
+}
+
+//! "." + the frame's number as the input names it: the layers' and tracks' frame suffix.
+std::string frameSuffix(const ShotPlan& plan, const ShotFrame& f) {
+    return "." + f.in.substr(plan.in.prefix.size(),
+                             f.in.size() - plan.in.prefix.size() - plan.in.suffix.size());
+}
+
+//! A frame pattern: every frame of the range, the light fixed, tracked, projected or followed,
+//! its coverage filtered over the shot and written to coverage.csv.
 int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     std::vector<FramePattern> otherInputs;
     if (!a.occlusion.matte.empty()) {
@@ -210,32 +325,24 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     }
     auto plan = planShot(a.in, a.out, a.shot, otherInputs);
     if (!plan) return report(plan.error());
-    std::optional<LightTrack> track;
-    if (!a.lightTrack.empty()) {
-        auto loaded = loadLightTrack(a.lightTrack);
-        if (!loaded) return report(loaded.error());
-        track = std::move(*loaded);
-        std::vector<int> held;
-        for (int f : plan->frames)
-            if (track->at(f).held) held.push_back(f);
-        if (!held.empty())
-            warn(a.lightTrack + ": frames " + describeFrames(held) + " are outside the keys (" +
-                 std::to_string(track->keys.front().frame) + " to " +
-                 std::to_string(track->keys.back().frame) + "): the end keys are held");
-    }
-    const auto lightAt = [&](int frame) { return track ? track->at(frame).position : *fixed; };
-    std::optional<ShotCoverage> coverage;
-    if (a.occlusion.enabled()) coverage.emplace(a.occlusion, &*plan, "", lightAt);
-    std::mutex rowsMutex;
-    std::vector<CoverageRow> rows;
+    ShotLight light;
+    if (Status s = loadShotLight(a, fixed, *plan, light); !s) return report(s.error());
     auto parallel = framesInFlight(*plan, kApplyMemory, false);
     if (!parallel) return report(parallel.error());
+    std::optional<ShotCoverage> coverage;
+    if (a.occlusion.enabled())
+        coverage.emplace(a.occlusion, &*plan, "", [&](int f) { return light.position(f); });
+    std::mutex rowsMutex;
+    std::vector<CoverageRow> rows;
+    std::map<int, std::string> trackRows;
     const int code = runShot(*plan, "apply", *parallel, [&](const ShotFrame& f) {
         return applyFlare(
             a, f.in, f.out,
             [&](const Image& image) -> Result<Lights> {
-                if (!track && !fixed) return autoLights(a, f.in, image);
-                float intensity = a.intensity * (track ? track->at(f.frame).intensity : 1.f);
+                auto weight = light.weight(f.frame, image);
+                if (!weight) return weight.error();
+                float intensity = a.intensity * weight->weight;
+                const Point at = light.position(f.frame, &image);
                 if (coverage) {
                     auto row = coverage->at(f.frame, image);
                     if (!row) return row.error();
@@ -243,13 +350,24 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
                     std::lock_guard lock(rowsMutex);
                     rows.push_back(*row);
                 }
-                return Lights{{lightAt(f.frame), intensity}};
+                if (!a.writeTrack.empty() && weight->present) {
+                    char line[160];
+                    std::snprintf(line, sizeof line, "%d,%.9g,%.9g,%.9g", f.frame, double(at.x),
+                                  double(at.y), double(weight->weight));
+                    std::lock_guard lock(rowsMutex);
+                    trackRows[f.frame] = line;
+                }
+                return Lights{{at, intensity}};
             },
-            "." + f.in.substr(plan->in.prefix.size(),
-                              f.in.size() - plan->in.prefix.size() - plan->in.suffix.size()));
+            frameSuffix(*plan, f));
     });
-    if (code == kExitOk && coverage) {
+    if (code != kExitOk) return code;
+    if (coverage) {
         if (Status s = coverage->writeCsv(plan->outDir, rows); !s) return report(s.error());
+    }
+    if (!a.writeTrack.empty()) {
+        if (Status s = mergeCsvRows(a.writeTrack, "frame,x,y,intensity", trackRows); !s)
+            return report(s.error());
     }
     return code;
 }
@@ -266,13 +384,31 @@ int runApply(const ApplyArgs& args) {
     if (!autoLight && !fixed)
         return report(
             invalidInput("--light: expected X,Y in pixels or 'auto', got '" + a.light + "'"));
-    if (!a.lightTrack.empty() && fixed)
-        return report(invalidInput("--light and --light-track: give one of them"));
+    const int sources =
+        int(fixed.has_value()) + int(!a.lightTrack.empty()) + int(!a.camera.empty());
+    if (sources > 1)
+        return report(invalidInput("--light X,Y, --light-track and --camera: give one of them"));
+    if (!a.camera.empty() && a.lightWorld.empty() == a.sunDir.empty())
+        return report(
+            invalidInput("--camera needs the light: --light-world X,Y,Z (a point) or "
+                         "--sun-dir X,Y,Z (the direction toward the sun), one of them"));
+    if (a.camera.empty() && (!a.lightWorld.empty() || !a.sunDir.empty()))
+        return report(invalidInput("--light-world/--sun-dir need --camera FILE"));
     if (a.occlusion.enabled()) {
         if (Status s = checkOcclusionArgs(a.occlusion); !s) return report(s.error());
-        if (!fixed && a.lightTrack.empty())
-            return report(invalidInput("--matte/--matte-channel/--depth-channel need the light's " +
-                                       std::string("position: --light X,Y or --light-track FILE")));
+    }
+    if (!isFramePattern(a.in)) {
+        for (const auto& [given, option] :
+             {std::pair{a.lightTrack, "--light-track"}, std::pair{a.camera, "--camera"},
+              std::pair{a.writeTrack, "--write-track"}})
+            if (!given.empty())
+                return report(invalidInput(std::string(option) +
+                                           ": the input is one image, not a frame pattern "
+                                           "(shot.####.exr) whose frames it keys"));
+        if (a.occlusion.enabled() && !fixed)
+            return report(
+                invalidInput("--matte/--matte-channel/--depth-channel on one image "
+                             "need the light's position: --light X,Y"));
     }
     return isFramePattern(a.in) ? runApplyShot(a, fixed) : runApplyImage(a, fixed);
 }
@@ -317,6 +453,18 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--flare-only", args->flareOnly,
                   "write the flare alone over black (linear unless --tonemap names a curve), to "
                   "add or screen over the plate in the compositing package");
+    cmd->add_option("--write-track", args->writeTrack,
+                    "a sequence: save where the light was each frame (CSV frame,x,y,intensity, "
+                    "what --light-track reads), to edit and feed back; merged with the rows "
+                    "other chunks wrote");
+    cmd->add_option("--camera", args->camera,
+                    "a sequence: the camera per frame (JSON: {\"frames\": [{\"frame\": 1001, "
+                    "\"position\", \"look_at\", \"up\", \"fov_y_deg\"}, ...]}, a scene's "
+                    "camera form), with --light-world or --sun-dir: the light projected each "
+                    "frame; none behind the camera, faded over --guard-band at the frame's edge");
+    cmd->add_option("--light-world", args->lightWorld, "with --camera: the light's point X,Y,Z");
+    cmd->add_option("--sun-dir", args->sunDir,
+                    "with --camera: the direction X,Y,Z toward a distant light (the sun)");
     cmd->add_option("--light-track", args->lightTrack,
                     "the light per frame of a sequence: CSV (frame,x,y or frame,x,y,intensity; "
                     "pixels from the top-left, centres at +0.5) or JSON; linear between keys, the "

@@ -33,8 +33,9 @@ Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const Col
     if (path.empty())
         if (const char* env = std::getenv("OCIO")) path = env;
     if (path.empty())
-        return invalidInput("--colorspace-in/--colorspace-out need an OpenColorIO config: set "
-                            "$OCIO or --ocio-config (flarekit ships presets/ocio/flarekit.ocio)");
+        return invalidInput(
+            "--colorspace-in/--colorspace-out need an OpenColorIO config: set "
+            "$OCIO or --ocio-config (flarekit ships presets/ocio/flarekit.ocio)");
     OCIO::ConstConfigRcPtr config;
     try {
         OCIO::ClearAllCaches();
@@ -49,8 +50,8 @@ Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const Col
             names += std::string(i ? ", " : "") + config->getColorSpaceNameByIndex(i);
         return names;
     };
-    for (const auto& [option, name] : {std::pair{"--colorspace-in", args.in},
-                                       std::pair{"--colorspace-out", args.out}}) {
+    for (const auto& [option, name] :
+         {std::pair{"--colorspace-in", args.in}, std::pair{"--colorspace-out", args.out}}) {
         if (!name.empty() && !config->getColorSpace(name.c_str()))
             return invalidInput(std::string(option) + ": '" + name + "' is not a colour space of " +
                                 path + "; it has: " + known());
@@ -59,13 +60,11 @@ Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const Col
     cm->m_processors = std::make_unique<Processors>();
     try {
         if (!args.in.empty())
-            cm->m_processors->in =
-                config->getProcessor(args.in.c_str(), OCIO::ROLE_SCENE_LINEAR)
-                    ->getDefaultCPUProcessor();
+            cm->m_processors->in = config->getProcessor(args.in.c_str(), OCIO::ROLE_SCENE_LINEAR)
+                                       ->getDefaultCPUProcessor();
         if (!args.out.empty())
-            cm->m_processors->out =
-                config->getProcessor(OCIO::ROLE_SCENE_LINEAR, args.out.c_str())
-                    ->getDefaultCPUProcessor();
+            cm->m_processors->out = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, args.out.c_str())
+                                        ->getDefaultCPUProcessor();
     } catch (const std::exception& e) {
         return invalidInput(path + ": " + e.what());
     }

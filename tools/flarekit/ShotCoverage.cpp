@@ -44,7 +44,7 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args) {
                     "the light's disc in pixels: coverage is the mean visibility over it")
         ->check(CLI::Range(0.0, 10000.0))
         ->capture_default_str();
-    addParamOptions<TemporalParams>(cmd, std::span(kTemporalParams).first(2), args.temporal);
+    addParamOptions<TemporalParams>(cmd, std::span(kTemporalParams).first(3), args.temporal);
 }
 
 Status checkOcclusionArgs(const OcclusionArgs& a) {
@@ -141,22 +141,33 @@ Result<CoverageRow> ShotCoverage::at(int frame, const Image& image) {
     return row;
 }
 
-Status ShotCoverage::writeCsv(const std::string& dir, const std::vector<CoverageRow>& rows) const {
-    const std::string path = (std::filesystem::path(dir) / "coverage.csv").string();
+Status mergeCsvRows(const std::string& path, const std::string& header,
+                    const std::map<int, std::string>& rows) {
     // Chunks of one shot on a farm can finish at once: the merge is done under an exclusive
-    // lock on the output folder itself (no lock file to leave behind), so no chunk's rows are
-    // lost to another's rename.
+    // lock on the file's folder (no lock file to leave behind), so no chunk's rows are lost to
+    // another's rename.
+    std::string dir = std::filesystem::path(path).parent_path().string();
+    if (dir.empty()) dir = ".";
     const int lockFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (lockFd >= 0) ::flock(lockFd, LOCK_EX);
-    static constexpr const char* kHeader = "frame,x,y,coverage,filtered_coverage";
     std::map<int, std::string> lines;
     {
         std::ifstream in(path);
         std::string line;
-        if (std::getline(in, line) && line == kHeader)
+        if (std::getline(in, line) && line == header)
             while (std::getline(in, line))
                 if (!line.empty()) lines[std::atoi(line.c_str())] = line;
     }
+    for (const auto& [frame, line] : rows) lines[frame] = line;
+    std::string text = header + "\n";
+    for (const auto& [frame, line] : lines) text += line + "\n";
+    Status s = writeText(path, text);
+    if (lockFd >= 0) ::close(lockFd);  // releases the lock
+    return s;
+}
+
+Status ShotCoverage::writeCsv(const std::string& dir, const std::vector<CoverageRow>& rows) const {
+    std::map<int, std::string> lines;
     for (const CoverageRow& r : rows) {
         char line[200];
         // %.9g: floats written and read back are the same; 0.5 px is the pixel centre.
@@ -164,11 +175,8 @@ Status ShotCoverage::writeCsv(const std::string& dir, const std::vector<Coverage
                       double(r.position.y), r.raw, r.filtered);
         lines[r.frame] = line;
     }
-    std::string text = std::string(kHeader) + "\n";
-    for (const auto& [frame, line] : lines) text += line + "\n";
-    Status s = writeText(path, text);
-    if (lockFd >= 0) ::close(lockFd);  // releases the lock
-    return s;
+    return mergeCsvRows((std::filesystem::path(dir) / "coverage.csv").string(),
+                        "frame,x,y,coverage,filtered_coverage", lines);
 }
 
 }  // namespace flarekit::cli

@@ -31,6 +31,12 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args);
 //! The option combinations, checked before any work (a depth channel needs --light-depth, ...).
 Status checkOcclusionArgs(const OcclusionArgs& args);
 
+//! A per-frame CSV (coverage.csv, a written track): `rows` (by frame) merged into the rows the
+//! file already has under `header` (another chunk's), under a lock on its folder, written
+//! atomically.
+Status mergeCsvRows(const std::string& path, const std::string& header,
+                    const std::map<int, std::string>& rows);
+
 //! One row of coverage.csv.
 struct CoverageRow {
     int frame = 0;

@@ -1,0 +1,50 @@
+#include "ShotTracking.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flarekit::cli {
+
+ShotTracking::ShotTracking(const ShotPlan& plan, const LightSearchOptions& search)
+    : m_plan(plan), m_search(search), m_lookBack(int(std::ceil(0.5 * plan.fps))) {}
+
+Result<std::vector<LightCandidate>> ShotTracking::lightsIn(int frame, const Image* image) {
+    {
+        std::lock_guard lock(m_mutex);
+        if (auto it = m_lights.find(frame); it != m_lights.end()) return it->second;
+    }
+    std::optional<LoadedImage> loaded;
+    if (!image) {
+        auto read = readInputImage(m_plan.in.path(frame), {});
+        if (!read) return read.error();
+        loaded = std::move(*read);
+        image = &loaded->image;
+    }
+    std::vector<LightCandidate> lights = findLights(*image, m_search).candidates;
+    std::lock_guard lock(m_mutex);
+    m_lights[frame] = lights;
+    return lights;
+}
+
+Result<TrackedLight> ShotTracking::at(int frame, const Image* image) {
+    {
+        std::lock_guard lock(m_mutex);
+        if (auto it = m_tracked.find(frame); it != m_tracked.end()) return it->second;
+    }
+    const auto& shot = m_plan.shotFrames;
+    LightTracker tracker;
+    TrackedLight light;
+    std::optional<int> previous;
+    for (auto it = std::lower_bound(shot.begin(), shot.end(), frame - m_lookBack);
+         it != shot.end() && *it <= frame; ++it) {
+        auto lights = lightsIn(*it, *it == frame ? image : nullptr);
+        if (!lights) return lights.error();
+        light = tracker.update(*lights, previous ? double(*it - *previous) : 0.0);
+        previous = *it;
+    }
+    std::lock_guard lock(m_mutex);
+    m_tracked[frame] = light;
+    return light;
+}
+
+}  // namespace flarekit::cli
