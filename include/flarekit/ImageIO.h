@@ -2,6 +2,7 @@
 // OpenImageIO reads or writes through its module (loaded on first use).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,11 @@
 #include "flarekit/Result.h"
 
 namespace flarekit {
+
+//! What an EXR input holds beyond RGBA (its other channels, header attributes such as timeCode
+//! and camera data, data and display windows, compression, pixel type), kept by readImage so
+//! that writing the result to an EXR gives it back. Opaque outside the codecs.
+struct ExrExtras;
 
 struct LoadedImage {
     Image image;                //!< linear float RGBA
@@ -18,6 +24,8 @@ struct LoadedImage {
     std::size_t nonFinite = 0;  //!< NaN/Inf values replaced by 0
     int droppedChannels = 0;    //!< channels past the 4th, not kept
     bool halfExact = false;     //!< every value came from a half-float channel (an EXR's)
+    std::shared_ptr<const ExrExtras> exrExtras;  //!< an EXR's other channels and header
+    int extraChannels = 0;  //!< how many channels exrExtras carries (kept, not dropped)
 };
 
 //! What the job reading an image will need, per pixel of the image and in all, so that its peak
@@ -42,6 +50,10 @@ struct WriteOptions {
     //! Integer formats: sRGB-encode the linear values (true), or quantise them as they are
     //! (false: values an OCIO output transform has already encoded; no sRGB tag is written).
     bool srgbEncode = true;
+    //! An EXR output gets the input's other channels, attributes, windows, compression (unless
+    //! --exr-compression chose one) and, with format Auto, its pixel type. Ignored by other
+    //! formats and when the image is not the input's size.
+    std::shared_ptr<const ExrExtras> exrExtras;
 };
 
 //! The sample format writeImage will use for `path` (Auto resolved from the extension).
@@ -71,6 +83,9 @@ int pngCompression();
 //! default: lossless, fastest and smallest on photographs), pxr24, b44, b44a, dwaa, dwab (the
 //! last five lossy). InvalidInput for another name.
 Status setExrCompression(const std::string& name);
+//! Whether a compression was set by setExrCompression (chosen by the user): it then overrides
+//! the compression an EXR input passes to its output.
+bool exrCompressionChosen();
 //! The names setExrCompression accepts, in OpenEXR's order.
 std::vector<std::string> exrCompressionNames();
 std::string exrCompression();

@@ -18,6 +18,7 @@
 #include "core/Parallel.h"
 #include "core/SafeWrite.h"
 #include "core/codecs/Codecs.h"
+#include "core/codecs/ExrExtras.h"
 #include "core/codecs/OiioModule.h"
 #include "flarekit/Color.h"
 #include "flarekit/Limits.h"
@@ -33,6 +34,7 @@ namespace {
 std::atomic<int> g_pngCompression{codec::EncodeOptions{}.pngCompression};
 std::mutex g_exrMutex;
 std::string g_exrCompression = codec::EncodeOptions{}.exrCompression;
+bool g_exrCompressionChosen = false;
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -330,7 +332,12 @@ Status setExrCompression(const std::string& name) {
     }
     std::lock_guard lock(g_exrMutex);
     g_exrCompression = name;
+    g_exrCompressionChosen = true;
     return Ok{};
+}
+bool exrCompressionChosen() {
+    std::lock_guard lock(g_exrMutex);
+    return g_exrCompressionChosen;
 }
 std::string exrCompression() {
     std::lock_guard lock(g_exrMutex);
@@ -350,8 +357,10 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
             out.fileChannels = exr->header.channels;
             out.hasAlpha = exr->hasAlpha;
             out.wasFloat = true;
-            const int kept = (exr->grey ? 1 : 3) + (exr->hasAlpha ? 1 : 0);
-            out.droppedChannels = exr->header.channels - kept;
+            // Channels past RGBA are kept in exrExtras, not dropped: an EXR output gets them back.
+            out.exrExtras = exr->extras;
+            out.extraChannels = exr->extras ? int(exr->extras->channels.size()) : 0;
+            out.droppedChannels = 0;
             out.nonFinite = finishExr(exr->image, exr->grey);
             out.halfExact = exr->allHalf;  // a non-finite half became 0, itself a half
             out.image = std::move(exr->image);
@@ -510,7 +519,17 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     if (!writer) return writer.error();
     const bool alpha = options.alpha && writer->alpha;
     const int channels = alpha ? 4 : 3;
-    const SampleFormat format = resolveFormat(path, options.format);
+    // An EXR's own extras come back only to an EXR of the same size (its data window's).
+    const ExrExtras* extras = options.exrExtras.get();
+    if (extras) {
+        const Imath::Box2i w = extras->header.dataWindow();
+        if (writer->format != Format::Exr || long(w.max.x) - w.min.x + 1 != image.width() ||
+            long(w.max.y) - w.min.y + 1 != image.height())
+            extras = nullptr;
+    }
+    SampleFormat format = resolveFormat(path, options.format);
+    if (extras && options.format == SampleFormat::Auto)
+        format = extras->rgbHalf ? SampleFormat::Half : SampleFormat::Float;
     const bool isFloat = isFloatFormat(format);
     if (isFloat && !holdsFloatSamples(path)) {
         return invalidInput(path +
@@ -520,6 +539,8 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     codec::Samples s;
     s.width = image.width();
     s.height = image.height();
+    s.extras = extras;
+    s.chosenCompression = exrCompressionChosen();
     s.channels = channels;
     s.srgb = !isFloat && options.srgbEncode;
     const std::size_t pixels = image.pixelCount();

@@ -40,10 +40,10 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     // A brighter light elsewhere takes over only once it has stayed brighter (and in one place)
     // for switchFrames frames in a row; the followed light lost counts as outshone.
     const double reference = followed ? followed->flux : 0.0;
-    const LightCandidate* challenger = brightest && brightest != followed &&
-                                               brightest->flux > m_params.switchRatio * reference
-                                           ? brightest
-                                           : nullptr;
+    const LightCandidate* challenger =
+        brightest && brightest != followed && brightest->flux > m_params.switchRatio * reference
+            ? brightest
+            : nullptr;
     if (challenger) {
         const bool same = m_challenged > 0 && distance(challenger->position, m_challenger) <=
                                                   m_params.gate * (challenger->radius + 4.0);

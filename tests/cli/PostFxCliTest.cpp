@@ -92,10 +92,12 @@ TEST(PostFxCli, GreyAndGreyAlphaArePromoted) {
     }
 }
 
-TEST(PostFxCli, MoreThanFourChannelsIsAClearError) {
+TEST(PostFxCli, MoreThanFourChannelsOutsideAnExrIsAClearError) {
+    // An EXR's channels past RGBA pass through to an EXR output (ShotCli); other formats'
+    // cannot be written back, so the input is refused rather than silently losing them.
     TempDir dir;
-    const std::string in = dir.file("six.exr");
-    writeChannels(in, 6, true);
+    const std::string in = dir.file("six.tif");
+    writeChannels(in, 6, false);
     const std::size_t before = dir.entries();
     auto r = runCli({"postfx", in, "-o", dir.file("out.exr")});
     EXPECT_EQ(r.exitCode, 2);
@@ -105,17 +107,23 @@ TEST(PostFxCli, MoreThanFourChannelsIsAClearError) {
 }
 
 TEST(PostFxCli, ApplyTreatsMoreThanFourChannelsThePostFxWay) {
-    // One behaviour for one situation: apply used to drop channels 5+ with a warning (the
-    // output then silently lost them); now both subcommands refuse in the same one line.
+    // One behaviour for one situation: both subcommands refuse a non-EXR in the same one line,
+    // and both pass an EXR's extra channels through.
     TempDir dir;
-    const std::string in = dir.file("six.exr");
-    writeChannels(in, 6, true);
+    const std::string in = dir.file("six.tif");
+    writeChannels(in, 6, false);
     const std::size_t before = dir.entries();
     auto apply = runCli({"apply", in, "-o", dir.file("out.exr")});
     auto postfx = runCli({"postfx", in, "-o", dir.file("out.exr")});
     EXPECT_EQ(apply.exitCode, 2);
     EXPECT_EQ(apply.err, postfx.err);
     EXPECT_EQ(dir.entries(), before);
+    const std::string exr = dir.file("six.exr");
+    writeChannels(exr, 6, true);
+    ASSERT_EQ(runCli({"apply", exr, "-o", dir.file("a.exr")}).exitCode, 0);
+    ASSERT_EQ(runCli({"postfx", exr, "-o", dir.file("p.exr")}).exitCode, 0);
+    EXPECT_EQ(channelsOf(dir.file("a.exr")), 6);
+    EXPECT_EQ(channelsOf(dir.file("p.exr")), 6);
 }
 
 TEST(PostFxCli, BadInputExitsTwoWithOneLineAndWritesNothing) {

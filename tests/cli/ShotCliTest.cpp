@@ -2,7 +2,15 @@
 // across it) whose covered share is known per frame in closed form; coverage.csv against it and
 // the filter against an independent exponential smoother; frames bit-identical however the range
 // is chunked; sequence frames equal to single-image calls; every bad input of a shot.
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfTimeCodeAttribute.h>
 #include <gtest/gtest.h>
+#include <half.h>
 
 #include <cmath>
 #include <filesystem>
@@ -413,4 +421,85 @@ TEST(ShotCli, ACameraProjectsTheSunEachFrameAndNoneBehindIt) {
     // A behind-the-camera frame is the input, unflared.
     auto o4 = readImage(out.file("o.0004.exr")), i4 = readImage(in.file("in.0004.exr"));
     EXPECT_EQ(o4->image.at(80, 45).g, i4->image.at(80, 45).g);
+}
+
+TEST(ShotCli, AnExrPlatesChannelsAttributesWindowsAndCompressionPassThrough) {
+    TempDir dir;
+    // A plate with a data window inside a larger display window, two channels past RGBA (a
+    // float depth and a half matte), a timecode, a custom attribute, ZIP and float colour.
+    const Imath::Box2i display({0, 0}, {99, 59}), data({10, 5}, {89, 54});
+    const int w = 80, h = 50;
+    std::vector<float> rgba(std::size_t(w * h * 4), 0.2f), depth(std::size_t(w * h));
+    std::vector<half> matte(std::size_t(w * h));
+    for (int i = 0; i < w * h; ++i) {
+        depth[std::size_t(i)] = 100.f + float(i);
+        matte[std::size_t(i)] = half(float(i % 7) / 7.f);
+        rgba[std::size_t(i) * 4 + 3] = 1.f;
+    }
+    rgba[std::size_t(20 * w + 40) * 4] = 500.f;  // a light for postfx to flare
+    {
+        Imf::Header header(display, data, 1.f, Imath::V2f(0, 0), 1.f, Imf::INCREASING_Y,
+                           Imf::ZIP_COMPRESSION);
+        header.insert("timeCode", Imf::TimeCodeAttribute(Imf::TimeCode(1, 2, 3, 4)));
+        header.insert("studio/shot", Imf::StringAttribute("sh010"));
+        Imf::FrameBuffer fb;
+        const char* names[] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+            fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgba.data() + c, data,
+                                                 4 * sizeof(float), 4 * sizeof(float) * w));
+        }
+        header.channels().insert("depth.Z", Imf::Channel(Imf::FLOAT));
+        fb.insert("depth.Z", Imf::Slice::Make(Imf::FLOAT, depth.data(), data, sizeof(float),
+                                              sizeof(float) * w));
+        header.channels().insert("matte.A", Imf::Channel(Imf::HALF));
+        fb.insert("matte.A",
+                  Imf::Slice::Make(Imf::HALF, matte.data(), data, sizeof(half), sizeof(half) * w));
+        Imf::OutputFile file(dir.file("plate.1001.exr").c_str(), header);
+        file.setFrameBuffer(fb);
+        file.writePixels(h);
+    }
+    for (const char* job : {"apply", "postfx"}) {
+        const std::string out = dir.file(std::string(job) + ".####.exr");
+        const CliResult r =
+            job == std::string("apply")
+                ? runCli({job, dir.file("plate.####.exr"), "-o", out, "--light", "40.5,20.5"})
+                : runCli({job, dir.file("plate.####.exr"), "-o", out});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        Imf::InputFile file(dir.file(std::string(job) + ".1001.exr").c_str());
+        const Imf::Header& header = file.header();
+        EXPECT_EQ(header.displayWindow(), display) << job;
+        EXPECT_EQ(header.dataWindow(), data) << job;
+        EXPECT_EQ(header.compression(), Imf::ZIP_COMPRESSION) << job;
+        EXPECT_EQ(header.channels().findChannel("R")->type, Imf::FLOAT) << job;
+        ASSERT_NE(header.findTypedAttribute<Imf::TimeCodeAttribute>("timeCode"), nullptr) << job;
+        EXPECT_EQ(header.typedAttribute<Imf::TimeCodeAttribute>("timeCode").value().frame(), 4);
+        ASSERT_NE(header.findTypedAttribute<Imf::StringAttribute>("studio/shot"), nullptr) << job;
+        EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("studio/shot").value(), "sh010");
+        ASSERT_NE(header.channels().findChannel("depth.Z"), nullptr) << job;
+        EXPECT_EQ(header.channels().findChannel("matte.A")->type, Imf::HALF) << job;
+        std::vector<float> z(std::size_t(w * h));
+        std::vector<half> m(std::size_t(w * h));
+        std::vector<float> red(std::size_t(w * h));
+        Imf::FrameBuffer fb;
+        fb.insert("depth.Z",
+                  Imf::Slice::Make(Imf::FLOAT, z.data(), data, sizeof(float), sizeof(float) * w));
+        fb.insert("matte.A",
+                  Imf::Slice::Make(Imf::HALF, m.data(), data, sizeof(half), sizeof(half) * w));
+        fb.insert("R",
+                  Imf::Slice::Make(Imf::FLOAT, red.data(), data, sizeof(float), sizeof(float) * w));
+        file.setFrameBuffer(fb);
+        file.readPixels(data.min.y, data.max.y);
+        EXPECT_EQ(z, depth) << job;
+        for (std::size_t i = 0; i < m.size(); ++i) ASSERT_EQ(float(m[i]), float(matte[i])) << job;
+        double added = 0;
+        for (std::size_t i = 0; i < red.size(); ++i) added += red[i] - rgba[i * 4];
+        EXPECT_GT(added, 1.0) << job << ": the flare is in the colour channels";
+    }
+    // A chosen compression overrides the plate's.
+    const CliResult r = runCli({"postfx", dir.file("plate.1001.exr"), "-o", dir.file("piz.exr"),
+                                "--exr-compression", "piz"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(Imf::InputFile(dir.file("piz.exr").c_str()).header().compression(),
+              Imf::PIZ_COMPRESSION);
 }

@@ -159,7 +159,7 @@ TEST(Codec, WritesReadBackExactlyThroughOpenImageIo) {
           Case{"e.exr", SampleFormat::Half, true}, Case{"f.exr", SampleFormat::Float, false},
           Case{"g.bmp", SampleFormat::U8, false}}) {
         const std::string path = dir.file(c.name);
-        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha}).ok()) << c.name;
+        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha, true, nullptr}).ok()) << c.name;
         auto in = openStraight(path);
         ASSERT_TRUE(in) << c.name;
         const int channels = c.alpha ? 4 : 3;

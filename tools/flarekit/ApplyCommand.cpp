@@ -172,6 +172,9 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const 
     ImageOutput result{std::move(image), {}};
     result.options.alpha = loaded->hasAlpha;
     result.options.format = depth;
+    // An EXR plate's other channels, attributes and windows go on to an EXR output (not to the
+    // flare alone, which is not the plate).
+    if (!a.flareOnly) result.options.exrExtras = keptExtras(*loaded, in, out);
     if (a.colors) a.colors->toOutput(result.image, result.options);
     return result;
 }

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -237,6 +238,17 @@ Result<LoadedImage> readInputImage(const std::string& path, const JobMemory& job
     if (loaded->nonFinite > 0)
         warn(path + ": " + std::to_string(loaded->nonFinite) + " NaN/Inf values replaced by 0");
     return loaded;
+}
+
+std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
+                                            const std::string& out) {
+    if (!loaded.exrExtras) return nullptr;
+    std::string ext = std::filesystem::path(out).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".exr" && loaded.extraChannels > 0)
+        warn(in + ": its " + std::to_string(loaded.extraChannels) +
+             " channel(s) past RGBA go only to an EXR output, not to " + out);
+    return loaded.exrExtras;
 }
 
 Status makeOutputDirectory(const std::string& dir) {

@@ -92,6 +92,11 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 //! `job` is the subcommand's memory per input pixel, checked against the budget from the header.
 Result<LoadedImage> readInputImage(const std::string& path, const JobMemory& job);
 
+//! An EXR input's extras (other channels, attributes, windows) for writing `out`: all of it to
+//! an EXR; to another format a warning that its channels past RGBA are not written there.
+std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
+                                            const std::string& out);
+
 //! Creates `dir` (and its parents) for a subcommand's outputs; a one-line error if it cannot.
 Status makeOutputDirectory(const std::string& dir);
 

@@ -187,6 +187,7 @@ Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const s
     }
     ImageOutput output{std::move(result->final), {}};
     output.options.alpha = loaded->hasAlpha;
+    output.options.exrExtras = keptExtras(*loaded, in, out);
     if (a.colors) a.colors->toOutput(output.image, output.options);
     return output;
 }

@@ -60,11 +60,14 @@ int main(int argc, char** argv) {
                    "taking 10x as long to compress (2.4 s against 0.23 s on 2 cores)")
         ->check(CLI::Range(0, 9));
     std::string exrCompression = flarekit::exrCompression();
-    app.add_option("--exr-compression", exrCompression,
-                   "compression of the EXRs written: piz (default; lossless, and on an "
-                   "8-megapixel photograph 3x as fast as zip and 13% smaller), zip, zips, rle, "
-                   "none, or lossy pxr24, b44, b44a, dwaa, dwab")
-        ->check(CLI::IsMember(flarekit::exrCompressionNames()));
+    CLI::Option* exrOption =
+        app.add_option(
+               "--exr-compression", exrCompression,
+               "compression of the EXRs written: piz (default; lossless, and on an 8-megapixel "
+               "photograph 3x as fast as zip and 13% smaller), zip, zips, rle, none, or lossy "
+               "pxr24, "
+               "b44, b44a, dwaa, dwab; an EXR input's own compression is kept unless this is given")
+            ->check(CLI::IsMember(flarekit::exrCompressionNames()));
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);
@@ -82,8 +85,10 @@ int main(int argc, char** argv) {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)
             throw CLI::ValidationError(s.error().message);
         flarekit::setPngCompression(pngLevel);
-        if (flarekit::Status s = flarekit::setExrCompression(exrCompression); !s)
-            throw CLI::ValidationError(s.error().message);
+        if (exrOption->count() > 0) {
+            if (flarekit::Status s = flarekit::setExrCompression(exrCompression); !s)
+                throw CLI::ValidationError(s.error().message);
+        }
     });
     flarekit::installInterruptHandlers();
     try {

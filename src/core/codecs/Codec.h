@@ -12,6 +12,10 @@
 
 #include "flarekit/Result.h"
 
+namespace flarekit {
+struct ExrExtras;
+}
+
 namespace flarekit::codec {
 
 enum class SampleType { U8, U16, F32 };
@@ -59,6 +63,9 @@ struct Samples {
     bool srgb = false;  //!< integer samples are sRGB-encoded (tagged so where the format can)
     const void* data = nullptr;
     std::size_t pixelStride = 0;  //!< bytes from one pixel to the next; 0 = packed
+    //! EXR: the input's header and other channels to write back (its size is this image's).
+    const ExrExtras* extras = nullptr;
+    bool chosenCompression = false;  //!< the EXR compression was chosen: it overrides the input's
 };
 
 struct EncodeOptions {

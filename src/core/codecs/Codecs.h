@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,8 @@ struct ExrRead {
     Image image;
     bool hasAlpha = false;
     bool grey = false;
-    bool allHalf = false;  //!< every channel read was stored as half floats
+    bool allHalf = false;                     //!< every channel read was stored as half floats
+    std::shared_ptr<const ExrExtras> extras;  //!< the header and the other channels
 };
 Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check);
 

@@ -15,12 +15,14 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
 
 #include "core/FirstLine.h"
 #include "core/codecs/Codecs.h"
+#include "core/codecs/ExrExtras.h"
 
 namespace flarekit::codec {
 
@@ -93,6 +95,27 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
             slice("Y", 0, 0.0);
         }
         slice("A", 3, 1.0);
+        // Every other channel is read too, in its own type, for the write to give back.
+        auto extras = std::make_shared<ExrExtras>();
+        extras->header = header;
+        const Imf::Channel* red = channels.findChannel(rgb ? "R" : "Y");
+        extras->rgbHalf = red && red->type == Imf::HALF;
+        const std::vector<std::string> read =
+            rgb ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"Y", "A"};
+        for (auto c = channels.begin(); c != channels.end(); ++c) {
+            if (std::find(read.begin(), read.end(), c.name()) != read.end()) continue;
+            const std::size_t size = c.channel().type == Imf::HALF ? 2 : 4;
+            ExrExtraChannel extra{c.name(), c.channel(), {}};
+            extra.pixels.resize(size * std::size_t(out.header.width) *
+                                std::size_t(out.header.height));
+            extras->channels.push_back(std::move(extra));
+        }
+        for (ExrExtraChannel& e : extras->channels) {
+            const std::size_t size = e.channel.type == Imf::HALF ? 2 : 4;
+            frame.insert(e.name, Imf::Slice::Make(e.channel.type, e.pixels.data(), window, size,
+                                                  size * std::size_t(out.header.width)));
+        }
+        out.extras = std::move(extras);
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
         return out;
@@ -151,10 +174,41 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
                          [&](const auto& c) { return options.exrCompression == c.first; });
         if (named == std::end(kExrCompressions))
             return internalError("unknown EXR compression '" + options.exrCompression + "'");
-        const Imf::Compression compression = named->second;
+        Imf::Compression compression = named->second;
         Imf::Header header(s.width, s.height, 1.f, Imath::V2f(0, 0), 1.f, Imf::INCREASING_Y,
                            compression);
+        const ExrExtras* extras = s.extras;
+        if (extras) {
+            // The input's header, less what the written file decides itself: its windows,
+            // attributes and (unless one was chosen) compression.
+            const Imf::Header& in = extras->header;
+            if (!s.chosenCompression) compression = in.compression();
+            header = Imf::Header(in.displayWindow(), in.dataWindow(), in.pixelAspectRatio(),
+                                 in.screenWindowCenter(), in.screenWindowWidth(), Imf::INCREASING_Y,
+                                 compression);
+            static const char* const kStructural[] = {"channels",
+                                                      "compression",
+                                                      "dataWindow",
+                                                      "displayWindow",
+                                                      "lineOrder",
+                                                      "pixelAspectRatio",
+                                                      "screenWindowCenter",
+                                                      "screenWindowWidth",
+                                                      "tiles",
+                                                      "type",
+                                                      "chunkCount",
+                                                      "version",
+                                                      "maxSamplesPerPixel",
+                                                      "software"};
+            for (auto a = in.begin(); a != in.end(); ++a) {
+                if (std::find_if(std::begin(kStructural), std::end(kStructural),
+                                 [&](const char* k) { return std::strcmp(k, a.name()) == 0; }) ==
+                    std::end(kStructural))
+                    header.insert(a.name(), a.attribute());
+            }
+        }
         header.insert("software", Imf::StringAttribute("flarekit"));
+        const Imath::Box2i window = header.dataWindow();
         // OpenEXR's writer takes samples of the file's own type: half samples come packed
         // (converted by the caller), floats straight from the image with its stride.
         const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
@@ -166,10 +220,20 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
         Imf::FrameBuffer frame;
         for (int c = 0; c < s.channels; ++c) {
             header.channels().insert(names[c], Imf::Channel(type));
-            frame.insert(names[c], Imf::Slice(type,
-                                              const_cast<char*>(static_cast<const char*>(s.data)) +
-                                                  sample * std::size_t(c),
-                                              xStride, yStride));
+            frame.insert(names[c],
+                         Imf::Slice::Make(type,
+                                          const_cast<char*>(static_cast<const char*>(s.data)) +
+                                              sample * std::size_t(c),
+                                          window, xStride, yStride));
+        }
+        if (extras) {
+            for (const ExrExtraChannel& e : extras->channels) {
+                const std::size_t size = e.channel.type == Imf::HALF ? 2 : 4;
+                header.channels().insert(e.name, e.channel);
+                frame.insert(e.name,
+                             Imf::Slice::Make(e.channel.type, const_cast<char*>(e.pixels.data()),
+                                              window, size, size * std::size_t(s.width)));
+            }
         }
         MemoryStream memory;
         {
