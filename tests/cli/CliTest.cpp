@@ -485,8 +485,11 @@ TEST(CliFormats, CompressionOptionsChooseTheEncoderAndRefuseBadValues) {
         return in ? std::string(in->spec().get_string_attribute("compression"))
                   : std::string("unreadable");
     };
+    // An EXR input's own compression is kept; any other input gets PIZ.
     ASSERT_EQ(runCli({"postfx", kSunsetHdr, "-o", dir.file("a.exr")}).exitCode, 0);
-    EXPECT_EQ(compressionOf(dir.file("a.exr")), "piz");
+    EXPECT_EQ(compressionOf(dir.file("a.exr")), compressionOf(kSunsetHdr));
+    ASSERT_EQ(runCli({"postfx", kSunset, "-o", dir.file("a2.exr")}).exitCode, 0);
+    EXPECT_EQ(compressionOf(dir.file("a2.exr")), "piz");
     ASSERT_EQ(runCli({"--exr-compression", "zip", "postfx", kSunsetHdr, "-o", dir.file("b.exr")})
                   .exitCode,
               0);

@@ -503,3 +503,18 @@ TEST(ShotCli, AnExrPlatesChannelsAttributesWindowsAndCompressionPassThrough) {
     EXPECT_EQ(Imf::InputFile(dir.file("piz.exr").c_str()).header().compression(),
               Imf::PIZ_COMPRESSION);
 }
+
+TEST(ShotCli, LensRenderTakesASequenceAndItsFramesEqualOneImageCalls) {
+    TempDir in, out;
+    writeShot(in, 3);
+    CliResult r = runCli({"lens", "render", "asahi-takumar-50", in.file("in.####.exr"), "-o",
+                          out.file("l.####.exr"), "--light", "100.5,45.5", "--ghosts", "4",
+                          "--layers", out.file("layers")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = runCli({"lens", "render", "asahi-takumar-50", in.file("in.0002.exr"), "-o",
+                out.file("single.exr"), "--light", "100.5,45.5", "--ghosts", "4"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(slurp(out.file("l.0002.exr")), slurp(out.file("single.exr")));
+    EXPECT_TRUE(fs::exists(out.file("layers/ghosts.0003.exr")));
+    EXPECT_TRUE(fs::exists(out.file("layers/flare.0001.exr")));
+}

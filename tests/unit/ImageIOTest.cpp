@@ -70,13 +70,20 @@ TEST(ImageIO, NonFiniteValuesAreReplacedAndCounted) {
     EXPECT_EQ(r->image.at(1, 0).b, 3.f);
 }
 
-TEST(ImageIO, ChannelsPastRgbaAreCountedNotRead) {
+TEST(ImageIO, AnExrsChannelsPastRgbaAreKeptForTheWriteOthersAreCounted) {
     TempDir dir;
     ASSERT_TRUE(test::writeRawFloat(dir.file("five.exr"), 1, 1, 5, {0.1f, 0.2f, 0.3f, 0.4f, 0.5f}));
     auto r = readImage(dir.file("five.exr"));
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r->fileChannels, 5);
-    EXPECT_EQ(r->droppedChannels, 1);
+    EXPECT_EQ(r->droppedChannels, 0);
+    EXPECT_EQ(r->extraChannels, 1);
+    ASSERT_TRUE(r->exrExtras);
+    ASSERT_TRUE(test::writeRawFloat(dir.file("five.tif"), 1, 1, 5, {0.1f, 0.2f, 0.3f, 0.4f, 0.5f}));
+    auto t = readImage(dir.file("five.tif"));
+    ASSERT_TRUE(t.ok());
+    EXPECT_EQ(t->droppedChannels, 1);
+    EXPECT_FALSE(t->exrExtras);
 }
 
 TEST(ImageIO, OversizedImagesAreRejectedBeforeAllocating) {

@@ -308,12 +308,6 @@ Status loadShotLight(const ApplyArgs& a, const std::optional<Point>& fixed, cons
     return Ok{};
 }
 
-//! "." + the frame's number as the input names it: the layers' and tracks' frame suffix.
-std::string frameSuffix(const ShotPlan& plan, const ShotFrame& f) {
-    return "." + f.in.substr(plan.in.prefix.size(),
-                             f.in.size() - plan.in.prefix.size() - plan.in.suffix.size());
-}
-
 //! A frame pattern: every frame of the range, the light fixed, tracked, projected or followed,
 //! its coverage filtered over the shot and written to coverage.csv.
 int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {

@@ -10,6 +10,7 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
+#include "ShotRun.h"
 #include "flarekit/Lens.h"
 #include "flarekit/Tonemap.h"
 #if FLAREKIT_HAS_GL
@@ -28,6 +29,7 @@ struct LensArgs {
     double fNumber = 0, threshold = 2.0, expandGain = 64.0;
     int maxSources = 32, bakeGhosts = 16, sheetWidth = 1600;
     LensRenderOptions render;
+    ShotArgs shot;
 };
 
 Result<Lens> openLens(const LensArgs& a) {
@@ -149,14 +151,16 @@ Result<LensFlareLayers> renderLayers(const LensArgs& a, const Lens& lens, const 
 #endif
 }
 
-Result<ImageOutput> renderJob(const LensArgs& a) {
+//! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
+Result<ImageOutput> renderJob(const LensArgs& a, const std::string& in, const std::string& out,
+                              const std::string& layerSuffix = "") {
 #if !FLAREKIT_HAS_GL
     // Before any work: a build without OpenGL says so at once.
     if (a.backend == "gl") return builtWithoutGl("lens render --backend gl");
 #endif
     auto lens = openLens(a);
     if (!lens) return lens.error();
-    auto loaded = readInputImage(a.in, lensRenderMemory());
+    auto loaded = readInputImage(in, lensRenderMemory());
     if (!loaded) return loaded.error();
     Image& image = loaded->image;
     // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
@@ -180,27 +184,38 @@ Result<ImageOutput> renderJob(const LensArgs& a) {
     if (!a.layersDir.empty()) {
         if (Status s = makeOutputDirectory(a.layersDir); !s) return s.error();
         const auto path = [&](const char* n) {
-            return (std::filesystem::path(a.layersDir) / n).string();
+            return (std::filesystem::path(a.layersDir) / (n + layerSuffix + ".exr")).string();
         };
         for (const auto& [name, img] :
-             {std::pair{"ghosts.exr", &layers->ghosts},
-              std::pair{"starburst.exr", &layers->starburst},
-              std::pair{"glare.exr", &layers->glare}, std::pair{"flare.exr", &flare}}) {
+             {std::pair{"ghosts", &layers->ghosts}, std::pair{"starburst", &layers->starburst},
+              std::pair{"glare", &layers->glare}, std::pair{"flare", &flare}}) {
             if (Status s = writeImage(path(name), *img); !s) return s.error();
         }
     }
-    Image out = image;
-    for (std::size_t i = 0; i < out.pixelCount(); ++i) {
-        for (int c = 0; c < 3; ++c) out.data()[4 * i + c] += flare.data()[4 * i + c];
+    Image composite = image;
+    for (std::size_t i = 0; i < composite.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c) composite.data()[4 * i + c] += flare.data()[4 * i + c];
     }
-    ToneOperator op = defaultDisplayCurve(loaded->wasFloat, a.out);
+    ToneOperator op = defaultDisplayCurve(loaded->wasFloat, out);
     if (const auto named = namedToneOperator(a.tonemap)) op = *named;
-    toneMapImage(out, op, 1.f);
-    ImageOutput result{std::move(out), {}};
+    toneMapImage(composite, op, 1.f);
+    ImageOutput result{std::move(composite), {}};
     result.options.alpha = loaded->hasAlpha;
-    std::printf("%s: %zu light(s), flare through %s (f = %.1f mm)\n", a.out.c_str(), lights->size(),
+    std::printf("%s: %zu light(s), flare through %s (f = %.1f mm)\n", out.c_str(), lights->size(),
                 lens->name.c_str(), paraxial(*lens).focalLength);
     return result;
+}
+
+//! One image, or every frame of a pattern (the layers then as DIR/ghosts.1001.exr, ...).
+int runRender(const LensArgs& a) {
+    if (!isFramePattern(a.in)) return runImageJob(a.out, [&] { return renderJob(a, a.in, a.out); });
+    auto plan = planShot(a.in, a.out, a.shot);
+    if (!plan) return report(plan.error());
+    auto parallel = framesInFlight(*plan, lensRenderMemory(), a.backend == "gl");
+    if (!parallel) return report(parallel.error());
+    return runShot(*plan, "lens render", *parallel, [&](const ShotFrame& f) {
+        return renderJob(a, f.in, f.out, frameSuffix(*plan, f));
+    });
 }
 
 int runBake(const LensArgs& a) {
@@ -286,7 +301,10 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     // lens's own figure for an unclipped source.
     args->render.ghostGain = 100;
     addLensOptions(render);
-    render->add_option("input", args->in, "input image (EXR kept linear; 8-bit files sRGB)")
+    render
+        ->add_option("input", args->in,
+                     "input image (EXR kept linear; 8-bit files sRGB), or a frame pattern "
+                     "(shot.####.exr) for a sequence")
         ->required();
     render->add_option("-o,--output", args->out, "output image")->required();
     render
@@ -324,8 +342,8 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     render->add_flag("-v,--verbose", args->verbose,
                      "--backend gl: print the GPU and read-back times");
     for (const auto& p : kLensRenderParams) addParamOption(render, p, args->render);
-    render->callback(
-        [args, &exitCode] { exitCode = runImageJob(args->out, [&] { return renderJob(*args); }); });
+    addShotOptions(render, args->shot);
+    render->callback([args, &exitCode] { exitCode = runRender(*args); });
 }
 
 }  // namespace flarekit::cli

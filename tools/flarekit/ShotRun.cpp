@@ -82,6 +82,11 @@ Result<ShotPlan> planShot(const std::string& in, const std::string& out, const S
     return plan;
 }
 
+std::string frameSuffix(const ShotPlan& plan, const ShotFrame& f) {
+    return "." + f.in.substr(plan.in.prefix.size(),
+                             f.in.size() - plan.in.prefix.size() - plan.in.suffix.size());
+}
+
 Result<int> framesInFlight(ShotPlan& plan, const JobMemory& perFrame, bool gl) {
     auto loaded = readInputImage(plan.in.path(plan.frames.front()), perFrame);
     if (!loaded) return loaded.error();

@@ -42,6 +42,10 @@ struct ShotFrame {
     std::string in, out;
 };
 
+//! "." + the frame's number as the input names it ("." + "1001"): the suffix of a frame's layer
+//! files, so that each layer is a sequence of its own.
+std::string frameSuffix(const ShotPlan& plan, const ShotFrame& frame);
+
 //! Renders every frame of the plan with `render`, `parallel` frames at a time (reading one
 //! while another renders and a third is written), a progress line per 10% (a bar on a
 //! terminal). On the first failure no further frame starts; those in flight finish. Returns the
