@@ -371,11 +371,9 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
 
 int runApply(const ApplyArgs& args) {
     ApplyArgs a = args;
-    if (a.color.enabled()) {
-        auto colors = ColorManagement::create(a.color);
-        if (!colors) return report(colors.error());
-        a.colors = *colors;
-    }
+    auto colors = ColorManagement::create(a.color);
+    if (!colors) return report(colors.error());
+    a.colors = *colors;
     const bool autoLight = a.light == "auto";
     const std::optional<Point> fixed = autoLight ? std::nullopt : parsePoint(a.light);
     if (!autoLight && !fixed)

@@ -29,6 +29,7 @@ void addColorOptions(CLI::App* cmd, ColorArgs& args) {
 }
 
 Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const ColorArgs& args) {
+    if (!args.enabled()) return std::shared_ptr<const ColorManagement>();
     std::string path = args.config;
     if (path.empty())
         if (const char* env = std::getenv("OCIO")) path = env;

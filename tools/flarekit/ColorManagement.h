@@ -26,7 +26,7 @@ void addColorOptions(CLI::App* cmd, ColorArgs& args);
 class ColorManagement {
   public:
     //! The config and both colour spaces checked: an unknown name is one line listing the
-    //! config's colour spaces.
+    //! config's colour spaces. Null when neither space is given (flarekit's defaults).
     static Result<std::shared_ptr<const ColorManagement>> create(const ColorArgs& args);
     //! A read image to the working space: `loaded` as decoded (an integer file's sRGB decode
     //! taken back first, so the file's own code values are converted).

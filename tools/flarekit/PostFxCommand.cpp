@@ -194,11 +194,9 @@ Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const s
 
 int runPostFx(const PostFxArgs& args) {
     PostFxArgs a = args;
-    if (a.color.enabled()) {
-        auto colors = ColorManagement::create(a.color);
-        if (!colors) return report(colors.error());
-        a.colors = *colors;
-    }
+    auto colors = ColorManagement::create(a.color);
+    if (!colors) return report(colors.error());
+    a.colors = *colors;
     if (!isFramePattern(a.in))
         return runImageJob(a.out, [&] { return runChain(a, a.in, a.out, a.layersDir); });
     if (a.repeat > 1) return report(invalidInput("--repeat: for one image, not a sequence"));
