@@ -92,11 +92,11 @@ bool projectLight(const SceneCamera& camera, int width, int height, Vec3 light, 
                   Point& pixel);
 
 //! --light auto over a sequence: one light followed from frame to frame. It follows the found
-//! light nearest where it is predicted (an alpha-beta filter on the luminance-weighted
-//! centroids: smooth, no lag at constant speed) and changes to another only when that one has
-//! carried more than `switchRatio` times the followed one's flux for `switchFrames` frames in a
-//! row, so a one-frame sparkle elsewhere, however bright, does not move it and two equal
-//! highlights do not trade it back and forth.
+//! light carrying the most flux within a gate around where it is predicted (an alpha-beta
+//! filter on the luminance-weighted centroids: smooth, no lag at constant speed) and changes to
+//! another only when that one has carried more than `switchRatio` times the followed one's flux for
+//! `switchFrames` frames in a row, so a one-frame sparkle elsewhere, however bright, does not move
+//! it and two equal highlights do not trade it back and forth.
 struct TrackerParams {
     //! Position gain: half the distance to each measurement, a quarter of a pixel of jitter
     //! passed on per pixel of centroid noise.

@@ -32,10 +32,12 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     const Point predicted{float(m_position.x + m_velocity.x * dt),
                           float(m_position.y + m_velocity.y * dt)};
     const double gate = m_params.gate * (double(m_radius) + 4.0);
+    // The followed light is the one carrying the most flux inside the gate: a sun's dim halo
+    // (its own candidate, often centred nearer the prediction) never takes it over.
     const LightCandidate* followed = nullptr;
     for (const LightCandidate& l : lights) {
-        const double d = distance(l.position, predicted);
-        if (d <= gate && (!followed || d < distance(followed->position, predicted))) followed = &l;
+        if (distance(l.position, predicted) <= gate && (!followed || l.flux > followed->flux))
+            followed = &l;
     }
     // A brighter light elsewhere takes over only once it has stayed brighter (and in one place)
     // for switchFrames frames in a row; the followed light lost counts as outshone.

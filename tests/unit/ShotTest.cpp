@@ -229,3 +229,18 @@ TEST(LightTracker, EqualHighlightsDoNotTradeTheLightAndALastingBrighterOneTakesI
     EXPECT_TRUE(back.found);
     EXPECT_NEAR(back.position.x, 300.f, 1.0);
 }
+
+TEST(LightTracker, ASunsOwnHaloNearerThePredictionDoesNotTakeItOver) {
+    // A real sun (as in the sunrise HDRI panned 8 px a frame): a small core of most of the flux
+    // and a wide dim halo candidate centred a few pixels behind it, nearer where a tracker that
+    // has not yet learnt the speed predicts the light.
+    LightTracker tracker;
+    for (int f = 0; f < 12; ++f) {
+        const float x = 356 - 8.f * float(f);
+        const TrackedLight t = tracker.update(
+            {lightAt(x, 133, 125000, 1.1f), lightAt(x + 4.5f, 134, 18000, 47)}, f == 0 ? 0 : 1);
+        ASSERT_TRUE(t.found);
+        EXPECT_NEAR(t.position.x, x, 1e-3) << "frame " << f;
+        EXPECT_EQ(t.flux, 125000) << "frame " << f;
+    }
+}

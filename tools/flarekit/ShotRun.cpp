@@ -187,8 +187,9 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
     std::fprintf(stderr,
                  "%s: %d frames in %.2f s, %.2f frames/s, %d at once; of the frames' time: read "
                  "%.0f%%, effect %.0f%%, write %.0f%%\n",
-                 label.c_str(), total, wall, total / std::max(wall, 1e-9), parallel,
-                 100 * read / busy, 100 * effect / busy, 100 * write / busy);
+                 label.c_str(), total, wall, total / std::max(wall, 1e-9),
+                 std::clamp(parallel, 1, total), 100 * read / busy, 100 * effect / busy,
+                 100 * write / busy);
     return kExitOk;
 }
 
