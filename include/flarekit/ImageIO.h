@@ -37,6 +37,12 @@ struct JobMemory {
     std::string detail;  //!< how the estimate is made, for the message ("apply: ...")
 };
 
+//! A channel of what `loaded` read by its name in the file: R, G, B and A from the image,
+//! any other an EXR carried (exrExtras: "Z", "depth.Z", "fg.A") converted to floats, row by
+//! row. An error names the file's channels when there is none of that name.
+Result<std::vector<float>> channelByName(const LoadedImage& loaded, const std::string& name,
+                                         const std::string& source);
+
 //! Reads any file flarekit's codecs or OpenImageIO know, by its first bytes. Sizes, the
 //! pixels-per-byte ratio and the job's memory are checked before pixels are allocated.
 Result<LoadedImage> readImage(const std::string& path, const JobMemory& job = {});

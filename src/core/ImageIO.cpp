@@ -12,6 +12,9 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <vector>
+
+#include <half.h>
 
 #include "core/FirstLine.h"
 #include "core/HalfFloat.h"
@@ -342,6 +345,48 @@ bool exrCompressionChosen() {
 std::string exrCompression() {
     std::lock_guard lock(g_exrMutex);
     return g_exrCompression;
+}
+
+Result<std::vector<float>> channelByName(const LoadedImage& loaded, const std::string& name,
+                                         const std::string& source) {
+    const Image& img = loaded.image;
+    std::vector<float> plane(img.pixelCount());
+    static constexpr const char* kRgba[] = {"R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c) {
+        if (name != kRgba[c]) continue;
+        for (std::size_t i = 0; i < plane.size(); ++i)
+            plane[i] = img.data()[4 * i + std::size_t(c)];
+        return plane;
+    }
+    std::string known = "R, G, B, A";
+    if (const ExrExtras* extras = loaded.exrExtras.get()) {
+        for (const ExrExtraChannel& e : extras->channels) {
+            known += ", " + e.name;
+            if (e.name != name) continue;
+            for (std::size_t i = 0; i < plane.size(); ++i) {
+                const char* p = e.pixels.data();
+                switch (e.channel.type) {
+                    case Imf::HALF: {
+                        half h;
+                        std::memcpy(&h, p + 2 * i, 2);
+                        plane[i] = float(h);
+                        break;
+                    }
+                    case Imf::FLOAT:
+                        std::memcpy(&plane[i], p + 4 * i, 4);
+                        break;
+                    default: {
+                        std::uint32_t u = 0;
+                        std::memcpy(&u, p + 4 * i, 4);
+                        plane[i] = float(u);
+                    }
+                }
+            }
+            return plane;
+        }
+    }
+    return invalidInput(source + ": no channel '" + excerpt(name, 60) +
+                        "' (it has: " + excerpt(known, 400) + ")");
 }
 
 Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {

@@ -256,7 +256,7 @@ TEST(ShotCli, EveryBadShotInputIsOneLineAndWritesNothing) {
          "--sun-dir: expected X,Y,Z"},
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "R"}, "needs --light-depth"},
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "Z", "--light-depth", "3"},
-         "split a depth channel"},
+         "no channel 'Z' (it has: R, G, B, A)"},
         {{"postfx", in.file("nothing.####.exr"), "-o", o}, "no frame of this pattern exists"},
         {{"postfx", seq, "-o", out.file("missing-dir/o.####.exr")}, "does not exist"},
     };
@@ -517,4 +517,61 @@ TEST(ShotCli, LensRenderTakesASequenceAndItsFramesEqualOneImageCalls) {
     EXPECT_EQ(slurp(out.file("l.0002.exr")), slurp(out.file("single.exr")));
     EXPECT_TRUE(fs::exists(out.file("layers/ghosts.0003.exr")));
     EXPECT_TRUE(fs::exists(out.file("layers/flare.0001.exr")));
+}
+
+TEST(ShotCli, ThePlatesOwnDepthAndMatteChannelsHideTheLightByName) {
+    // Frames whose EXR carries a depth (Z: 5 on the foreground left of the edge, 1000 behind)
+    // and a foreground matte (fg.A) beside the colour; the light at depth 100.
+    TempDir dir;
+    constexpr int frames = 6;
+    for (int f = 1; f <= frames; ++f) {
+        const Imath::Box2i window({0, 0}, {kW - 1, kH - 1});
+        std::vector<float> rgba(std::size_t(kW * kH * 4), 0.1f), z(std::size_t(kW * kH));
+        std::vector<half> fg(std::size_t(kW * kH));
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                const std::size_t i = std::size_t(y * kW + x);
+                const bool front = x < 88 + 4 * f;
+                z[i] = front ? 5.f : 1000.f;
+                fg[i] = half(front ? 1.f : 0.f);
+            }
+        Imf::Header header(kW, kH);
+        Imf::FrameBuffer fb;
+        const char* names[] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+            fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgba.data() + c, window,
+                                                 4 * sizeof(float), 4 * sizeof(float) * kW));
+        }
+        header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
+        fb.insert(
+            "Z", Imf::Slice::Make(Imf::FLOAT, z.data(), window, sizeof(float), sizeof(float) * kW));
+        header.channels().insert("fg.A", Imf::Channel(Imf::HALF));
+        fb.insert("fg.A",
+                  Imf::Slice::Make(Imf::HALF, fg.data(), window, sizeof(half), sizeof(half) * kW));
+        char name[32];
+        std::snprintf(name, sizeof name, "in.%04d.exr", f);
+        Imf::OutputFile file(dir.file(name).c_str(), header);
+        file.setFrameBuffer(fb);
+        file.writePixels(kH);
+    }
+    for (const std::vector<std::string>& how :
+         {std::vector<std::string>{"--depth-channel", "Z", "--light-depth", "100"},
+          std::vector<std::string>{"--matte-channel", "fg.A"}}) {
+        TempDir out;
+        const CliResult r =
+            runCli(with({"apply", dir.file("in.####.exr"), "-o", out.file("o.####.exr"), "--light",
+                         "100.5,45.5", "--light-radius", "6"},
+                        how));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const auto rows = readCoverage(out.file("coverage.csv"));
+        ASSERT_EQ(rows.size(), std::size_t(frames));
+        for (int f = 1; f <= frames; ++f)
+            EXPECT_NEAR(rows.at(f).raw, 1 - segmentShare(kLightX - (88 + 4 * f), kRadius), 0.01)
+                << how[0] << " frame " << f;
+        // The depth and the matte pass through to the output.
+        Imf::InputFile o(out.file("o.0001.exr").c_str());
+        EXPECT_NE(o.header().channels().findChannel("Z"), nullptr);
+        EXPECT_NE(o.header().channels().findChannel("fg.A"), nullptr);
+    }
 }

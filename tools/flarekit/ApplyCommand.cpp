@@ -85,7 +85,7 @@ void printCandidates(const LightSearch& search) {
 
 //! The lights of one frame, each a position and an intensity.
 using Lights = std::vector<std::pair<Point, float>>;
-using LightsOf = std::function<Result<Lights>(const Image&)>;
+using LightsOf = std::function<Result<Lights>(const LoadedImage&)>;
 
 //! Measured peak (12 MP, both depths): ~135 MiB of process plus ~43 bytes per pixel: the RGBA
 //! floats, the orientation copy, the encoded samples and the file bytes (plus the decode buffer,
@@ -129,7 +129,7 @@ Result<ImageOutput> applyFlare(const ApplyArgs& a, const std::string& in, const 
     if (!loaded) return loaded.error();
     if (a.colors) a.colors->toWorking(*loaded);
     Image& image = loaded->image;
-    auto flares = lightsOf(image);
+    auto flares = lightsOf(*loaded);
     if (!flares) return flares.error();
     if (Status s =
             checkFlareWork(*preset, image.width(), image.height(), int(flares->size()), a.preset);
@@ -189,11 +189,11 @@ int runApplyImage(const ApplyArgs& a, const std::optional<Point>& fixed) {
     if (a.occlusion.enabled())
         coverage.emplace(a.occlusion, nullptr, a.occlusion.matte, [&](int) { return *fixed; });
     return runImageJob(a.out, [&] {
-        return applyFlare(a, a.in, a.out, [&](const Image& image) -> Result<Lights> {
-            if (!fixed) return autoLights(a, a.in, image);
+        return applyFlare(a, a.in, a.out, [&](const LoadedImage& plate) -> Result<Lights> {
+            if (!fixed) return autoLights(a, a.in, plate.image);
             float intensity = a.intensity;
             if (coverage) {
-                auto row = coverage->at(0, image);
+                auto row = coverage->at(0, plate);
                 if (!row) return row.error();
                 intensity *= float(row->raw);
                 if (a.verbose) std::printf("coverage %.4f\n", row->raw);
@@ -335,13 +335,14 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     const int code = runShot(*plan, "apply", *parallel, [&](const ShotFrame& f) {
         return applyFlare(
             a, f.in, f.out,
-            [&](const Image& image) -> Result<Lights> {
+            [&](const LoadedImage& plate) -> Result<Lights> {
+                const Image& image = plate.image;
                 auto weight = light.weight(f.frame, image);
                 if (!weight) return weight.error();
                 float intensity = a.intensity * weight->weight;
                 const Point at = light.position(f.frame, &image);
                 if (coverage) {
-                    auto row = coverage->at(f.frame, image);
+                    auto row = coverage->at(f.frame, plate);
                     if (!row) return row.error();
                     intensity *= float(row->filtered);
                     std::lock_guard lock(rowsMutex);

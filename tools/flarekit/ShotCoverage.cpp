@@ -15,14 +15,6 @@
 namespace flarekit::cli {
 
 namespace {
-std::optional<int> channelIndex(const std::string& name) {
-    if (name == "R" || name == "r") return 0;
-    if (name == "G" || name == "g") return 1;
-    if (name == "B" || name == "b") return 2;
-    if (name == "A" || name == "a") return 3;
-    return std::nullopt;
-}
-
 //! The ln(1e4) time constants after which a step's weight is under 1e-4 of a value.
 constexpr double kLookBackDecays = 9.2103403719761836;
 }  // namespace
@@ -33,11 +25,11 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args) {
                     "light; its alpha, or its red channel when it has none (--matte-channel "
                     "picks); with --depth-channel, the depth pass");
     cmd->add_option("--matte-channel", args.matteChannel,
-                    "R, G, B or A: the matte's channel (of --matte, else of the input itself)")
-        ->check(CLI::IsMember({"R", "G", "B", "A", "r", "g", "b", "a"}));
+                    "the matte's channel by name: R, G, B, A or any channel of an EXR (fg.A), of "
+                    "--matte's file, else of the input itself");
     cmd->add_option("--depth-channel", args.depthChannel,
-                    "R, G, B or A of the depth pass (--matte's file, else the input): a pixel "
-                    "nearer than --light-depth hides the light");
+                    "the depth pass's channel by name (Z, depth.Z, R, ...) of --matte's file, "
+                    "else of the input: a pixel nearer than --light-depth hides the light");
     cmd->add_option("--light-depth", args.lightDepth,
                     "the light's distance, in the depth pass's units");
     cmd->add_option("--light-radius", args.lightRadius,
@@ -49,11 +41,6 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args) {
 
 Status checkOcclusionArgs(const OcclusionArgs& a) {
     if (!a.depthChannel.empty()) {
-        if (!channelIndex(a.depthChannel))
-            return invalidInput("--depth-channel " + a.depthChannel +
-                                ": flarekit reads the R, G, B and A channels of a file; split a "
-                                "depth channel into its own file first (oiiotool IN --ch Z -o "
-                                "depth.exr) and give it with --matte, --depth-channel R");
         if (!a.lightDepth)
             return invalidInput("--depth-channel needs --light-depth (the light's distance)");
         if (!a.matteChannel.empty())
@@ -76,49 +63,51 @@ ShotCoverage::ShotCoverage(const OcclusionArgs& args, const ShotPlan* plan, std:
     }
 }
 
-Result<double> ShotCoverage::raw(int frame, int current, const Image& image) {
+Result<double> ShotCoverage::raw(int frame, int current, const LoadedImage& plate) {
     {
         std::lock_guard lock(m_mutex);
         if (auto it = m_raw.find(frame); it != m_raw.end()) return it->second;
     }
-    // The occluding pixels: the matte file, else the input itself (the frame being rendered, or
+    // The occluding pixels: the matte file, else the plate itself (the frame being rendered, or
     // an earlier one of the look-back, read again).
-    std::optional<LoadedImage> loaded;
-    std::string path;
-    if (!m_args.matte.empty())
-        path = m_mattePattern ? m_mattePattern->path(frame) : m_single;
-    else if (frame != current)
-        path = m_plan->in.path(frame);
+    std::optional<LoadedImage> read;
+    std::string path = frame == current ? "" : m_plan->in.path(frame);
+    if (!m_args.matte.empty()) path = m_mattePattern ? m_mattePattern->path(frame) : m_single;
     if (!path.empty()) {
-        auto read = readInputImage(path, {});
-        if (!read) return read.error();
-        if (read->image.width() != image.width() || read->image.height() != image.height())
-            return invalidInput(path + ": " + std::to_string(read->image.width()) + "x" +
-                                std::to_string(read->image.height()) + ", but the frame " +
-                                std::to_string(current) + " it must match is " +
-                                std::to_string(image.width()) + "x" +
-                                std::to_string(image.height()));
-        loaded = std::move(*read);
+        auto loaded = readInputImage(path, {});
+        if (!loaded) return loaded.error();
+        const Image& m = loaded->image;
+        if (m.width() != plate.image.width() || m.height() != plate.image.height())
+            return invalidInput(
+                path + ": " + std::to_string(m.width()) + "x" + std::to_string(m.height()) +
+                ", but the frame " + std::to_string(current) + " it must match is " +
+                std::to_string(plate.image.width()) + "x" + std::to_string(plate.image.height()));
+        read = std::move(*loaded);
     }
-    Occluder occluder;
+    const LoadedImage& source = read ? *read : plate;
+    Occluder occluder;  // channel 3: the plane below goes into alpha
+    std::string channel = m_args.matteChannel;
     if (!m_args.depthChannel.empty()) {
-        occluder.channel = *channelIndex(m_args.depthChannel);
+        channel = m_args.depthChannel;
         occluder.lightDepth = m_args.lightDepth;
-    } else if (!m_args.matteChannel.empty()) {
-        occluder.channel = *channelIndex(m_args.matteChannel);
-    } else {
-        occluder.channel = loaded && !loaded->hasAlpha ? 0 : 3;  // a grey matte: its value
+    } else if (channel.empty()) {
+        channel = read && !read->hasAlpha ? "R" : "A";  // a grey matte: its value
     }
-    const double v = discVisibility(loaded ? loaded->image : image, occluder, m_lightAt(frame),
-                                    m_args.lightRadius);
+    const std::string name = !path.empty() ? path : m_plan ? m_plan->in.path(frame) : "the input";
+    auto plane = channelByName(source, channel, name);
+    if (!plane) return plane.error();
+    Image values(source.image.width(), source.image.height());
+    for (std::size_t i = 0; i < plane->size(); ++i) values.data()[4 * i + 3] = (*plane)[i];
+    const double v = discVisibility(values, occluder, m_lightAt(frame), m_args.lightRadius);
     std::lock_guard lock(m_mutex);
     m_raw[frame] = v;
     return v;
 }
 
-Result<CoverageRow> ShotCoverage::at(int frame, const Image& image) {
+Result<CoverageRow> ShotCoverage::at(int frame, const LoadedImage& plate) {
+    const Image& image = plate.image;
     CoverageRow row{frame, m_lightAt(frame), 1, 1};
-    auto now = raw(frame, frame, image);
+    auto now = raw(frame, frame, plate);
     if (!now) return now.error();
     row.raw = row.filtered = *now;
     if (!m_plan) return row;
@@ -131,7 +120,7 @@ Result<CoverageRow> ShotCoverage::at(int frame, const Image& image) {
     TemporalFilter filter(params);
     std::optional<int> previous;
     for (auto it = first; it != shot.end() && *it <= frame; ++it) {
-        auto value = *it == frame ? now : raw(*it, frame, image);
+        auto value = *it == frame ? now : raw(*it, frame, plate);
         if (!value) return value.error();
         const double dt = previous ? (*it - *previous) / m_plan->fps : 0.0;
         row.filtered =

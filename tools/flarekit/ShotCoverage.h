@@ -18,8 +18,8 @@ namespace flarekit::cli {
 
 struct OcclusionArgs {
     std::string matte;         //!< --matte PATTERN (or one file for a single image)
-    std::string matteChannel;  //!< --matte-channel R|G|B|A (of the matte, else of the input)
-    std::string depthChannel;  //!< --depth-channel R|G|B|A (of --matte's file, else the input)
+    std::string matteChannel;  //!< --matte-channel NAME (of the matte, else of the input)
+    std::string depthChannel;  //!< --depth-channel NAME (of --matte's file, else the input)
     std::optional<float> lightDepth;
     float lightRadius = 8;
     TemporalParams temporal;
@@ -50,9 +50,9 @@ class ShotCoverage {
     //! matte file or none), no filter.
     ShotCoverage(const OcclusionArgs& args, const ShotPlan* plan, std::string single,
                  std::function<Point(int)> lightAt);
-    //! The frame's raw and filtered coverage; `image` is the frame being rendered (its size is
-    //! what a matte must have; its pixels serve when the channel is the input's own).
-    Result<CoverageRow> at(int frame, const Image& image);
+    //! The frame's raw and filtered coverage; `frame`'s plate as read (its size is what a matte
+    //! must have; its channels serve when the matte or depth is the plate's own).
+    Result<CoverageRow> at(int frame, const LoadedImage& plate);
     //! coverage.csv in the output folder: this run's rows merged into the rows other chunks
     //! wrote (under a lock, so chunks finishing together keep each other's rows).
     Status writeCsv(const std::string& dir, const std::vector<CoverageRow>& rows) const;
@@ -60,8 +60,8 @@ class ShotCoverage {
     int lookBack() const { return m_lookBack; }
 
   private:
-    //! `current`: the frame being rendered, whose pixels are `image`.
-    Result<double> raw(int frame, int current, const Image& image);
+    //! `current`: the frame being rendered, whose plate is `plate`.
+    Result<double> raw(int frame, int current, const LoadedImage& plate);
 
     OcclusionArgs m_args;
     const ShotPlan* m_plan;
