@@ -258,6 +258,8 @@ TEST(ShotCli, EveryBadShotInputIsOneLineAndWritesNothing) {
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "Z", "--light-depth", "3"},
          "no channel 'Z' (it has: R, G, B, A)"},
         {{"postfx", in.file("nothing.####.exr"), "-o", o}, "no frame of this pattern exists"},
+        {{"postfx", in.file("in.0001.exr"), "-o", out.file("x.exr"), "--frames", "1-3"},
+         "is one image, not a frame pattern"},
         {{"postfx", seq, "-o", out.file("missing-dir/o.####.exr")}, "does not exist"},
     };
     for (const auto& [args, expected] : cases) {

@@ -394,6 +394,7 @@ int runApply(const ApplyArgs& args) {
         if (Status s = checkOcclusionArgs(a.occlusion); !s) return report(s.error());
     }
     if (!isFramePattern(a.in)) {
+        if (Status s = checkSingleImage(a.in, a.shot); !s) return report(s.error());
         for (const auto& [given, option] :
              {std::pair{a.lightTrack, "--light-track"}, std::pair{a.camera, "--camera"},
               std::pair{a.writeTrack, "--write-track"}})

@@ -197,8 +197,10 @@ int runPostFx(const PostFxArgs& args) {
     auto colors = ColorManagement::create(a.color);
     if (!colors) return report(colors.error());
     a.colors = *colors;
-    if (!isFramePattern(a.in))
+    if (!isFramePattern(a.in)) {
+        if (Status s = checkSingleImage(a.in, a.shot); !s) return report(s.error());
         return runImageJob(a.out, [&] { return runChain(a, a.in, a.out, a.layersDir); });
+    }
     if (a.repeat > 1) return report(invalidInput("--repeat: for one image, not a sequence"));
     auto plan = planShot(a.in, a.out, a.shot);
     if (!plan) return report(plan.error());

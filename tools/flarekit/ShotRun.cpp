@@ -29,6 +29,12 @@ void addShotOptions(CLI::App* cmd, ShotArgs& args) {
         ->capture_default_str();
 }
 
+Status checkSingleImage(const std::string& in, const ShotArgs& args) {
+    if (args.frames.empty() && !args.skipMissing) return Ok{};
+    return invalidInput(std::string(args.frames.empty() ? "--skip-missing" : "--frames") + ": " +
+                        in + " is one image, not a frame pattern (shot.####.exr)");
+}
+
 Result<ShotPlan> planShot(const std::string& in, const std::string& out, const ShotArgs& args,
                           const std::vector<FramePattern>& otherInputs) {
     if (!isFramePattern(out))

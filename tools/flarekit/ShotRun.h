@@ -22,6 +22,9 @@ struct ShotArgs {
 };
 void addShotOptions(CLI::App* cmd, ShotArgs& args);
 
+//! A single image given with --frames or --skip-missing: an error saying the input is no pattern.
+Status checkSingleImage(const std::string& in, const ShotArgs& args);
+
 struct ShotPlan {
     FramePattern in, out;
     std::vector<int> frames;      //!< to render, ascending
