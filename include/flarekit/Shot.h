@@ -39,6 +39,8 @@ struct FrameRange {
     int first = 0, last = 0, step = 1;
     std::vector<int> frames() const;
 };
+//! The most frames one range may hold (parseFrameRange refuses more).
+inline constexpr long long kMaxFramesPerRun = 1000000;
 //! `option` names the flag in messages ("--frames: expected A-B[:step] ...").
 Result<FrameRange> parseFrameRange(const std::string& text, const std::string& option);
 //! Gaps as ranges: {5, 6, 7, 10} -> "5-7, 10".

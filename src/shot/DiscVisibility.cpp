@@ -23,6 +23,11 @@ float pixelVisibility(const Rgba& p, const Occluder& o) {
 
 double discVisibility(const Image& image, const Occluder& occluder, Point centre, double radius) {
     const int w = image.width(), h = image.height();
+    // A disc wholly outside the frame (a light far off it, even at 1e30 px) is visible; what
+    // remains is near enough for the int casts below.
+    if (!(centre.x + radius > 0 && centre.x - radius < w && centre.y + radius > 0 &&
+          centre.y - radius < h))
+        return 1;
     if (radius < 0.5) {
         const int x = int(std::floor(centre.x)), y = int(std::floor(centre.y));
         if (x < 0 || y < 0 || x >= w || y >= h) return 1;

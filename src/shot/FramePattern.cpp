@@ -130,6 +130,12 @@ Result<FrameRange> parseFrameRange(const std::string& text, const std::string& o
         if (!n) return bad();
         r.first = r.last = *n;
     }
+    // A million frames (11.5 hours at 24 fps) in one run: the range is listed before any work,
+    // so a typo such as 1-1000000000 must not become a list of a billion frames.
+    const long long count = (static_cast<long long>(r.last) - r.first) / r.step + 1;
+    if (count > kMaxFramesPerRun)
+        return invalidInput(option + ": " + text + " is " + std::to_string(count) +
+                            " frames; one run takes at most " + std::to_string(kMaxFramesPerRun));
     return r;
 }
 

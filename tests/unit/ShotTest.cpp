@@ -77,6 +77,10 @@ TEST(FrameRange, FarmChunksAndSteps) {
             << r.error().message;
     }
     EXPECT_EQ(describeFrames({5, 6, 7, 10, 12, 13}), "5-7, 10, 12-13");
+    const auto huge = parseFrameRange("1-2000000000", "--frames");
+    ASSERT_FALSE(huge);
+    EXPECT_NE(huge.error().message.find("at most 1000000"), std::string::npos);
+    EXPECT_TRUE(parseFrameRange("0-1999999999:2000", "--frames"));  // exactly a million
 }
 
 TEST(LightTrack, CsvKeysInterpolateLinearlyAndHoldTheEnds) {
@@ -168,6 +172,8 @@ TEST(DiscVisibility, FullCoverNoneAndTheFramesEdge) {
     const Image half = edgeMatte(64, 64, 4);
     EXPECT_NEAR(discVisibility(half, {}, {0, 32}, 8), 1 - (segmentShare(-4, 8) - 0.5) / 0.5, 0.01);
     EXPECT_EQ(discVisibility(covered, {}, {-50, 32}, 10), 1.0);  // wholly outside
+    EXPECT_EQ(discVisibility(covered, {}, {1e30f, 32}, 10), 1.0);
+    EXPECT_EQ(discVisibility(covered, {}, {32, -1e30f}, 0.2), 1.0);
     // A sub-pixel light is the pixel under it.
     EXPECT_EQ(discVisibility(half, {}, {2.5f, 9.5f}, 0.2), 0.0);
     EXPECT_EQ(discVisibility(half, {}, {4.5f, 9.5f}, 0.2), 1.0);

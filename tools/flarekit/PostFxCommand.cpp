@@ -44,8 +44,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 //! Runs the chain `repeat` times (buffers kept, as in a video) and, when repeating, prints the
 //! mean time of the runs after the first: the figure bench/peers/run_blender_peer.sh compares.
-Result<PostFxResult> runBackend(const PostFxArgs& a, const std::string& in, const Image& image,
-                                const PostFxParams& params, const PostFxOptions& options) {
+Result<PostFxResult> runBackend(const PostFxArgs& a, [[maybe_unused]] const std::string& in,
+                                const Image& image, const PostFxParams& params,
+                                const PostFxOptions& options) {
     PostFxResult result;
     double warmSeconds = 0;
     if (a.backend == "cpu") {
