@@ -23,7 +23,7 @@ seconds() { /usr/bin/time -f "%e %M" -o "$work/time" "$@" >/dev/null 2>"$work/er
 for job in postfx apply; do
   one=$(seconds "$flarekit" "$job" "$work/in/shot.####.exr" -o "$work/one/out.####.exr")
   summary=$(grep "frames in" "$work/err" || true)
-  start=$(date +%s.%N)
+  start=$(date +%s%N)
   peak=0
   for ((f = 1; f <= frames; f++)); do
     name=$(printf "shot.%04d.exr" "$f")
@@ -31,11 +31,10 @@ for job in postfx apply; do
     kb=${r#* }
     ((kb > peak)) && peak=$kb
   done
-  many=$(echo "$(date +%s.%N) - $start" | bc)
+  many=$(awk -v a="$(date +%s%N)" -v b="$start" 'BEGIN { printf "%.3f", (a - b) / 1e9 }')
   read -r oneS oneKb <<<"$one"
-  printf '%s, %d frames 1080p half EXR: one process %.2f s (%.2f frames/s, peak %d MiB); %d processes %.2f s (%.2f frames/s, peak %d MiB each); %.2fx\n' \
-    "$job" "$frames" "$oneS" "$(echo "$frames / $oneS" | bc -l)" $((oneKb / 1024)) "$frames" \
-    "$many" "$(echo "$frames / $many" | bc -l)" $((peak / 1024)) "$(echo "$many / $oneS" | bc -l)"
+  awk -v job="$job" -v n="$frames" -v one="$oneS" -v kb="$oneKb" -v many="$many" -v peak="$peak" \
+    'BEGIN { printf "%s, %d frames 1080p half EXR: one process %.2f s (%.2f frames/s, peak %d MiB); %d processes %.2f s (%.2f frames/s, peak %d MiB each); %.2fx\n", job, n, one, n / one, kb / 1024, n, many, n / many, peak / 1024, many / one }'
   echo "  $summary"
   cmp -s "$work/one/out.0001.exr" "$work/many/shot.0001.exr" && echo "  frame 1 bit-identical both ways"
 done
