@@ -93,9 +93,9 @@ Result<CameraTrack> loadCameraTrack(const std::string& path);
 bool projectLight(const SceneCamera& camera, int width, int height, Vec3 light, bool isDirection,
                   Point& pixel);
 
-//! --light auto over a sequence: one light followed from frame to frame. It follows the found
-//! light carrying the most flux within a gate around where it is predicted (an alpha-beta
-//! filter on the luminance-weighted centroids: smooth, no lag at constant speed) and changes to
+//! --light auto over a sequence: one light followed from frame to frame. It follows the accepted
+//! light nearest where it is predicted, inside a gate (an alpha-beta filter on the
+//! luminance-weighted centroids: smooth, no lag at constant speed), and changes to
 //! another only when that one has carried more than `switchRatio` times the followed one's flux for
 //! `switchFrames` frames in a row, so a one-frame sparkle elsewhere, however bright, does not move
 //! it and two equal highlights do not trade it back and forth.
@@ -108,8 +108,11 @@ struct TrackerParams {
     double switchRatio = 2.0;
     int switchFrames = 3;  //!< 0.125 s at 24 fps: longer than a glint, short for a real change
     //! A measurement farther than this from the prediction is another light, in units of the
-    //! followed light's radius plus 4 px.
+    //! followed light's radius plus 4 px, and never less than minGatePixels.
     double gate = 3.0;
+    //! 64 px: a fast pan moves a light 20-50 px a frame at 1080p, and the first frames predict
+    //! no motion at all.
+    double minGatePixels = 64.0;
 };
 struct TrackedLight {
     bool found = false;  //!< false before any light, or while the followed one is not seen

@@ -1,5 +1,6 @@
 // Following one light through a shot (see flarekit/Shot.h): gate, alpha-beta filter, and a
 // switch only after a brighter light has stood elsewhere for several frames.
+#include <algorithm>
 #include <cmath>
 
 #include "flarekit/Shot.h"
@@ -31,14 +32,21 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     if (!m_started) return brightest ? start(*brightest) : TrackedLight{};
     const Point predicted{float(m_position.x + m_velocity.x * dt),
                           float(m_position.y + m_velocity.y * dt)};
-    const double gate = m_params.gate * (double(m_radius) + 4.0);
-    // The followed light is the one carrying the most flux inside the gate: a sun's dim halo
-    // (its own candidate, often centred nearer the prediction) never takes it over.
+    const double gate = std::max(m_params.minGatePixels, m_params.gate * (double(m_radius) + 4.0));
+    // The followed light: the accepted light nearest the prediction inside the gate. In a frame
+    // where it is not accepted (outshone by a glint elsewhere), the candidate with the highest
+    // peak there: the light's core, never the wide dim glow around it (a sky's halo carries more
+    // flux than the sun itself in the city HDRI, at a peak 6,000 times lower).
     const LightCandidate* followed = nullptr;
     for (const LightCandidate& l : lights) {
-        if (distance(l.position, predicted) <= gate && (!followed || l.flux > followed->flux))
+        const double d = distance(l.position, predicted);
+        if (l.accepted && d <= gate && (!followed || d < distance(followed->position, predicted)))
             followed = &l;
     }
+    if (!followed)
+        for (const LightCandidate& l : lights)
+            if (distance(l.position, predicted) <= gate && (!followed || l.peak > followed->peak))
+                followed = &l;
     // A brighter light elsewhere takes over only once it has stayed brighter (and in one place)
     // for switchFrames frames in a row; the followed light lost counts as outshone.
     const double reference = followed ? followed->flux : 0.0;
