@@ -332,6 +332,7 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
     std::mutex rowsMutex;
     std::vector<CoverageRow> rows;
     std::map<int, std::string> trackRows;
+    std::vector<int> unlit;  // --light auto: frames where the followed light was not seen
     const int code = runShot(*plan, "apply", *parallel, [&](const ShotFrame& f) {
         return applyFlare(
             a, f.in, f.out,
@@ -348,6 +349,10 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
                     std::lock_guard lock(rowsMutex);
                     rows.push_back(*row);
                 }
+                if (light.tracking && !weight->present) {
+                    std::lock_guard lock(rowsMutex);
+                    unlit.push_back(f.frame);
+                }
                 if (!a.writeTrack.empty() && weight->present) {
                     char line[160];
                     std::snprintf(line, sizeof line, "%d,%.9g,%.9g,%.9g", f.frame, double(at.x),
@@ -360,6 +365,11 @@ int runApplyShot(const ApplyArgs& a, const std::optional<Point>& fixed) {
             frameSuffix(*plan, f));
     });
     if (code != kExitOk) return code;
+    if (!unlit.empty()) {
+        std::sort(unlit.begin(), unlit.end());
+        warn(a.in + ": no light found in frames " + describeFrames(unlit) +
+             " (written without a flare; --light X,Y or --light-track places one)");
+    }
     if (coverage) {
         if (Status s = coverage->writeCsv(plan->outDir, rows); !s) return report(s.error());
     }
