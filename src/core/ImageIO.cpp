@@ -129,7 +129,8 @@ Status checkHeader(const std::string& path, const codec::Header& header, const J
     }
     const double decodeBytes =
         pixels * double(std::min(header.channels, 4)) * double(codec::sampleBytes(header.decodeAs));
-    const double need = job.fixedBytes + pixels * job.bytesPerPixel + decodeBytes;
+    const double need =
+        job.fixedBytes + pixels * (job.bytesPerPixel + header.extraBytesPerPixel) + decodeBytes;
     return checkMemory(path, need,
                        std::to_string(header.width) + "x" + std::to_string(header.height) +
                            (job.detail.empty() ? "" : ", " + job.detail));

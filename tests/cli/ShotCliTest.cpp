@@ -577,3 +577,35 @@ TEST(ShotCli, ThePlatesOwnDepthAndMatteChannelsHideTheLightByName) {
         EXPECT_NE(o.header().channels().findChannel("fg.A"), nullptr);
     }
 }
+
+TEST(ShotCli, AnExrsExtraChannelsCountInTheMemoryBudget) {
+    // 512x512 with 64 float channels past RGBA: 64 MiB kept for the write. Under a 200 MiB
+    // budget apply's own ~175 MiB fits, with the channels it does not: refused from the header.
+    TempDir dir;
+    const int w = 512, h = 512;
+    std::vector<float> zeros(std::size_t(w * h), 0.f);
+    Imf::Header header(w, h);
+    Imf::FrameBuffer fb;
+    for (int c = 0; c < 68; ++c) {
+        const std::string name =
+            c < 4 ? std::string(1, "RGBA"[c]) : std::string("c").append(std::to_string(c));
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        fb.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(zeros.data()), sizeof(float),
+                                   sizeof(float) * w));
+    }
+    {
+        Imf::OutputFile file(dir.file("wide.exr").c_str(), header);
+        file.setFrameBuffer(fb);
+        file.writePixels(h);
+    }
+    const CliResult r = runCli({"--max-memory", "200M", "apply", dir.file("wide.exr"), "-o",
+                                dir.file("out.exr"), "--light", "9,9"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("over the memory budget"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("out.exr")));
+    EXPECT_EQ(runCli({"--max-memory", "300M", "apply", dir.file("wide.exr"), "-o",
+                      dir.file("out.exr"), "--light", "9,9"})
+                  .exitCode,
+              0);
+}

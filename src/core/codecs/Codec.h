@@ -32,6 +32,9 @@ struct Header {
     bool isFloat = false;         //!< half/float samples
     bool declaredLinear = false;  //!< an integer file tagged as linear light
     SampleType decodeAs = SampleType::U8;
+    //! Bytes per pixel of the channels read besides the image (an EXR's past RGBA, kept for the
+    //! write): part of what the memory check counts.
+    double extraBytesPerPixel = 0;
     std::string format;  //!< "PNG", "JPEG", ... (the OIIO format name for the module)
 };
 

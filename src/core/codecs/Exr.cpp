@@ -68,6 +68,14 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
                                 std::to_string(out.header.height) +
                                 ": expected width and height in [1, 32768]");
         }
+        // The channels past RGBA (or Y, A) are read too, in their own types: counted before any
+        // allocation, so a file of a thousand channels is refused by the memory check.
+        for (auto c = channels.begin(); c != channels.end(); ++c) {
+            const std::string name = c.name();
+            const bool read = rgb ? (name == "R" || name == "G" || name == "B" || name == "A")
+                                  : (name == "Y" || name == "A");
+            if (!read) out.header.extraBytesPerPixel += c.channel().type == Imf::HALF ? 2 : 4;
+        }
         if (Status s = check(out.header); !s) return s.error();
         out.image = Image(out.header.width, out.header.height);
         out.hasAlpha = channels.findChannel("A") != nullptr;
