@@ -132,7 +132,6 @@ class LightTracker {
     bool m_started = false;
     Point m_position, m_velocity;
     float m_radius = 0;
-    double m_flux = 0;
     int m_challenged = 0;  //!< frames in a row a brighter light stood elsewhere
     int m_measured = 0;    //!< sightings of the followed light so far
     Point m_challenger;

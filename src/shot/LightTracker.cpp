@@ -24,7 +24,6 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
         m_position = l.position;
         m_velocity = {0, 0};
         m_radius = l.radius;
-        m_flux = l.flux;
         m_challenged = 0;
         m_measured = 1;
         return TrackedLight{true, l.position, l.flux, l.flareScale};
@@ -83,7 +82,6 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     }
     ++m_measured;
     m_radius = followed->radius;
-    m_flux = followed->flux;
     return TrackedLight{true, m_position, followed->flux, followed->flareScale};
 }
 

@@ -91,7 +91,8 @@ inline std::vector<std::string> shotArgs(const TempDir& in, const std::string& o
             "6"};
 }
 
-inline std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+inline std::vector<std::string> with(std::vector<std::string> args,
+                                     const std::vector<std::string>& more) {
     args.insert(args.end(), more.begin(), more.end());
     return args;
 }

@@ -56,8 +56,6 @@ class ShotCoverage {
     //! coverage.csv in the output folder: this run's rows merged into the rows other chunks
     //! wrote (under a lock, so chunks finishing together keep each other's rows).
     Status writeCsv(const std::string& dir, const std::vector<CoverageRow>& rows) const;
-    //! Frames the filter looks back: its slowest time constant decays to 1e-4 over them.
-    int lookBack() const { return m_lookBack; }
 
   private:
     //! `current`: the frame being rendered, whose plate is `plate`.
@@ -68,6 +66,7 @@ class ShotCoverage {
     std::optional<FramePattern> m_mattePattern;
     std::string m_single;
     std::function<Point(int)> m_lightAt;
+    //! Frames the filter looks back: its slowest time constant decays to 1e-4 over them.
     int m_lookBack = 0;
     std::mutex m_mutex;
     std::map<int, double> m_raw;  //!< cache: frames the look-back of several frames shares

@@ -16,15 +16,14 @@ class ShotTracking {
     ShotTracking(const ShotPlan& plan, const LightSearchOptions& search);
     //! The light at `frame`; `image` is its pixels when the caller has them (else it is read).
     Result<TrackedLight> at(int frame, const Image* image = nullptr);
-    //! Frames looked back: half a second of the shot (12 at 24 fps), time for the alpha-beta
-    //! filter to settle and for a switch to be decided.
-    int lookBack() const { return m_lookBack; }
 
   private:
     Result<std::vector<LightCandidate>> lightsIn(int frame, const Image* image);
 
     const ShotPlan& m_plan;
     LightSearchOptions m_search;
+    //! Frames looked back: half a second of the shot (12 at 24 fps), time for the alpha-beta
+    //! filter to settle and for a switch to be decided.
     int m_lookBack;
     std::mutex m_mutex;
     std::map<int, std::vector<LightCandidate>> m_lights;
