@@ -202,14 +202,17 @@ void rasterisePiece(const Mesh& m, const lens::Iris& iris, const RayResult& a, c
     const int y0 = pixelIndex(std::min({a.y, b.y, c.y}), rowBegin, rowEnd);
     const int y1 = pixelIndex(std::ceil(std::max({a.y, b.y, c.y})), rowBegin - 1, rowEnd - 1);
     const double inv = 1.0 / area;
-    // A pixel centre exactly on an edge belongs to one of the two triangles sharing it: the
-    // top-left rule (of this y-down image; OpenGL's bottom-left in its y-up window), so the
-    // CPU covers the pixels a GPU does. Vertices sit on the 1/256 grid, so these are exact.
+    // A pixel centre exactly on an edge belongs to one of the two triangles sharing it, by the
+    // rule GPUs apply in framebuffer memory order, whose first row is the window's bottom (Mesa's
+    // llvmpipe: D3D's top-left rule there): left edges and, of horizontal edges, the bottom ones
+    // of this y-down image. The CPU then covers the pixels a GPU does; vertices sit on the 1/256
+    // grid, so these tests are exact. (Taking the top edges instead put whole rows of a ghost's
+    // boundary triangles in one rasteriser and not the other: LensParity's worst values.)
     const double sign = area > 0 ? 1.0 : -1.0;
     const auto covers = [&](double e, const RayResult& from, const RayResult& to) {
         if (e != 0) return e * sign > 0;
         const double dx = (to.x - from.x) * sign, dy = (to.y - from.y) * sign;
-        return dy < 0 || (dy == 0 && dx > 0);
+        return dy < 0 || (dy == 0 && dx < 0);
     };
     for (int y = y0; y <= y1; ++y) {
         float* row = out.row(y);

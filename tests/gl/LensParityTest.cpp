@@ -60,11 +60,11 @@ TEST(LensParity, EveryLensCpuGhostsMatchGl) {
                     name.c_str(), d.worst, d.x, d.y, d.over, d.peak);
         // Both rasterisers cover the same pixel centres (vertices on the 1/256 grid, clipped to
         // the image by the shared code, one tie rule) and evaluate the same expressions, in
-        // double on the CPU and float on the GPU. On llvmpipe four lenses agree to 1e-4 at
-        // every value; the zoom's two positions have at most 3 of 172,800 x 3 values at
-        // 1.01-1.12e-3 (rounded 9-blade iris edges), which these bounds admit and no more.
-        EXPECT_LE(d.over, 4u) << name;
-        EXPECT_LT(d.worst, 2e-3) << name;
+        // double on the CPU and float on the GPU. On llvmpipe seven lenses agree to 9e-5 at
+        // every value; the Nikon zoom's long end has one of 172,800 x 3 values at 1.01e-3 (on
+        // the rounded 9-blade iris's soft edge), which these bounds admit and no more.
+        EXPECT_LE(d.over, 1u) << name;
+        EXPECT_LT(d.worst, 1.1e-3) << name;
         EXPECT_GT(d.peak, 0.0) << name;
     }
 }

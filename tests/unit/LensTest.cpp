@@ -52,6 +52,19 @@ TEST(Lens, ShippedPrescriptionsMatchTheirPatentsFocalLengths) {
     EXPECT_NEAR(ratio, 200.0 / 80.0, 0.01 * 2.5);
 }
 
+TEST(Lens, ATelephotoIsShorterThanItsFocalLength) {
+    // A telephoto design puts its image closer to the front vertex than f (total track over f,
+    // the telephoto ratio, below 1); the Canon zoom's long end is one (its patent's track 189.7 mm
+    // at f = 205.3), its short end is not.
+    const auto trackOverF = [](const Lens& lens) {
+        double track = 0.0;
+        for (const LensSurface& s : lens.surfaces) track += s.thickness;
+        return track / paraxial(lens).focalLength;
+    };
+    EXPECT_NEAR(trackOverF(shipped("canon-zoom-70-210-tele")), 189.68 / 205.31, 0.005);
+    EXPECT_GT(trackOverF(shipped("canon-zoom-70-210")), 2.0);
+}
+
 TEST(Lens, ThinLensFocalLengthIsTheLensmakersFormula) {
     // A thick biconvex lens: 1/f = (n - 1) (1/R1 - 1/R2 + (n - 1) d / (n R1 R2)).
     auto lens = parseLens(kSimple, "simple.json");
