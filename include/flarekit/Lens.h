@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -171,6 +172,10 @@ struct LensRenderOptions {
     double ghostGain = 1.0;       //!< multiplies the physical ghost intensities
     double dirt = 0.0;            //!< dust and scratches on the iris plane (starburst fringes)
     std::uint32_t dirtSeed = 1;
+    //! The iris plane's transmission from an image (the user's own dust, scratches or aperture
+    //! shape): its luminance, clamped to [0, 1], multiplies the iris, the image stretched over
+    //! the stop's diameter (row 0 at the top as seen from the front). Null: none.
+    std::shared_ptr<const Image> pupilMask;
 };
 
 inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {

@@ -412,6 +412,8 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
     const TraceLens dLine = lens::prepareTrace(lens, kLineD);
     const double focal = paraxial(lens).focalLength;
     const double diagonal = std::hypot(double(width), double(height));
+    lens::PupilDirt dirt{options.dirt, options.dirtSeed, options.pupilMask.get(), 0};
+    if (dirt.mask) dirt.maskHash = lens::pupilMaskHash(*dirt.mask);
     const double sa = lens.surfaces.front().semiAperture;
 
     std::size_t brightest = 0;
@@ -448,7 +450,7 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
             }
         });
         if (Status s = drawer.draw(meshes, dLine.iris); !s) return s.error();
-        addStarburst(lens, {options.dirt, options.dirtSeed}, samples, light, options.starburst,
+        addStarburst(lens, dirt, samples, light, options.starburst,
                      options.starburstSize * diagonal, layers.starburst);
         addGlare(light, options.glare, 0.01 * diagonal, layers.glare);
     }

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "core/Random.h"
+#include "flarekit/Color.h"
 #include "lens/LensTrace.h"
 
 namespace flarekit::lens {
@@ -68,6 +69,33 @@ void addDirt(std::vector<double>& pupil, int n, double radius, const PupilDirt& 
     }
 }
 
+//! Multiplies the pupil by the mask's luminance (clamped to [0, 1]), bilinear, the image
+//! stretched over the stop circle's bounding square.
+void applyMask(std::vector<double>& pupil, int n, double radius, const Image& mask) {
+    if (mask.width() < 1 || mask.height() < 1) return;
+    const auto transmission = [&](int x, int y) {
+        const Rgba& p =
+            mask.at(std::clamp(x, 0, mask.width() - 1), std::clamp(y, 0, mask.height() - 1));
+        return std::clamp(double(luminance(p.r, p.g, p.b)), 0.0, 1.0);
+    };
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            // The pupil point in [-1, 1]^2 of the stop's radius, then in mask pixels (centres at
+            // +0.5); grid row 0 is the top of the iris.
+            const double px = (x - n / 2 + 0.5) / radius, py = (y - n / 2 + 0.5) / radius;
+            if (std::fabs(px) > 1 || std::fabs(py) > 1) continue;
+            const double u = (px + 1) / 2 * mask.width() - 0.5,
+                         v = (py + 1) / 2 * mask.height() - 0.5;
+            const int u0 = int(std::floor(u)), v0 = int(std::floor(v));
+            const double tu = u - u0, tv = v - v0;
+            const double t =
+                (transmission(u0, v0) * (1 - tu) + transmission(u0 + 1, v0) * tu) * (1 - tv) +
+                (transmission(u0, v0 + 1) * (1 - tu) + transmission(u0 + 1, v0 + 1) * tu) * tv;
+            pupil[std::size_t(y) * std::size_t(n) + std::size_t(x)] *= t;
+        }
+    }
+}
+
 std::vector<float> computePsf(const LensAperture& aperture, const PupilDirt& dirt, int n) {
     std::vector<double> pupil(std::size_t(n) * std::size_t(n));
     const double radius = kPupilShare * n;
@@ -80,6 +108,7 @@ std::vector<float> computePsf(const LensAperture& aperture, const PupilDirt& dir
         }
     }
     addDirt(pupil, n, radius, dirt);
+    if (dirt.mask) applyMask(pupil, n, radius, *dirt.mask);
     const int half = n / 2 + 1;
     fftw_complex* spectrum = fftw_alloc_complex(std::size_t(n) * std::size_t(half));
     static std::mutex planner;  // FFTW's planner is not thread-safe; execution is
@@ -114,11 +143,25 @@ std::vector<float> computePsf(const LensAperture& aperture, const PupilDirt& dir
 
 }  // namespace
 
+std::uint64_t pupilMaskHash(const Image& mask) {
+    // FNV-1a (Fowler, Noll and Vo): offset basis and prime of its 64-bit variant.
+    std::uint64_t h = 14695981039346656037ull;
+    const auto add = [&](const void* bytes, std::size_t count) {
+        const auto* b = static_cast<const unsigned char*>(bytes);
+        for (std::size_t i = 0; i < count; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    };
+    const int size[2] = {mask.width(), mask.height()};
+    add(size, sizeof size);
+    add(mask.data(), mask.pixelCount() * 4 * sizeof(float));
+    return h;
+}
+
 const Psf& aperturePsf(const LensAperture& aperture, const PupilDirt& dirt, int size) {
     static std::mutex mutex;
-    static std::map<std::tuple<int, double, double, double, std::uint32_t, int>, Psf> cache;
+    static std::map<std::tuple<int, double, double, double, std::uint32_t, std::uint64_t, int>, Psf>
+        cache;
     const auto key = std::make_tuple(aperture.blades, aperture.rotationDeg, aperture.roundness,
-                                     dirt.amount, dirt.seed, size);
+                                     dirt.amount, dirt.seed, dirt.mask ? dirt.maskHash : 0, size);
     std::lock_guard<std::mutex> lock(mutex);
     auto it = cache.find(key);
     if (it == cache.end()) {

@@ -19,11 +19,18 @@ struct Psf {
 };
 
 //! Dust and scratches on the iris plane: `amount` 0 is clean, 1 a badly kept lens (400 specks,
-//! 8 scratches); the same seed gives the same pattern everywhere.
+//! 8 scratches); the same seed gives the same pattern everywhere. `mask`, when given, is the
+//! plane's transmission from an image (LensRenderOptions::pupilMask), `maskHash` its content's
+//! hash (pupilMaskHash), which keys the PSF cache.
 struct PupilDirt {
     double amount = 0;
     std::uint32_t seed = 1;
+    const Image* mask = nullptr;
+    std::uint64_t maskHash = 0;
 };
+
+//! FNV-1a over the mask's size and pixels: two masks with the same pixels share a PSF.
+std::uint64_t pupilMaskHash(const Image& mask);
 
 //! The PSF of an iris shape (with its dirt), computed once per shape, dirt and size in the
 //! process.

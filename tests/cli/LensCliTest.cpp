@@ -93,6 +93,11 @@ TEST(LensCli, BadInputIsOneLineAndExitTwo) {
     rejected({"lens", "render", "kodak-petzval", in, "-o", dir.file("o.png"), "--spectral", "2"},
              "--spectral");
     rejected({"lens", "render", bad, in, "-o", dir.file("o.png")}, "bad.json");
+    rejected({"lens", "render", "kodak-petzval", in, "-o", dir.file("o.png"), "--dirt-file",
+              dir.file("no-such-dirt.png")},
+             "no-such-dirt.png");
+    rejected({"lens", "render", "kodak-petzval", in, "-o", dir.file("o.png"), "--dirt-file", bad},
+             "bad.json");
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
 }
 

@@ -478,6 +478,41 @@ TEST(Lens, StarburstCarriesItsShareAndDirtChangesOnlyItsPattern) {
     EXPECT_GT(differs, 0.05 * c[1]);
 }
 
+TEST(Lens, APupilMaskFromAnImageShapesTheStarburstAndKeepsItsShare) {
+    // The user's own iris-plane image multiplies the iris. A clear (white) one changes nothing;
+    // a horizontal slit, narrow in y, spreads the diffraction pattern in y (Fraunhofer: a
+    // pattern's extent goes inversely with the aperture's), and the layer still carries its
+    // share of the light.
+    const Lens lens = shipped("angenieux-double-gauss");
+    LensLight light;
+    light.x = 200, light.y = 200;
+    light.energy = {1000, 1000, 1000};
+    const auto starburst = [&](std::shared_ptr<const Image> mask) {
+        LensRenderOptions o;
+        o.ghosts = 0, o.glare = 0, o.starburst = 0.1, o.starburstSize = 0.2;
+        o.pupilMask = std::move(mask);
+        auto layers = renderLensFlare(lens, 400, 400, {light}, o);
+        EXPECT_TRUE(layers.ok());
+        return layers.ok() ? layers->starburst : Image();
+    };
+    auto white = std::make_shared<Image>(64, 64);
+    white->fill({1, 1, 1, 1});
+    auto slit = std::make_shared<Image>(64, 64);
+    for (int y = 28; y < 36; ++y)
+        for (int x = 0; x < 64; ++x) slit->at(x, y) = {1, 1, 1, 1};
+    const Image clean = starburst(nullptr), clear = starburst(white), slitted = starburst(slit);
+    double sum = 0, xx = 0, yy = 0;
+    for (int y = 0; y < 400; ++y)
+        for (int x = 0; x < 400; ++x) {
+            EXPECT_EQ(clear.at(x, y).g, clean.at(x, y).g);
+            const double v = slitted.at(x, y).g;
+            sum += v, xx += v * (x + 0.5 - light.x) * (x + 0.5 - light.x),
+                yy += v * (y + 0.5 - light.y) * (y + 0.5 - light.y);
+        }
+    EXPECT_NEAR(sum, 0.1 * light.energy[1], 0.05 * 0.1 * light.energy[1]);
+    EXPECT_GT(yy, 4 * xx) << "the slit's pattern spreads across it";
+}
+
 TEST(Lens, SmallMeshGridsAgreeWithTheExactTrace) {
     // The real-time path is the same traced mesh at a coarse grid (Hullin et al. 2011 use
     // 16-32 rays a side). Its ghost's energy and centroid against the exact analysis.

@@ -23,7 +23,7 @@ namespace {
 
 struct LensArgs {
     std::string lens, angle = "0,0", in, out, light = "auto", layersDir, backend = "cpu",
-                      tonemap = "auto";
+                      tonemap = "auto", dirtFile;
     bool json = false, verbose = false;
     int rays = 64;
     double fNumber = 0, threshold = 2.0, expandGain = 64.0;
@@ -207,7 +207,14 @@ Result<ImageOutput> renderJob(const LensArgs& a, const std::string& in, const st
 }
 
 //! One image, or every frame of a pattern (the layers then as DIR/ghosts.1001.exr, ...).
-int runRender(const LensArgs& a) {
+int runRender(const LensArgs& given) {
+    LensArgs a = given;
+    if (!a.dirtFile.empty()) {
+        // Read once for every frame; only its 512 x 512 resampling is kept in the PSF.
+        auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
+        if (!mask) return report(mask.error());
+        a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
+    }
     if (!isFramePattern(a.in)) return runImageJob(a.out, [&] { return renderJob(a, a.in, a.out); });
     auto plan = planShot(a.in, a.out, a.shot);
     if (!plan) return report(plan.error());
@@ -339,6 +346,10 @@ void addLensCommand(CLI::App& app, int& exitCode) {
                      "aces, filmic")
         ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
         ->capture_default_str();
+    render->add_option("--dirt-file", args->dirtFile,
+                       "the iris plane's transmission from an image (your dust, scratches or "
+                       "aperture shape): luminance 1 clear, 0 opaque, stretched over the stop; "
+                       "it shapes the starburst");
     render->add_flag("-v,--verbose", args->verbose,
                      "--backend gl: print the GPU and read-back times");
     for (const auto& p : kLensRenderParams) addParamOption(render, p, args->render);
