@@ -34,13 +34,17 @@ float irisRadius(vec2 p) {
 
 void main() {
     // The pixel centre in image coordinates (rows from the top), exact.
-    vec2 p = vec2(gl_FragCoord.x, u_height - gl_FragCoord.y);
-    vec2 a = g_pixel0, b = g_pixel1, c = g_pixel2;
-    float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    float ea = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);
-    float eb = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);
-    float ec = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-    vec3 w = vec3(ea, eb, ec) / area;
+    // The edge functions and area in double, as on the CPU: with vertices on the 1/256 grid
+    // their products are exact there, while in float a sliver triangle's weights (small
+    // differences of large products) were off by 1e-5, which a mask's soft edge turned into
+    // 1e-3 of the pixel. The rest stays in float.
+    dvec2 p = dvec2(gl_FragCoord.x, u_height - gl_FragCoord.y);
+    dvec2 a = g_pixel0, b = g_pixel1, c = g_pixel2;
+    double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    double ea = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);
+    double eb = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);
+    double ec = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    vec3 w = vec3(dvec3(ea, eb, ec) / area);
     vec4 attributesA = w.x * g_attributesA0 + w.y * g_attributesA1 + w.z * g_attributesA2;
     vec4 attributesB = w.x * g_attributesB0 + w.y * g_attributesB1 + w.z * g_attributesB2;
     float mask = edgeMask(attributesA.y);
