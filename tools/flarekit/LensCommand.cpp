@@ -210,7 +210,7 @@ Result<ImageOutput> renderJob(const LensArgs& a, const std::string& in, const st
 int runRender(const LensArgs& given) {
     LensArgs a = given;
     if (!a.dirtFile.empty()) {
-        // Read once for every frame; only its 512 x 512 resampling is kept in the PSF.
+        // Read once, for every frame of a sequence.
         auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
         if (!mask) return report(mask.error());
         a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
