@@ -56,6 +56,15 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
             channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
         const bool grey = !rgb && channels.findChannel("Y") && !channels.findChannel("RY");
         if ((!rgb && !grey) || subsampled) return invalidInput(kUnsupportedLayout);
+        // The channels read into the RGBA image; every other one is kept as an extra.
+        const std::vector<std::string> read =
+            rgb ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"Y", "A"};
+        const auto isRead = [&](const std::string& name) {
+            return std::find(read.begin(), read.end(), name) != read.end();
+        };
+        const auto sampleBytes = [](const Imf::Channel& c) -> std::size_t {
+            return c.type == Imf::HALF ? 2 : 4;
+        };
         ExrRead out;
         out.header.width = int(std::min<long>(long(window.max.x) - window.min.x + 1, 1L << 30));
         out.header.height = int(std::min<long>(long(window.max.y) - window.min.y + 1, 1L << 30));
@@ -71,19 +80,16 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         // The channels past RGBA (or Y, A) are read too, in their own types: counted before any
         // allocation, so a file of a thousand channels is refused by the memory check.
         for (auto c = channels.begin(); c != channels.end(); ++c) {
-            const std::string name = c.name();
-            const bool read = rgb ? (name == "R" || name == "G" || name == "B" || name == "A")
-                                  : (name == "Y" || name == "A");
-            if (!read) out.header.extraBytesPerPixel += c.channel().type == Imf::HALF ? 2 : 4;
+            if (!isRead(c.name()))
+                out.header.extraBytesPerPixel += double(sampleBytes(c.channel()));
         }
         if (Status s = check(out.header); !s) return s.error();
         out.image = Image(out.header.width, out.header.height);
         out.hasAlpha = channels.findChannel("A") != nullptr;
         out.grey = grey;
         out.allHalf = true;
-        for (const char* name : rgb ? std::vector<const char*>{"R", "G", "B", "A"}
-                                    : std::vector<const char*>{"Y", "A"}) {
-            const Imf::Channel* c = channels.findChannel(name);  // the channels read
+        for (const std::string& name : read) {
+            const Imf::Channel* c = channels.findChannel(name);
             if (c) out.allHalf = out.allHalf && c->type == Imf::HALF;
         }
         // Slices into the RGBA floats; a channel the file lacks is filled (alpha with 1).
@@ -108,18 +114,15 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         extras->header = header;
         const Imf::Channel* red = channels.findChannel(rgb ? "R" : "Y");
         extras->rgbHalf = red && red->type == Imf::HALF;
-        const std::vector<std::string> read =
-            rgb ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"Y", "A"};
         for (auto c = channels.begin(); c != channels.end(); ++c) {
-            if (std::find(read.begin(), read.end(), c.name()) != read.end()) continue;
-            const std::size_t size = c.channel().type == Imf::HALF ? 2 : 4;
+            if (isRead(c.name())) continue;
             ExrExtraChannel extra{c.name(), c.channel(), {}};
-            extra.pixels.resize(size * std::size_t(out.header.width) *
+            extra.pixels.resize(sampleBytes(c.channel()) * std::size_t(out.header.width) *
                                 std::size_t(out.header.height));
             extras->channels.push_back(std::move(extra));
         }
         for (ExrExtraChannel& e : extras->channels) {
-            const std::size_t size = e.channel.type == Imf::HALF ? 2 : 4;
+            const std::size_t size = sampleBytes(e.channel);
             frame.insert(e.name, Imf::Slice::Make(e.channel.type, e.pixels.data(), window, size,
                                                   size * std::size_t(out.header.width)));
         }
