@@ -12,7 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
 #include <gtest/gtest.h>
+#include <half.h>
 
 #include "Cli.h"
 #include "flarekit/ImageIO.h"
@@ -24,6 +29,32 @@ namespace fs = std::filesystem;
 
 constexpr int kW = 160, kH = 90, kFrames = 12;
 constexpr double kLightX = 100.5, kLightY = 45.5, kRadius = 6;
+
+//! Writes an EXR plate with `header`'s windows and attributes: float RGBA (`rgba`, 4 per pixel)
+//! plus one float and one half channel beside it, each a full row-major data window.
+inline void writeExrPlate(const std::string& path, Imf::Header header,
+                          const std::vector<float>& rgba, const std::string& floatName,
+                          const std::vector<float>& floats, const std::string& halfName,
+                          const std::vector<half>& halves) {
+    const Imath::Box2i window = header.dataWindow();
+    const int w = window.max.x - window.min.x + 1, h = window.max.y - window.min.y + 1;
+    Imf::FrameBuffer fb;
+    const char* names[] = {"R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c) {
+        header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+        fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgba.data() + c, window, 4 * sizeof(float),
+                                             4 * sizeof(float) * w));
+    }
+    header.channels().insert(floatName, Imf::Channel(Imf::FLOAT));
+    fb.insert(floatName, Imf::Slice::Make(Imf::FLOAT, floats.data(), window, sizeof(float),
+                                          sizeof(float) * w));
+    header.channels().insert(halfName, Imf::Channel(Imf::HALF));
+    fb.insert(halfName,
+              Imf::Slice::Make(Imf::HALF, halves.data(), window, sizeof(half), sizeof(half) * w));
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writePixels(h);
+}
 
 //! The covered pixels of frame f: every column left of this one.
 inline int edgeAt(int f) {

@@ -65,7 +65,6 @@ TEST(ShotCli, ThePlatesOwnDepthAndMatteChannelsHideTheLightByName) {
     TempDir dir;
     constexpr int frames = 6;
     for (int f = 1; f <= frames; ++f) {
-        const Imath::Box2i window({0, 0}, {kW - 1, kH - 1});
         std::vector<float> rgba(std::size_t(kW * kH * 4), 0.1f), z(std::size_t(kW * kH));
         std::vector<half> fg(std::size_t(kW * kH));
         for (int y = 0; y < kH; ++y)
@@ -75,25 +74,9 @@ TEST(ShotCli, ThePlatesOwnDepthAndMatteChannelsHideTheLightByName) {
                 z[i] = front ? 5.f : 1000.f;
                 fg[i] = half(front ? 1.f : 0.f);
             }
-        Imf::Header header(kW, kH);
-        Imf::FrameBuffer fb;
-        const char* names[] = {"R", "G", "B", "A"};
-        for (int c = 0; c < 4; ++c) {
-            header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
-            fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgba.data() + c, window,
-                                                 4 * sizeof(float), 4 * sizeof(float) * kW));
-        }
-        header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
-        fb.insert(
-            "Z", Imf::Slice::Make(Imf::FLOAT, z.data(), window, sizeof(float), sizeof(float) * kW));
-        header.channels().insert("fg.A", Imf::Channel(Imf::HALF));
-        fb.insert("fg.A",
-                  Imf::Slice::Make(Imf::HALF, fg.data(), window, sizeof(half), sizeof(half) * kW));
         char name[32];
         std::snprintf(name, sizeof name, "in.%04d.exr", f);
-        Imf::OutputFile file(dir.file(name).c_str(), header);
-        file.setFrameBuffer(fb);
-        file.writePixels(kH);
+        writeExrPlate(dir.file(name), Imf::Header(kW, kH), rgba, "Z", z, "fg.A", fg);
     }
     for (const std::vector<std::string>& how :
          {std::vector<std::string>{"--depth-channel", "Z", "--light-depth", "100"},

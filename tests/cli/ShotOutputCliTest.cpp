@@ -87,22 +87,7 @@ TEST(ShotCli, AnExrPlatesChannelsAttributesWindowsAndCompressionPassThrough) {
                            Imf::ZIP_COMPRESSION);
         header.insert("timeCode", Imf::TimeCodeAttribute(Imf::TimeCode(1, 2, 3, 4)));
         header.insert("studio/shot", Imf::StringAttribute("sh010"));
-        Imf::FrameBuffer fb;
-        const char* names[] = {"R", "G", "B", "A"};
-        for (int c = 0; c < 4; ++c) {
-            header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
-            fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgba.data() + c, data,
-                                                 4 * sizeof(float), 4 * sizeof(float) * w));
-        }
-        header.channels().insert("depth.Z", Imf::Channel(Imf::FLOAT));
-        fb.insert("depth.Z", Imf::Slice::Make(Imf::FLOAT, depth.data(), data, sizeof(float),
-                                              sizeof(float) * w));
-        header.channels().insert("matte.A", Imf::Channel(Imf::HALF));
-        fb.insert("matte.A",
-                  Imf::Slice::Make(Imf::HALF, matte.data(), data, sizeof(half), sizeof(half) * w));
-        Imf::OutputFile file(dir.file("plate.1001.exr").c_str(), header);
-        file.setFrameBuffer(fb);
-        file.writePixels(h);
+        writeExrPlate(dir.file("plate.1001.exr"), header, rgba, "depth.Z", depth, "matte.A", matte);
     }
     for (const char* job : {"apply", "postfx"}) {
         const std::string out = dir.file(std::string(job) + ".####.exr");
