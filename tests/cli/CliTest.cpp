@@ -478,6 +478,26 @@ TEST(Startup, JobsOnPngJpegTiffAndExrNeverLoadOpenImageIo) {
     EXPECT_TRUE(loads({"apply", dir.file("e.bmp"), "-o", dir.file("f.png")}));
 }
 
+// The CLI's EXR ZIP chunks are deflated and inflated by libdeflate: the loader binds
+// libOpenEXR's zlib calls to the flarekit executable (src/core/codecs/ZlibOnLibdeflate.cpp).
+TEST(Startup, OpenExrZlibCallsBindToTheExecutable) {
+    TempDir dir;
+    setenv("LD_DEBUG", "bindings", 1);
+    const CliResult r =
+        runCli({"--exr-compression", "zip", "postfx", kSunsetHdr, "-o", dir.file("z.exr")});
+    unsetenv("LD_DEBUG");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* symbol : {"`compress2'", "`uncompress'"}) {
+        std::istringstream log(r.err);
+        std::string line, binding;
+        while (std::getline(log, line))
+            if (line.find("libOpenEXR-") != std::string::npos &&
+                line.find(symbol) != std::string::npos)
+                binding = line;
+        EXPECT_NE(binding.find("/flarekit [0]"), std::string::npos) << symbol << ": " << binding;
+    }
+}
+
 TEST(CliFormats, CompressionOptionsChooseTheEncoderAndRefuseBadValues) {
     TempDir dir;
     auto compressionOf = [](const std::string& path) {
