@@ -10,9 +10,11 @@
 namespace flarekit {
 
 //! The allocator of pixel buffers. Large buffers (1 MiB and up) are their own anonymous
-//! mappings, which the kernel hands over zeroed, so a new image is not cleared twice, and are
-//! marked for transparent huge pages: a 4K RGBA float image faults in 64 times instead of
-//! 32,400 (4 KiB pages). Elements are default-initialised: Image zeroes the small ones itself.
+//! mappings, which the kernel hands over zeroed, so a new image is not cleared twice. They are
+//! not marked for transparent huge pages: on a cloud VM that hands freed 2 MiB blocks back to
+//! the host (virtio-balloon free page reporting), a huge page's first touch costs about 3 ms per
+//! MiB, 6x a plain page's (docs/formats.md). Elements are default-initialised: Image zeroes the
+//! small ones itself.
 struct PixelMemory {
     static constexpr std::size_t kMappedBytes = std::size_t(1) << 20;
     static void* allocate(std::size_t bytes);

@@ -14,7 +14,6 @@ void* PixelMemory::allocate(std::size_t bytes) {
     if (bytes < kMappedBytes) return ::operator new(bytes);
     void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
-    (void)::madvise(p, bytes, MADV_HUGEPAGE);  // a hint: without THP, plain pages
     return p;
 }
 

@@ -192,9 +192,11 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     s.channels = channels;
     s.srgb = !isFloat && options.srgbEncode;
     const std::size_t pixels = image.pixelCount();
-    // Encoded here, so the code values are flarekit's, not a library's.
+    // Encoded here, so the code values are flarekit's, not a library's. The sample buffers are
+    // pixel memory (PixelAllocator): every element is written once, so none is cleared first.
     const auto encodeAs = [&](auto code, SampleType type, auto encode) {
-        std::vector<decltype(code)> codes(pixels * std::size_t(channels));
+        std::vector<decltype(code), PixelAllocator<decltype(code)>> codes(pixels *
+                                                                          std::size_t(channels));
         forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
             encode(image.data() + p0 * 4, p1 - p0, channels,
                    codes.data() + p0 * std::size_t(channels));
@@ -214,7 +216,8 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     s.type = SampleType::F32;
     s.half = format == SampleFormat::Half;
     if (writer->format == Format::Exr && s.half) {
-        std::vector<std::uint16_t> halves(pixels * std::size_t(channels));
+        std::vector<std::uint16_t, PixelAllocator<std::uint16_t>> halves(pixels *
+                                                                         std::size_t(channels));
         forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
             floatsToHalf(image.data() + p0 * 4, p1 - p0, channels,
                          halves.data() + p0 * std::size_t(channels));
@@ -227,7 +230,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
         s.pixelStride = 4 * sizeof(float);
         return encodeAndWrite(path, *writer, s);
     }
-    std::vector<float> linear(pixels * std::size_t(channels));
+    std::vector<float, PixelAllocator<float>> linear(pixels * std::size_t(channels));
     forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
         for (std::size_t p = p0; p < p1; ++p) {
             for (int c = 0; c < channels; ++c) {

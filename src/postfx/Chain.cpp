@@ -14,10 +14,12 @@ using namespace postfx;
 
 namespace {
 
-//! `image` at size s, reallocated only when the size changes; contents are left to the pass.
-Image& ensure(Image& image, Size s) {
-    if (image.width() != s.width || image.height() != s.height) image = Image(s.width, s.height);
-    return image;
+//! `image` at size s, reallocated only when the size changes (a new Image is zero-filled);
+//! contents are left to the pass. True when it was made new.
+bool ensure(Image& image, Size s) {
+    if (image.width() == s.width && image.height() == s.height) return false;
+    image = Image(s.width, s.height);
+    return true;
 }
 
 }  // namespace
@@ -38,7 +40,8 @@ struct CpuPostFx::Impl {
 
     //! One step: its pass's kernel over every output pixel, reading its inputs as textures.
     void execute(const ChainPlan& plan, const Step& step) {
-        Image& out = ensure(write(step.output), plan.sizeOf(step.output));
+        Image& out = write(step.output);
+        const bool fresh = ensure(out, plan.sizeOf(step.output));
         // The inputs by value in the kernel's closure (as the uniforms are its own copy): the
         // compiler then knows the output rows cannot alias them and keeps them in registers.
         std::array<Tex, kMaxStepInputs> in{};
@@ -47,7 +50,7 @@ struct CpuPostFx::Impl {
             [&, in](const auto& stepUniforms) {
                 using U = std::decay_t<decltype(stepUniforms)>;
                 if constexpr (std::is_same_v<U, ClearStep>) {
-                    out.fill({});
+                    if (!fresh) out.fill({});  // a new buffer is already transparent black
                 } else {
                     runPass(out, [u = stepUniforms, in](int x, int y) {
                         return passPixel(u, in.data(), x, y);

@@ -22,7 +22,9 @@ std::vector<Bytef> sampleBytes(std::size_t n) {
     std::mt19937 rng(7);
     std::vector<Bytef> bytes(n);
     for (std::size_t i = 0; i < n; ++i)
-        bytes[i] = (i / 4096) % 3 == 0 ? Bytef(i / 512) : (i / 4096) % 3 == 1 ? Bytef(i) : Bytef(rng());
+        bytes[i] = (i / 4096) % 3 == 0   ? Bytef(i / 512)
+                   : (i / 4096) % 3 == 1 ? Bytef(i)
+                                         : Bytef(rng());
     return bytes;
 }
 

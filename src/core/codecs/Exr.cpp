@@ -156,14 +156,21 @@ std::vector<std::string> exrCompressionNames() {
 
 namespace {
 
-//! The encoded file in memory; OpenEXR seeks back to write its line offset table.
+//! The encoded file in memory; OpenEXR seeks back to write its line offset table. Its room is
+//! reserved up front (`expected`: the raw size, an upper bound for all but incompressible
+//! data), so the file is never moved as it grows; pages past what is written are never touched.
 class MemoryStream : public Imf::OStream {
   public:
-    MemoryStream() : Imf::OStream("memory") {}
+    explicit MemoryStream(std::size_t expected) : Imf::OStream("memory") {
+        m_bytes.reserve(expected);
+    }
     void write(const char c[], int n) override {
-        if (m_at + std::size_t(n) > m_bytes.size()) m_bytes.resize(m_at + std::size_t(n));
-        std::memcpy(m_bytes.data() + m_at, c, std::size_t(n));
-        m_at += std::size_t(n);
+        if (m_at > m_bytes.size()) m_bytes.resize(m_at);
+        const std::size_t end = m_at + std::size_t(n);
+        const std::size_t inside = std::min(end, m_bytes.size()) - m_at;
+        if (inside > 0) std::memcpy(m_bytes.data() + m_at, c, inside);  // the offset table
+        m_bytes.insert(m_bytes.end(), c + inside, c + n);               // past the end
+        m_at = end;
     }
     uint64_t tellp() override { return m_at; }
     void seekp(uint64_t pos) override { m_at = std::size_t(pos); }
@@ -246,7 +253,11 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
                                               window, size, size * std::size_t(s.width)));
             }
         }
-        MemoryStream memory;
+        std::size_t rawBytes = std::size_t(s.channels) * sample;
+        if (extras)
+            for (const ExrExtraChannel& e : extras->channels)
+                rawBytes += e.channel.type == Imf::HALF ? 2 : 4;
+        MemoryStream memory(rawBytes * std::size_t(s.width) * std::size_t(s.height) + 65536);
         {
             Imf::OutputFile file(memory, header);
             file.setFrameBuffer(frame);

@@ -59,7 +59,8 @@ extern "C" {
 // Z_DEFAULT_COMPRESSION (-1) is its level 6, which is libdeflate's default too.
 int compress2(Bytef* dest, uLongf* destLen, const Bytef* source, uLong sourceLen, int level) {
     if (g_zlibItself.load(std::memory_order_relaxed)) {
-        static const auto zlib = zlibs<int (*)(Bytef*, uLongf*, const Bytef*, uLong, int)>("compress2");
+        static const auto zlib =
+            zlibs<int (*)(Bytef*, uLongf*, const Bytef*, uLong, int)>("compress2");
         return zlib(dest, destLen, source, sourceLen, level);
     }
     if (level == Z_DEFAULT_COMPRESSION) level = 6;
@@ -91,14 +92,14 @@ int uncompress(Bytef* dest, uLongf* destLen, const Bytef* source, uLong sourceLe
     if (!d) return Z_MEM_ERROR;
     std::size_t n = 0;
     switch (libdeflate_zlib_decompress(d, source, sourceLen, dest, *destLen, &n)) {
-    case LIBDEFLATE_SUCCESS:
-        *destLen = uLongf(n);
-        g_expanded.fetch_add(1, std::memory_order_relaxed);
-        return Z_OK;
-    case LIBDEFLATE_INSUFFICIENT_SPACE:
-        return Z_BUF_ERROR;
-    default:
-        return Z_DATA_ERROR;
+        case LIBDEFLATE_SUCCESS:
+            *destLen = uLongf(n);
+            g_expanded.fetch_add(1, std::memory_order_relaxed);
+            return Z_OK;
+        case LIBDEFLATE_INSUFFICIENT_SPACE:
+            return Z_BUF_ERROR;
+        default:
+            return Z_DATA_ERROR;
     }
 }
 
