@@ -1,10 +1,12 @@
 // The frame's white and the chain's parameters relative to it: one preset gives the same flare
 // on an HDR frame exposed two stops under or over, and on the 8-bit photo of it.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <vector>
 
 #include "core/LuminanceSample.h"
+#include "core/Parallel.h"
 #include "flarekit/Color.h"
 #include "flarekit/Flare.h"
 #include "flarekit/PostFxParams.h"
@@ -21,6 +23,23 @@ constexpr float kMiddleGrey = 0.18f;
 constexpr float kMeterClip = 8.f;
 //! The white is kept in [1/1024, 1e4]: a black frame still has one, a blown-out one is capped.
 constexpr float kMinWhite = 1.f / 1024.f, kMaxWhite = 1e4f;
+
+//! Whether any colour channel of the frame passes display white: a scan on every core that
+//! each band stops at the first such pixel.
+bool anyChannelPastDisplayWhite(const Image& image) {
+    std::atomic<bool> found{false};
+    parallelFor(0, image.height(), 64, [&](int y0, int y1) {
+        for (int y = y0; y < y1 && !found.load(std::memory_order_relaxed); ++y) {
+            const float* p = image.row(y);
+            float peak = 0.f;
+            for (int x = 0; x < image.width(); ++x, p += 4)
+                peak = std::max({peak, p[0], p[1], p[2]});
+            if (!isDisplayReferred(peak)) found.store(true, std::memory_order_relaxed);
+        }
+    });
+    return found.load();
+}
+
 }  // namespace
 
 float frameWhite(const Image& image) {
@@ -28,16 +47,17 @@ float frameWhite(const Image& image) {
     const std::size_t n = image.pixelCount();
     const std::size_t stride = luminanceSampleStride(n);
     std::vector<float> sample;
+    sample.reserve(n / stride + 1);
     float peak = 0.f;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n; i += stride) {
         const float* p = image.data() + 4 * i;
         peak = std::max({peak, p[0], p[1], p[2]});
-        if (i % stride == 0) {
-            const float l = luminance(p[0], p[1], p[2]);
-            sample.push_back(std::isfinite(l) ? l : 0.f);
-        }
+        const float l = luminance(p[0], p[1], p[2]);
+        sample.push_back(std::isfinite(l) ? l : 0.f);
     }
-    if (isDisplayReferred(peak)) return 1.f;  // the display is the exposure
+    // The sample settles most HDR frames; only one that shows nothing past white is scanned
+    // whole, since a few sun pixels between the samples still make it scene-referred.
+    if (isDisplayReferred(peak) && !anyChannelPastDisplayWhite(image)) return 1.f;
     const float median = medianOf(sample);
     // Average metering, as a camera's meter reads the scene: the mean luminance with highlights
     // clipped at kMeterClip x the median, so a sun of 30,000 does not set the exposure but a

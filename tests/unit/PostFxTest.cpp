@@ -320,6 +320,16 @@ TEST(PostFxExposure, AnExposureRelativeChainScalesWithTheFrame) {
     Image photo(64, 64);
     photo.fill({0.6f, 0.6f, 0.6f, 1.f});
     EXPECT_EQ(frameWhite(photo), 1.f);
+    // One pixel past white between the metering samples (every 8th pixel here) still makes a
+    // frame scene-referred, in any band of the scan; none leaves it display-referred.
+    Image wide(1024, 512);
+    wide.fill({0.5f, 0.5f, 0.5f, 1.f});
+    EXPECT_EQ(frameWhite(wide), 1.f);
+    for (const int y : {0, 300, 511}) {
+        Image one = wide;
+        one.at(1021, y).b = 1.01f;
+        EXPECT_NEAR(frameWhite(one), 0.5f / 0.18f, 1e-4f) << y;
+    }
 }
 
 TEST(PostFxExposure, TheCeilingBoundsWhatASunFeedsTheChain) {
