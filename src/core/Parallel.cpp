@@ -3,7 +3,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
 namespace flarekit {
@@ -16,10 +15,6 @@ void parallelFor(int begin, int end, int grain, const std::function<void(int, in
     }
     tbb::parallel_for(tbb::blocked_range<int>(begin, end, std::size_t(grain > 0 ? grain : 1)),
                       [&](const tbb::blocked_range<int>& r) { body(r.begin(), r.end()); });
-}
-
-void sortDescending(std::vector<std::uint64_t>& keys) {
-    tbb::parallel_sort(keys.begin(), keys.end(), std::greater<>());
 }
 
 void runOnThisThread(const std::function<void()>& fn) {

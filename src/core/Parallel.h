@@ -2,18 +2,13 @@
 // stay plain loops over row ranges.
 #pragma once
 
-#include <cstdint>
 #include <functional>
-#include <vector>
 
 namespace flarekit {
 
 //! Calls body(begin, end) on disjoint sub-ranges of [begin, end), in parallel. `grain` is the
 //! smallest range worth a task.
 void parallelFor(int begin, int end, int grain, const std::function<void(int, int)>& body);
-
-//! Sorts keys largest first, on every core.
-void sortDescending(std::vector<std::uint64_t>& keys);
 
 //! Runs fn with every parallelFor inside it on the calling thread alone (a background thread
 //! that must not take the pool's workers from the foreground: the demo's frame writer).

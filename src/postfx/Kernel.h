@@ -69,11 +69,11 @@ inline F4 pointSample(const Tex& t, Vec2 uv) {
 //! postfx_common.glsl fetchFinite: fetchClamped with NaN and Inf read as 0, so one bad input
 //! pixel cannot spread over the whole flare.
 inline F4 fetchFinite(const Tex& t, int x, int y) {
-    F4 v = fetchClamped(t, x, y);
-    for (int i = 0; i < 4; ++i) {
-        if (!std::isfinite(v[i])) v[i] = 0.f;
-    }
-    return v;
+    const F4 v = fetchClamped(t, x, y);
+    // Lane-wise: a float is NaN or infinite exactly when its exponent bits are all ones.
+    typedef int I4 __attribute__((vector_size(16)));  // NOLINT: GCC/Clang vector extension
+    const I4 exponent = I4(v) & 0x7F800000;
+    return exponent != 0x7F800000 ? v : splat(0.f);
 }
 
 //! postfx_common.glsl bilinear: linear filtering at normalised (u, v), clamp-to-edge.

@@ -2,8 +2,15 @@
 // are summed here from the images the tests draw, not taken from flarekit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <vector>
 
+#include "core/RadixSort.h"
 #include "flarekit/Flare.h"
 
 using namespace flarekit;
@@ -194,4 +201,30 @@ TEST(LightFinder, DisplayReferredIsJudgedOnTheBrightestChannelAndThePeakIsPlaced
     EXPECT_FLOAT_EQ(hdr.peakAt.y, 10.5f);
     img.at(20, 10) = {1.f, 0.f, 0.f, 1.f};
     EXPECT_TRUE(findLights(img).displayReferred);
+}
+
+// The seed order: the radix sort by the luminance half, of keys made in raster order, is the
+// order of a plain descending sort of the whole keys (ties in raster order), on frames whose
+// luminances tie a lot (8-bit steps) and on ones that use every digit (random floats).
+TEST(LightFinderSeeds, TheRadixOrderIsTheDescendingOrder) {
+    std::mt19937 rng(11);
+    for (const bool quantised : {true, false}) {
+        std::vector<std::uint64_t> keys;
+        for (std::uint32_t i = 0; i < 200000; ++i) {
+            float l = std::uniform_real_distribution<float>(0.f, quantised ? 1.f : 40000.f)(rng);
+            if (quantised) l = std::round(l * 255.f) / 255.f;
+            std::uint32_t bits;
+            std::memcpy(&bits, &l, sizeof bits);
+            keys.push_back((std::uint64_t(bits) << 32) | (0xFFFFFFFFu - i));
+        }
+        std::vector<std::uint64_t> expected = keys;
+        std::sort(expected.begin(), expected.end(), std::greater<>());
+        sortByHigh32Descending(keys);
+        EXPECT_EQ(keys, expected) << quantised;
+    }
+    std::vector<std::uint64_t> none, one = {42};
+    sortByHigh32Descending(none);
+    sortByHigh32Descending(one);
+    EXPECT_TRUE(none.empty());
+    EXPECT_EQ(one, std::vector<std::uint64_t>{42});
 }

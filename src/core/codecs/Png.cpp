@@ -1,6 +1,7 @@
 // PNG through libpng. libpng reports errors by longjmp: every C++ object of a function that
 // calls it is constructed before its setjmp, so the jump skips no destructor.
 #include <png.h>
+#include <zlib.h>
 
 #include <csetjmp>
 #include <cstdio>
@@ -129,6 +130,12 @@ bool writeRows(WriteState& st, const Samples& s, int level) {
     // 776 ms; a 720p demo frame: the same size in 17 against 37 ms). Levels above 3 are asked
     // for small files: they keep the search.
     png_set_filter(st.png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
+    // Level 1 (the default) is zlib's run-length strategy: matches at distance 1 only, which is
+    // what Sub-filtered image rows mostly hold. On the 8-megapixel photographic mosaic it wrote
+    // a file 2% smaller than level 1's hashed matches in two thirds of the time (101 against
+    // 152 ms, bench_io); on three 1080p blender-data photographs, 1-6% smaller. zlib ignores
+    // the level under Z_RLE, so levels 2 and 3 keep the hashed matches for whoever wants them.
+    if (level == 1) png_set_compression_strategy(st.png, Z_RLE);
     if (s.srgb) png_set_sRGB_gAMA_and_cHRM(st.png, st.info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_set_text(st.png, st.info, &st.text, 1);
     png_write_info(st.png, st.info);
