@@ -70,6 +70,11 @@ class CpuPostFx {
     //! and, with options.keepLayers, the layers.
     Status run(const Image& input, const PostFxParams& params, PostFxResult& result,
                const PostFxOptions& options = {});
+    //! As run, with the composite written over `image` itself rather than into `result.final`
+    //! (left as it was): no second full-size buffer to allocate and fault in. The composite
+    //! reads each input pixel only where it writes it, after every other pass has read it.
+    Status runInPlace(Image& image, const PostFxParams& params, PostFxResult& result,
+                      const PostFxOptions& options = {});
 
     struct Impl;
 

@@ -14,7 +14,9 @@ void sortByHigh32Descending(std::vector<std::uint64_t>& keys) {
     for (std::size_t pass = 0; pass < kShift.size(); ++pass) {
         const std::uint64_t mask = (std::uint64_t(1) << kBits[pass]) - 1;
         const std::size_t buckets = std::size_t(mask) + 1;
-        const auto digit = [&](std::uint64_t key) { return std::size_t((key >> kShift[pass]) & mask); };
+        const auto digit = [&](std::uint64_t key) {
+            return std::size_t((key >> kShift[pass]) & mask);
+        };
         std::fill(start.begin(), start.end(), 0);
         for (const std::uint64_t key : keys) ++start[digit(key)];
         bool oneBucket = false;

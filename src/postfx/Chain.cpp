@@ -38,6 +38,10 @@ struct CpuPostFx::Impl {
     //! A buffer a step writes (never the input or the dirt texture).
     Image& write(BufferId id) { return id.kind == BufferKind::Final ? *final : *buffers.find(id); }
 
+    //! Runs the chain on `input` into `finalImage` (which may be the input itself).
+    Status run(const Image& source, Image& finalImage, const PostFxParams& params,
+               PostFxResult& result, const PostFxOptions& options);
+
     //! One step: its pass's kernel over every output pixel, reading its inputs as textures.
     void execute(const ChainPlan& plan, const Step& step) {
         Image& out = write(step.output);
@@ -68,11 +72,21 @@ CpuPostFx& CpuPostFx::operator=(CpuPostFx&&) noexcept = default;
 
 Status CpuPostFx::run(const Image& input, const PostFxParams& params, PostFxResult& result,
                       const PostFxOptions& options) {
-    auto planned = planChain(input.width(), input.height(), fitToFrame(params, input));
+    return m->run(input, result.final, params, result, options);
+}
+
+Status CpuPostFx::runInPlace(Image& image, const PostFxParams& params, PostFxResult& result,
+                             const PostFxOptions& options) {
+    return m->run(image, image, params, result, options);
+}
+
+Status CpuPostFx::Impl::run(const Image& source, Image& finalImage, const PostFxParams& params,
+                            PostFxResult& result, const PostFxOptions& options) {
+    auto planned = planChain(source.width(), source.height(), fitToFrame(params, source));
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
-    Impl& b = *m;
-    b.input = &input, b.final = &result.final;
+    Impl& b = *this;
+    b.input = &source, b.final = &finalImage;
     b.buffers.mips.resize(plan.levels.size()), b.buffers.ups.resize(plan.levels.size());
     if (plan.dirtOn)
         b.dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on

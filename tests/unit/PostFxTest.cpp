@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "PostFxImages.h"
 #include "flarekit/PostFx.h"
@@ -470,4 +471,32 @@ TEST(PostFxStarburst, RaysRadiateFromTheLight) {
 }
 
 }  // namespace
+}  // namespace flarekit
+
+namespace flarekit {
+
+// The composite written over the input (what the CLI does for one CPU run) is the composite
+// run() writes into its own buffer, bit for bit, layers included, for every shipped preset.
+TEST(PostFxInPlace, TheCompositeOverTheInputIsRunsCompositeExactly) {
+    for (const char* name : {"killzone2", "modern", "anamorphic", "subtle", "photo"}) {
+        const PostFxParams p = load(name);
+        const Image sky = test::hdrSky(320, 180);
+        PostFxOptions options;
+        options.keepLayers = true;
+        PostFxResult separate, inPlace;
+        ASSERT_TRUE(CpuPostFx().run(sky, p, separate, options).ok());
+        Image image = sky;
+        ASSERT_TRUE(CpuPostFx().runInPlace(image, p, inPlace, options).ok());
+        EXPECT_TRUE(inPlace.final.empty()) << name;
+        ASSERT_EQ(image.pixelCount(), separate.final.pixelCount());
+        EXPECT_EQ(0, std::memcmp(image.data(), separate.final.data(),
+                                 image.pixelCount() * 4 * sizeof(float)))
+            << name;
+        EXPECT_EQ(0, std::memcmp(inPlace.lens.data(), separate.lens.data(),
+                                 separate.lens.pixelCount() * 4 * sizeof(float)))
+            << name;
+        EXPECT_GT(separate.lens.pixelCount(), 0u);
+    }
+}
+
 }  // namespace flarekit

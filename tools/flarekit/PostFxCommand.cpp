@@ -164,7 +164,19 @@ Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const s
         expandHighlights(expanded, gain);
         params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
-    auto result = runBackend(a, in, expand ? expanded : loaded->image, *params, options);
+    Result<PostFxResult> result = internalError("no chain ran");
+    if (a.backend == "cpu" && a.repeat == 1 && !expand) {
+        // One CPU run on the image as read: the composite goes over it, and no second
+        // full-size buffer is made (a 1080p float frame is 33 MB of fresh pages).
+        PostFxResult composited;
+        CpuPostFx chain;
+        if (Status s = chain.runInPlace(loaded->image, *params, composited, options); !s)
+            return s.error();
+        composited.final = std::move(loaded->image);
+        result = std::move(composited);
+    } else {
+        result = runBackend(a, in, expand ? expanded : loaded->image, *params, options);
+    }
     if (!result) return result.error();
     if (expand && params->tone.op == ToneOperator::None) {
         float* f = result->final.data();
