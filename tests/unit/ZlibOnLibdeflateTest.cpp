@@ -28,33 +28,32 @@ std::vector<Bytef> sampleBytes(std::size_t n) {
     return bytes;
 }
 
-//! zlib's stream inflater, which this process does not replace.
-std::vector<Bytef> inflateWithZlib(const std::vector<Bytef>& in, std::size_t size) {
-    std::vector<Bytef> out(size + 16);
-    z_stream z{};
-    EXPECT_EQ(inflateInit(&z), Z_OK);
+//! `in` through one of zlib's stream coders (deflate or inflate, Z_FINISH in one call), which
+//! this process does not replace; `room` bytes of output at most.
+template <typename Step, typename End>
+std::vector<Bytef> throughZlibStream(z_stream& z, const std::vector<Bytef>& in, std::size_t room,
+                                     Step step, End end) {
+    std::vector<Bytef> out(room);
     z.next_in = const_cast<Bytef*>(in.data());
     z.avail_in = uInt(in.size());
     z.next_out = out.data();
     z.avail_out = uInt(out.size());
-    EXPECT_EQ(inflate(&z, Z_FINISH), Z_STREAM_END);
+    EXPECT_EQ(step(&z, Z_FINISH), Z_STREAM_END);
     out.resize(z.total_out);
-    inflateEnd(&z);
+    end(&z);
     return out;
 }
 
+std::vector<Bytef> inflateWithZlib(const std::vector<Bytef>& in, std::size_t size) {
+    z_stream z{};
+    EXPECT_EQ(inflateInit(&z), Z_OK);
+    return throughZlibStream(z, in, size + 16, inflate, inflateEnd);
+}
+
 std::vector<Bytef> deflateWithZlib(const std::vector<Bytef>& in, int level) {
-    std::vector<Bytef> out(in.size() + in.size() / 100 + 64);
     z_stream z{};
     EXPECT_EQ(deflateInit(&z, level), Z_OK);
-    z.next_in = const_cast<Bytef*>(in.data());
-    z.avail_in = uInt(in.size());
-    z.next_out = out.data();
-    z.avail_out = uInt(out.size());
-    EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
-    out.resize(z.total_out);
-    deflateEnd(&z);
-    return out;
+    return throughZlibStream(z, in, in.size() + in.size() / 100 + 64, deflate, deflateEnd);
 }
 
 }  // namespace
