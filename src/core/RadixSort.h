@@ -1,6 +1,7 @@
 // A stable LSD radix sort of 64-bit keys by their high 32 bits, largest first: three counting
 // passes of 11, 11 and 10 bits over the keys, where a comparison sort makes log2(n) (about 20
-// for a frame's worth). A pass whose digit is the same in every key is skipped.
+// for a frame's worth), each counted and scattered on every core in fixed slices. A pass whose
+// digit is the same in every key is skipped.
 #pragma once
 
 #include <cstdint>

@@ -208,20 +208,23 @@ TEST(LightFinder, DisplayReferredIsJudgedOnTheBrightestChannelAndThePeakIsPlaced
 // luminances tie a lot (8-bit steps) and on ones that use every digit (random floats).
 TEST(LightFinderSeeds, TheRadixOrderIsTheDescendingOrder) {
     std::mt19937 rng(11);
-    for (const bool quantised : {true, false}) {
-        std::vector<std::uint64_t> keys;
-        for (std::uint32_t i = 0; i < 200000; ++i) {
-            float l = std::uniform_real_distribution<float>(0.f, quantised ? 1.f : 40000.f)(rng);
-            if (quantised) l = std::round(l * 255.f) / 255.f;
-            std::uint32_t bits;
-            std::memcpy(&bits, &l, sizeof bits);
-            keys.push_back((std::uint64_t(bits) << 32) | (0xFFFFFFFFu - i));
+    // 1,000 keys: one thread; 200,000: in slices on every core.
+    for (const std::uint32_t count : {1000u, 200000u})
+        for (const bool quantised : {true, false}) {
+            std::vector<std::uint64_t> keys;
+            for (std::uint32_t i = 0; i < count; ++i) {
+                float l =
+                    std::uniform_real_distribution<float>(0.f, quantised ? 1.f : 40000.f)(rng);
+                if (quantised) l = std::round(l * 255.f) / 255.f;
+                std::uint32_t bits;
+                std::memcpy(&bits, &l, sizeof bits);
+                keys.push_back((std::uint64_t(bits) << 32) | (0xFFFFFFFFu - i));
+            }
+            std::vector<std::uint64_t> expected = keys;
+            std::sort(expected.begin(), expected.end(), std::greater<>());
+            sortByHigh32Descending(keys);
+            EXPECT_EQ(keys, expected) << count << " " << quantised;
         }
-        std::vector<std::uint64_t> expected = keys;
-        std::sort(expected.begin(), expected.end(), std::greater<>());
-        sortByHigh32Descending(keys);
-        EXPECT_EQ(keys, expected) << quantised;
-    }
     std::vector<std::uint64_t> none, one = {42};
     sortByHigh32Descending(none);
     sortByHigh32Descending(one);
