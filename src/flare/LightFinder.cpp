@@ -161,21 +161,28 @@ float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
     return n ? float(sum / n) : -1.f;
 }
 
+//! A pixel by its coordinates: the flood fill and the compactness count work in them, with no
+//! division per pixel to recover them from an index.
+struct PixelAt {
+    int x = 0, y = 0;
+};
+
 //! Grows the region of `seed` over unseen pixels >= threshold and measures it.
 LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float threshold,
                           float clippedGain, bool displayReferred, std::vector<std::uint8_t>& seen,
-                          std::vector<std::size_t>& stack, std::vector<std::size_t>& members) {
+                          std::vector<PixelAt>& stack, std::vector<PixelAt>& members) {
     LightCandidate c;
     c.peak = m.lum[seed];
     double sum = 0, flux = 0, sx = 0, sy = 0;
     members.clear();
     seen[seed] = 1;
-    stack.push_back(seed);
+    stack.push_back({int(seed % std::size_t(m.w)), int(seed / std::size_t(m.w))});
     while (!stack.empty()) {
-        const std::size_t i = stack.back();
+        const PixelAt p = stack.back();
         stack.pop_back();
-        members.push_back(i);
-        const int x = int(i % std::size_t(m.w)), y = int(i / std::size_t(m.w));
+        members.push_back(p);
+        const int x = p.x, y = p.y;
+        const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
         const double l = m.lum[i];
         sum += l;
         flux += displayReferred && m.clipped[i] ? double(clippedGain) : l;
@@ -186,7 +193,7 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
             const std::size_t j = std::size_t(ny) * std::size_t(m.w) + std::size_t(nx);
             if (!seen[j] && m.lum[j] >= threshold) {
                 seen[j] = 1;
-                stack.push_back(j);
+                stack.push_back({nx, ny});
             }
         };
         visit(x - 1, y);
@@ -205,9 +212,9 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
     // a square, low for a cloud, a branch or a lit edge however large its bounding circle).
     const double reach2 = 1.5625 * double(c.radius) * double(c.radius) + 0.5;
     std::size_t inside = 0;
-    for (std::size_t i : members) {
-        const double dx = double(i % std::size_t(m.w)) + 0.5 - c.position.x;
-        const double dy = double(i / std::size_t(m.w)) + 0.5 - c.position.y;
+    for (const PixelAt p : members) {
+        const double dx = double(p.x) + 0.5 - c.position.x;
+        const double dy = double(p.y) + 0.5 - c.position.y;
         inside += dx * dx + dy * dy <= reach2;
     }
     c.compactness = float(double(inside) / double(c.pixels));
@@ -316,7 +323,7 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
     std::vector<std::uint64_t> keys = seedKeys(m, options.minLuminance);
     sortByHigh32Descending(keys);
     std::vector<std::uint8_t> seen(m.lum.size(), 0);
-    std::vector<std::size_t> stack, members;
+    std::vector<PixelAt> stack, members;
     for (const std::uint64_t key : keys) {
         const std::size_t seed = 0xFFFFFFFFu - std::uint32_t(key & 0xFFFFFFFFu);
         if (seen[seed]) continue;
