@@ -1,6 +1,5 @@
 #include "core/RadixSort.h"
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 

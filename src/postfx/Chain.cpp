@@ -85,23 +85,22 @@ Status CpuPostFx::Impl::run(const Image& source, Image& finalImage, const PostFx
     auto planned = planChain(source.width(), source.height(), fitToFrame(params, source));
     if (!planned) return planned.error();
     const ChainPlan& plan = *planned;
-    Impl& b = *this;
-    b.input = &source, b.final = &finalImage;
-    b.buffers.mips.resize(plan.levels.size()), b.buffers.ups.resize(plan.levels.size());
+    input = &source, final = &finalImage;
+    buffers.mips.resize(plan.levels.size()), buffers.ups.resize(plan.levels.size());
     if (plan.dirtOn)
-        b.dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on
+        dirt.update(plan.work().width, plan.work().height, plan.dirt);  // read only when on
     PassClock clock(options.times);
     forEachGroup(
         plan, [&](const char* label, Size written, std::size_t first, std::size_t last, bool off) {
             const auto group = [&] {
-                for (std::size_t i = first; i < last; ++i) b.execute(plan, plan.steps[i]);
+                for (std::size_t i = first; i < last; ++i) execute(plan, plan.steps[i]);
             };
             off ? group() : clock.run(label, written, group);
         });
     if (options.keepLayers) {
-        result.bloom = b.read(plan.bloom);
+        result.bloom = read(plan.bloom);
         result.bloom.scale(params.bloom.intensity);
-        const ChainBuffers<Image>& l = b.buffers;
+        const ChainBuffers<Image>& l = buffers;
         result.ghosts = l.ghosts, result.halo = l.halo, result.streaks = l.streaks,
         result.lens = l.lens;
     }

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     app.add_option("--png-compression", pngLevel,
                    "zlib level of the PNGs written, 0 (none) to 9 (smallest). Default 1 (zlib's "
                    "run-length strategy, the fastest): on an 8-megapixel photograph, 6 (libpng's "
-                   "default) writes a file 12% smaller taking 20x as long to compress")
+                   "default) writes a file 9% smaller taking 20x as long to compress")
         ->check(CLI::Range(0, 9));
     std::string exrCompression = flarekit::exrCompression();
     CLI::Option* exrOption =

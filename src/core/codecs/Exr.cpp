@@ -28,6 +28,11 @@ namespace flarekit::codec {
 
 namespace {
 
+//! Bytes of one sample of channel c: 2 for half, 4 for float and uint.
+std::size_t sampleBytes(const Imf::Channel& c) {
+    return c.type == Imf::HALF ? 2 : 4;
+}
+
 //! OpenEXR decodes and encodes line blocks in parallel when its global pool has threads; one
 //! per core, as OpenImageIO sets it.
 void startThreadPool() {
@@ -61,9 +66,6 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
             rgb ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"Y", "A"};
         const auto isRead = [&](const std::string& name) {
             return std::find(read.begin(), read.end(), name) != read.end();
-        };
-        const auto sampleBytes = [](const Imf::Channel& c) -> std::size_t {
-            return c.type == Imf::HALF ? 2 : 4;
         };
         ExrRead out;
         out.header.width = int(std::min<long>(long(window.max.x) - window.min.x + 1, 1L << 30));
@@ -246,7 +248,7 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
         }
         if (extras) {
             for (const ExrExtraChannel& e : extras->channels) {
-                const std::size_t size = e.channel.type == Imf::HALF ? 2 : 4;
+                const std::size_t size = sampleBytes(e.channel);
                 header.channels().insert(e.name, e.channel);
                 frame.insert(e.name,
                              Imf::Slice::Make(e.channel.type, const_cast<char*>(e.pixels.data()),
@@ -255,8 +257,7 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
         }
         std::size_t rawBytes = std::size_t(s.channels) * sample;
         if (extras)
-            for (const ExrExtraChannel& e : extras->channels)
-                rawBytes += e.channel.type == Imf::HALF ? 2 : 4;
+            for (const ExrExtraChannel& e : extras->channels) rawBytes += sampleBytes(e.channel);
         MemoryStream memory(rawBytes * std::size_t(s.width) * std::size_t(s.height) + 65536);
         {
             Imf::OutputFile file(memory, header);

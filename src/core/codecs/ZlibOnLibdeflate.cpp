@@ -33,10 +33,10 @@ Function zlibs(const char* name) {
     return reinterpret_cast<Function>(dlsym(RTLD_NEXT, name));
 }
 
-//! One compressor per level and one decompressor per thread: libdeflate's objects are not
-//! shared between threads, and OpenEXR calls from every thread of its pool.
+//! One compressor per zlib level (0-9) and one decompressor per thread: libdeflate's objects are
+//! not shared between threads, and OpenEXR calls from every thread of its pool.
 struct ThreadCoders {
-    libdeflate_compressor* compressors[13] = {};
+    libdeflate_compressor* compressors[10] = {};
     libdeflate_decompressor* decompressor = nullptr;
     ~ThreadCoders() {
         for (libdeflate_compressor* c : compressors) libdeflate_free_compressor(c);
