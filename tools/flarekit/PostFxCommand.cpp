@@ -44,12 +44,18 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 //! Runs the chain `repeat` times (buffers kept, as in a video) and, when repeating, prints the
 //! mean time of the runs after the first: the figure bench/peers/run_blender_peer.sh compares.
+//! `overwrite`: the caller has no further use for `image`, so one CPU run composites over it
+//! (and moves it into the result): no second full-size buffer (a 1080p float frame is 33 MB of
+//! fresh pages).
 Result<PostFxResult> runBackend(const PostFxArgs& a, [[maybe_unused]] const std::string& in,
-                                const Image& image, const PostFxParams& params,
+                                Image& image, bool overwrite, const PostFxParams& params,
                                 const PostFxOptions& options) {
     PostFxResult result;
     double warmSeconds = 0;
-    if (a.backend == "cpu") {
+    if (a.backend == "cpu" && overwrite && a.repeat == 1) {
+        if (Status s = CpuPostFx().runInPlace(image, params, result, options); !s) return s.error();
+        result.final = std::move(image);
+    } else if (a.backend == "cpu") {
         CpuPostFx chain;
         for (int i = 0; i < a.repeat; ++i) {
             const auto start = std::chrono::steady_clock::now();
@@ -164,19 +170,8 @@ Result<ImageOutput> runChain(const PostFxArgs& a, const std::string& in, const s
         expandHighlights(expanded, gain);
         params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
-    Result<PostFxResult> result = internalError("no chain ran");
-    if (a.backend == "cpu" && a.repeat == 1 && !expand) {
-        // One CPU run on the image as read: the composite goes over it, and no second
-        // full-size buffer is made (a 1080p float frame is 33 MB of fresh pages).
-        PostFxResult composited;
-        CpuPostFx chain;
-        if (Status s = chain.runInPlace(loaded->image, *params, composited, options); !s)
-            return s.error();
-        composited.final = std::move(loaded->image);
-        result = std::move(composited);
-    } else {
-        result = runBackend(a, in, expand ? expanded : loaded->image, *params, options);
-    }
+    // The image as read is needed afterwards only to take an expansion back off.
+    auto result = runBackend(a, in, expand ? expanded : loaded->image, !expand, *params, options);
     if (!result) return result.error();
     if (expand && params->tone.op == ToneOperator::None) {
         float* f = result->final.data();
