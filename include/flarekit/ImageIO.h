@@ -95,6 +95,11 @@ bool exrCompressionChosen();
 //! The names setExrCompression accepts, in OpenEXR's order.
 std::vector<std::string> exrCompressionNames();
 std::string exrCompression();
+//! zlib level of the EXR compressions built on deflate (zip, zips, and the lossless part of
+//! dwaa and dwab) in every EXR written from now on, 0 (store) to 9 (smallest); 1 by default,
+//! where OpenEXR's own default is 4 (docs/formats.md has the size trade-off). Clamped to [0, 9].
+void setExrZipLevel(int level);
+int exrZipLevel();
 
 //! Fails with InvalidInput when the directory `path` would be written into does not exist.
 Status checkOutputPath(const std::string& path);

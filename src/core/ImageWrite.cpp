@@ -25,6 +25,7 @@ using imageio::moduleFor;
 namespace {
 
 std::atomic<int> g_pngCompression{codec::EncodeOptions{}.pngCompression};
+std::atomic<int> g_exrZipLevel{codec::EncodeOptions{}.exrZipLevel};
 std::mutex g_exrMutex;
 std::string g_exrCompression = codec::EncodeOptions{}.exrCompression;
 bool g_exrCompressionChosen = false;
@@ -36,6 +37,13 @@ void setPngCompression(int level) {
 }
 int pngCompression() {
     return g_pngCompression;
+}
+
+void setExrZipLevel(int level) {
+    g_exrZipLevel = std::clamp(level, 0, 9);
+}
+int exrZipLevel() {
+    return g_exrZipLevel;
 }
 
 std::vector<std::string> exrCompressionNames() {
@@ -98,6 +106,7 @@ Status encodeAndWrite(const std::string& path, const Writer& w, const codec::Sam
     codec::EncodeOptions options;
     options.pngCompression = g_pngCompression;
     options.exrCompression = exrCompression();
+    options.exrZipLevel = g_exrZipLevel;
     Result<std::vector<unsigned char>> bytes = internalError("no encoder");
     switch (w.format) {
         case Format::Png:

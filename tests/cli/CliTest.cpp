@@ -520,8 +520,20 @@ TEST(CliFormats, CompressionOptionsChooseTheEncoderAndRefuseBadValues) {
         runCli({"apply", kSunset, "-o", dir.file("c9.png"), "--png-compression", "9"}).exitCode, 0);
     EXPECT_GT(std::filesystem::file_size(dir.file("c0.png")),
               2 * std::filesystem::file_size(dir.file("c9.png")));
+    // --exr-zip-level: 0 stores the halves, 9 deflates harder than the default 1.
+    for (const char* level : {"0", "1", "9"}) {
+        ASSERT_EQ(runCli({"--exr-compression", "zip", "--exr-zip-level", level, "postfx",
+                          kSunsetHdr, "-o", dir.file(std::string("z") + level + ".exr")})
+                      .exitCode,
+                  0);
+    }
+    EXPECT_GT(std::filesystem::file_size(dir.file("z0.exr")),
+              std::filesystem::file_size(dir.file("z1.exr")));
+    EXPECT_GT(std::filesystem::file_size(dir.file("z1.exr")),
+              std::filesystem::file_size(dir.file("z9.exr")));
     for (const auto& bad : {std::vector<std::string>{"--exr-compression", "lzma"},
-                            std::vector<std::string>{"--png-compression", "10"}}) {
+                            std::vector<std::string>{"--png-compression", "10"},
+                            std::vector<std::string>{"--exr-zip-level", "-1"}}) {
         std::vector<std::string> args = {"apply", kSunset, "-o", dir.file("bad.png")};
         args.insert(args.end(), bad.begin(), bad.end());
         const CliResult r = runCli(args);

@@ -225,6 +225,41 @@ TEST(Codec, PngCompressionLevelChangesSizeNotPixels) {
     EXPECT_LT(sizes[2], sizes[1]);
 }
 
+TEST(Codec, ExrZipLevelChangesSizeNotPixels) {
+    // Smooth ramps with a little noise: deflate finds more at higher levels. Every level's file
+    // reads back through OpenImageIO's own EXR reader to the same halves.
+    TempDir dir;
+    Image image(320, 96);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> value(0.f, 1.f);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            image.at(x, y) = {float(x) / 32.f, value(rng) * 0.01f + 2.f, float(y % 7), 1.f};
+    const int before = exrZipLevel();
+    const std::string kept = exrCompression();
+    ASSERT_TRUE(setExrCompression("zip").ok());
+    std::vector<std::uintmax_t> sizes;
+    for (int level : {0, 1, 9}) {
+        setExrZipLevel(level);
+        const std::string path = dir.file("zip" + std::to_string(level) + ".exr");
+        ASSERT_TRUE(writeImage(path, image).ok());
+        sizes.push_back(std::filesystem::file_size(path));
+        auto in = openStraight(path);
+        ASSERT_TRUE(in);
+        EXPECT_EQ(in->spec().get_string_attribute("compression"), "zip");
+        std::vector<float> back(std::size_t(image.width()) * std::size_t(image.height()) * 3);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, back.data()));
+        for (int x = 0; x < image.width(); ++x)
+            ASSERT_EQ(back[(std::size_t(40) * std::size_t(image.width()) + std::size_t(x)) * 3],
+                      float(half(image.at(x, 40).r)));
+    }
+    setExrZipLevel(before);
+    ASSERT_TRUE(setExrCompression(kept).ok());
+    EXPECT_GT(sizes[0], std::uintmax_t(320 * 96 * 3 * 2));  // stored: every half plus framing
+    EXPECT_LT(sizes[1], sizes[0]);
+    EXPECT_LT(sizes[2], sizes[1]);
+}
+
 TEST(Codec, HalfConversionsAreImathsBitForBit) {
     // The F16C path (when the CPU has it) against Imath's half, on floats across the whole
     // half range and past it: subnormals, rounding ties, overflow to infinity.

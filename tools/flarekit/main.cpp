@@ -68,6 +68,13 @@ int main(int argc, char** argv) {
                "pxr24, "
                "b44, b44a, dwaa, dwab; an EXR input's own compression is kept unless this is given")
             ->check(CLI::IsMember(flarekit::exrCompressionNames()));
+    int exrZipLevel = flarekit::exrZipLevel();
+    app.add_option("--exr-zip-level", exrZipLevel,
+                   "zlib level of zip and zips EXRs written (and of dwaa/dwab's lossless part), 0 "
+                   "(none) to 9 (smallest). Default 1: on 1080p HDR photographs OpenEXR's default "
+                   "4 writes files 3-4% smaller (7% on a smooth sky) and a postfx run costs a "
+                   "quarter more CPU")
+        ->check(CLI::Range(0, 9));
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);
@@ -85,6 +92,7 @@ int main(int argc, char** argv) {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)
             throw CLI::ValidationError(s.error().message);
         flarekit::setPngCompression(pngLevel);
+        flarekit::setExrZipLevel(exrZipLevel);
         if (exrOption->count() > 0) {
             if (flarekit::Status s = flarekit::setExrCompression(exrCompression); !s)
                 throw CLI::ValidationError(s.error().message);

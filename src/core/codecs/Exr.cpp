@@ -228,6 +228,7 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
             }
         }
         header.insert("software", Imf::StringAttribute("flarekit"));
+        header.zipCompressionLevel() = options.exrZipLevel;
         const Imath::Box2i window = header.dataWindow();
         // OpenEXR's writer takes samples of the file's own type: half samples come packed
         // (converted by the caller), floats straight from the image with its stride.
