@@ -12,10 +12,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <half.h>
 
+#include "core/BandPipeline.h"
 #include "core/FirstLine.h"
 #include "core/ImageIOShared.h"
 #include "core/Parallel.h"
@@ -136,10 +138,10 @@ bool leftToOiio(const Error& e) {
 }
 
 //! The file's samples through the codec its first bytes name, or through OpenImageIO.
-Result<codec::Raw> readRaw(const std::string& path, Format format,
-                           const codec::HeaderCheck& check) {
+Result<codec::Raw> readRaw(const std::string& path, Format format, const codec::HeaderCheck& check,
+                           const codec::RowsDecoded& rowsDecoded = {}) {
     Result<codec::Raw> raw = invalidInput(codec::kUnsupportedLayout);
-    if (format == Format::Png) raw = codec::readPng(path, check);
+    if (format == Format::Png) raw = codec::readPng(path, check, rowsDecoded);
     if (format == Format::Jpeg) raw = codec::readJpeg(path, check);
     if (format == Format::Tiff) raw = codec::readTiff(path, check);
     if (raw.ok() || !leftToOiio(raw.error())) return raw;
@@ -204,62 +206,110 @@ inline void promote(float* d, std::size_t s, int keep, Colour colour, Alpha alph
     d[3] = keep == 2 || keep == 4 ? alpha(s + std::size_t(keep) - 1) : 1.f;
 }
 
-//! Decoded samples to linear float RGBA: integer colour through the sRGB tables (unless the
-//! file says linear), floats as they are, non-finite values replaced by 0 and counted.
-std::size_t toLinearRgba(const codec::Raw& raw, Image& image) {
-    const int keep = raw.channels;
-    const bool srgb = !raw.header.isFloat && !raw.header.declaredLinear;
-    std::atomic<std::size_t> nonFinite{0};
+//! What converting decoded samples needs of them: kept by value, so a band converted while
+//! the decoder still runs does not depend on the Raw the codec is filling.
+struct SampleView {
+    const unsigned char* bytes = nullptr;
+    int keep = 0;  //!< channels per pixel
+    SampleType type = SampleType::U8;
+    bool srgb = false;  //!< colour through the sRGB curve
+    explicit SampleView(const codec::Raw& raw)
+        : bytes(raw.bytes.data()),
+          keep(raw.channels),
+          type(raw.header.decodeAs),
+          srgb(!raw.header.isFloat && !raw.header.declaredLinear) {}
+};
+
+//! Pixels [p0, p1) of decoded samples to linear float RGBA: integer colour through the sRGB
+//! tables (unless the file says linear), floats as they are, non-finite values replaced by 0.
+//! Returns how many were replaced.
+std::size_t toLinearRgba(const SampleView& v, Image& image, std::size_t p0, std::size_t p1) {
+    const int keep = v.keep;
     auto run = [&](auto sample, auto colour, auto alpha) {
-        forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
-            for (std::size_t p = p0; p < p1; ++p) {
-                promote(
-                    image.data() + p * 4, p * std::size_t(keep), keep,
-                    [&](std::size_t i) { return colour(sample[i]); },
-                    [&](std::size_t i) { return alpha(sample[i]); });
-            }
-        });
-    };
-    if (raw.header.decodeAs == SampleType::U8) {
-        const float* table = srgb8DecodeTable();
-        auto linear = [](std::uint8_t v) { return float(v) * (1.f / 255.f); };
-        if (srgb) {
-            run(
-                raw.bytes.data(), [table](std::uint8_t v) { return table[v]; }, linear);
-        } else {
-            run(raw.bytes.data(), linear, linear);
+        for (std::size_t p = p0; p < p1; ++p) {
+            promote(
+                image.data() + p * 4, p * std::size_t(keep), keep,
+                [&](std::size_t i) { return colour(sample[i]); },
+                [&](std::size_t i) { return alpha(sample[i]); });
         }
-    } else if (raw.header.decodeAs == SampleType::U16) {
-        const float* table = srgb16DecodeTable();
-        const auto* u16 = reinterpret_cast<const std::uint16_t*>(raw.bytes.data());
-        auto linear = [](std::uint16_t v) { return float(v) * (1.f / 65535.f); };
-        if (srgb) {
+    };
+    if (v.type == SampleType::U8) {
+        const float* table = srgb8DecodeTable();
+        auto linear = [](std::uint8_t s) { return float(s) * (1.f / 255.f); };
+        if (v.srgb) {
             run(
-                u16, [table](std::uint16_t v) { return table[v]; }, linear);
+                v.bytes, [table](std::uint8_t s) { return table[s]; }, linear);
+        } else {
+            run(v.bytes, linear, linear);
+        }
+        return 0;
+    }
+    if (v.type == SampleType::U16) {
+        const float* table = srgb16DecodeTable();
+        const auto* u16 = reinterpret_cast<const std::uint16_t*>(v.bytes);
+        auto linear = [](std::uint16_t s) { return float(s) * (1.f / 65535.f); };
+        if (v.srgb) {
+            run(
+                u16, [table](std::uint16_t s) { return table[s]; }, linear);
         } else {
             run(u16, linear, linear);
         }
-    } else {
-        const auto* f32 = reinterpret_cast<const float*>(raw.bytes.data());
-        forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
-            std::size_t bad = 0;
-            auto finite = [&](std::size_t i) {
-                const float v = f32[i];
-                if (std::isfinite(v)) return v;
-                ++bad;
-                return 0.f;
-            };
-            auto colour = [&](std::size_t i) {
-                const float v = finite(i);
-                return srgb ? srgbToLinear(v) : v;
-            };
-            for (std::size_t p = p0; p < p1; ++p)
-                promote(image.data() + p * 4, p * std::size_t(keep), keep, colour, finite);
-            nonFinite += bad;
-        });
+        return 0;
     }
+    const auto* f32 = reinterpret_cast<const float*>(v.bytes);
+    std::size_t bad = 0;
+    auto finite = [&](std::size_t i) {
+        const float s = f32[i];
+        if (std::isfinite(s)) return s;
+        ++bad;
+        return 0.f;
+    };
+    auto colour = [&](std::size_t i) {
+        const float s = finite(i);
+        return v.srgb ? srgbToLinear(s) : s;
+    };
+    for (std::size_t p = p0; p < p1; ++p)
+        promote(image.data() + p * 4, p * std::size_t(keep), keep, colour, finite);
+    return bad;
+}
+
+//! The whole image, in parallel.
+std::size_t toLinearRgba(const codec::Raw& raw, Image& image) {
+    const SampleView view(raw);
+    std::atomic<std::size_t> nonFinite{0};
+    forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
+        nonFinite += toLinearRgba(view, image, p0, p1);
+    });
     return nonFinite;
 }
+
+//! A PNG's rows converted band by band while libpng decodes the next ones (libpng decodes on
+//! one thread; the conversion is a third of the read when it follows instead).
+struct ConvertWhileDecoding {
+    Image& image;
+    std::optional<BandPipeline> pipeline;
+    std::atomic<std::size_t> nonFinite{0};
+
+    void rowsDecoded(const codec::Raw& raw, int rowEnd) {
+        if (rowEnd < 0) {
+            pipeline.reset();  // cancels the bands not begun, waits for the one being converted
+            return;
+        }
+        if (!pipeline) {
+            image = Image(raw.header.width, raw.header.height);
+            const SampleView view(raw);
+            const std::size_t width = std::size_t(raw.header.width);
+            pipeline.emplace(
+                raw.header.height, codec::kPngBandRows,
+                [this, view, width](int y0, int y1) {
+                    nonFinite +=
+                        toLinearRgba(view, image, std::size_t(y0) * width, std::size_t(y1) * width);
+                },
+                false);
+        }
+        pipeline->publish(rowEnd);
+    }
+};
 
 //! After an EXR read into RGBA: grey copied to G and B, non-finite values replaced and counted.
 std::size_t finishExr(Image& image, bool grey) {
@@ -348,14 +398,21 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
         }
         if (!leftToOiio(exr.error())) return exr.error();
     }
-    auto raw = readRaw(path, format, check);
+    ConvertWhileDecoding png{out.image, {}};
+    auto raw = readRaw(path, format, check,
+                       [&](const codec::Raw& r, int rowEnd) { png.rowsDecoded(r, rowEnd); });
     if (!raw) return raw.error();
     out.fileChannels = raw->header.channels;
     out.droppedChannels = raw->header.channels - raw->channels;
     out.wasFloat = raw->header.isFloat;
     out.hasAlpha = raw->channels == 2 || raw->channels == 4;
-    out.image = Image(raw->header.width, raw->header.height);
-    out.nonFinite = toLinearRgba(*raw, out.image);
+    if (png.pipeline) {
+        png.pipeline->finish();
+        out.nonFinite = png.nonFinite;
+    } else {
+        out.image = Image(raw->header.width, raw->header.height);
+        out.nonFinite = toLinearRgba(*raw, out.image);
+    }
     raw->bytes = {};  // the decode buffer goes before reorienting copies the image
     if (raw->orientation >= 2 && raw->orientation <= 8)
         out.image = reoriented(out.image, raw->orientation);

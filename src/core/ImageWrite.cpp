@@ -6,6 +6,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/BandPipeline.h"
 #include "core/HalfFloat.h"
 #include "core/ImageIOShared.h"
 #include "core/SafeWrite.h"
@@ -206,12 +207,25 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     const auto encodeAs = [&](auto code, SampleType type, auto encode) {
         std::vector<decltype(code), PixelAllocator<decltype(code)>> codes(pixels *
                                                                           std::size_t(channels));
-        forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
+        const std::size_t width = std::size_t(image.width());
+        const auto encodeRows = [&](std::size_t p0, std::size_t p1) {
             encode(image.data() + p0 * 4, p1 - p0, channels,
                    codes.data() + p0 * std::size_t(channels));
-        });
+        };
         s.type = type;
         s.data = codes.data();
+        if (writer->format != Format::Png) {
+            forEachChunk(pixels, encodeRows);
+            return encodeAndWrite(path, *writer, s);
+        }
+        // libpng filters and deflates on one thread: the rows are encoded band by band beside
+        // it, each before libpng reads it (a 1080p photograph: the write went from about 50 to 40
+        // ms).
+        BandPipeline rows(
+            image.height(), codec::kPngBandRows,
+            [&](int y0, int y1) { encodeRows(std::size_t(y0) * width, std::size_t(y1) * width); },
+            true);
+        s.waitForRows = [&](int rowEnd) { rows.waitFor(rowEnd); };
         return encodeAndWrite(path, *writer, s);
     };
     if (format == SampleFormat::U8)

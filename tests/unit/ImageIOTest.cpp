@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
 
 #include "RawFiles.h"
 #include "TempDir.h"
@@ -108,6 +109,25 @@ TEST(ImageIO, TruncatedFilesAreErrors) {
         ASSERT_FALSE(r.ok()) << name;
         EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
     }
+}
+
+// Cut inside the pixel data, after libpng has handed over many bands that the reader converts
+// while decoding: an error, and no band converted from freed memory (the sanitizer build).
+TEST(ImageIO, APngCutMidImageIsAnError) {
+    TempDir dir;
+    Image img(300, 400);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> unit(0.f, 1.f);
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) img.at(x, y) = {unit(rng), unit(rng), 0.5f, 1.f};
+    ASSERT_TRUE(writeImage(dir.file("n.png"), img).ok());
+    const auto size = std::filesystem::file_size(dir.file("n.png"));
+    test::truncateFile(dir.file("n.png"), dir.file("cut.png"), std::size_t(size * 6 / 10));
+    auto r = readImage(dir.file("cut.png"));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(r.error().message.find("cannot decode image"), std::string::npos)
+        << r.error().message;
 }
 
 TEST(ImageIO, GreyAndGreyAlphaArePromoted) {

@@ -20,7 +20,14 @@ Format sniffFormat(const std::string& path);
 //! The format an output name asks for, from its extension.
 Format formatForExtension(const std::string& lowerExtension);
 
-Result<Raw> readPng(const std::string& path, const HeaderCheck& check);
+//! Rows [0, rowEnd) of `raw` are decoded; `raw.bytes` is allocated whole before the first call
+//! and its data pointer stays valid after the read returns `raw`. rowEnd -1: the decode failed
+//! and `raw` is about to go; whatever reads its rows must have stopped when this returns.
+using RowsDecoded = std::function<void(const Raw& raw, int rowEnd)>;
+//! `rowsDecoded`, when given, hears of every band of kPngBandRows rows as libpng finishes it
+//! (an interlaced file: of all rows at the end), so they can be converted meanwhile.
+Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
+                    const RowsDecoded& rowsDecoded = {});
 Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check);
 //! TIFF files libtiff can hand over as plain interleaved samples (grey or RGB, with or without
 //! alpha, 8 or 16-bit integer or 32-bit float, strips or tiles); Unsupported for the rest

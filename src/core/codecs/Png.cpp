@@ -3,6 +3,7 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -38,7 +39,8 @@ struct ReadState {
 
 }  // namespace
 
-Result<Raw> readPng(const std::string& path, const HeaderCheck& check) {
+Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
+                    const RowsDecoded& rowsDecoded) {
     ReadState st;
     Raw raw;
     std::vector<png_bytep> rows;
@@ -49,6 +51,7 @@ Result<Raw> readPng(const std::string& path, const HeaderCheck& check) {
     if (st.png) st.info = png_create_info_struct(st.png);
     if (!st.png || !st.info) return internalError(path + ": libpng could not start");
     if (setjmp(png_jmpbuf(st.png))) {
+        if (rowsDecoded) rowsDecoded(raw, -1);  // stop reading raw's rows: it goes with this
         return invalidInput(path + ": cannot decode image: " + excerpt(st.errors.message, 200));
     }
     png_init_io(st.png, st.file);
@@ -63,7 +66,7 @@ Result<Raw> readPng(const std::string& path, const HeaderCheck& check) {
         png_set_expand(st.png);
     }
     if (depth == 16) png_set_swap(st.png);
-    png_set_interlace_handling(st.png);
+    const bool interlaced = png_set_interlace_handling(st.png) > 1;
     png_read_update_info(st.png, st.info);
 
     raw.header.width = int(png_get_image_width(st.png, st.info));
@@ -83,7 +86,16 @@ Result<Raw> readPng(const std::string& path, const HeaderCheck& check) {
     raw.bytes.resize(rowBytes * std::size_t(raw.header.height));
     rows.resize(std::size_t(raw.header.height));
     for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = raw.bytes.data() + y * rowBytes;
-    png_read_image(st.png, rows.data());
+    if (interlaced || !rowsDecoded) {
+        png_read_image(st.png, rows.data());
+        if (rowsDecoded) rowsDecoded(raw, raw.header.height);
+    } else {
+        for (int y = 0; y < raw.header.height; y += kPngBandRows) {
+            const int n = std::min(kPngBandRows, raw.header.height - y);
+            png_read_rows(st.png, rows.data() + y, nullptr, png_uint_32(n));
+            rowsDecoded(raw, y + n);
+        }
+    }
     png_uint_32 exifBytes = 0;
     png_bytep exif = nullptr;
     if (png_get_eXIf_1(st.png, st.info, &exifBytes, &exif) && exif)
@@ -140,7 +152,15 @@ bool writeRows(WriteState& st, const Samples& s, int level) {
     png_set_text(st.png, st.info, &st.text, 1);
     png_write_info(st.png, st.info);
     if (depth == 16) png_set_swap(st.png);
-    png_write_image(st.png, st.rows.data());
+    if (!s.waitForRows) {
+        png_write_image(st.png, st.rows.data());
+    } else {
+        for (int y = 0; y < s.height; y += kPngBandRows) {
+            const int n = std::min(kPngBandRows, s.height - y);
+            s.waitForRows(y + n);
+            png_write_rows(st.png, st.rows.data() + y, png_uint_32(n));
+        }
+    }
     png_write_end(st.png, nullptr);
     return true;
 }
