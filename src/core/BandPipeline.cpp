@@ -24,8 +24,7 @@ struct BandPipeline::State {
         const int band = next.fetch_add(1);
         if (band >= bands) return false;
         const int y0 = band * bandRows, y1 = std::min(rows, y0 + bandRows);
-        for (int seen = published.load(); seen < y1; seen = published.load())
-            published.wait(seen);
+        for (int seen = published.load(); seen < y1; seen = published.load()) published.wait(seen);
         if (!cancelled.load()) work(y0, y1);
         done[band].store(1);
         done[band].notify_all();
@@ -33,8 +32,7 @@ struct BandPipeline::State {
     }
 };
 
-BandPipeline::BandPipeline(int rows, int bandRows, std::function<void(int, int)> work,
-                           bool ready)
+BandPipeline::BandPipeline(int rows, int bandRows, std::function<void(int, int)> work, bool ready)
     : m(std::make_unique<State>()) {
     m->rows = std::max(0, rows);
     m->bandRows = std::max(1, bandRows);

@@ -38,6 +38,17 @@ constexpr float kCoreCutSigmas = 3.5f, kWingCutScales = 4.34f;
 //! (1 - share) sqrt(2 pi) sigma, the wing to 2 share scale.
 constexpr float kProfilePeak = 1.f / ((1.f - kWingShare) * 2.5066283f / kFwhmPerSigma +
                                       2.f * kWingShare * kWingScalePerThickness);
+//! Spikes at most for which testing each one beats finding the few near the pixel's angle (an
+//! atan2, an arcsine bound and a binary search): a preset's streaks (4 to 8), not its rays.
+constexpr std::size_t kSpikesTestedDirectly = 12;
+
+//! Whether spike s can light the pixel at (x, y): the tests the summing loop makes.
+inline bool reaches(const ElementKernel& k, const Spike& s, float x, float y) {
+    const float along = x * s.cosAngle + y * s.sinAngle;
+    if (along <= 0.f || along >= s.length) return false;
+    return std::abs(y * s.cosAngle - x * s.sinAngle) < k.maxHalfWidth;
+}
+
 }  // namespace
 
 SpikeProfile makeSpikeProfile(float thickness, float pixel) {
@@ -83,6 +94,12 @@ std::vector<Spike> makeSpikes(const ElementParams& p) {
 }
 
 Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
+    // Most of a few streaks' disc is dark: no spike reaches it, the sum below would stay 0 and
+    // gradient() return nothing; said straight away, without the angle search.
+    if (k.spikes.size() <= kSpikesTestedDirectly &&
+        std::none_of(k.spikes.begin(), k.spikes.end(),
+                     [&](const Spike& s) { return reaches(k, s, x, y); }))
+        return {};
     const float d = std::sqrt(x * x + y * y);
     float theta = fastAtan2(y, x);
     if (theta < 0.f) theta += kTwoPi;

@@ -29,12 +29,15 @@ TEST(BandPipeline, BeforeAConsumerEveryRowIsWorkedOnceAndBeforeItIsRead) {
             Record record(rows);
             std::vector<int> row(std::size_t(rows), 0);
             {
-                BandPipeline pipeline(rows, 16, [&](int y0, int y1) {
-                    for (int y = y0; y < y1; ++y) {
-                        ++record.times[std::size_t(y)];
-                        row[std::size_t(y)] = y + 1;
-                    }
-                }, true);
+                BandPipeline pipeline(
+                    rows, 16,
+                    [&](int y0, int y1) {
+                        for (int y = y0; y < y1; ++y) {
+                            ++record.times[std::size_t(y)];
+                            row[std::size_t(y)] = y + 1;
+                        }
+                    },
+                    true);
                 for (int y = 0; y < rows; y += 7) {  // a consumer reading in its own steps
                     const int end = std::min(rows, y + 7);
                     pipeline.waitFor(end);
@@ -53,12 +56,15 @@ TEST(BandPipeline, AfterAProducerOnlyPublishedRowsAreWorked) {
         const int rows = 500;
         Record record(rows);
         std::atomic<int> published{0};
-        BandPipeline pipeline(rows, 16, [&](int y0, int y1) {
-            for (int y = y0; y < y1; ++y) {
-                ++record.times[std::size_t(y)];
-                record.publishedThen[std::size_t(y)] = published.load();
-            }
-        }, false);
+        BandPipeline pipeline(
+            rows, 16,
+            [&](int y0, int y1) {
+                for (int y = y0; y < y1; ++y) {
+                    ++record.times[std::size_t(y)];
+                    record.publishedThen[std::size_t(y)] = published.load();
+                }
+            },
+            false);
         for (int y = 0; y < rows; y += 5) {  // a decoder finishing 5 rows at a time
             std::this_thread::yield();
             published = std::min(rows, y + 5);
@@ -78,10 +84,13 @@ TEST(BandPipeline, ACancelledPipelineWorksNoUnpublishedRow) {
     std::atomic<int> worked{0};
     std::atomic<int> beyond{0};
     {
-        BandPipeline pipeline(1000, 10, [&](int y0, int y1) {
-            worked += y1 - y0;
-            if (y1 > 100) ++beyond;
-        }, false);
+        BandPipeline pipeline(
+            1000, 10,
+            [&](int y0, int y1) {
+                worked += y1 - y0;
+                if (y1 > 100) ++beyond;
+            },
+            false);
         pipeline.publish(100);
         // The helper may be working a published band; it must not touch a later one.
         for (int i = 0; i < 100 && worked.load() < 100; ++i)

@@ -276,3 +276,42 @@ TEST(Elements, WideStreakHasAGaussianCoreNotAFlatBar) {
     EXPECT_LT(shadeElement(k, 150.f, 3.f).r, 0.95f * peak);  // no flat top
     EXPECT_GT(shadeElement(k, 150.f, 15.f).r, 0.f);          // a soft tail past the width
 }
+
+// Spikes are shaded the same whichever way a pixel finds the ones that reach it (a few streaks
+// are each tested, many rays searched by angle): against a sum over every spike written here
+// from the definitions, on a grid across the element, zero exactly where it is zero.
+TEST(Elements, SpikesSumEverySpikeThatReachesThePixel) {
+    for (const auto& [type, count] :
+         {std::pair{ElementType::Streaks, 4}, std::pair{ElementType::Streaks, 12},
+          std::pair{ElementType::Streaks, 13}, std::pair{ElementType::Rays, 40}}) {
+        ElementParams p = plain(type);
+        p.count = count;
+        p.thickness = 0.02f;
+        p.falloff = 1.5f;
+        const ElementKernel k = prepareElement(p, 200.f);
+        int lit = 0;
+        for (int j = -60; j <= 60; ++j) {
+            for (int i = -60; i <= 60; ++i) {
+                const float x = float(i) / 55.f, y = float(j) / 55.f + 0.003f;
+                double sum = 0;
+                for (const Spike& s : k.spikes) {
+                    const float along = x * std::cos(s.angle) + y * std::sin(s.angle);
+                    const float perp = y * std::cos(s.angle) - x * std::sin(s.angle);
+                    if (along <= 0.f || along >= s.length || std::abs(perp) >= k.maxHalfWidth)
+                        continue;
+                    sum += double(s.weight) * spikeAcross(k.spikeProfile, perp) *
+                           std::pow(1.0 - double(along) / double(s.length), double(p.falloff));
+                }
+                const float shaded = shadeSpikes(k, x, y).a;
+                if (sum == 0) {
+                    ASSERT_EQ(shaded, 0.f) << count << " at " << x << "," << y;
+                } else {
+                    ++lit;
+                    ASSERT_NEAR(shaded, std::min(sum, 1.0), 1e-4 * std::min(sum, 1.0) + 1e-6)
+                        << count << " at " << x << "," << y;
+                }
+            }
+        }
+        EXPECT_GT(lit, 200) << count;
+    }
+}
