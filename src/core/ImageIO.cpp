@@ -315,14 +315,24 @@ struct ConvertWhileDecoding {
 std::size_t finishExr(Image& image, bool grey) {
     std::atomic<std::size_t> nonFinite{0};
     forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
+        float* const begin = image.data() + p0 * 4;
+        float* const end = image.data() + p1 * 4;
+        if (grey)
+            for (float* d = begin; d < end; d += 4) d[1] = d[2] = d[0];
+        // Looked for first with a test the compiler vectorises (a float is NaN or infinite when
+        // its exponent bits are all ones), so a clean frame costs one read of its pixels.
+        bool any = false;
+        for (const float* d = begin; d < end; ++d) {
+            std::uint32_t bits;
+            std::memcpy(&bits, d, sizeof bits);
+            any |= (bits & 0x7F800000u) == 0x7F800000u;
+        }
+        if (!any) return;
         std::size_t bad = 0;
-        for (float* d = image.data() + p0 * 4; d < image.data() + p1 * 4; d += 4) {
-            if (grey) d[1] = d[2] = d[0];
-            for (int c = 0; c < 4; ++c) {
-                if (!std::isfinite(d[c])) {
-                    d[c] = 0.f;
-                    ++bad;
-                }
+        for (float* d = begin; d < end; ++d) {
+            if (!std::isfinite(*d)) {
+                *d = 0.f;
+                ++bad;
             }
         }
         nonFinite += bad;
