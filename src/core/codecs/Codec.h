@@ -69,9 +69,10 @@ struct Samples {
     //! EXR: the input's header and other channels to write back (its size is this image's).
     const ExrExtras* extras = nullptr;
     bool chosenCompression = false;  //!< the EXR compression was chosen: it overrides the input's
-    //! When set, rows are still being made while the encoder runs: it calls this with rowEnd
-    //! before it reads rows below rowEnd (the PNG encoder, in bands of kPngBandRows).
-    std::function<void(int)> waitForRows;
+    //! When set, the rows are not made yet: the encoder calls fillRows(y0, y1) before it reads
+    //! rows [y0, y1), for disjoint ranges, possibly from several threads at once (the PNG
+    //! encoder: so the rows are made beside libpng or zlib rather than all before them).
+    std::function<void(int, int)> fillRows;
 };
 
 //! Rows the PNG codec hands libpng (or takes from it) at a time: at 1080p, 68 bands of about
