@@ -21,11 +21,11 @@ constexpr std::size_t kParallelKeys = 1 << 16;
 
 }  // namespace
 
-void sortByHigh32Descending(std::vector<std::uint64_t>& keys) {
+void sortByHigh32Descending(SortKeys& keys) {
     const std::size_t n = keys.size();
     const std::size_t slices = n < kParallelKeys ? 1 : kSlices;
     const auto sliceBegin = [&](std::size_t s) { return n * s / slices; };
-    std::vector<std::uint64_t> other(n);
+    SortKeys other(n);  // every element is scattered to before it is read: not cleared
     // start[s][b]: where slice s puts its next key of digit b.
     std::vector<std::array<std::size_t, kBuckets>> start(slices);
     for (std::size_t pass = 0; pass < kShift.size(); ++pass) {

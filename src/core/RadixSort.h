@@ -7,9 +7,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "flarekit/Image.h"
+
 namespace flarekit {
 
+//! Keys in pixel memory (Image.h): a frame's worth is megabytes, filled whole when made.
+using SortKeys = std::vector<std::uint64_t, PixelAllocator<std::uint64_t>>;
+
 //! Reorders `keys` by (key >> 32), largest first; keys with equal high halves keep their order.
-void sortByHigh32Descending(std::vector<std::uint64_t>& keys);
+void sortByHigh32Descending(SortKeys& keys);
 
 }  // namespace flarekit

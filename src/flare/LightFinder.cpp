@@ -67,16 +67,15 @@ struct LuminanceMap {
     int w = 0, h = 0;
     // Pixel memory (see Image.h): every element is written by luminanceMap, none cleared first.
     std::vector<float, PixelAllocator<float>> lum;
-    std::vector<std::uint8_t, PixelAllocator<std::uint8_t>> clipped;
     float brightestChannel = 0.f;  //!< of the whole frame: decides display- or scene-referred
     std::size_t peakIndex = 0;     //!< the first pixel (raster order) of the largest luminance
     float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
+    bool clipped(std::size_t i) const { return lum[i] >= kClipLevel; }
 };
 
 LuminanceMap luminanceMap(const Image& image) {
     LuminanceMap m{image.width(), image.height(), {}, {}};
     m.lum.resize(image.pixelCount());
-    m.clipped.resize(image.pixelCount());
     std::vector<float> rowBrightest(std::size_t(m.h), 0.f);
     std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
     parallelFor(0, m.h, 32, [&](int y0, int y1) {
@@ -89,7 +88,6 @@ LuminanceMap luminanceMap(const Image& image) {
                 const std::size_t i = first + std::size_t(x);
                 const float l = luminance(row[x].r, row[x].g, row[x].b);
                 m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
-                m.clipped[i] = m.lum[i] >= kClipLevel;
                 if (m.lum[i] > m.lum[peak]) peak = i;
                 brightest = std::max({brightest, row[x].r, row[x].g, row[x].b});
             }
@@ -106,7 +104,7 @@ LuminanceMap luminanceMap(const Image& image) {
 //! The seeds' keys, one per pixel at or above `minLuminance`, in raster order: the luminance's
 //! bits (monotonic for non-negative floats) over the inverted index. Rows are counted, then
 //! filled, in parallel.
-std::vector<std::uint64_t> seedKeys(const LuminanceMap& m, float minLuminance) {
+SortKeys seedKeys(const LuminanceMap& m, float minLuminance) {
     static_assert(kMaxImagePixels <= 0xFFFFFFFFu, "a pixel index fits the key's low 32 bits");
     std::vector<std::size_t> rowStart(std::size_t(m.h) + 1, 0);
     parallelFor(0, m.h, 32, [&](int y0, int y1) {
@@ -117,7 +115,7 @@ std::vector<std::uint64_t> seedKeys(const LuminanceMap& m, float minLuminance) {
         }
     });
     for (std::size_t y = 0; y < std::size_t(m.h); ++y) rowStart[y + 1] += rowStart[y];
-    std::vector<std::uint64_t> keys(rowStart.back());
+    SortKeys keys(rowStart.back());  // every key is written below: not cleared first
     parallelFor(0, m.h, 32, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             std::size_t k = rowStart[std::size_t(y)];
@@ -185,7 +183,7 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
         const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
         const double l = m.lum[i];
         sum += l;
-        flux += displayReferred && m.clipped[i] ? double(clippedGain) : l;
+        flux += displayReferred && m.clipped(i) ? double(clippedGain) : l;
         sx += l * (x + 0.5);
         sy += l * (y + 0.5);
         auto visit = [&](int nx, int ny) {
@@ -218,7 +216,7 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
         inside += dx * dx + dy * dy <= reach2;
     }
     c.compactness = float(double(inside) / double(c.pixels));
-    c.clipped = displayReferred && m.clipped[seed];
+    c.clipped = displayReferred && m.clipped(seed);
     return c;
 }
 
@@ -320,7 +318,7 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
     // Seeds: every pixel above the threshold, brightest first (ties in raster order): keys
     // made in raster order, radix-sorted stably by their luminance half, which is the order of
     // a descending sort of the whole keys in a fifth of a parallel comparison sort's time.
-    std::vector<std::uint64_t> keys = seedKeys(m, options.minLuminance);
+    SortKeys keys = seedKeys(m, options.minLuminance);
     sortByHigh32Descending(keys);
     std::vector<std::uint8_t> seen(m.lum.size(), 0);
     std::vector<PixelAt> stack, members;

@@ -211,7 +211,7 @@ TEST(LightFinderSeeds, TheRadixOrderIsTheDescendingOrder) {
     // 1,000 keys: one thread; 200,000: in slices on every core.
     for (const std::uint32_t count : {1000u, 200000u})
         for (const bool quantised : {true, false}) {
-            std::vector<std::uint64_t> keys;
+            SortKeys keys;
             for (std::uint32_t i = 0; i < count; ++i) {
                 float l =
                     std::uniform_real_distribution<float>(0.f, quantised ? 1.f : 40000.f)(rng);
@@ -220,14 +220,14 @@ TEST(LightFinderSeeds, TheRadixOrderIsTheDescendingOrder) {
                 std::memcpy(&bits, &l, sizeof bits);
                 keys.push_back((std::uint64_t(bits) << 32) | (0xFFFFFFFFu - i));
             }
-            std::vector<std::uint64_t> expected = keys;
+            SortKeys expected = keys;
             std::sort(expected.begin(), expected.end(), std::greater<>());
             sortByHigh32Descending(keys);
             EXPECT_EQ(keys, expected) << count << " " << quantised;
         }
-    std::vector<std::uint64_t> none, one = {42};
+    SortKeys none, one = {42};
     sortByHigh32Descending(none);
     sortByHigh32Descending(one);
     EXPECT_TRUE(none.empty());
-    EXPECT_EQ(one, std::vector<std::uint64_t>{42});
+    EXPECT_EQ(one, SortKeys{42});
 }
