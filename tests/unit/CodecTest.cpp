@@ -15,6 +15,7 @@
 
 #include "RawFiles.h"
 #include "TempDir.h"
+#include "TestImages.h"
 #include "core/HalfFloat.h"
 #include "flarekit/Color.h"
 #include "flarekit/ImageIO.h"
@@ -298,12 +299,9 @@ TEST(Codec, OtherFormatsGoThroughTheOpenImageIoModule) {
 
 TEST(Codec, PngCompressionLevelChangesSizeNotPixels) {
     TempDir dir;
-    Image image(256, 128);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<float> value(0.f, 1.f);
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            image.at(x, y) = {float(x) / 256.f, value(rng) * 0.1f, float(y) / 128.f, 1.f};
+    const Image image = test::imageOf(256, 128, 5, [](int x, int y, auto unit) {
+        return Rgba{float(x) / 256.f, unit() * 0.1f, float(y) / 128.f, 1.f};
+    });
     const int before = pngCompression();
     std::vector<std::uintmax_t> sizes;
     for (int level : {0, 1, 9}) {
@@ -326,12 +324,9 @@ TEST(Codec, ExrZipLevelChangesSizeNotPixels) {
     // Smooth ramps with a little noise: deflate finds more at higher levels. Every level's file
     // reads back through OpenImageIO's own EXR reader to the same halves.
     TempDir dir;
-    Image image(320, 96);
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<float> value(0.f, 1.f);
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            image.at(x, y) = {float(x) / 32.f, value(rng) * 0.01f + 2.f, float(y % 7), 1.f};
+    const Image image = test::imageOf(320, 96, 9, [](int x, int y, auto unit) {
+        return Rgba{float(x) / 32.f, unit() * 0.01f + 2.f, float(y % 7), 1.f};
+    });
     const int before = exrZipLevel();
     const std::string kept = exrCompression();
     ASSERT_TRUE(setExrCompression("zip").ok());

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <random>
 
 #include "RawFiles.h"
 #include "TempDir.h"
+#include "TestImages.h"
 #include "flarekit/Color.h"
 #include "flarekit/ImageIO.h"
 
@@ -115,11 +115,9 @@ TEST(ImageIO, TruncatedFilesAreErrors) {
 // while decoding: an error, and no band converted from freed memory (the sanitizer build).
 TEST(ImageIO, APngCutMidImageIsAnError) {
     TempDir dir;
-    Image img(300, 400);
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<float> unit(0.f, 1.f);
-    for (int y = 0; y < img.height(); ++y)
-        for (int x = 0; x < img.width(); ++x) img.at(x, y) = {unit(rng), unit(rng), 0.5f, 1.f};
+    const Image img = test::imageOf(300, 400, 3, [](int, int, auto unit) {
+        return Rgba{unit(), unit(), 0.5f, 1.f};
+    });
     ASSERT_TRUE(writeImage(dir.file("n.png"), img).ok());
     const auto size = std::filesystem::file_size(dir.file("n.png"));
     test::truncateFile(dir.file("n.png"), dir.file("cut.png"), std::size_t(size * 6 / 10));
