@@ -19,10 +19,15 @@ struct BandPipeline::State {
     tbb::task_group helper;
     bool finished = false;
 
-    //! Claims the next band, waits for its rows and works it; false when none is left.
-    bool workNext() {
-        const int band = next.fetch_add(1);
-        if (band >= bands) return false;
+    //! Claims the next band, waits for its rows and works it; false when none is left. The
+    //! caller's own thread passes `mayWait` false: it claims only a band whose rows are
+    //! published, never one that would wait on the caller itself.
+    bool workNext(bool mayWait) {
+        int band = next.load();
+        do {
+            if (band >= bands) return false;
+            if (!mayWait && std::min(rows, (band + 1) * bandRows) > published.load()) return false;
+        } while (!next.compare_exchange_weak(band, band + 1));
         const int y0 = band * bandRows, y1 = std::min(rows, y0 + bandRows);
         for (int seen = published.load(); seen < y1; seen = published.load()) published.wait(seen);
         if (!cancelled.load()) work(y0, y1);
@@ -42,7 +47,7 @@ BandPipeline::BandPipeline(int rows, int bandRows, std::function<void(int, int)>
     m->done = std::make_unique<std::atomic<int>[]>(std::size_t(m->bands));
     for (int b = 0; b < m->bands; ++b) m->done[b].store(0);
     m->helper.run([state = m.get()] {
-        while (state->workNext()) {
+        while (state->workNext(true)) {
         }
     });
 }
@@ -63,14 +68,14 @@ void BandPipeline::waitFor(int rowEnd) {
     for (int band = 0; last >= 0 && band <= last / m->bandRows; ++band) {
         while (m->done[band].load() == 0) {
             // Work a band rather than sit idle; when none is left, the helper holds this one.
-            if (!m->workNext()) m->done[band].wait(0);
+            if (!m->workNext(false)) m->done[band].wait(0);
         }
     }
 }
 
 void BandPipeline::finish() {
     publish(m->rows);
-    while (m->workNext()) {
+    while (m->workNext(false)) {
     }
     m->helper.wait();  // the band the helper holds, or the helper itself if it never started
     m->finished = true;

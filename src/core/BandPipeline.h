@@ -15,7 +15,8 @@ namespace flarekit {
 //! the pipeline finishes on one thread as well (a pool limited to one thread, the demo's
 //! writer). Two uses:
 //! - after a producer: `work` reads rows the caller publishes (a decoder's output) and runs
-//!   only on published rows; the caller publishes as it goes and calls finish() at the end;
+//!   only on published rows; the caller publishes as it goes (waiting with waitFor for rows
+//!   whose room it reuses) and calls finish() at the end;
 //! - before a consumer: `work` reads nothing the caller makes (`ready` true: every row is
 //!   published at once) and the caller calls waitFor(rowEnd) before it reads a band.
 //! The destructor cancels what has not started and waits for the helper: nothing outlives it.
@@ -28,7 +29,8 @@ class BandPipeline {
 
     //! Rows [0, rowEnd) may now be read by `work`.
     void publish(int rowEnd);
-    //! Returns once rows [0, rowEnd) have been worked, working unclaimed bands meanwhile.
+    //! Returns once rows [0, rowEnd) have been worked, working unclaimed published bands
+    //! meanwhile.
     void waitFor(int rowEnd);
     //! Publishes every row and returns once every band has been worked.
     void finish();

@@ -139,9 +139,9 @@ bool leftToOiio(const Error& e) {
 
 //! The file's samples through the codec its first bytes name, or through OpenImageIO.
 Result<codec::Raw> readRaw(const std::string& path, Format format, const codec::HeaderCheck& check,
-                           const codec::RowsDecoded& rowsDecoded = {}) {
+                           const codec::PngRowTarget* target = nullptr) {
     Result<codec::Raw> raw = invalidInput(codec::kUnsupportedLayout);
-    if (format == Format::Png) raw = codec::readPng(path, check, rowsDecoded);
+    if (format == Format::Png) raw = codec::readPng(path, check, target);
     if (format == Format::Jpeg) raw = codec::readJpeg(path, check);
     if (format == Format::Tiff) raw = codec::readTiff(path, check);
     if (raw.ok() || !leftToOiio(raw.error())) return raw;
@@ -206,29 +206,29 @@ inline void promote(float* d, std::size_t s, int keep, Colour colour, Alpha alph
     d[3] = keep == 2 || keep == 4 ? alpha(s + std::size_t(keep) - 1) : 1.f;
 }
 
-//! What converting decoded samples needs of them: kept by value, so a band converted while
-//! the decoder still runs does not depend on the Raw the codec is filling.
+//! How decoded samples are laid out and read: kept by value, so a band converted while the
+//! decoder still runs depends on nothing the codec is filling.
 struct SampleView {
-    const unsigned char* bytes = nullptr;
     int keep = 0;  //!< channels per pixel
     SampleType type = SampleType::U8;
     bool srgb = false;  //!< colour through the sRGB curve
     explicit SampleView(const codec::Raw& raw)
-        : bytes(raw.bytes.data()),
-          keep(raw.channels),
+        : keep(raw.channels),
           type(raw.header.decodeAs),
           srgb(!raw.header.isFloat && !raw.header.declaredLinear) {}
+    std::size_t pixelBytes() const { return std::size_t(keep) * codec::sampleBytes(type); }
 };
 
-//! Pixels [p0, p1) of decoded samples to linear float RGBA: integer colour through the sRGB
-//! tables (unless the file says linear), floats as they are, non-finite values replaced by 0.
-//! Returns how many were replaced.
-std::size_t toLinearRgba(const SampleView& v, Image& image, std::size_t p0, std::size_t p1) {
+//! `count` pixels of decoded samples (from `bytes`) to linear float RGBA (at `rgba`): integer
+//! colour through the sRGB tables (unless the file says linear), floats as they are,
+//! non-finite values replaced by 0. Returns how many were replaced.
+std::size_t toLinearRgba(const SampleView& v, const unsigned char* bytes, float* rgba,
+                         std::size_t count) {
     const int keep = v.keep;
     auto run = [&](auto sample, auto colour, auto alpha) {
-        for (std::size_t p = p0; p < p1; ++p) {
+        for (std::size_t p = 0; p < count; ++p) {
             promote(
-                image.data() + p * 4, p * std::size_t(keep), keep,
+                rgba + p * 4, p * std::size_t(keep), keep,
                 [&](std::size_t i) { return colour(sample[i]); },
                 [&](std::size_t i) { return alpha(sample[i]); });
         }
@@ -238,15 +238,15 @@ std::size_t toLinearRgba(const SampleView& v, Image& image, std::size_t p0, std:
         auto linear = [](std::uint8_t s) { return float(s) * (1.f / 255.f); };
         if (v.srgb) {
             run(
-                v.bytes, [table](std::uint8_t s) { return table[s]; }, linear);
+                bytes, [table](std::uint8_t s) { return table[s]; }, linear);
         } else {
-            run(v.bytes, linear, linear);
+            run(bytes, linear, linear);
         }
         return 0;
     }
     if (v.type == SampleType::U16) {
         const float* table = srgb16DecodeTable();
-        const auto* u16 = reinterpret_cast<const std::uint16_t*>(v.bytes);
+        const auto* u16 = reinterpret_cast<const std::uint16_t*>(bytes);
         auto linear = [](std::uint16_t s) { return float(s) * (1.f / 65535.f); };
         if (v.srgb) {
             run(
@@ -256,7 +256,7 @@ std::size_t toLinearRgba(const SampleView& v, Image& image, std::size_t p0, std:
         }
         return 0;
     }
-    const auto* f32 = reinterpret_cast<const float*>(v.bytes);
+    const auto* f32 = reinterpret_cast<const float*>(bytes);
     std::size_t bad = 0;
     auto finite = [&](std::size_t i) {
         const float s = f32[i];
@@ -268,8 +268,8 @@ std::size_t toLinearRgba(const SampleView& v, Image& image, std::size_t p0, std:
         const float s = finite(i);
         return v.srgb ? srgbToLinear(s) : s;
     };
-    for (std::size_t p = p0; p < p1; ++p)
-        promote(image.data() + p * 4, p * std::size_t(keep), keep, colour, finite);
+    for (std::size_t p = 0; p < count; ++p)
+        promote(rgba + p * 4, p * std::size_t(keep), keep, colour, finite);
     return bad;
 }
 
@@ -278,34 +278,53 @@ std::size_t toLinearRgba(const codec::Raw& raw, Image& image) {
     const SampleView view(raw);
     std::atomic<std::size_t> nonFinite{0};
     forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
-        nonFinite += toLinearRgba(view, image, p0, p1);
+        nonFinite += toLinearRgba(view, raw.bytes.data() + p0 * view.pixelBytes(),
+                                  image.data() + p0 * 4, p1 - p0);
     });
     return nonFinite;
 }
 
-//! A PNG's rows converted band by band while libpng decodes the next ones (libpng decodes on
-//! one thread; the conversion is a third of the read when it follows instead).
+//! A PNG's rows converted band by band while libpng decodes the next ones: libpng decodes on
+//! one thread, and the conversion was a third of the read when it followed. The decoded bands
+//! go round a ring of kRingBands bands rather than into a buffer for the whole image, whose
+//! first touch (6 MB at 1080p) was itself as long as the conversion; libpng waits for a slot
+//! only when the conversion is that far behind.
 struct ConvertWhileDecoding {
+    //! Bands in flight: libpng's next band goes into the slot of the band this many before it.
+    static constexpr int kRingBands = 8;
     Image& image;
-    std::optional<BandPipeline> pipeline;
+    std::vector<unsigned char> ring;
+    std::size_t bandBytes = 0;
+    std::optional<BandPipeline> pipeline;  // after the ring: stopped before the ring goes
     std::atomic<std::size_t> nonFinite{0};
 
-    void rowsDecoded(const codec::Raw& raw, int rowEnd) {
-        if (rowEnd < 0) {
-            pipeline.reset();  // cancels the bands not begun, waits for the one being converted
-            return;
-        }
+    unsigned char* slot(int y0) {
+        return ring.data() + std::size_t(y0 / codec::kPngBandRows % kRingBands) * bandBytes;
+    }
+
+    unsigned char* rowsAt(const codec::Raw& raw, int y0) {
         if (!pipeline) {
             image = Image(raw.header.width, raw.header.height);
             const SampleView view(raw);
             const std::size_t width = std::size_t(raw.header.width);
+            bandBytes = std::size_t(codec::kPngBandRows) * width * view.pixelBytes();
+            ring.resize(bandBytes * kRingBands);
             pipeline.emplace(
                 raw.header.height, codec::kPngBandRows,
-                [this, view, width](int y0, int y1) {
-                    nonFinite +=
-                        toLinearRgba(view, image, std::size_t(y0) * width, std::size_t(y1) * width);
+                [this, view, width](int first, int end) {
+                    nonFinite += toLinearRgba(view, slot(first), image.row(first),
+                                              std::size_t(end - first) * width);
                 },
                 false);
+        }
+        // The slot's previous band (kRingBands before this one) must be converted first.
+        pipeline->waitFor(y0 - (kRingBands - 1) * codec::kPngBandRows);
+        return slot(y0);
+    }
+    void decoded(int rowEnd) {
+        if (rowEnd < 0) {
+            pipeline.reset();  // cancels the bands not begun, waits for the one being converted
+            return;
         }
         pipeline->publish(rowEnd);
     }
@@ -408,9 +427,11 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
         }
         if (!leftToOiio(exr.error())) return exr.error();
     }
-    ConvertWhileDecoding png{out.image, {}};
-    auto raw = readRaw(path, format, check,
-                       [&](const codec::Raw& r, int rowEnd) { png.rowsDecoded(r, rowEnd); });
+    ConvertWhileDecoding png{out.image, {}, 0, {}, {}};
+    const codec::PngRowTarget target{
+        [&](const codec::Raw& r, int y0, int) { return png.rowsAt(r, y0); },
+        [&](int rowEnd) { png.decoded(rowEnd); }};
+    auto raw = readRaw(path, format, check, &target);
     if (!raw) return raw.error();
     out.fileChannels = raw->header.channels;
     out.droppedChannels = raw->header.channels - raw->channels;

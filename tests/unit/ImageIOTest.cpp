@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -9,6 +10,7 @@
 #include "RawFiles.h"
 #include "TempDir.h"
 #include "TestImages.h"
+#include "core/Parallel.h"
 #include "flarekit/Color.h"
 #include "flarekit/ImageIO.h"
 
@@ -126,6 +128,27 @@ TEST(ImageIO, APngCutMidImageIsAnError) {
     EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
     EXPECT_NE(r.error().message.find("cannot decode image"), std::string::npos)
         << r.error().message;
+}
+
+// A PNG's bands are converted by a helper task while libpng decodes: on a pool of one thread
+// (no helper ever runs beside the reader) the reader converts them itself, to the same image.
+TEST(ImageIO, APngReadsTheSameOnOneThread) {
+    TempDir dir;
+    const Image img = test::imageOf(211, 333, 8, [](int x, int y, auto unit) {
+        return Rgba{unit(), float(x % 9) / 9.f, float(y % 5) / 5.f, 1.f};
+    });
+    ASSERT_TRUE(writeImage(dir.file("t.png"), img).ok());
+    auto two = readImage(dir.file("t.png"));
+    ASSERT_TRUE(two.ok());
+    Result<LoadedImage> one = internalError("not read");
+    {
+        ThreadLimit limit(1);
+        one = readImage(dir.file("t.png"));
+    }
+    ASSERT_TRUE(one.ok());
+    ASSERT_EQ(std::memcmp(one->image.data(), two->image.data(), img.pixelCount() * 16), 0);
+    for (int x = 0; x < img.width(); ++x)  // and what was written, through the 8-bit codes
+        ASSERT_EQ(linearToSrgb8(one->image.at(x, 300).r), linearToSrgb8(img.at(x, 300).r));
 }
 
 TEST(ImageIO, GreyAndGreyAlphaArePromoted) {

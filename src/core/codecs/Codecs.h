@@ -20,14 +20,18 @@ Format sniffFormat(const std::string& path);
 //! The format an output name asks for, from its extension.
 Format formatForExtension(const std::string& lowerExtension);
 
-//! Rows [0, rowEnd) of `raw` are decoded; `raw.bytes` is allocated whole before the first call
-//! and its data pointer stays valid after the read returns `raw`. rowEnd -1: the decode failed
-//! and `raw` is about to go; whatever reads its rows must have stopped when this returns.
-using RowsDecoded = std::function<void(const Raw& raw, int rowEnd)>;
-//! `rowsDecoded`, when given, hears of every band of kPngBandRows rows as libpng finishes it
-//! (an interlaced file: of all rows at the end), so they can be converted meanwhile.
+//! Where a PNG decode puts its rows when the caller converts them as they come, band by band
+//! of kPngBandRows: rowsAt(raw, y0, y1) gives room for rows [y0, y1) (raw: the header; it may
+//! wait until that room is free), decoded(y1) says rows up to y1 are in it. decoded(-1): the
+//! decode failed; whatever reads the rows must have stopped when it returns. Raw::bytes stays
+//! empty. Interlaced files, whose rows are final only after the seventh pass, ignore the
+//! target and are decoded whole into Raw::bytes.
+struct PngRowTarget {
+    std::function<unsigned char*(const Raw& raw, int y0, int y1)> rowsAt;
+    std::function<void(int rowEnd)> decoded;
+};
 Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
-                    const RowsDecoded& rowsDecoded = {});
+                    const PngRowTarget* target = nullptr);
 Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check);
 //! TIFF files libtiff can hand over as plain interleaved samples (grey or RGB, with or without
 //! alpha, 8 or 16-bit integer or 32-bit float, strips or tiles); Unsupported for the rest

@@ -43,8 +43,7 @@ struct ReadState {
 
 }  // namespace
 
-Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
-                    const RowsDecoded& rowsDecoded) {
+Result<Raw> readPng(const std::string& path, const HeaderCheck& check, const PngRowTarget* target) {
     ReadState st;
     Raw raw;
     std::vector<png_bytep> rows;
@@ -55,7 +54,7 @@ Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
     if (st.png) st.info = png_create_info_struct(st.png);
     if (!st.png || !st.info) return internalError(path + ": libpng could not start");
     if (setjmp(png_jmpbuf(st.png))) {
-        if (rowsDecoded) rowsDecoded(raw, -1);  // stop reading raw's rows: it goes with this
+        if (target) target->decoded(-1);  // whoever reads the rows stops before this returns
         return invalidInput(path + ": cannot decode image: " + excerpt(st.errors.message, 200));
     }
     png_init_io(st.png, st.file);
@@ -87,18 +86,19 @@ Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
     if (!checked) return checked.error();
     raw.channels = raw.header.channels;
     const std::size_t rowBytes = png_get_rowbytes(st.png, st.info);
-    raw.bytes.resize(rowBytes * std::size_t(raw.header.height));
     rows.resize(std::size_t(raw.header.height));
-    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = raw.bytes.data() + y * rowBytes;
-    if (interlaced || !rowsDecoded) {
-        png_read_image(st.png, rows.data());
-        if (rowsDecoded) rowsDecoded(raw, raw.header.height);
-    } else {
+    if (target && !interlaced) {
         for (int y = 0; y < raw.header.height; y += kPngBandRows) {
             const int n = std::min(kPngBandRows, raw.header.height - y);
+            unsigned char* room = target->rowsAt(raw, y, y + n);
+            for (int r = 0; r < n; ++r) rows[std::size_t(y + r)] = room + std::size_t(r) * rowBytes;
             png_read_rows(st.png, rows.data() + y, nullptr, png_uint_32(n));
-            rowsDecoded(raw, y + n);
+            target->decoded(y + n);
         }
+    } else {
+        raw.bytes.resize(rowBytes * std::size_t(raw.header.height));
+        for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = raw.bytes.data() + y * rowBytes;
+        png_read_image(st.png, rows.data());
     }
     png_uint_32 exifBytes = 0;
     png_bytep exif = nullptr;
