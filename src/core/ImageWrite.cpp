@@ -170,7 +170,16 @@ bool holdsFloatSamples(const std::string& path) {
     return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
 }
 
+//! No format holds an image without pixels, and some encoders fail on one by crashing
+//! (OpenImageIO's BMP writer divides by its zero size): refused before any encoder sees it.
+Status checkHasPixels(const std::string& path, int width, int height) {
+    if (width > 0 && height > 0) return Ok{};
+    return invalidInput(path + ": nothing to write: the image is " + std::to_string(width) + "x" +
+                        std::to_string(height));
+}
+
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
+    if (Status s = checkHasPixels(path, image.width(), image.height()); !s) return s;
     if (Status s = checkWritablePath(path); !s) return s;
     auto writer = writerFor(path);
     if (!writer) return writer.error();
@@ -262,6 +271,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
 }
 
 Status writeImage8(const std::string& path, const Image8& image) {
+    if (Status s = checkHasPixels(path, image.width, image.height); !s) return s;
     if (Status s = checkWritablePath(path); !s) return s;
     auto writer = writerFor(path);
     if (!writer) return writer.error();

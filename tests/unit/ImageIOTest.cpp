@@ -151,6 +151,24 @@ TEST(ImageIO, APngReadsTheSameOnOneThread) {
         ASSERT_EQ(linearToSrgb8(one->image.at(x, 300).r), linearToSrgb8(img.at(x, 300).r));
 }
 
+// No format holds an image without pixels: every writer refuses one with an error (OpenImageIO's
+// BMP writer used to die of a division by zero), and nothing is written.
+TEST(ImageIO, AnImageWithoutPixelsIsRefused) {
+    TempDir dir;
+    for (const char* name : {"e.png", "e.jpg", "e.tif", "e.exr", "e.bmp", "e.hdr"}) {
+        for (const auto& [w, h] : {std::pair{0, 5}, std::pair{5, 0}}) {
+            const Status s = writeImage(dir.file(name), Image(w, h));
+            ASSERT_FALSE(s.ok()) << name;
+            EXPECT_EQ(s.error().code, ErrorCode::InvalidInput);
+            EXPECT_EQ(s.error().message, dir.file(name) + ": nothing to write: the image is " +
+                                             std::to_string(w) + "x" + std::to_string(h));
+            const Status s8 = writeImage8(dir.file(name), Image8{w, h, 3, {}});
+            ASSERT_FALSE(s8.ok()) << name;
+            EXPECT_FALSE(std::filesystem::exists(dir.file(name))) << name;
+        }
+    }
+}
+
 TEST(ImageIO, GreyAndGreyAlphaArePromoted) {
     TempDir dir;
     Image8 grey{2, 1, 2, {128, 255, 64, 0}};

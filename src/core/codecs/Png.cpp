@@ -282,7 +282,8 @@ Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptio
     if (st.png) st.info = png_create_info_struct(st.png);
     if (!st.png || !st.info) return internalError("libpng could not start");
     const int level = options.pngCompression;
-    if (level <= kLastSubFilterLevel) {
+    // An image without pixels goes to libpng, which refuses it with its own message.
+    if (level <= kLastSubFilterLevel && s.width > 0 && s.height > 0) {
         const std::vector<DeflatedBand> bands = deflateImage(s, level);
         if (bands.empty()) return internalError("cannot encode PNG: zlib failed");
         if (!writeChunks(st, s, bands)) return ioError("cannot encode PNG: " + st.errors.message);
