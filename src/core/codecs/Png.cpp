@@ -263,13 +263,17 @@ std::vector<DeflatedBand> deflateImage(const Samples& s, int level) {
     return out;
 }
 
-//! The header chunks, one IDAT per band and IEND, through libpng's chunk writer.
-bool writeChunks(WriteState& st, const Samples& s, const std::vector<DeflatedBand>& bands) {
+//! The header chunks, one IDAT per band and IEND, through libpng's chunk writer. Each band's
+//! bytes are let go once written, so the file and its bands are not both held whole.
+bool writeChunks(WriteState& st, const Samples& s, std::vector<DeflatedBand>& bands) {
     if (setjmp(png_jmpbuf(st.png))) return false;
     writeHeader(st, s);
     static const png_byte kIdat[5] = "IDAT", kIend[5] = "IEND";
-    for (const DeflatedBand& band : bands)
+    for (DeflatedBand& band : bands) {
         png_write_chunk(st.png, kIdat, band.bytes.data(), band.bytes.size());
+        band.bytes.clear();
+        band.bytes.shrink_to_fit();
+    }
     png_write_chunk(st.png, kIend, nullptr, 0);
     return true;
 }
@@ -284,8 +288,13 @@ Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptio
     const int level = options.pngCompression;
     // An image without pixels goes to libpng, which refuses it with its own message.
     if (level <= kLastSubFilterLevel && s.width > 0 && s.height > 0) {
-        const std::vector<DeflatedBand> bands = deflateImage(s, level);
+        std::vector<DeflatedBand> bands = deflateImage(s, level);
         if (bands.empty()) return internalError("cannot encode PNG: zlib failed");
+        // The file's room up front (the bands, their chunk framing, the header chunks), so it
+        // is never moved as it grows.
+        std::size_t fileBytes = 4096;
+        for (const DeflatedBand& band : bands) fileBytes += band.bytes.size() + 12;
+        st.bytes.reserve(fileBytes);
         if (!writeChunks(st, s, bands)) return ioError("cannot encode PNG: " + st.errors.message);
         return std::move(st.bytes);
     }
