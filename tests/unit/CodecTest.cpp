@@ -237,8 +237,8 @@ TEST(Codec, PngBandsMakeOneValidStreamAtEveryLevel) {
             setPngCompression(level);
             for (const SampleFormat format : {SampleFormat::U8, SampleFormat::U16}) {
                 for (const bool alpha : {false, true}) {
-                    const std::string path = dir.file("b" + std::to_string(height) + "-" +
-                                                      std::to_string(level) + ".png");
+                    const std::string path = dir.file(std::string("b") + std::to_string(height) +
+                                                      "-" + std::to_string(level) + ".png");
                     ASSERT_TRUE(writeImage(path, image, {format, alpha, true, nullptr}).ok());
                     auto in = openStraight(path);
                     ASSERT_TRUE(in) << path;
@@ -288,7 +288,7 @@ TEST(Codec, PngBandsMakeOneValidStreamAtEveryLevel) {
         Image8 grey{40, 200, channels, {}};
         grey.pixels.resize(std::size_t(40 * 200 * channels));
         for (unsigned char& v : grey.pixels) v = static_cast<unsigned char>(rng() & 0xFF);
-        const std::string path = dir.file("g" + std::to_string(channels) + ".png");
+        const std::string path = dir.file(std::string("g") + std::to_string(channels) + ".png");
         ASSERT_TRUE(writeImage8(path, grey).ok());
         auto in = openStraight(path);
         ASSERT_TRUE(in);
@@ -351,7 +351,7 @@ TEST(Codec, ExrZipLevelChangesSizeNotPixels) {
     std::vector<std::uintmax_t> sizes;
     for (int level : {0, 1, 9}) {
         setExrZipLevel(level);
-        const std::string path = dir.file("zip" + std::to_string(level) + ".exr");
+        const std::string path = dir.file(std::string("zip") + std::to_string(level) + ".exr");
         ASSERT_TRUE(writeImage(path, image).ok());
         sizes.push_back(std::filesystem::file_size(path));
         auto in = openStraight(path);
