@@ -30,8 +30,9 @@ Image::Image(int width, int height) : m_width(width), m_height(height) {
     FK_CHECK(width >= 0 && height >= 0, "width=" << width << " height=" << height);
     const std::size_t n = std::size_t(width) * std::size_t(height) * 4;
     m_data.resize(n);  // default-initialised (PixelAllocator)
-    // Mapped buffers arrive zeroed from the kernel; heap ones are cleared here.
-    if (n * sizeof(float) < PixelMemory::kMappedBytes)
+    // Mapped buffers arrive zeroed from the kernel; heap ones are cleared here (an empty image
+    // has no buffer at all: memset may not be handed its null pointer).
+    if (n > 0 && n * sizeof(float) < PixelMemory::kMappedBytes)
         std::memset(static_cast<void*>(m_data.data()), 0, n * sizeof(float));
 }
 
