@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include "core/Parallel.h"
 #include "flarekit/Elements.h"
@@ -104,6 +105,33 @@ void BM_FindLights(benchmark::State& state) {
 }
 BENCHMARK(BM_FindLights)
     ->ArgsProduct({{1080, 2160}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// --light auto on the sample photograph (samples/sunset.png, 8-bit, 1280x720): a low sun whose
+// clipped glare and bright sky give half a million seeds above the threshold, most of them
+// taken by the first lights' regions and halos. arg: threads.
+void BM_FindLightsSample(benchmark::State& state) {
+    ThreadLimit limit(int(state.range(0)));
+    auto loaded = readImage(std::string(FLAREKIT_SAMPLES) + "/sunset.png");
+    if (!loaded) {
+        state.SkipWithError(loaded.error().message.c_str());
+        return;
+    }
+    const Image& img = loaded->image;
+    std::size_t candidates = 0;
+    for (auto _ : state) {
+        const LightSearch search = findLights(img);
+        candidates = search.candidates.size();
+        benchmark::DoNotOptimize(search.lights.data());
+    }
+    megapixels(state, double(img.pixelCount()));
+    state.counters["candidates"] = double(candidates);
+}
+BENCHMARK(BM_FindLightsSample)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -290,6 +290,50 @@ void rejectGlareFragments(std::vector<LightCandidate>& candidates, float height)
     }
 }
 
+//! The seed's pixel: keys hold the inverted index (ties of luminance in raster order).
+std::size_t seedOf(std::uint64_t key) {
+    return std::size_t(0xFFFFFFFFu - std::uint32_t(key & 0xFFFFFFFFu));
+}
+
+std::uint32_t bitsOf(float l) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &l, sizeof bits);
+    return bits;
+}
+
+//! The search over the seeds, brightest first: each seed not yet taken grows a candidate, which
+//! is measured, judged and (with its halo) taken out of the search.
+struct CandidateSearch {
+    const LuminanceMap& m;
+    const LightSearchOptions& options;
+    LightSearch& result;
+    std::vector<std::uint8_t> seen;  //!< taken: in a candidate's region or halo
+    std::vector<PixelAt> stack, members;
+
+    bool full() const { return result.candidates.size() >= kMaxCandidates; }
+    bool taken(std::size_t seed) const { return seen[seed] != 0; }
+
+    void examine(std::size_t seed) {
+        if (taken(seed)) return;  // by a light found since the seed's group was sorted
+        const float peak = m.lum[seed];
+        const float core = options.nearPeak * peak;
+        const float threshold =
+            result.displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
+        LightCandidate c = growRegion(m, seed, threshold, options.clippedGain,
+                                      result.displayReferred, seen, stack, members);
+        const float ring = ringMean(m, c.position, std::max(2.f * c.radius, c.radius + 2.f),
+                                    std::max(4.f * c.radius, c.radius + 6.f));
+        c.prominence = ring > 0.f ? c.meanLuminance / ring : 1e6f;
+        const float rim = ringMean(m, c.position, c.radius + 1.f, 1.5f * c.radius + 2.f);
+        c.halo = rim >= 0.f ? rim / c.meanLuminance : 0.f;
+        judge(c, options, m, result.displayReferred, result.frameKey);
+        // Small regions keep their halo out of the search; a huge one already holds it.
+        if (double(c.pixels) <= kSuppressFrameShare * double(m.w) * double(m.h))
+            suppressAround(m, c.position, std::max(2.f * c.radius, c.radius + 2.f), seen);
+        result.candidates.push_back(std::move(c));
+    }
+};
+
 }  // namespace
 
 float flareScaleForFlux(double flux, int height) {
@@ -315,33 +359,21 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
         return result;
     }
 
-    // Seeds: every pixel above the threshold, brightest first (ties in raster order): keys
-    // made in raster order, radix-sorted stably by their luminance half, which is the order of
-    // a descending sort of the whole keys in a fifth of a parallel comparison sort's time.
-    SortKeys keys = seedKeys(m, options.minLuminance);
-    sortByHigh32Descending(keys);
-    std::vector<std::uint8_t> seen(m.lum.size(), 0);
-    std::vector<PixelAt> stack, members;
-    for (const std::uint64_t key : keys) {
-        const std::size_t seed = 0xFFFFFFFFu - std::uint32_t(key & 0xFFFFFFFFu);
-        if (seen[seed]) continue;
-        if (result.candidates.size() >= kMaxCandidates) break;
-        const float peak = m.lum[seed];
-        const float core = options.nearPeak * peak;
-        const float threshold =
-            result.displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
-        LightCandidate c = growRegion(m, seed, threshold, options.clippedGain,
-                                      result.displayReferred, seen, stack, members);
-        const float ring = ringMean(m, c.position, std::max(2.f * c.radius, c.radius + 2.f),
-                                    std::max(4.f * c.radius, c.radius + 6.f));
-        c.prominence = ring > 0.f ? c.meanLuminance / ring : 1e6f;
-        const float rim = ringMean(m, c.position, c.radius + 1.f, 1.5f * c.radius + 2.f);
-        c.halo = rim >= 0.f ? rim / c.meanLuminance : 0.f;
-        judge(c, options, m, result.displayReferred, result.frameKey);
-        // Small regions keep their halo out of the search; a huge one already holds it.
-        if (double(c.pixels) <= kSuppressFrameShare * double(m.w) * double(m.h))
-            suppressAround(m, c.position, std::max(2.f * c.radius, c.radius + 2.f), seen);
-        result.candidates.push_back(std::move(c));
+    // Seeds: every pixel above the threshold, brightest first (ties in raster order). The keys,
+    // made in raster order, are grouped by luminance in one counting pass; a group is sorted
+    // only when the search reaches it, and only its seeds not yet taken by an earlier light's
+    // region or halo (on a photograph most of them are by then).
+    HighBuckets seeds =
+        bucketByHigh32Descending(seedKeys(m, options.minLuminance),
+                                 bitsOf(std::max(options.minLuminance, 0.f)), bitsOf(result.peak));
+    CandidateSearch search{m, options, result, std::vector<std::uint8_t>(m.lum.size(), 0), {}, {}};
+    for (std::size_t b = 0; b < seeds.count() && !search.full(); ++b) {
+        const auto first = seeds.keys.begin() + std::ptrdiff_t(seeds.begin[b]);
+        const auto last =
+            std::remove_if(first, seeds.keys.begin() + std::ptrdiff_t(seeds.begin[b + 1]),
+                           [&](std::uint64_t key) { return search.taken(seedOf(key)); });
+        sortDescending(seeds.keys, seeds.begin[b], std::size_t(last - seeds.keys.begin()));
+        for (auto key = first; key != last && !search.full(); ++key) search.examine(seedOf(*key));
     }
 
     rejectGlareFragments(result.candidates, float(m.h));
