@@ -115,8 +115,10 @@ Rgba shadeSpikes(const ElementKernel& k, float x, float y) {
     const std::size_t start = std::size_t(first - k.spikes.begin());
 
     float sum = 0.f;
-    for (std::size_t j = 0; j < n; ++j) {
-        const Spike& s = k.spikes[(start + j) % n];
+    // From the first spike past `lo` round the circle (wrapping at the end of the list).
+    std::size_t index = start == n ? 0 : start;
+    for (std::size_t j = 0; j < n; ++j, index = index + 1 == n ? 0 : index + 1) {
+        const Spike& s = k.spikes[index];
         float offset = s.angle - lo;
         if (offset < 0.f) offset += kTwoPi;
         if (offset > 2.f * window) break;
