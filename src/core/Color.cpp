@@ -29,37 +29,54 @@ double decodeDouble(double e) {
 //! Correct rounding of an encode to `levels` codes without pow: code k covers the linear values
 //! from the decode of (k - 0.5)/levels up to that of (k + 0.5)/levels, so the code of x is the
 //! number of those boundaries at or below x. A first guess comes from a table indexed by the
-//! float's exponent and top mantissa bits (`kBucketBits` of them): `start[b]` is the code at the
-//! bottom of bucket b, and the answer lies between it and the next bucket's code.
+//! float's exponent and top mantissa bits (`kBucketBits` of them): `buckets[b].code` is the code
+//! at the bottom of bucket b, and the answer lies between it and the next bucket's code.
 template <typename Code, int kLevels, int kMinExponent, int kBucketBits, bool kOneBoundaryPerBucket>
 struct EncodeTable {
     static constexpr int kShift = 23 - kBucketBits;
     //! Bits of 2^kMinExponent: every value below it is below the first boundary (code 0).
     static constexpr std::uint32_t kFirstBits = std::uint32_t(127 + kMinExponent) << 23;
+    static constexpr std::uint32_t kOneBits = 0x3F800000u;  //!< 1.0f
+    static constexpr std::uint32_t kInfinityBits = 0x7F800000u;
     static constexpr std::size_t kBuckets = std::size_t(-kMinExponent) << kBucketBits;
 
-    std::vector<float> bounds;  //!< kLevels boundaries, then +inf
-    std::vector<Code> start;    //!< kBuckets + 1 first codes
+    //! A bucket's first code and the boundary above it, side by side: one load finds both.
+    struct Bucket {
+        float bound;
+        Code code;
+    };
 
-    EncodeTable() : bounds(kLevels + 1), start(kBuckets + 1) {
+    std::vector<float> bounds;    //!< kLevels boundaries, then +inf
+    std::vector<Bucket> buckets;  //!< kBuckets + 1
+
+    EncodeTable() : bounds(kLevels + 1), buckets(kBuckets + 1) {
         for (int k = 0; k < kLevels; ++k)
             bounds[std::size_t(k)] = float(decodeDouble((k + 0.5) / kLevels));
         bounds[kLevels] = INFINITY;
         for (std::size_t b = 0; b <= kBuckets; ++b) {
             const float lo = std::bit_cast<float>(kFirstBits + std::uint32_t(b << kShift));
-            start[b] =
-                Code(std::upper_bound(bounds.begin(), bounds.end() - 1, lo) - bounds.begin());
+            const auto code = std::size_t(std::upper_bound(bounds.begin(), bounds.end() - 1, lo) -
+                                          bounds.begin());
+            buckets[b] = {bounds[code], Code(code)};
         }
     }
 
+    //! The code of a linear value: 0 for NaN, negatives and values below the first boundary,
+    //! kLevels for 1 and above, +inf included unless kInfinityAsZero (the bulk encoders give
+    //! every non-finite value 0, what the file writers have always written). The sign, NaN and
+    //! infinity tests are unsigned range checks on the float's bits.
+    template <bool kInfinityAsZero = false>
     Code encode(float linear) const {
-        if (!(linear >= std::bit_cast<float>(kFirstBits))) return 0;  // also NaN
-        if (linear >= 1.f) return Code(kLevels);
-        const std::size_t b = (std::bit_cast<std::uint32_t>(linear) - kFirstBits) >> kShift;
-        Code code = start[b];
+        const std::uint32_t bits = std::bit_cast<std::uint32_t>(linear);
+        if (bits - kFirstBits >= kOneBits - kFirstBits) {  // outside [2^kMinExponent, 1)
+            const std::uint32_t top = kInfinityBits - kOneBits - (kInfinityAsZero ? 1 : 0);
+            return bits - kOneBits <= top ? Code(kLevels) : Code(0);
+        }
+        const Bucket& b = buckets[(bits - kFirstBits) >> kShift];
         if constexpr (kOneBoundaryPerBucket) {
-            return Code(code + (linear >= bounds[code]));  // branch-free: one step at most
+            return Code(b.code + (linear >= b.bound));  // branch-free: one step at most
         } else {
+            Code code = b.code;
             while (linear >= bounds[code]) ++code;  // at most a few steps: see the bucket sizes
             return code;
         }
@@ -127,7 +144,9 @@ std::uint16_t linearToSrgb16(float linear) {
 void encodeSrgb8(const float* rgba, std::size_t pixels, int channels, std::uint8_t* out) {
     const Encode8& table = encode8();
     for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
-        for (int c = 0; c < std::min(channels, 3); ++c) out[c] = table.encode(finiteOr0(rgba[c]));
+        out[0] = table.encode<true>(rgba[0]);
+        out[1] = table.encode<true>(rgba[1]);
+        out[2] = table.encode<true>(rgba[2]);
         if (channels == 4) out[3] = alphaTo8(finiteOr0(rgba[3]));
     }
 }
@@ -135,7 +154,9 @@ void encodeSrgb8(const float* rgba, std::size_t pixels, int channels, std::uint8
 void encodeSrgb16(const float* rgba, std::size_t pixels, int channels, std::uint16_t* out) {
     const Encode16& table = encode16();
     for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
-        for (int c = 0; c < std::min(channels, 3); ++c) out[c] = table.encode(finiteOr0(rgba[c]));
+        out[0] = table.encode<true>(rgba[0]);
+        out[1] = table.encode<true>(rgba[1]);
+        out[2] = table.encode<true>(rgba[2]);
         if (channels == 4) out[3] = alphaTo16(finiteOr0(rgba[3]));
     }
 }

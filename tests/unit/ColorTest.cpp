@@ -60,11 +60,36 @@ TEST(Color, EncodeMatchesTheBoundarySearchAtEveryBoundaryAndAcrossASweep) {
             for (float x : {std::nextafter(b, 0.f), b, std::nextafter(b, 2.f)})
                 ASSERT_EQ(code(x), referenceCode(x, levels)) << levels << " " << x;
         }
-        // Every 61st float from 0 to just past 1 (16.7 million values), so every table bucket.
+        // Every 61st float from 0 to just past 1 (17 million values), so every table bucket,
+        // one at a time and through the bulk encoder (RGB of float RGBA, blocks of 4096).
+        std::vector<float> rgba;
+        std::vector<int> expected;
+        const auto checkBulk = [&] {
+            const std::size_t n = expected.size();
+            std::vector<int> got(n * 3);
+            if (levels == 255) {
+                std::vector<std::uint8_t> out(n * 3);
+                encodeSrgb8(rgba.data(), n, 3, out.data());
+                got.assign(out.begin(), out.end());
+            } else {
+                std::vector<std::uint16_t> out(n * 3);
+                encodeSrgb16(rgba.data(), n, 3, out.data());
+                got.assign(out.begin(), out.end());
+            }
+            for (std::size_t i = 0; i < got.size(); ++i)
+                ASSERT_EQ(got[i], expected[i / 3]) << levels << " " << rgba[i / 3 * 4];
+            rgba.clear();
+            expected.clear();
+        };
         for (std::uint32_t bits = 0; bits <= 0x3F800100u; bits += 61) {
             const float x = std::bit_cast<float>(bits);
-            ASSERT_EQ(code(x), referenceCode(x, levels)) << levels << " " << x;
+            const int reference = referenceCode(x, levels);
+            ASSERT_EQ(code(x), reference) << levels << " " << x;
+            rgba.insert(rgba.end(), {x, x, x, 1.f});
+            expected.push_back(reference);
+            if (expected.size() == 4096) checkBulk();
         }
+        checkBulk();
     }
 }
 
@@ -87,9 +112,25 @@ TEST(Color, BulkEncodeIsTheScalarEncodeWithNonFiniteAsZero) {
     std::uniform_real_distribution<float> value(-0.2f, 1.3f);
     std::vector<float> rgba(4 * 1000);
     for (float& v : rgba) v = value(rng);
-    rgba[0] = std::numeric_limits<float>::infinity();
-    rgba[5] = std::numeric_limits<float>::quiet_NaN();
-    rgba[7] = std::numeric_limits<float>::infinity();
+    // The values the encoder's range checks turn on: every non-finite kind, both zeros, the
+    // smallest subnormal, the edges of the table (2^-13 and 2^-21) and of 1.
+    const float inf = std::numeric_limits<float>::infinity();
+    const float edges[] = {inf,
+                           -inf,
+                           std::numeric_limits<float>::quiet_NaN(),
+                           -std::numeric_limits<float>::quiet_NaN(),
+                           0.f,
+                           -0.f,
+                           std::numeric_limits<float>::denorm_min(),
+                           std::ldexp(1.f, -13),
+                           std::nextafter(std::ldexp(1.f, -13), 0.f),
+                           std::ldexp(1.f, -21),
+                           std::nextafter(std::ldexp(1.f, -21), 0.f),
+                           1.f,
+                           std::nextafter(1.f, 0.f),
+                           std::numeric_limits<float>::max(),
+                           -std::numeric_limits<float>::max()};
+    for (std::size_t i = 0; i < std::size(edges); ++i) rgba[i * 3] = edges[i];
     for (int channels : {3, 4}) {
         std::vector<std::uint8_t> out8(1000 * std::size_t(channels));
         std::vector<std::uint16_t> out16(out8.size());
@@ -105,6 +146,8 @@ TEST(Color, BulkEncodeIsTheScalarEncodeWithNonFiniteAsZero) {
             }
         }
     }
+    EXPECT_EQ(linearToSrgb8(inf), 255);  // the scalar encode clamps +inf; the bulk gives it 0
+    EXPECT_EQ(linearToSrgb16(inf), 65535);
     EXPECT_EQ(alphaTo8(0.5f), 128);  // round half away from zero, as std::lround
     EXPECT_EQ(alphaTo16(2.f), 65535);
 }
