@@ -10,6 +10,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/DiscMask.h"
 #include "core/LuminanceSample.h"
 #include "core/Parallel.h"
 #include "core/RadixSort.h"
@@ -220,21 +221,6 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
     return c;
 }
 
-//! Marks the pixels within `radius` of c as seen, so a light's halo is not a second light.
-void suppressAround(const LuminanceMap& m, Point c, float radius, std::vector<std::uint8_t>& seen) {
-    const int x0 = std::max(0, int(std::floor(c.x - radius)));
-    const int x1 = std::min(m.w, int(std::ceil(c.x + radius)));
-    const int y0 = std::max(0, int(std::floor(c.y - radius)));
-    const int y1 = std::min(m.h, int(std::ceil(c.y + radius)));
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) {
-            const float dx = float(x) + 0.5f - c.x, dy = float(y) + 0.5f - c.y;
-            if (dx * dx + dy * dy <= radius * radius)
-                seen[std::size_t(y) * std::size_t(m.w) + std::size_t(x)] = 1;
-        }
-    }
-}
-
 //! Judges a measured candidate; sets accepted and verdict.
 void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m,
            bool displayReferred, float frameKey) {
@@ -327,9 +313,11 @@ struct CandidateSearch {
         const float rim = ringMean(m, c.position, c.radius + 1.f, 1.5f * c.radius + 2.f);
         c.halo = rim >= 0.f ? rim / c.meanLuminance : 0.f;
         judge(c, options, m, result.displayReferred, result.frameKey);
-        // Small regions keep their halo out of the search; a huge one already holds it.
+        // Small regions keep their halo (the disc of twice their radius) out of the search; a
+        // huge one already holds it.
         if (double(c.pixels) <= kSuppressFrameShare * double(m.w) * double(m.h))
-            suppressAround(m, c.position, std::max(2.f * c.radius, c.radius + 2.f), seen);
+            markDisc(seen.data(), m.w, m.h, c.position.x, c.position.y,
+                     std::max(2.f * c.radius, c.radius + 2.f));
         result.candidates.push_back(std::move(c));
     }
 };
