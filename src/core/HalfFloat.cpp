@@ -29,17 +29,28 @@ void floatsToHalfPortable(const float* rgba, std::size_t pixels, int channels, s
 }
 
 #if defined(__x86_64__)
-//! Four channels at a time: one F16C conversion per pixel; NaN and infinity (exponent all ones)
+//! One F16C conversion per pixel (its four channels); NaN and infinity (exponent all ones)
 //! masked to 0 first.
+__attribute__((target("avx,f16c"))) inline __m128i pixelToHalves(const float* rgba) {
+    const __m128 exponent = _mm_castsi128_ps(_mm_set1_epi32(0x7F800000));
+    const __m128 v = _mm_loadu_ps(rgba);
+    const __m128 nonFinite = _mm_cmpeq_ps(_mm_and_ps(v, exponent), exponent);
+    return _mm_cvtps_ph(_mm_andnot_ps(nonFinite, v), _MM_FROUND_TO_NEAREST_INT);
+}
+
+//! The four halves are stored as one 8-byte word. With three channels the word's last half
+//! spills into the next pixel's first, which that pixel then overwrites; the last pixel is
+//! copied half by half so nothing is written past `out`'s end.
 __attribute__((target("avx,f16c"))) void floatsToHalfF16c(const float* rgba, std::size_t pixels,
                                                           int channels, std::uint16_t* out) {
-    const __m128 exponent = _mm_castsi128_ps(_mm_set1_epi32(0x7F800000));
-    for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
-        const __m128 v = _mm_loadu_ps(rgba);
-        const __m128 nonFinite = _mm_cmpeq_ps(_mm_and_ps(v, exponent), exponent);
-        const __m128i h = _mm_cvtps_ph(_mm_andnot_ps(nonFinite, v), _MM_FROUND_TO_NEAREST_INT);
+    std::size_t p = 0;
+    if (channels == 4 || channels == 3) {
+        for (; p + 1 < pixels; ++p, rgba += 4, out += channels)
+            _mm_storel_epi64(reinterpret_cast<__m128i*>(out), pixelToHalves(rgba));
+    }
+    for (; p < pixels; ++p, rgba += 4, out += channels) {
         alignas(16) std::uint16_t four[8];
-        _mm_store_si128(reinterpret_cast<__m128i*>(four), h);
+        _mm_store_si128(reinterpret_cast<__m128i*>(four), pixelToHalves(rgba));
         for (int c = 0; c < channels; ++c) out[c] = four[c];
     }
 }

@@ -381,6 +381,17 @@ TEST(Codec, HalfConversionsAreImathsBitForBit) {
         values.push_back(-v);
     }
     values.resize(values.size() / 4 * 4);
+    // Fewer channels: the first of each pixel's four, packed, and not a half past the end.
+    for (const int channels : {1, 2, 3}) {
+        const std::size_t pixels = values.size() / 4;
+        std::vector<std::uint16_t> packed(pixels * std::size_t(channels) + 1, 0xABCD);
+        floatsToHalf(values.data(), pixels, channels, packed.data());
+        for (std::size_t p = 0; p < pixels; ++p)
+            for (std::size_t c = 0; c < std::size_t(channels); ++c)
+                ASSERT_EQ(packed[p * std::size_t(channels) + c], half(values[p * 4 + c]).bits())
+                    << channels << " " << p;
+        EXPECT_EQ(packed.back(), 0xABCD) << channels;
+    }
     std::vector<std::uint16_t> halves(values.size());
     floatsToHalf(values.data(), values.size() / 4, 4, halves.data());
     std::vector<float> back(values.size());
