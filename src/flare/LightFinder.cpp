@@ -2,10 +2,10 @@
 // computed once; each candidate is grown from its own peak by a flood fill that visits only
 // pixels near that peak, and judged against the ring of pixels around it.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 #include <numbers>
 #include <vector>
@@ -102,6 +102,16 @@ LuminanceMap luminanceMap(const Image& image) {
     return m;
 }
 
+//! A float's bits: for non-negative values they order as the values do.
+std::uint32_t bitsOf(float l) {
+    return std::bit_cast<std::uint32_t>(l);
+}
+
+//! The seed's pixel: keys hold the inverted index (ties of luminance in raster order).
+std::size_t seedOf(std::uint64_t key) {
+    return std::size_t(0xFFFFFFFFu - std::uint32_t(key & 0xFFFFFFFFu));
+}
+
 //! The seeds' keys, one per pixel at or above `minLuminance`, in raster order: the luminance's
 //! bits (monotonic for non-negative floats) over the inverted index. Rows are counted, then
 //! filled, in parallel.
@@ -123,9 +133,8 @@ SortKeys seedKeys(const LuminanceMap& m, float minLuminance) {
             for (std::size_t i = std::size_t(y) * std::size_t(m.w);
                  i < std::size_t(y + 1) * std::size_t(m.w); ++i) {
                 if (m.lum[i] < minLuminance) continue;
-                std::uint32_t bits;
-                std::memcpy(&bits, &m.lum[i], sizeof bits);
-                keys[k++] = (std::uint64_t(bits) << 32) | (0xFFFFFFFFu - std::uint32_t(i));
+                keys[k++] =
+                    (std::uint64_t(bitsOf(m.lum[i])) << 32) | (0xFFFFFFFFu - std::uint32_t(i));
             }
         }
     });
@@ -274,17 +283,6 @@ void rejectGlareFragments(std::vector<LightCandidate>& candidates, float height)
             break;
         }
     }
-}
-
-//! The seed's pixel: keys hold the inverted index (ties of luminance in raster order).
-std::size_t seedOf(std::uint64_t key) {
-    return std::size_t(0xFFFFFFFFu - std::uint32_t(key & 0xFFFFFFFFu));
-}
-
-std::uint32_t bitsOf(float l) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &l, sizeof bits);
-    return bits;
 }
 
 //! The search over the seeds, brightest first: each seed not yet taken grows a candidate, which
