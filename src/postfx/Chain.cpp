@@ -55,6 +55,8 @@ struct CpuPostFx::Impl {
                 using U = std::decay_t<decltype(stepUniforms)>;
                 if constexpr (std::is_same_v<U, ClearStep>) {
                     if (!fresh) out.fill({});  // a new buffer is already transparent black
+                } else if constexpr (requires { drawPass(stepUniforms, in.data(), out); }) {
+                    drawPass(stepUniforms, in.data(), out);  // a pass that draws rows itself
                 } else {
                     runPass(out, [u = stepUniforms, in](int x, int y) {
                         return passPixel(u, in.data(), x, y);
