@@ -330,31 +330,11 @@ struct ConvertWhileDecoding {
     }
 };
 
-//! After an EXR read into RGBA: grey copied to G and B, non-finite values replaced and counted.
+//! After an EXR read into RGBA: codec::finishExrPixels over the image, on every core.
 std::size_t finishExr(Image& image, bool grey) {
     std::atomic<std::size_t> nonFinite{0};
     forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
-        float* const begin = image.data() + p0 * 4;
-        float* const end = image.data() + p1 * 4;
-        if (grey)
-            for (float* d = begin; d < end; d += 4) d[1] = d[2] = d[0];
-        // Looked for first with a test the compiler vectorises (a float is NaN or infinite when
-        // its exponent bits are all ones), so a clean frame costs one read of its pixels.
-        bool any = false;
-        for (const float* d = begin; d < end; ++d) {
-            std::uint32_t bits;
-            std::memcpy(&bits, d, sizeof bits);
-            any |= (bits & 0x7F800000u) == 0x7F800000u;
-        }
-        if (!any) return;
-        std::size_t bad = 0;
-        for (float* d = begin; d < end; ++d) {
-            if (!std::isfinite(*d)) {
-                *d = 0.f;
-                ++bad;
-            }
-        }
-        nonFinite += bad;
+        nonFinite += codec::finishExrPixels(image.data() + p0 * 4, image.data() + p1 * 4, grey);
     });
     return nonFinite;
 }
@@ -420,7 +400,7 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
             out.exrExtras = exr->extras;
             out.extraChannels = exr->extras ? int(exr->extras->channels.size()) : 0;
             out.droppedChannels = 0;
-            out.nonFinite = finishExr(exr->image, exr->grey);
+            out.nonFinite = exr->finished ? exr->nonFinite : finishExr(exr->image, exr->grey);
             out.halfExact = exr->allHalf;  // a non-finite half became 0, itself a half
             out.image = std::move(exr->image);
             return out;
