@@ -80,8 +80,9 @@ bool anyNonFinite(const std::uint16_t* halves, std::size_t count) {
 //! band into the image while it is still in cache, and finishExrPixels runs on it there. Read
 //! straight into floats, OpenEXR looks every sample up in a 256 KiB table, and the
 //! non-finite scan then read the whole image again. `names`: the channel read into each RGBA
-//! lane (R, G, B, A, or Y, -, -, A); one the file lacks is skipped. A band is about 64 rows: 1 MiB
-//! of halves at 1920 wide, inside the core's L2. Returns how many NaN and infinite values became 0.
+//! lane (R, G, B, A, or Y, -, -, A); one the file lacks is skipped. A band is about 128 rows (2 MiB
+//! of halves at 1920 wide, a core's L2 here): several chunks for each of OpenEXR's threads per
+//! call. Returns how many NaN and infinite values became 0.
 std::size_t readHalfInBands(Imf::InputFile& file, const Imf::FrameBuffer& extras,
                             const std::vector<std::string>& names, bool hasAlpha, bool grey,
                             Image& image) {
