@@ -1,4 +1,5 @@
-// zlib's one-shot calls answered by libdeflate (src/core/codecs/ZlibOnLibdeflate.cpp): the
+// zlib's one-shot calls answered by libdeflate and, at level 1, ISA-L
+// (src/core/codecs/ZlibOnLibdeflate.cpp): the
 // streams are zlib's own format both ways (checked against zlib's stream API, which is not
 // replaced), the return codes are zlib's, and OpenEXR's ZIP chunks really go through them.
 #include <dlfcn.h>
@@ -121,6 +122,38 @@ TEST(ZlibOnLibdeflate, ErrorsAreZlibsCodes) {
     EXPECT_EQ(uncompress(back.data(), &room, packed.data(), packed.size() / 2), Z_DATA_ERROR);
 }
 
+// Level 1 is ISA-L's deflate: counted as such and zlib's format (zlib's inflate reads it back),
+// random bytes included, in the room OpenEXR gives a chunk (the input plus 1% and 100 bytes:
+// stored blocks); with far too little room it is zlib's Z_BUF_ERROR.
+TEST(ZlibOnLibdeflate, LevelOneIsIsalsDeflateWithLibdeflateBehindIt) {
+    const std::vector<Bytef> original = sampleBytes(300000);
+    std::vector<Bytef> packed(compressBound(original.size()));
+    uLongf size = packed.size();
+    const codec::ZlibCalls before = codec::zlibCallsAnsweredByLibdeflate();
+    ASSERT_EQ(compress2(packed.data(), &size, original.data(), original.size(), 1), Z_OK);
+    const codec::ZlibCalls after = codec::zlibCallsAnsweredByLibdeflate();
+    EXPECT_EQ(after.compressedByIsal - before.compressedByIsal, 1u);
+    EXPECT_EQ(after.compressed - before.compressed, 1u);
+    packed.resize(size);
+    EXPECT_EQ(inflateWithZlib(packed, original.size()), original);
+    EXPECT_LT(size, original.size() * 3 / 4);  // it does compress
+
+    std::mt19937 rng(11);
+    std::vector<Bytef> noise(200000);
+    for (Bytef& b : noise) b = Bytef(rng());
+    std::vector<Bytef> room(noise.size() + noise.size() / 100 + 100);
+    size = room.size();
+    const codec::ZlibCalls beforeNoise = codec::zlibCallsAnsweredByLibdeflate();
+    ASSERT_EQ(compress2(room.data(), &size, noise.data(), noise.size(), 1), Z_OK);
+    EXPECT_EQ(codec::zlibCallsAnsweredByLibdeflate().compressedByIsal,
+              beforeNoise.compressedByIsal + 1);
+    room.resize(size);
+    EXPECT_EQ(inflateWithZlib(room, noise.size()), noise);
+
+    size = 100;
+    EXPECT_EQ(compress2(packed.data(), &size, original.data(), original.size(), 1), Z_BUF_ERROR);
+}
+
 TEST(ZlibOnLibdeflate, OpenExrZipChunksGoThroughIt) {
     flarekit::test::TempDir dir;
     // 40 lines: 3 chunks of 16 (ZIP), 40 of 1 (ZIPS). Smooth enough that every chunk packs
@@ -141,6 +174,8 @@ TEST(ZlibOnLibdeflate, OpenExrZipChunksGoThroughIt) {
         ASSERT_TRUE(writeImage(path, image, options).ok());
         const codec::ZlibCalls written = codec::zlibCallsAnsweredByLibdeflate();
         EXPECT_EQ(written.compressed - before.compressed, c.chunks) << c.compression;
+        // At the default level, 1, every chunk is ISA-L's.
+        EXPECT_EQ(written.compressedByIsal - before.compressedByIsal, c.chunks) << c.compression;
         auto back = readImage(path);
         ASSERT_TRUE(back.ok());
         EXPECT_EQ(codec::zlibCallsAnsweredByLibdeflate().expanded - written.expanded, c.chunks);
