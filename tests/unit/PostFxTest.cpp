@@ -8,6 +8,7 @@
 #include "PostFxImages.h"
 #include "flarekit/PostFx.h"
 #include "postfx/brightpass/BrightPass.h"
+#include "postfx/composite/Composite.h"
 #include "postfx/starburst/Starburst.h"
 #include "postfx/streaks/Streaks.h"
 
@@ -500,8 +501,6 @@ TEST(PostFxInPlace, TheCompositeOverTheInputIsRunsCompositeExactly) {
 }
 
 }  // namespace flarekit
-
-#include "postfx/composite/Composite.h"
 
 namespace flarekit {
 namespace {
