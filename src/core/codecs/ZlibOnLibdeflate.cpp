@@ -9,8 +9,8 @@
 // that reason. Even so, libdeflate's level 1 was still a quarter of a `postfx` run's CPU; ISA-L's
 // level 1 deflates OpenEXR's chunks 3-5x faster again, for files 4-6% larger on photographs and
 // HDRIs (15% on a smooth synthetic sky): docs/formats.md has the figures. So level 1, flarekit's
-// default, is ISA-L's level 1; levels 2-9 stay libdeflate's, whose level 2 makes about the files
-// level 1 made before. The files stay standard zlib streams: any reader decodes them.
+// default, is ISA-L's level 1; levels 2-9 stay libdeflate's, whose level 2 makes files a little
+// smaller than level 1 made before. The files stay standard zlib streams: any reader decodes them.
 //
 // How: a definition in the executable comes first in the dynamic linker's search, so
 // libOpenEXR's unversioned references bind here (the linker exports these symbols because a
@@ -24,7 +24,9 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <new>
 #include <vector>
 
 #include "core/codecs/ZlibOnLibdeflate.h"
@@ -70,7 +72,16 @@ std::size_t isalDeflateLevel1(const Bytef* source, std::size_t size, Bytef* dest
         isal_zstream stream;
         std::vector<std::uint8_t> levelBuffer = std::vector<std::uint8_t>(ISAL_DEF_LVL1_DEFAULT);
     };
-    thread_local std::unique_ptr<State> state = std::make_unique<State>();
+    // Made on first use, not at thread start: a failed allocation must not throw out of zlib's
+    // C interface, so it is caught here and libdeflate gets the call.
+    thread_local std::unique_ptr<State> state;
+    if (!state) {
+        try {
+            state = std::make_unique<State>();
+        } catch (const std::bad_alloc&) {
+            return 0;
+        }
+    }
     isal_zstream& z = state->stream;
     isal_deflate_stateless_init(&z);
     z.level = 1;
