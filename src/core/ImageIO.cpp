@@ -330,15 +330,6 @@ struct ConvertWhileDecoding {
     }
 };
 
-//! After an EXR read into RGBA: codec::finishExrPixels over the image, on every core.
-std::size_t finishExr(Image& image, bool grey) {
-    std::atomic<std::size_t> nonFinite{0};
-    forEachChunk(image.pixelCount(), [&](std::size_t p0, std::size_t p1) {
-        nonFinite += codec::finishExrPixels(image.data() + p0 * 4, image.data() + p1 * 4, grey);
-    });
-    return nonFinite;
-}
-
 }  // namespace
 
 Result<std::vector<float>> channelByName(const LoadedImage& loaded, const std::string& name,
@@ -400,7 +391,7 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
             out.exrExtras = exr->extras;
             out.extraChannels = exr->extras ? int(exr->extras->channels.size()) : 0;
             out.droppedChannels = 0;
-            out.nonFinite = exr->finished ? exr->nonFinite : finishExr(exr->image, exr->grey);
+            out.nonFinite = exr->nonFinite;
             out.halfExact = exr->allHalf;  // a non-finite half became 0, itself a half
             out.image = std::move(exr->image);
             return out;

@@ -44,18 +44,10 @@ struct ExrRead {
     Header header;
     Image image;
     bool hasAlpha = false;
-    bool grey = false;
     bool allHalf = false;                     //!< every channel read was stored as half floats
     std::shared_ptr<const ExrExtras> extras;  //!< the header and the other channels
-    //! The read has already done finishExrPixels over the image (the half-float path does it
-    //! band by band); nonFinite is then its count.
-    bool finished = false;
-    std::size_t nonFinite = 0;
+    std::size_t nonFinite = 0;  //!< NaN and infinite samples, replaced by 0 in `image`
 };
-//! What an EXR read owes the rest of flarekit, on pixels [begin, end) of float RGBA: a grey
-//! image's Y copied to G and B, then every NaN and infinity replaced by 0. Returns how many
-//! were replaced.
-std::size_t finishExrPixels(float* begin, float* end, bool grey);
 Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check);
 
 Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptions& options);

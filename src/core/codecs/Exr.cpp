@@ -46,6 +46,46 @@ void startThreadPool() {
     });
 }
 
+//! Rows per task where a read's pixels are converted and checked on every core: 8 rows of
+//! 1920 pixels are 15,000 pixels, enough work to outweigh a task's start.
+constexpr int kRowsPerTask = 8;
+
+//! What an EXR read owes the rest of flarekit, on pixels [begin, end) of float RGBA: a grey
+//! image's Y copied to G and B, then every NaN and infinity replaced by 0. Returns how many
+//! were replaced.
+std::size_t finishExrPixels(float* begin, float* end, bool grey) {
+    if (grey)
+        for (float* d = begin; d < end; d += 4) d[1] = d[2] = d[0];
+    // Looked for first with a test the compiler vectorises (a float is NaN or infinite when its
+    // exponent bits are all ones), so a clean frame costs one read of its pixels.
+    bool any = false;
+    for (const float* d = begin; d < end; ++d) {
+        std::uint32_t bits;
+        std::memcpy(&bits, d, sizeof bits);
+        any |= (bits & 0x7F800000u) == 0x7F800000u;
+    }
+    if (!any) return 0;
+    std::size_t bad = 0;
+    for (float* d = begin; d < end; ++d) {
+        if (!std::isfinite(*d)) {
+            *d = 0.f;
+            ++bad;
+        }
+    }
+    return bad;
+}
+
+//! finishExrPixels over the whole image, rows on every core: the read straight into floats.
+std::size_t finishImage(Image& image, bool grey) {
+    std::atomic<std::size_t> nonFinite{0};
+    const std::size_t rowFloats = 4 * std::size_t(image.width());
+    parallelFor(0, image.height(), kRowsPerTask, [&](int y0, int y1) {
+        float* const begin = image.row(y0);
+        nonFinite += finishExrPixels(begin, begin + std::size_t(y1 - y0) * rowFloats, grey);
+    });
+    return nonFinite;
+}
+
 //! Scanlines per chunk of each compression (OpenEXR's file layout): a chunk is decoded once per
 //! readPixels call that touches it, so bands of rows start and end on chunk boundaries.
 int chunkRows(Imf::Compression c) {
@@ -108,12 +148,12 @@ std::size_t readHalfInBands(Imf::InputFile& file, const Imf::FrameBuffer& extras
         file.setFrameBuffer(frame);
         file.readPixels(y0, y1);
         const int first = y0 - window.min.y;
-        parallelFor(0, y1 - y0 + 1, 8, [&](int r0, int r1) {
-            float* const begin = image.row(first + r0);
-            halfsToFloats(halves.data() + std::size_t(r0) * rowHalves,
-                          std::size_t(r1 - r0) * rowHalves, begin);
+        parallelFor(0, y1 - y0 + 1, kRowsPerTask, [&](int r0, int r1) {
+            const std::uint16_t* const in = halves.data() + std::size_t(r0) * rowHalves;
             const std::size_t count = std::size_t(r1 - r0) * rowHalves;
-            if (grey || anyNonFinite(halves.data() + std::size_t(r0) * rowHalves, count))
+            float* const begin = image.row(first + r0);
+            halfsToFloats(in, count, begin);
+            if (grey || anyNonFinite(in, count))
                 nonFinite += finishExrPixels(begin, begin + count, grey);
         });
     }
@@ -121,28 +161,6 @@ std::size_t readHalfInBands(Imf::InputFile& file, const Imf::FrameBuffer& extras
 }
 
 }  // namespace
-
-std::size_t finishExrPixels(float* begin, float* end, bool grey) {
-    if (grey)
-        for (float* d = begin; d < end; d += 4) d[1] = d[2] = d[0];
-    // Looked for first with a test the compiler vectorises (a float is NaN or infinite when its
-    // exponent bits are all ones), so a clean frame costs one read of its pixels.
-    bool any = false;
-    for (const float* d = begin; d < end; ++d) {
-        std::uint32_t bits;
-        std::memcpy(&bits, d, sizeof bits);
-        any |= (bits & 0x7F800000u) == 0x7F800000u;
-    }
-    if (!any) return 0;
-    std::size_t bad = 0;
-    for (float* d = begin; d < end; ++d) {
-        if (!std::isfinite(*d)) {
-            *d = 0.f;
-            ++bad;
-        }
-    }
-    return bad;
-}
 
 Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
     startThreadPool();
@@ -188,7 +206,6 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         if (Status s = check(out.header); !s) return s.error();
         out.image = Image(out.header.width, out.header.height);
         out.hasAlpha = channels.findChannel("A") != nullptr;
-        out.grey = grey;
         out.allHalf = true;
         for (const std::string& name : read) {
             const Imf::Channel* c = channels.findChannel(name);
@@ -217,7 +234,6 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
             const std::vector<std::string> lanes =
                 rgb ? read : std::vector<std::string>{"Y", "", "", "A"};
             out.nonFinite = readHalfInBands(file, frame, lanes, out.hasAlpha, grey, out.image);
-            out.finished = true;
             return out;
         }
         // Slices into the RGBA floats; a channel the file lacks is filled (alpha with 1).
@@ -238,6 +254,7 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         slice("A", 3, 1.0);
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
+        out.nonFinite = finishImage(out.image, grey);
         return out;
     } catch (const std::exception& e) {
         return invalidInput(path + ": cannot decode image: " + excerpt(firstLine(e.what()), 200));
