@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # flarekit set-up on a fresh Debian 12 machine: installs the packages it needs, builds
 # (Release), then runs one job.
 #   ./setup.sh demo   renders the demo drive (out/drive: frames + MP4) and every shipped preset on
@@ -32,8 +33,9 @@ case "$job" in
     cmake --build build-nogl -j"$(nproc)"
     ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure
     # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the whole suite again,
-    # except the package test (it builds an example against the installed library with the
-    # system compiler's plain flags, which cannot link an instrumented library). Leak checking
+    # except the package test and the documentation's blocks (they build examples against the
+    # installed library with the system compiler's plain flags, which cannot link an
+    # instrumented library). Leak checking
     # is off here: Mesa unloads its driver at eglTerminate, so its one-time allocations are
     # reported against "<unknown module>" and cannot be suppressed by name, and libstdc++ and
     # OIIO have no frame pointers for the fast unwinder. The fuzz targets (no GL) check leaks.
@@ -42,7 +44,7 @@ case "$job" in
     cmake --build build-asan -j"$(nproc)"
     ASAN_OPTIONS=detect_leaks=0:strict_string_checks=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^Package'
+      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^(Package|DocBlocks)'
     FLAREKIT_WERROR="$werror" ./scripts/fuzz.sh 60
     ;;
 esac

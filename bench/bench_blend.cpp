@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seed-002 blending throughput. Megapixels/s per mode; for the saturating add, the three
 // implementations against memcpy over the same buffers in the same run (the SIMD add
 // >= 70% of memcpy's GB/s). bytes_per_second counts the buffer size once for every kernel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sprite-flare throughput: element generation (MP/s of sprite pixels), `apply` in memory
 // (light search + flare) and `apply` end to end through files, at 1920x1080 and 3840x2160,
 // on 1 and 2 threads.

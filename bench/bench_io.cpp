@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image file costs, the fixed part of every whole-process job: the sRGB encode (against the
 // binary search it replaced), and reading and writing PNG (per zlib level), EXR and JPEG
 // through flarekit's own codecs, on 1 and 2 threads. Files go to /dev/shm where it exists, so

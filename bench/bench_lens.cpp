@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lens flares from prescriptions on 2 cores: the exact ghost analysis (`lens ghosts`), and the
 // CPU render of one light at 1920x1080 through the 22-surface zoom's brightest 66 ghosts (RGB
 // and 16 spectral samples), and `--light all` as the number of sources grows.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine API's cost per frame for many lights at 1920x1080 (4x MSAA depth): one
 // fk_engine_occlusion (every light in one dispatch) and one fk_engine_draw (every flare,
 // instanced per element), against the same lights measured one call each.

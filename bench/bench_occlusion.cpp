@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seed's experiment, and past it. GPG2's texture-masking article measured 27.8
 // frames/s with the "lock" (synchronous depth read-back) against 53.5 with texture masking at
 // 600x500, and explained the gap: the lock makes the CPU wait for the GPU to finish the frame,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The post-process lens flare chain at 1920x1080 and 3840x2160, CPU (both cores,
 // 4-wide SIMD per pixel) and OpenGL (llvmpipe here; the GPU where one is lent).
 //   items/s      megapixels of input per second for the whole chain (SetItemsProcessed)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PSP GE emulator running the Burnout and Ridge Racer frames: frames/s and the
 // GE's pixel rate, correct and naive memory models, on a half-occluded sun with a tree-line of
 // occluders (about 40,000 occluder pixels drawn as row sprites).

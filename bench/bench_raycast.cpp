@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray-cast ground truth: rays per second on 1 and 2 threads, on the demo world (BVH built once,
 // the camera driving along the road) and on a denser synthetic foliage scene (24 trees of 400
 // leaf triangles, trunks, buildings; the BVH rebuilt per call as `flarekit visibility` does).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GL scene render time per frame on the demo world (headless EGL; llvmpipe here, the GPU where
 // one is lent): GPU ms of the draw from a timer query, wall ms of the draw alone (glFinish)
 // and with the float read-back, with and without the sun's shadow map; and a whole demo frame

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every GPU visibility method against the ray-cast truth (256^2 rays) on the generated scenes
 // of tests/support/OcclusionScenes.h; prints a markdown table of coverages and the maximum and
 // mean absolute errors per method (the table in docs/occlusion.md).

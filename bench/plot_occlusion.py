@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Turns bench_occlusion's JSON into the docs/occlusion.md table and a PNG plot.
 
     build/bench/bench_occlusion --benchmark_out=occlusion.json --benchmark_out_format=json

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Writes a header holding each shader file as a raw string literal (shaders
 # are embedded at build time, never checked in as generated code).
 #   cmake -DOUTPUT=header.h -DINPUTS="a.vert|b.frag" -P EmbedShaders.cmake

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generates the shipped sample images: a sunset over hills with trees, as an 8-bit PNG and as
 // a linear HDR EXR whose sun disc has the value kHdrSunValue.
 // Usage: flarekit_make_sample OUT_DIR   (writes sunset.png and sunset-hdr.exr)

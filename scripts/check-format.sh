@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fails when a C++ file of the repository differs from what clang-format (.clang-format, Debian
 # 12's clang-format 14) makes of it. `scripts/check-format.sh --fix` formats them in place.
 set -euo pipefail
@@ -16,3 +17,5 @@ if ! clang-format --dry-run --Werror "${files[@]}" 2> format.log; then
 fi
 rm -f format.log
 echo "check-format: ${#files[@]} files formatted"
+# Every source file also carries its licence line.
+./scripts/check-spdx.sh

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job: the built-in drive (road, trees, buildings, tunnel, turn; 240 frames at
 # 1280x720 with an occlusion-aware sun flare, PNG frames + MP4), then every shipped preset on
 # the sample sunset, the HDR sample, each preset's element sheet, and the drive through the PSP

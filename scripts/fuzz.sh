@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the libFuzzer targets (clang, ASan + UBSan, no GL) in build-fuzz and runs each for
 # SECONDS (default 60) from its seed corpus under tests/fuzz/corpus/. New inputs go to a scratch
 # corpus; a crash, leak or timeout leaves its input in build-fuzz/artifacts/ and fails the run.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs every Debian 12 package flarekit needs to build, test and benchmark.
 # Idempotent: packages already present are skipped, apt-get runs only when needed.
 set -euo pipefail
@@ -17,8 +18,9 @@ packages=(
   libopenimageio-dev openimageio-tools
   # JSON presets and scenes, CLI parsing, threads
   nlohmann-json3-dev libcli11-dev libtbb-dev
-  # the lens starburst: Fraunhofer diffraction of the aperture through FFTW's real 2-D FFT
-  libfftw3-dev
+  # the lens starburst: Fraunhofer diffraction of the aperture through KissFFT's C++ template
+  # (header-only, BSD-3-Clause; FFTW is GPL and would bind every program linking libflarekit)
+  libkissfft-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # contact-sheet labels are rendered by OIIO with this font

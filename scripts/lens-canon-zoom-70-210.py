@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes presets/lenses/canon-zoom-70-210{,-tele}.json from US 4,380,377 (Canon, 1983), Example 1.
 
 The patent prints radii, thicknesses, n_d and v_d and the three variable gaps, but neither the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates docs/images/gallery/ from the CC0 HDR environment photographs of Debian's
 # blender-data package (studiolights/world: 1024x512 equirectangular EXRs): 640x360 crops with
 # the sun off centre, every sprite and postfx preset on them at the defaults, 8-bit JPEGs.

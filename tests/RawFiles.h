@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes image files directly with OpenImageIO, bypassing flarekit's writer (which sanitises),
 // so tests can make the bad inputs users will hand the tool: NaN pixels, odd channel counts,
 // oversized images, truncated files.

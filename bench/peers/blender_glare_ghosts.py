@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Peer benchmark for flarekit postfx: the same image through Blender's compositor
 # Glare node, type Ghosts, headless. Run by run_blender_peer.sh:
 #   blender -b --factory-startup -noaudio --python blender_glare_ghosts.py -- IN.exr OUT.exr RUNS

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Whole-process comparison with the peers a user would otherwise run, side by side on this
 # machine: `flarekit postfx` against Blender's compositor Glare node (Ghosts) on an HDR EXR,
 # `flarekit apply` against GIMP's Lens Flare on a PNG, each at 1920x1080 and 3840x2160. Every

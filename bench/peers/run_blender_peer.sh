@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Peer benchmark: flarekit postfx (CPU chain) against Blender's compositor Glare
 # node (type Ghosts), headless, on the same HDR image at 1920x1080 and 3840x2160, same machine.
 #   usage: bench/peers/run_blender_peer.sh [FLAREKIT] [OUT_DIR]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Whole-process throughput on a shot: N frames of 1920x1080 half-float EXR through `postfx` and
 # `apply` in one process (frames in parallel, reading and writing beside rendering) against N
 # one-frame processes, with the peak memory of each, and `lens render` per frame. Not part of

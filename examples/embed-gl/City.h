@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The example's own world: a grid of city blocks with street lamps on every pavement and a low
 // sun, as plain boxes and sphere lights, plus the camera that looks down one street. It can
 // write itself as a flarekit Scene JSON so `flarekit visibility --method raycast` can judge

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // embed-gl: a small OpenGL application with its own context, shaders, city of street lamps,
 // reversed-Z MSAA depth buffer and render loop, which gets lens flares from flarekit through
 // the C API alone: each frame it hands flarekit its depth texture, matrices and lights

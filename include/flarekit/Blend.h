@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Blending. The 8-bit modes are the integer formulas of Tanczos, "The Art of Modeling Lens
 // Flares" (Tanczos, 1999), bit for bit; the float modes composite linear-light HDR images.
 #pragma once

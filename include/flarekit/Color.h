@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sRGB transfer functions (IEC 61966-2-1). 8-bit files are sRGB-encoded; flarekit works in
 // linear light.
 #pragma once

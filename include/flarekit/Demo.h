@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The built-in demo: a drive along a road lined with trees, past buildings, through a tunnel
 // and into a left turn, with a low sun ahead on the right that flickers through the foliage,
 // vanishes in the tunnel and leaves the frame in the turn (the seeds' racing-game setting).

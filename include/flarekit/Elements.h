@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedural flare elements (Tanczos, "The Art of Modeling Lens Flares", 1999: "Parts of a Flare",
 // plus the polygonal iris ghost of modern engines). Each element is a pure function of its
 // parameters: the same parameters always give the same pixels.

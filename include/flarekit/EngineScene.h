@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit's own scenes through the engine API (flarekit.h): a Scene's lights as fk_light
 // records and a SceneRenderer's last frame as an fk_frame, so `flarekit lights`, `visibility
 // --method compute` and the tests measure scene files exactly as an application would.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sprite lens flares (Michael Tanczos, "The Art of Modeling Lens Flares", 1999): a preset's
 // elements placed along the flare vector from the screen centre through the light, composited onto
 // a linear-light image.

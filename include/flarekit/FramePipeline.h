@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One frame of a 3D scene with its sun flare, the chain both `flarekit demo` and `flarekit
 // render` run: scene pass (GL) -> sun coverage (raycast on the CPU, or a GPU method) ->
 // temporal filter -> sprite flare -> tone map. With `raycast` the filter, flare and tone map

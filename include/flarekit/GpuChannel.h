@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A value one GPU pass leaves for the next in a channel of a 1x1 texture (the sun's coverage,
 // the flare weight, the adapted exposure): the typed handle the GL classes pass each other so
 // the CPU never reads it, instead of a bare texture name and a channel index.

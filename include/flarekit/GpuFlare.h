@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The flare's GPU half: the temporal filter, the sprite flare and the tone map run
 // on the GPU and read the sun's coverage from the 1x1 texture a GpuVisibility method leaves,
 // so a frame loop never waits for the GPU to learn how bright the flare is (GPG2 texture

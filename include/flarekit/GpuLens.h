@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `lens render --backend gl`: the ghost meshes of renderLensFlare traced on the CPU as there,
 // and rasterised by OpenGL (additive, RGBA32F), with the same masks and weights line for line
 // (src/lens/shaders/lens_ghost.frag against src/lens/LensRender.cpp). The starburst and glare

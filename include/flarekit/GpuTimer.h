@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GPU time of a span of GL commands, from two GL_TIMESTAMP queries around it: what the
 // benchmarks report as "GPU ms". A GL context must be current; move-only.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GPU sun visibility, one interface for every method of the seed articles: after the scene
 // pass, measure() starts the method on that frame; its newest result sits in a 1x1 R32F
 // texture on the GPU (what flare shaders read: no CPU read-back in the frame loop), and

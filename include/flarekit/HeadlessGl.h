@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A headless OpenGL 4.5 core context through EGL, with no window and no X server. On a
 // machine with a GPU driver the EGL device platform finds the GPU; elsewhere Mesa's
 // surfaceless platform gives llvmpipe (software GL). Functions load through libepoxy.

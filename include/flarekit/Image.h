@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image: linear-light float RGBA, row-major, top row first. Everything inside flarekit works
 // on this; 8-bit files are sRGB-decoded on read and encoded on write (see ImageIO.h).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image files: EXR, PNG, JPEG and TIFF through their own libraries, every other format
 // OpenImageIO reads or writes through its module (loaded on first use).
 #pragma once
@@ -60,6 +61,11 @@ struct WriteOptions {
     //! --exr-compression chose one) and, with format Auto, its pixel type. Ignored by other
     //! formats and when the image is not the input's size.
     std::shared_ptr<const ExrExtras> exrExtras;
+    //! The colour space the values are in, when it is not flarekit's scene-linear Rec.709 (an
+    //! OCIO output transform's): an EXR is tagged with it as `oiio:ColorSpace` and, for the
+    //! spaces whose primaries are known (ACEScg, ACES2065-1, Rec.709 and sRGB), with the
+    //! matching `chromaticities`. Empty: untagged.
+    std::string colorSpace;
 };
 
 //! The sample format writeImage will use for `path` (Auto resolved from the extension).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lens prescriptions (presets/lenses/NAME.json) and what flarekit computes from them: the
 // paraxial focal length, the exact sequential trace of the direct image and of every
 // two-reflection ghost (Fresnel and thin-film coatings, dispersion), the flare those ghosts and
@@ -11,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -176,6 +178,10 @@ struct LensRenderOptions {
     //! shape): its luminance, clamped to [0, 1], multiplies the iris, the image stretched over
     //! the stop's diameter (row 0 at the top as seen from the front). Null: none.
     std::shared_ptr<const Image> pupilMask;
+    //! Called after each light source with (sources done, sources in all); returning false stops
+    //! the render, which then returns an Interrupted error. A SIGINT or SIGTERM caught by
+    //! installInterruptHandlers stops it too, within one band of one ghost mesh. Empty: none.
+    std::function<bool(int done, int total)> progress;
 };
 
 inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The resource budget every job is checked against before it allocates: a memory limit (what a
 // job's peak is estimated to need, from file headers and options), the ratio of pixels to file
 // bytes above which an image is taken for a decompression bomb, and a cap on a flare's

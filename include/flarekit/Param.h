@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One description per tunable parameter: JSON key (also the CLI flag's name), type, range or
 // choices, unit and help, with the default read from the params struct itself. Every product
 // reads the same description: the JSON readers (src/core/ParamJson.h), the validator that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image-based (post-process) lens flare: the Killzone 2 / Kawase chain as Matt Pettineo (MJP)
 // describes it in "More Post-Processing Tricks: Lens Flare" (2009), after Masaki Kawase's GDC
 // 2003 talk, plus the pieces modern engines add.

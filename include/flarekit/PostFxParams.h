@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parameters of the image-based (post-process) lens flare, each struct followed by the table
 // that describes its keys once (flarekit/Param.h): the preset reader, validatePostFxParams, the
 // CLI's override flags and docs/postfx.md all read these tables.

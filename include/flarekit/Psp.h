@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Burnout Dominator lens flare run on an emulated PSP Graphics Engine (
 // burnout-dominator-psp-lens-flare.md): the game's frame as a GE display list (scene, 14x14
 // visibility mask, bilinear chain to one coverage byte, render into the flare texture's CLUT

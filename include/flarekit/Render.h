@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendering a scene with OpenGL (headless) and putting the sprite flare on it with the sun's
 // measured coverage. A GL context must be current (gl::HeadlessGl) for renderScene.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Result<T>: a value or an Error. The library reports every failure through it and never
 // throws across its API; only the CLI turns errors into messages and exit codes.
 #pragma once

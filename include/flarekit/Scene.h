@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Scene JSON contract of docs/architecture.md: a gluLookAt camera, lights (a sun at infinity
 // with an angular radius, directional lights like it and sphere-shaped point lights) and
 // spheres, boxes and triangles, opaque or partly transmitting (glass, foliage, fog cards).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shots: numbered image sequences (shot.####.exr, shot.%04d.exr), frame ranges as a render
 // farm hands them out (A-B:step), a light's position keyed per frame (a track file), and how
 // much of the light's disc a foreground hides (a matte or a depth pass). What a compositor's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sprite flare of a scene's sun (GL-free): the flare added to a frame on the CPU, scaled
 // by the sun's measured coverage. The GPU path (flarekit/GpuFlare.h) reports the same FlaredFrame.
 #pragma once

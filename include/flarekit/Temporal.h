@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a flare does over time, the way players expect from games: coverage smoothed with
 // separate attack (sun appearing) and release (sun disappearing) times so sample noise does not
 // flicker, a fade as the sun nears the frame edge, and exposure that dims while the camera

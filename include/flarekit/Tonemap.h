@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tone mapping of linear HDR for display (8/16-bit outputs). Float outputs stay linear.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A small double-precision 3-vector for scene geometry and ray casting.
 #pragma once
 

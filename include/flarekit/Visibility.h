@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sun visibility: the fraction of the sun's disc (uniform over the cone of directions) whose
 // rays from the camera hit no object (architecture.md, "Coverage"). `raycast` computes it on
 // the CPU and is the ground truth the GPU methods are judged against.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* flarekit's embedding API: lens flares for any OpenGL renderer, measured on the application's
  * own depth buffer. A C ABI, so C#, Rust, Python ctypes and engine plug-ins can call it;
  * flarekit/flarekit.hpp wraps it in a C++ class. Every call needs a current OpenGL 4.5 core

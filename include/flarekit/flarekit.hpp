@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C++ face of flarekit.h: an owning, move-only Engine whose calls throw nothing and
 // return a flarekit::Outcome (false with the message on failure), over the same C functions,
 // so a C++ engine links the same libflarekit.so as C, C# or Rust callers.

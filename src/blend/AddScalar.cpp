@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Figures 7 and 8 of Tanczos 1999 as span loops. This file is compiled with auto-vectorisation
 // off (see src/CMakeLists.txt) so the benchmark compares the article's scalar code with the
 // SIMD version honestly, instead of with what the compiler made of it.

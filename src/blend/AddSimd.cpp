@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Saturating add with SIMD: 32 bytes per instruction with AVX2 (vpaddusb), 16 with SSE2
 // (paddusb), picked once at run time; the hardware saturating add is exactly Figure 7's
 // min(s + d, 255). Tails shorter than a vector use the scalar formula.

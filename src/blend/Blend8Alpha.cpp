@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Span loops for the alpha modes of Tanczos 1999. Each pixel goes through the inline formula in
 // Blend.h, so the exhaustive tests of the formulas cover these loops too.
 #include "flarekit/Blend.h"

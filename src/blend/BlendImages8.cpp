@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `flarekit blend`: whole 8-bit images through the seed-002 formulas, RGB out.
 #include <array>
 #include <string>

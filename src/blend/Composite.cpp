@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Float compositing of premultiplied linear-light RGBA. Plain loops the compiler vectorises.
 #include <array>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/BandPipeline.h"
 
 #include <tbb/task_group.h>

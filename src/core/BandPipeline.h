@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Two serial stages over an image's rows, overlapped on two cores: a codec's own pass (libpng
 // decoding or deflating rows, one thread by its design) and flarekit's conversion of the same
 // rows (sRGB decode to float, or encode from float). Run one after the other they add up; run

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FK_CHECK: contract checks inside the library. A failed check is a flarekit bug, never bad
 // user input (that is returned as an Error): it prints the condition with the values and aborts.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Marking a disc in a byte mask a row span at a time: the pixels whose centres lie within
 // `radius` of (cx, cy), by the same float test a pixel-by-pixel loop makes, found at each row's
 // two ends (a square root and a step or two) and filled with memset between them.

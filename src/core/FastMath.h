@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fast approximations for per-pixel maths. Each states its error bound, which a unit test
 // checks against the standard library.
 #pragma once

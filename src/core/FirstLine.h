@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What flarekit's one-line errors quote: the first line of a (possibly multi-line) library
 // message, trimmed (OpenImageIO, GL info logs), and excerpts of input text cut to a length.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IEEE binary16 conversions of whole pixel rows, on the CPU's F16C instructions where it has
 // them (every x86-64 since 2012) and Imath's half otherwise; both round to nearest, ties to
 // even, so the results are the same bits.

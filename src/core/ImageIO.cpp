@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading image files (ImageWrite.cpp writes them). PNG, JPEG, TIFF and EXR go through their own
 // libraries (core/codecs), every other format through the OpenImageIO module, loaded only when such
 // a file is met. Sizes, the pixels-per-byte ratio and the job's memory are checked from the header
@@ -337,13 +338,15 @@ Result<std::vector<float>> channelByName(const LoadedImage& loaded, const std::s
     const Image& img = loaded.image;
     std::vector<float> plane(img.pixelCount());
     static constexpr const char* kRgba[] = {"R", "G", "B", "A"};
-    for (int c = 0; c < 4; ++c) {
+    // Without an alpha channel in the file, A is only the promoted 1 (opaque): never a matte.
+    const int rgbaChannels = loaded.hasAlpha ? 4 : 3;
+    for (int c = 0; c < rgbaChannels; ++c) {
         if (name != kRgba[c]) continue;
         for (std::size_t i = 0; i < plane.size(); ++i)
             plane[i] = img.data()[4 * i + std::size_t(c)];
         return plane;
     }
-    std::string known = "R, G, B, A";
+    std::string known = loaded.hasAlpha ? "R, G, B, A" : "R, G, B";
     if (const ExrExtras* extras = loaded.exrExtras.get()) {
         for (const ExrExtraChannel& e : extras->channels) {
             known += ", " + e.name;

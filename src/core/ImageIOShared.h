@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What reading and writing image files share (ImageIO.cpp, ImageWrite.cpp): the OpenImageIO
 // module on demand, lower-case extensions and chunked loops over pixels.
 #pragma once

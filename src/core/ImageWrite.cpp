@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing image files: every format encoded in memory (PNG, JPEG, TIFF and EXR by their own
 // libraries, the rest by the OpenImageIO module) and committed by writeFileSafely; the PNG and
 // EXR compression settings; an EXR input's extras given back to an EXR output.
@@ -207,6 +208,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     s.height = image.height();
     s.extras = extras;
     s.chosenCompression = exrCompressionChosen();
+    s.colorSpace = options.colorSpace;
     s.channels = channels;
     s.srgb = !isFloat && options.srgbEncode;
     const std::size_t pixels = image.pixelCount();

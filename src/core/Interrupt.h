@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SIGINT and SIGTERM: the first one asks every command to stop at its next safe point (between
 // frames, before a file is committed); the second one stops at once. Either way temporary files
 // are removed and child processes are killed and reaped, so only complete outputs remain.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JSON input shared by presets and scenes: parse errors and value excerpts in the one-line
 // "file: field: ..." style, and reading a text file. Included only by the JSON readers, so
 // nlohmann-json stays out of every other translation unit.

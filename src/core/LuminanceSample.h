@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the light finder and the post-process exposure both read off a frame before any real
 // work: whether it is display-referred, and its median from a strided sample.
 #pragma once

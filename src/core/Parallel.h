@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // parallelFor and friends: the one place flarekit touches its thread pool (oneTBB), so kernels
 // stay plain loops over row ranges.
 #pragma once

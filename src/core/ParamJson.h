@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one JSON reader of parameter tables (flarekit/Param.h): converts each key of a JSON
 // object through its description, reports unknown keys with the list of known ones, and words
 // every error "source: field: expected ..., got <excerpt>".

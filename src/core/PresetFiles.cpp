@@ -1,22 +1,15 @@
+// SPDX-License-Identifier: Apache-2.0
 // The preset search path and lookup by name, for sprite and post-process presets alike.
 #include "core/PresetFiles.h"
-
-#include <dlfcn.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
+#include "core/InstallPaths.h"
 #include "core/JsonText.h"
 #include "flarekit/Flare.h"
-
-#ifndef FLAREKIT_SOURCE_PRESET_DIR
-#define FLAREKIT_SOURCE_PRESET_DIR ""
-#endif
-#ifndef FLAREKIT_INSTALL_PRESET_DIR
-#define FLAREKIT_INSTALL_PRESET_DIR ""
-#endif
 
 namespace flarekit {
 
@@ -30,27 +23,10 @@ std::vector<std::string> presetSearchPath() {
             if (!dir.empty()) dirs.push_back(dir);
         }
     }
-    // An install moved to another prefix (`cmake --install build --prefix /opt/flarekit`)
-    // keeps bin/ and share/ side by side: look beside the running executable first.
-    std::error_code ec;
-    const auto addBeside = [&](const fs::path& binary) {
-        if (!binary.has_parent_path()) return;
-        const fs::path beside =
-            binary.parent_path().parent_path() / "share" / "flarekit" / "presets";
-        if (fs::is_directory(beside, ec) &&
-            std::find(dirs.begin(), dirs.end(), beside.string()) == dirs.end())
-            dirs.push_back(beside.string());
-    };
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) addBeside(exe);
-    // The same beside libflarekit.so (lib/ and share/ of its prefix), for applications that
-    // embed the library from wherever it was installed.
-    Dl_info library{};
-    if (dladdr(reinterpret_cast<void*>(&presetSearchPath), &library) && library.dli_fname)
-        addBeside(fs::absolute(fs::path(library.dli_fname), ec));
-    for (const char* dir : {FLAREKIT_INSTALL_PRESET_DIR, FLAREKIT_SOURCE_PRESET_DIR}) {
-        if (*dir && std::find(dirs.begin(), dirs.end(), std::string(dir)) == dirs.end())
-            dirs.emplace_back(dir);
+    // Then the shipped presets of this install, wherever its prefix is (core/InstallPaths.h).
+    for (const fs::path& root : shippedPresetRoots()) {
+        if (std::find(dirs.begin(), dirs.end(), root.string()) == dirs.end())
+            dirs.push_back(root.string());
     }
     return dirs;
 }

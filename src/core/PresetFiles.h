@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finding shipped presets: the sprite presets in each directory of presetSearchPath(), the
 // post-process ones in its postfx/ subdirectory. Shared by Preset.cpp and postfx/PostFxParams.cpp.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ordering 64-bit keys by their high 32 bits, largest first, lazily: one stable counting pass
 // splits the keys into ranges of high halves (buckets), largest first, and a caller sorts a
 // bucket only when it reaches it, after dropping the keys it no longer needs. The light finder

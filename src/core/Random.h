@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SplitMix64 (Steele, Lea, Flood 2014): a tiny generator with a fixed, specified output, so
 // seeded elements are identical on every platform and standard library (unlike
 // std::uniform_real_distribution, whose algorithm is implementation-defined).

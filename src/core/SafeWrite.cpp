@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/SafeWrite.h"
 
 #include <fcntl.h>
@@ -95,9 +96,26 @@ Status checkWritablePath(const std::string& path) {
     const fs::path p(path);
     const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
     std::error_code ec;
-    if (!fs::is_directory(dir, ec))
-        return invalidInput(path + ": output directory '" + dir.string() + "' does not exist");
+    // A missing output folder is made when the file is written (makeOutputDirectory), the same
+    // for every output; what must hold now is that it can be: its nearest existing ancestor is
+    // a folder, not a file.
+    for (fs::path up = dir; !fs::is_directory(up, ec); up = up.parent_path()) {
+        if (fs::exists(up, ec))
+            return invalidInput(path + ": output directory '" + dir.string() +
+                                "' cannot be made: '" + up.string() + "' is not a directory");
+        if (up.parent_path().empty() || up == up.parent_path()) break;
+    }
     if (fs::is_directory(p, ec)) return invalidInput(path + ": output path is a directory");
+    return Ok{};
+}
+
+Status makeOutputDirectory(const std::string& dir) {
+    std::error_code ec;
+    if (dir.empty() || fs::is_directory(dir, ec)) return Ok{};
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir, ec))
+        return invalidInput(dir + ": cannot create the output directory" +
+                            (ec ? ": " + ec.message() : ""));
     return Ok{};
 }
 
@@ -122,6 +140,7 @@ Status writeFileSafely(const std::string& path, std::string_view bytes) {
         if (Status s = checkWritablePath(to.string()); !s) return s;
         return replaceAtomically(path, to, bytes, 0666);
     }
+    if (Status s = makeOutputDirectory(fs::path(path).parent_path().string()); !s) return s;
     return replaceAtomically(path, fs::path(path), bytes, 0666);
 }
 

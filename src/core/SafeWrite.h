@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every file flarekit writes goes through writeFileSafely, so that a full disk, a signal or a
 // crash never leaves a truncated file and never replaces what the user had.
 #pragma once
@@ -16,11 +17,16 @@ namespace flarekit {
 //!  - a symbolic link: the same at the file it points to, so the link stays a link;
 //!  - a device, FIFO or socket (`/dev/null`, `/dev/stdout` on a pipe): written in place,
 //!    every write checked (renaming over a device node would replace it).
-//! Refuses to start (Interrupted) once SIGINT/SIGTERM has arrived.
+//! A missing output folder is made first. Refuses to start (Interrupted) once SIGINT/SIGTERM
+//! has arrived.
 Status writeFileSafely(const std::string& path, std::string_view bytes);
 
-//! Why `path` cannot be written (its directory is missing, it is a directory), or Ok.
+//! Why `path` cannot be written (it is a directory, or its folder cannot be made because an
+//! ancestor is a file), or Ok. A missing folder is not an error: writeFileSafely makes it.
 Status checkWritablePath(const std::string& path);
+
+//! Makes the folder `dir` (and its parents) when missing; one line naming it when that fails.
+Status makeOutputDirectory(const std::string& dir);
 
 //! Flushes standard output and fails (naming it) when anything written to it was lost, e.g.
 //! `flarekit visibility --json > /dev/full`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The display curves, once for every path (the sprite/scene tone map, the GPU tone map, the
 // postfx composite), applied per channel to exposure x colour:
 // - aces: Krzysztof Narkowicz's fit of the ACES filmic curve ("ACES Filmic Tone Mapping

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo's frame loop: the camera along the road, each frame through the frame pipeline
 // (scene pass, sun visibility, temporal filter, sprite flare, tone map).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo's settings and its scene at a time, without GL: validation and the world the
 // PSP demo and the tests share.
 #include "demo/DemoWorld.h"

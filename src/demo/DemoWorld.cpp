@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo world, laid out around where the sun's ray meets the roadside. The sun direction
 // (0.30, 0.13, -1) climbs 0.13 m and drifts 0.30 m right per metre ahead, so from the driver
 // (1.4 m up, on the centre line) it crosses the right-hand verge (x = 8-14 m) 27-47 m ahead at

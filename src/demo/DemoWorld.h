@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo's static world and its camera path (see flarekit/Demo.h for the story).
 #pragma once
 

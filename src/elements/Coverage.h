@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Antialiasing by box filtering in one dimension: the fraction of a filter window of width
 // `filter` centred at x that overlaps an interval. Box filtering a shape keeps its integral,
 // which is what lets the element tests compare pixel sums with analytic areas.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Secondary disc (Tanczos 1999, Figure 11): "a ring of any color, smoothly transition to another
 // color using smaller and smaller rings until your final ring has a radius of 0", blurred.
 // The colour runs linearly from innerColor at the centre to color at the rim; the edge is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-type element defaults: what each element type looks like with no keys set.
 #include "flarekit/Elements.h"
 

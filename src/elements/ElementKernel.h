@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An element prepared for shading: its parameters resolved to pixels, plus derived tables.
 // shadeElement() is the per-pixel function every renderer calls (contact sheet, flare, tests).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Glow: the main flare's soft core. Falloff from Tanczos 1999 ("Parts of a Flare"):
 //     Intensity = exp(-i*i*0.006)*0.50 + exp(-i*0.03)*(1-0.50)
 // with i in pixels of a sprite of about 128 pixels' radius. To keep that shape at any size,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Polygonal iris ghost: the shape of an N-blade aperture that modern engines give their
 // ghosts. A regular N-gon with circumradius 1 (vertices on the rim): the distance to the
 // nearest edge along its normal is d*cos(phi) - cos(pi/N), phi the angle to that normal.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ring: "simply an antialiased circle of some dark color" (Tanczos 1999). An annulus whose outer
 // edge is the element's rim, `width` wide, with a colour gradient across its width (inner
 // colour at the inner edge), box-filtered over max(pixel, softness).

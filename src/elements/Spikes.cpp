@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Streaks and rays (Tanczos 1999): thin antialiased spikes radiating from the centre. Streaks are
 // "evenly spaced" (4 streaks are 90 degrees apart) and full length; rays are "lines of random
 // length". A spike is the half-strip along its angle, `thickness` wide, whose brightness fades

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C ABI of flarekit.h over engine::Engine: every call catches what the implementation
 // might throw (allocation failure) and returns an error code instead; nothing unwinds into
 // the application.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine: one compute dispatch per view measures every light (light_coverage.comp); the
 // CPU's share of a call is checking its arguments, copying the lights into a buffer and
 // setting uniforms, and it does not grow with what the GPU does per light. The sun-map method

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine behind flarekit.h: programs, the per-light buffers and the coverage texture,
 // with the C API's calls as methods returning Status. One engine per GL context.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The instanced flares: per preset element one glDrawArraysInstanced over every light
 // (light_flare.vert places and weighs each instance from the coverage texture).
 #include "engine/EngineImpl.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The state behind engine::Engine, shared by its three files: Engine.cpp (set-up and the
 // batched occlusion pass), EngineTextureMask.cpp (the sun-map method) and EngineDraw.cpp (the
 // instanced flares).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks of everything an application hands the engine API, before any GL work: each error
 // names the argument and says what was expected ("frames[1].viewport: expected ..."), so a
 // refused call draws nothing and leaves no GL error.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine's GL programs and the GL objects they read: the batched occlusion pass
 // (light_coverage.comp), the texture-mask reduction (sunmap_coverage.comp) and the instanced
 // flare draw (light_flare.vert), each linked with the light_view.glsl prelude and with its

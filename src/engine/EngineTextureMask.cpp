@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // texture-mask through the engine: the application's occluder callback draws each light's
 // sun map (SunMapAtlas), and one dispatch of sunmap_coverage.comp reduces them all.
 #include "engine/EngineImpl.h"

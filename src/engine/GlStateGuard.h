@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The application's GL state, saved when an engine API call starts and put back when it ends:
 // the bound framebuffers, program, vertex array, viewport, the texture, sampler, image and
 // storage-buffer bindings the engine uses, and every switch its passes touch (blend per draw

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit's own scenes as texture-mask occluders: two meshes (opaque, translucent) and one
 // small program, drawn from each light's sun-map camera by the engine's callback.
 #include <epoxy/gl.h>

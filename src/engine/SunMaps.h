@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Texture masking's sun maps for many lights (Maughan, "Texture Masking for Faster Lens
 // Flare", Game Programming Gems 2, 2001): an atlas of one tile per light, each drawn by the
 // application's occluder callback from a camera at the eye that sees exactly that light's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contact sheet of `flarekit elements`: every element of a preset in its own cell, with a
 // label drawn by OpenImageIO's text renderer (through its module, core/codecs/OiioModule.h).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A preset's elements as GL textures for frames of one height: each element rendered once on
 // the CPU (renderElement, the kernels of renderFlare) at its size in pixels, Tanczos's sprite
 // textures. Shared by GpuSpriteFlare (one sun) and the engine API (every light, instanced).

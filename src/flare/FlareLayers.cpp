@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sprite flare as compositing layers: each element type to its pass, every pass over black.
 #include "flarekit/Flare.h"
 

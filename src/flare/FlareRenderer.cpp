@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Draws a preset's elements into an image. The image is split into bands of rows run in
 // parallel; each band shades only the part of each element's bounding box inside it, so the
 // cost is the pixels the elements cover. Elements composite in preset order within a pixel,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GpuSpriteFlare: each element is rendered once on the CPU (renderElement, the kernels of
 // renderFlare) into a texture, then drawn every frame as a quad centred where renderFlare puts
 // it. With the element centre on a pixel centre the texels land on pixels one to one and the

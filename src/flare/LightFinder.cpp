@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `--light auto`: find the light sources of an image and measure their flux. Luminance is
 // computed once; each candidate is grown from its own peak by a flood fill that visits only
 // pixels near that peak, and judged against the ring of pixels around it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Preset JSON: parsed with nlohmann-json, read field by field through kElementParams and
 // kPresetParams (flarekit/Elements.h, flarekit/Flare.h) so every message names the file, the
 // field and what was expected.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sprite flare on a scene's sun, on the CPU: where the sun projects and how bright its
 // flare is for a given coverage.
 #include "flarekit/SunFlare.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Move-only owners of GL object names: each deletes its name when destroyed. A context must
 // be current wherever these are created, used or destroyed.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image uploads and read-backs through pixel buffer objects: the frame moves in bands through
 // two persistently mapped buffers, so the CPU's copy of one band (and its float/half
 // conversion) overlaps the GPU's transfer of the other, and no call waits for the whole frame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The traced ghost meshes of `lens render` and what both of its rasterisers (the CPU's and
 // OpenGL's) share: how the image sits on the sensor, the masks' soft edge, and which triangles
 // are drawn, as what, with which irradiance.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `lens ghosts`: every two-reflection ghost of a distant point source through the exact tracer,
 // the figures the contract names (centroid, radius and share of the light, per ghost).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `lens bake`: a lens compiled into a sprite preset, so the cheap sprite path and the engine API
 // can wear its look. The ghosts come from the exact trace at one field angle; paraxially a
 // ghost's centre moves in proportion to the light's image, which is what a sprite's position

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading presets/lenses/NAME.json: the format's ranges through the parameter tables, then the
 // physical checks a prescription must pass before anything is traced through it.
 #include <cmath>

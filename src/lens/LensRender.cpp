@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `lens render`: each source's ghosts as traced meshes (Hullin et al., "Physically-Based
 // Real-Time Lens Flare Rendering", SIGGRAPH 2011): a grid of rays over the first surface is
 // traced along the ghost's path without clipping; every grid triangle is rasterised on the
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Interrupt.h"
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
 #include "flarekit/Lens.h"
@@ -357,10 +359,11 @@ class CpuGhostDrawer final : public lens::GhostDrawer {
         constexpr int kBand = 32;
         const int height = m_image.height();
         parallelFor(0, (height + kBand - 1) / kBand, 1, [&](int begin, int end) {
-            for (int band = begin; band < end; ++band)
+            for (int band = begin; band < end && !interrupted(); ++band)
                 rasteriseBand(meshes, iris, m_image, band * kBand,
                               std::min(height, (band + 1) * kBand));
         });
+        if (interrupted()) return interruptedError("lens render: stopped while drawing ghosts");
         return Ok{};
     }
     Status finish(Image& ghosts) override {
@@ -432,12 +435,19 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
     // light entering is spread over the first surface's clear disc.
     const double cell = 2.0 * sa / (side - 1);
     const double triangleShare = 0.5 * cell * cell / (M_PI * sa * sa);
-    for (const LensLight& light : lights) {
+    const int total = int(lights.size());
+    for (int done = 0; done < total; ++done) {
+        const LensLight& light = lights[std::size_t(done)];
+        const auto stopped = [total](int drawn) {
+            return interruptedError("lens render: " + std::to_string(drawn) + " of " +
+                                    std::to_string(total) + " sources drawn, nothing written");
+        };
+        if (interrupted()) return stopped(done);
         const auto angle = fieldAngle(dLine, focal, map.toMmX(light.x), map.toMmY(light.y));
         const lens::Vec dir = lens::beamDirection(angle[0], angle[1]);
         std::vector<Mesh> meshes(ghosts.size() * samples.size());
         parallelFor(0, int(meshes.size()), 1, [&](int begin, int end) {
-            for (int k = begin; k < end; ++k) {
+            for (int k = begin; k < end && !interrupted(); ++k) {
                 const std::size_t g = std::size_t(k) / samples.size(),
                                   w = std::size_t(k) % samples.size();
                 const auto path =
@@ -449,10 +459,15 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
                 meshes[std::size_t(k)] = std::move(m);
             }
         });
-        if (Status s = drawer.draw(meshes, dLine.iris); !s) return s.error();
+        if (interrupted()) return stopped(done);
+        if (Status s = drawer.draw(meshes, dLine.iris); !s) {
+            if (s.error().code == ErrorCode::Interrupted) return stopped(done);
+            return s.error();
+        }
         addStarburst(lens, dirt, samples, light, options.starburst,
                      options.starburstSize * diagonal, layers.starburst);
         addGlare(light, options.glare, 0.01 * diagonal, layers.glare);
+        if (options.progress && !options.progress(done + 1, total)) return stopped(done + 1);
     }
     if (Status s = drawer.finish(layers.ghosts); !s) return s.error();
     setOpaque(layers.ghosts), setOpaque(layers.starburst), setOpaque(layers.glare);

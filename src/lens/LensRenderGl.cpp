@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenGL ghost rasteriser of `lens render --backend gl` (see flarekit/GpuLens.h).
 #include <algorithm>
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `lens sheet`: the lens in cross-section (surfaces, glass, stop, sensor) with the rays of the
 // direct image and of its brightest ghost, above the lens's flare at three field angles.
 #include <algorithm>

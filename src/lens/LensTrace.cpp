@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact tracer (see LensTrace.h).
 #include "lens/LensTrace.h"
 

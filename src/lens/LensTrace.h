@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact sequential tracer: real spheres, vector Snell refraction, Fresnel and coating
 // weights at every interface, the clear aperture of every surface and the iris polygon at the
 // stop. One wavelength per prepared lens. Shared by the ghost analysis and the renderer.

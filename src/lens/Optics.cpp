@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The optics every lens computation shares: dispersion, Fresnel and thin-film reflectance, the
 // paraxial (y-nu) trace.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The wavelengths a lens render traces and the linear-sRGB weight of each.
 #pragma once
 

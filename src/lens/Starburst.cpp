@@ -1,8 +1,7 @@
-// The aperture's Fraunhofer diffraction: |FFT|^2 of the iris polygon (FFTW), the point spread
-// function whose spikes are the starburst, cached per aperture shape.
+// SPDX-License-Identifier: Apache-2.0
+// The aperture's Fraunhofer diffraction: |FFT|^2 of the iris polygon (lens/Fraunhofer.h), the
+// point spread function whose spikes are the starburst, cached per aperture shape.
 #include "lens/Starburst.h"
-
-#include <fftw3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 
 #include "core/Random.h"
 #include "flarekit/Color.h"
+#include "lens/Fraunhofer.h"
 #include "lens/LensTrace.h"
 
 namespace flarekit::lens {
@@ -110,35 +110,11 @@ std::vector<float> computePsf(const LensAperture& aperture, const PupilDirt& dir
     }
     addDirt(pupil, n, radius, dirt);
     if (dirt.mask) applyMask(pupil, n, radius, *dirt.mask);
-    const int half = n / 2 + 1;
-    fftw_complex* spectrum = fftw_alloc_complex(std::size_t(n) * std::size_t(half));
-    static std::mutex planner;  // FFTW's planner is not thread-safe; execution is
-    fftw_plan plan;
-    {
-        std::lock_guard<std::mutex> lock(planner);
-        plan = fftw_plan_dft_r2c_2d(n, n, pupil.data(), spectrum, FFTW_ESTIMATE);
-    }
-    fftw_execute(plan);
-    std::vector<float> psf(std::size_t(n) * std::size_t(n));
+    const std::vector<double> power = centredPowerSpectrum(pupil, n);
     double sum = 0;
-    for (int y = 0; y < n; ++y) {
-        for (int x = 0; x < n; ++x) {
-            // The real transform stores half the columns; the rest mirror (Hermitian).
-            const int fx = x < half ? x : n - x, fy = x < half ? y : (n - y) % n;
-            const fftw_complex& c = spectrum[std::size_t(fy) * std::size_t(half) + std::size_t(fx)];
-            const double power = c[0] * c[0] + c[1] * c[1];
-            // Shift the zero frequency to the centre.
-            const int sx = (x + n / 2) % n, sy = (y + n / 2) % n;
-            psf[std::size_t(sy) * std::size_t(n) + std::size_t(sx)] = float(power);
-            sum += power;
-        }
-    }
-    for (float& v : psf) v = float(v / sum);
-    {
-        std::lock_guard<std::mutex> lock(planner);
-        fftw_destroy_plan(plan);
-    }
-    fftw_free(spectrum);
+    for (double p : power) sum += p;
+    std::vector<float> psf(power.size());
+    for (std::size_t i = 0; i < power.size(); ++i) psf[i] = float(power[i] / sum);
     return psf;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The iris's diffraction pattern (see Starburst.cpp).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A program that reads the main frame's depth through shaders/frame_depth.glsl, linked for
 // both kinds of frame: single-sample (the depth texture) and multisampled (the MSAA depth plus
 // where its samples sit in a pixel, so the shader can point-sample the depth finer than a

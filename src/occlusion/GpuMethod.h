@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the GPU visibility methods share: the 1x1 R32F coverage texture they write, programs
 // with the sun_disc.glsl prelude, a full-screen triangle, and error checks.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GPU method factory: contract names to implementations (one folder each).
 #include "flarekit/GpuVisibility.h"
 #include "gl/GlObjects.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GPU method names, from the registry, for the GL-free core: validation and messages work
 // the same in a build without OpenGL.
 #include <algorithm>

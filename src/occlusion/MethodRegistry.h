@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one list of GPU visibility methods: each method's contract name and the factory that
 // builds it (in src/occlusion/GpuVisibility.cpp, GL). The GL-free core reads the names from it
 // (validation, --help, "built without OpenGL" messages); the GL library reads the factories.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-pixel sky fraction under the sun's disc (shaders/sky_fraction.frag): what the read-back
 // methods copy to the CPU when the frame is multisampled, so their estimate sees occluder
 // edges to a sample, not a pixel.

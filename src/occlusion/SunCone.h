@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sun's cone of directions (half-angle = its angular radius around sun.direction): an
 // orthonormal frame around the axis, the equal-area map from the square [-1, 1]^2 into the cone
 // (ray-cast sampling) and the rim's directions (the projected disc's outline).

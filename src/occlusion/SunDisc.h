@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sun's projected disc in a frame: the CPU half of shaders/sun_disc.glsl (the two read the
 // same line for line), its pixel bounding box, and the uniforms that hand it to a shader.
 #pragma once

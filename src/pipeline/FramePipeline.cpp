@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame pipeline (flarekit/FramePipeline.h): one wiring of scene -> coverage -> temporal
 // filter -> flare -> tone map, with a CPU and a GPU variant of the last three.
 #include "flarekit/FramePipeline.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CPU executor of the post-process chain: every step of the plan is its pass's pixel
 // kernel run over the output image in parallel (runPass). The wiring is ChainPlan.cpp's
 // wireChain; GpuChain.cpp executes the same steps with GL draws.

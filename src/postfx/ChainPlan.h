@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chain for one input size and one set of params: the buffers' sizes and the list of steps
 // (pass, uniforms, inputs, output), computed once and run by either executor, CPU (Chain.cpp)
 // or GL (GpuChain.cpp). The two differ only in who runs each step.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame's white and the chain's parameters relative to it: one preset gives the same flare
 // on an HDR frame exposed two stops under or over, and on the 8-bit photo of it.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GL executor of the post-process chain: every step of the plan is one full-screen draw
 // of its pass's program into the step's target, with its inputs bound to texture units in
 // order and its uniforms set by the pass's own bindUniforms. Each program is postfx_common.glsl

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every CPU post-process kernel shares with its GLSL twin (shaders/postfx_common.glsl):
 // a 4-wide float vector per RGBA pixel (one SSE register: the SIMD of the CPU chain), texel
 // fetches clamped to the edge, and bilinear filtering written out by hand. Hardware filtering

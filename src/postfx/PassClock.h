@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-pass timing of a chain run (`postfx -v`, the benchmarks): the steps of one label are summed.
 #pragma once
 

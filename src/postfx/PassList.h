@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every pass of the post-process chain, as the type of its uniforms. A pass is one unit in its
 // folder (uniforms, CPU pixel kernel passPixel, GLSL, uniform binding bindUniforms, and in
 // *Gl.h the shader to link); adding one = its folder + its line here (and its include), its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL of every pass in PassList.h (GL chain only): each folder's *Gl.h, whose passShader
 // overload the GL executor links one program from per PassUniforms alternative.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Post-process presets: JSON read through the parameter tables of flarekit/PostFxParams.h, one
 // validator for JSON and code-built params, and the docs/postfx.md reference table.
 #include <cmath>

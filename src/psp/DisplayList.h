@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes a GE display list and its vertices into emulated memory, one helper per thing the
 // game's list sets up (framebuffer, texture, CLUT load, sprite, transfer...). The words are
 // the hardware's: 8-bit command, 24-bit parameter.

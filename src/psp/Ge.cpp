@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Display-list execution: registers, primitives, CLUT loads, block transfers. The per-pixel
 // work (texture, depth, blend, mask, write) is in GePixel.cpp.
 #include "psp/Ge.h"

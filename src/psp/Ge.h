@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A software PSP Graphics Engine, the subset the Burnout Dominator lens flare needs:
 // display lists of GE commands executed in order; throughmode sprites and triangles with flat
 // or gouraud colour and texture coordinates; 565/5551/4444/8888 framebuffers with a stride;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GE command subset the Burnout frame uses, with the hardware's opcode numbers (the PSP's
 // display-list format: 8-bit command, 24-bit parameter per 32-bit word, as documented by
 // PPSSPP's GeConstants.h and the PSPSDK's pspge headers).

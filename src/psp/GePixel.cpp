@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GE's per-pixel work: texture sampling (nearest, or bilinear with 4-bit sub-texel
 // weights), the texture function, the depth test, blending, the colour write mask and the
 // framebuffer write. Arithmetic (docs/psp-burnout.md, "The GE subset"):

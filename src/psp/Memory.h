@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PSP address space the Burnout trick needs: 2 MiB of VRAM at 0x04000000 and 4 MiB of main
 // RAM at 0x08000000, little-endian. "Memory is memory" (burnout-dominator-psp-lens-flare.md):
 // a framebuffer, a depth buffer, a texture and a CLUT are only addresses, so a render target

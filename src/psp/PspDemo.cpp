@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo drive through the emulator: each frame's occluder mask is the demo world ray-cast
 // at the PSP's 480x272 (a pixel is an occluder when its ray hits anything: only sky lies
 // behind the sun), the sun projected by the same camera.

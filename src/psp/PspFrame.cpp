@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The game frames as display lists (steps 1-6 of the trick as Rydgård's "The lens flare in
 // Burnout" describes it) and the harness that runs them, takes the dumps at the lists' SIGNAL
 // markers and reads the results out of emulated memory.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gluLookAt / gluPerspective matrices (column-major, OpenGL conventions) and the projection of
 // directions to pixels, shared by the GL renderer and the CPU code that places the flare.
 #pragma once

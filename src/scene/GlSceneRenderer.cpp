@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GL scene pass: sky and sun first (full-screen, no depth), then every opaque object in
 // one draw with depth testing, then the translucent ones (opacity < 1) blended over without
 // writing depth, and multiplied into a transmittance target for the occlusion passes. Programs,

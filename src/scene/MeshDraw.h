@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every GL pass that draws a scene's objects shares: uploading a mesh, and drawing its
 // translucent objects one by one (the scene renderer's colour and transmittance passes, the
 // texture-mask occluders).

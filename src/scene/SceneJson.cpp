@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene JSON (the docs/architecture.md contract) with full validation: every error names the file
 // and the field, and says what was expected.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every object of a scene as one triangle list (position, normal, colour per vertex) for the
 // GL renderer: spheres tessellated as latitude-longitude grids, boxes as 12 triangles.
 #pragma once

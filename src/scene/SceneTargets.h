@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A SceneRenderer's GL objects, for the GPU passes that read its frame (the occlusion methods,
 // the sprite flare, the tone map). Internal: the public SceneRenderer hands out no GL names.
 #pragma once

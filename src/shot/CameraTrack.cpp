@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A camera keyed per frame, read through the scene camera's own parameter table, and the light
 // projected through it.
 #include <cstdio>

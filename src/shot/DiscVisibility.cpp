@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How much of a light's disc a matte or depth pass leaves visible: the area-weighted mean of
 // each pixel's visibility over the disc, so a foreground covering a third of the sun dims its
 // flare by a third.

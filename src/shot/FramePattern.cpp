@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame-number patterns and farm ranges: the file names a shot's frames have on disk.
 #include <algorithm>
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A light's position keyed per frame: CSV or JSON in, linear interpolation between keys, the
 // end keys held outside them (as a compositor's tracker hands a track to its flare).
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Following one light through a shot (see flarekit/Shot.h): gate, alpha-beta filter, and a
 // switch only after a brighter light has stood elsewhere for several frames.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GpuTemporalFilter: shaders/temporal_filter.frag over two 1x1 RGBA32F textures used in turn
 // (read the previous, write the next), so no state ever leaves the GPU.
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GpuTonemap: shaders/tonemap_aces.frag from the renderer's HDR colour into an RGBA16F
 // display target (linear [0, 1], like tonemapAcesFitted's output).
 #include "flarekit/GpuFlare.h"

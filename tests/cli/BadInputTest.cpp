@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bad input: a one-line error naming the file, exit code 2, and no output left behind.
 #include <gtest/gtest.h>
 
@@ -108,12 +109,24 @@ TEST(BadInput, InvalidPresetNamesFileAndField) {
                    1, "preset 'no-such': expected a JSON file or one of:");
 }
 
-TEST(BadInput, OutputIntoAMissingDirectory) {
+TEST(BadInput, AMissingOutputFolderIsMadeAndAFileInItsWayIsRefused) {
     TempDir dir;
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("nodir/o.png")}), dir, 0,
-                   "does not exist");
-    expectRejected(runCli({"elements", "-o", dir.file("nodir/s.png")}), dir, 0, "does not exist");
-    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.unknownext")}), dir, 0,
+    // Every output makes its missing folders, as --layers does: -o out/x.png in an empty folder.
+    CliResult r = runCli({"apply", kSunset, "-o", dir.file("new/deeper/o.png")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("new/deeper/o.png")));
+    r = runCli({"elements", "-o", dir.file("other/s.png")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("other/s.png")));
+    std::filesystem::remove_all(dir.file("new"));
+    std::filesystem::remove_all(dir.file("other"));
+    // A file where a folder must go: one line, nothing made.
+    std::ofstream(dir.file("plain")) << "x";
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("plain/sub/o.png")}), dir, 1,
+                   "cannot be made: '" + dir.file("plain") + "' is not a directory");
+    expectRejected(runCli({"elements", "-o", dir.file("plain/s.png")}), dir, 1,
+                   "is not a directory");
+    expectRejected(runCli({"apply", kSunset, "-o", dir.file("o.unknownext")}), dir, 1,
                    "unsupported output format");
 }
 

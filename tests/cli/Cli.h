@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs the flarekit binary as a user would and captures exit code, stdout and stderr.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CLI used as users use it: real files in, files out, exit codes.
 #include <gtest/gtest.h>
 
@@ -151,7 +152,8 @@ TEST(CliApply, KeepsAlpha) {
     TempDir dir;
     Image img(32, 32);
     img.fill({1.f, 1.f, 1.f, 0.5f});
-    ASSERT_TRUE(writeImage(dir.file("a.png"), img, {SampleFormat::U8, true, true, nullptr}).ok());
+    ASSERT_TRUE(
+        writeImage(dir.file("a.png"), img, {SampleFormat::U8, true, true, nullptr, {}}).ok());
     ASSERT_EQ(runCli({"apply", dir.file("a.png"), "-o", dir.file("o.png")}).exitCode, 0);
     auto out = readImage8(dir.file("o.png"));
     ASSERT_TRUE(out.ok());

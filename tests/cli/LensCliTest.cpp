@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit lens as a user runs it: the ghosts report's JSON contract, a render with its layers
 // (the composite is the input plus the flare layer), and bad input in one line with exit 2.
 #include <gtest/gtest.h>
@@ -145,3 +146,34 @@ TEST(LensCli, GlBackendDrawsTheSameGhosts) {
     EXPECT_NEAR(sumGl, sumCpu, 1e-3 * sumCpu);
 }
 #endif
+
+TEST(LensCli, FlagsAreSpeltWithHyphensAndTheOldUnderscoreSpellingStillWorks) {
+    TempDir dir;
+    const std::string in = std::string(FLAREKIT_SAMPLES) + "/sunset.png";
+    const auto render = [&](const std::string& name, const std::vector<std::string>& flags) {
+        std::vector<std::string> args = {"lens", "render",       "kodak-petzval", in,
+                                         "-o",   dir.file(name), "--ghosts",      "4"};
+        args.insert(args.end(), flags.begin(), flags.end());
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return slurp(dir.file(name));
+    };
+    const std::string hyphens =
+        render("h.png", {"--ghost-gain", "300", "--starburst-size", "0.1", "--dirt-seed", "5"});
+    const std::string underscores =
+        render("u.png", {"--ghost_gain", "300", "--starburst_size", "0.1", "--dirt_seed", "5"});
+    const std::string plain = render("p.png", {});
+    EXPECT_FALSE(hyphens.empty());
+    EXPECT_EQ(hyphens, underscores);  // the same options, bit for bit
+    EXPECT_NE(hyphens, plain);        // and they did something
+    // The old spelling is range-checked as the new one.
+    const CliResult bad = runCli(
+        {"lens", "render", "kodak-petzval", in, "-o", dir.file("b.png"), "--ghost_gain", "-1"});
+    EXPECT_EQ(bad.exitCode, 2) << bad.err;
+    // --help lists the hyphenated flag, and the underscore one only as a deprecation note.
+    const CliResult help = runCli({"lens", "render", "--help"});
+    EXPECT_NE(help.out.find("--ghost-gain FLOAT"), std::string::npos) << help.out;
+    EXPECT_NE(help.out.find("(--ghost_gain still works; deprecated spelling)"), std::string::npos)
+        << help.out;
+    EXPECT_EQ(help.out.find("--ghost_gain FLOAT"), std::string::npos) << help.out;
+}

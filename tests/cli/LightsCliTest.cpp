@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `flarekit lights` and the many-light Scene JSON through the CLI: every light measured by the
 // engine API (and by `visibility --method compute`, the same pass) against the ray caster, the
 // "lights" array of `visibility --json`, and bad input.
@@ -97,7 +98,8 @@ FLAREKIT_GL_TEST(CliLights, BadInputExitsTwoWithOneLineAndWritesNothing) {
              {{"lights", dir.file("missing.json"), "-o", out}, "missing.json"},
              {{"lights", kCity, "-o", out, "--method", "pbo"}, "--method"},
              {{"lights", kCity, "-o", out, "--samples", "0"}, "--samples"},
-             {{"lights", kCity, "-o", dir.file("no/such/dir/x.png")}, "no/such/dir"},
+             {{"lights", kCity, "-o", kCity + std::string("/x.png")},
+              "city-lamps.json' is not a directory"},
          }) {
         const CliResult r = runCli(c.args);
         EXPECT_EQ(r.exitCode, 2) << c.args[1] << ": " << r.err;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A build without OpenGL (FLAREKIT_GL=OFF): every GL path of the CLI exits 2 with one line that
 // says so, and writes nothing; the CPU paths of the same subcommands still work.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit postfx as a user runs it: both backends, every preset, layers, and bad
 // input (grey and 2-channel inputs promoted, more than 4 channels refused in one line).
 #include <gtest/gtest.h>
@@ -140,7 +141,8 @@ TEST(PostFxCli, BadInputExitsTwoWithOneLineAndWritesNothing) {
          "expected a JSON file or one of: anamorphic, killzone2, modern, photo, subtle"},
         {{"postfx", kSunset, "-o", dir.file("o.png"), "--preset", badPreset},
          "ghosts[0].samples: expected an integer in [1, 64], got 0"},
-        {{"postfx", kSunset, "-o", dir.file("no/such/dir/o.png")}, "no/such/dir"},
+        {{"postfx", kSunset, "-o", kSunset + std::string("/o.png")},
+         "sunset.png' is not a directory"},
     };
     for (const auto& [args, mention] : cases) {
         auto r = runCli(args);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit psp as a user runs it: JSON, dumps, the naive mode, the demo, bad input.
 #include <gtest/gtest.h>
 

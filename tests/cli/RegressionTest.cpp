@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bugs fixed, each with its input under tests/data/regression/ (README.md there).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shots through the CLI: frames bit-identical however the range is chunked, a track's frames
 // equal to single-image calls, lens render over a sequence, and every bad input of a shot.
 #include <gtest/gtest.h>
@@ -115,11 +116,16 @@ TEST(ShotCli, EveryBadShotInputIsOneLineAndWritesNothing) {
          "--sun-dir: expected X,Y,Z"},
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "R"}, "needs --light-depth"},
         {{"apply", seq, "-o", o, "--light", "1,1", "--depth-channel", "Z", "--light-depth", "3"},
-         "no channel 'Z' (it has: R, G, B, A)"},
+         "no channel 'Z' (it has: R, G, B)"},
+        // A plate without alpha has no A to take a matte from (its promoted alpha is all 1).
+        {{"apply", std::string(FLAREKIT_SAMPLES) + "/sunset.png", "-o", out.file("x.png"),
+          "--light", "10,10", "--matte-channel", "A"},
+         "no channel 'A' (it has: R, G, B)"},
         {{"postfx", in.file("nothing.####.exr"), "-o", o}, "no frame of this pattern exists"},
         {{"postfx", in.file("in.0001.exr"), "-o", out.file("x.exr"), "--frames", "1-3"},
          "is one image, not a frame pattern"},
-        {{"postfx", seq, "-o", out.file("missing-dir/o.####.exr")}, "does not exist"},
+        {{"postfx", seq, "-o", in.file("in.0001.exr") + "/o.####.exr"},
+         "in.0001.exr' is not a directory"},
     };
     for (const auto& [args, expected] : cases) {
         const CliResult r = runCli(args);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the shot CLI tests share: a generated sequence (a disc light behind a foreground edge
 // that moves across it, its covered share known per frame in closed form), a sun moving across
 // the frame, and readers of coverage.csv and of written tracks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The light per frame: --light auto following a moving sun past a 40x glint (its written track
 // fed back), and a camera per frame projecting the sun, against an independent pinhole.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Occlusion over a shot: coverage.csv against the closed-form share of a disc behind a moving
 // edge, frame by frame, the filter against an independent exponential smoother, and the plate's
 // own depth and matte channels read by name.

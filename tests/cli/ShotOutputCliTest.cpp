@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a shot writes: the flare's passes summing to the flare and the composite exactly input +
 // flare; an EXR plate's channels, attributes, windows and compression passed through; its extra
 // channels counted in the memory budget.

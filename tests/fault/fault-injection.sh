@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fault injection through the CLI, as an unlucky user meets it: a full disk for every output
 # format (a 1 MiB tmpfs, as root; skipped with the reason where mounting is not allowed), the
 # input as its own output on that disk, device-node and symlink outputs, stdout on /dev/full,
@@ -159,6 +160,30 @@ for sig in INT TERM; do
     interrupt_trial "$sig" $((RANDOM % 1500 + 50)) apply
   done
 done
+
+# lens render with many sources: a line per source on stderr (not a terminal here), and SIGTERM
+# stops it within 2 s wherever it is (Slurm waits 30 s before SIGKILL), with the interrupted line
+# last and nothing written.
+lens_dir="$work/lens-term"
+mkdir -p "$lens_dir"
+"$cli" lens render angenieux-double-gauss "$samples/sunset-hdr.exr" -o "$lens_dir/out.exr" \
+  --light all --max-sources 256 --threshold 0.05 --spectral 24 --grid 96 2>"$lens_dir/err" &
+pid=$!
+for _ in $(seq 1 600); do grep -q "source 1 of" "$lens_dir/err" && break; sleep 0.05; done
+grep -q "source 1 of [0-9]* drawn" "$lens_dir/err" && pass || fail "lens render: no per-source progress: $(head -c 300 "$lens_dir/err")"
+sleep 0.3
+start=$(date +%s%N)
+kill -s TERM "$pid"
+wait "$pid"
+rc=$?
+stop_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+echo "lens render stopped ${stop_ms} ms after SIGTERM (exit $rc)"
+[ "$rc" -eq 143 ] && pass || fail "lens render SIGTERM: exit $rc, expected 143"
+[ "$stop_ms" -lt 2000 ] && pass || fail "lens render took ${stop_ms} ms to stop after SIGTERM"
+tail -n 1 "$lens_dir/err" | grep -q "^flarekit: .*interrupted by SIGTERM" && pass ||
+  fail "lens render SIGTERM: the last line is not the interrupted line: $(tail -n 2 "$lens_dir/err")"
+[ ! -e "$lens_dir/out.exr" ] && pass || fail "lens render SIGTERM: an output was written"
+expect_no_leftovers "$lens_dir" "lens render SIGTERM"
 
 echo "fault injection: $checks checks, $failures failed"
 [ "$failures" -eq 0 ]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the image-read path with its size, ratio and memory checks (readImage and
 // readImage8): flarekit's own PNG, JPEG, TIFF and EXR codecs, chosen by the file's first bytes,
 // and the OpenImageIO module for the rest. The first byte picks the file's extension (PNG, JPEG,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: post-process preset JSON (parsePostFxPreset) and, for a valid one, the CPU
 // chain on a small image, so that every accepted value is one the chain survives.
 #include <cstddef>

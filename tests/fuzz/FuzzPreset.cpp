@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: sprite-flare preset JSON (parsePreset), every field validated.
 #include <cstddef>
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the PSP Graphics Engine on arbitrary display lists (the input is the list,
 // loaded at the start of RAM, run on both memory models) and the emulated Burnout frame on an
 // arbitrary occluder mask (the input's bytes tiled over 480x272, the sun from its first bytes).

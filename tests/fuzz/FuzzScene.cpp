@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: Scene JSON (parseScene) and, for a valid scene, its lights and a ray-cast
 // coverage at a handful of rays per light, so the ground truth survives every accepted scene.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo animation end to end on the GL backend: frames of the requested size in order,
 // the temporal filter applied to the method's coverage, bad settings rejected.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine API's contract with the application: the GL state it must leave alone, every
 // bad argument refused by name, the C++ wrapper giving what the C calls give, and calls
 // without a current context returning an error.

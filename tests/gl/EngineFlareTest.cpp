@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine API over time and on screen: its per-light temporal filter against
 // TemporalFilter, its instanced flare against renderFlare, and an off-screen light kept
 // measured by a guard band with its edge streak lit.

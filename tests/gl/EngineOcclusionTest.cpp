@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine API's batched occlusion on depth buffers rendered the way applications render
 // them, against the ray-cast truth (every light's coverage within 0.02): flarekit's renderer
 // with MSAA and translucent cards, each depth convention and format, point lights before and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the engine API's GL tests (Engine*Test.cpp): an engine owner, the
 // ray-cast truth at 4,096 rays a light, the worst error against it, a temporary preset file,
 // the wall scene and the application GL state the engine must leave alone.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // texture-mask through the engine API: sun maps drawn by an application's occluder callback
 // measure every light as the ray caster does, translucent cards and off-screen lights included.
 #include <gtest/gtest.h>

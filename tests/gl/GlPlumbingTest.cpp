@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GL plumbing on whatever EGL gives this machine (llvmpipe in CI). These tests never
 // skip: a machine without a working headless GL fails them, loudly.
 #include <gtest/gtest.h>

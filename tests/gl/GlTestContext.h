@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one headless GL context of a GL test process. Every GL test calls glContext() first; a
 // machine without working headless GL fails here, loudly (tests never skip).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The flare's GPU half against its CPU twins: the sprite flare against renderFlare (equal
 // where element centres sit on pixel centres, same energy elsewhere), the temporal filter
 // against TemporalFilter, the tone map against tonemapAcesFitted, and a zero weight drawing

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CPU vs OpenGL ghost rasterisers of `lens render`: the same traced meshes, the same masks and
 // weights (src/lens/LensRender.cpp against src/lens/shaders/lens_ghost.frag). The ghost layers
 // agree within 1e-3 relative (a floor of 1e-3 of the layer's peak for values near zero) at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every GPU visibility method against the ray-cast truth (256^2 rays) on the generated scenes
 // (tests/support/OcclusionScenes.h). Scenes are judged where the disc is fully in frame and at
 // least 100 px in area. Bounds: 0.05 for every method, 0.02 for `compute` reading the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Uploads and read-backs through pixel buffers (gl/PixelTransfer.h): every value arrives, in
 // bands (a frame larger than one band buffer), as floats and as halves; and the post-process
 // chain gives the same result whichever way its image travels. Runs on llvmpipe in CI.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CPU vs OpenGL post-process chains: for every shipped preset on every test image,
 // float results within 1e-3 relative (with a floor of 1e-3 absolute for values near zero,
 // where "relative" means nothing), and 8-bit sRGB encodings at most 1 level apart. Runs on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PSP emulation's coverage byte against the GL `burnout` method: the same scene
 // at the PSP's 480x272, its occluders ray-cast into the emulator's mask. The GL method
 // measures the sun's disc (radius 7 px here, the PSP's 14x14 region), the PSP the square

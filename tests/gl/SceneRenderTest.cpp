@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GL scene renderer against the scene's own geometry: the sun disc where the camera maths
 // puts it, objects where they project, and the flare scaled by coverage.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden frames of the demo drive at 320x180 through headless GL: the CPU flare path
 // (raycast coverage) and the GPU path (compute coverage, flare, smoothing and tone map on the
 // GPU). Rasterisation on a different Mesa or GPU may move edge pixels, so a few levels are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden-image checks: an image (linear light, display-referred after its own tone map) is
 // encoded to 8-bit sRGB and compared with tests/golden/ref/NAME.png. On a mismatch the test
 // writes NAME.actual.png and NAME.diff.png (|difference| x 16) into the golden output folder

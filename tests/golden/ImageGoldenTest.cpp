@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden images of the CPU paths: every shipped sprite preset (the `apply` path: light found,
 // flare added in linear light) and every shipped postfx preset on the sample sunset, at
 // 320x180. Both paths are deterministic float code, so the tolerance is one 8-bit level

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The installed package as an outside project uses it: `cmake --install` into a fresh prefix,
 // examples/embed-gl configured with find_package(flarekit 0.2) against that prefix alone,
 // built and run (its own EGL context, reversed-Z MSAA depth, a sun and 254 street lamps),
@@ -188,6 +189,134 @@ TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCa
         << slurp(log);
     ASSERT_EQ(run(exe, log), 0) << slurp(log);
     EXPECT_NE(slurp(log).find("fk_engine_create: max_lights: expected 1..16384, got 0"),
+              std::string::npos)
+        << slurp(log);
+}
+
+namespace {
+
+//! Whether `needle` occurs anywhere in the file's bytes.
+bool fileContains(const std::filesystem::path& file, const std::string& needle) {
+    const std::string bytes = slurp(file.string());
+    return bytes.find(needle) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(Package, AMovedInstallFindsItsOwnFilesLinksNoGplCodeAndBuildsTheCoreExample) {
+    namespace fs = std::filesystem;
+    TempDir dir;
+    const std::string installed = dir.file("prefix"), moved = dir.file("moved"),
+                      log = dir.file("log");
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --install " + FLAREKIT_BUILD_DIR + " --prefix " +
+                      installed,
+                  log),
+              0)
+        << slurp(log);
+    fs::rename(installed, moved);
+    // The full set: CLI, libraries, presets, lenses, the OCIO config, docs, examples, licence.
+    for (const char* file :
+         {"bin/flarekit", "lib/libflarekit.so", "lib/libflarekit_core.a", "lib/libflarekit_gl.a",
+          "lib/flarekit/libflarekit_oiio.so", "lib/cmake/flarekit/flarekitConfig.cmake",
+          "lib/pkgconfig/flarekit.pc", "lib/pkgconfig/flarekit-core.pc",
+          "lib/pkgconfig/flarekit-gl.pc", "share/flarekit/presets/tanczos-classic.json",
+          "share/flarekit/presets/postfx/killzone2.json",
+          "share/flarekit/presets/lenses/angenieux-double-gauss.json",
+          "share/flarekit/presets/ocio/flarekit.ocio", "share/doc/flarekit/LICENSE",
+          "share/doc/flarekit/NOTICE", "share/doc/flarekit/architecture.md",
+          "share/doc/flarekit/examples/core-apply/main.cpp", "include/flarekit/Flare.h"})
+        EXPECT_TRUE(fs::exists(fs::path(moved) / file)) << file;
+    // Nothing of this machine's source or build folders is compiled into what is installed.
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(moved) / "lib")) {
+        if (!entry.is_regular_file() || entry.path().extension() == ".cmake" ||
+            entry.path().extension() == ".pc")
+            continue;
+        EXPECT_FALSE(fileContains(entry.path(), FLAREKIT_SOURCE_DIR)) << entry.path();
+        EXPECT_FALSE(fileContains(entry.path(), FLAREKIT_BUILD_DIR)) << entry.path();
+    }
+    EXPECT_FALSE(fileContains(fs::path(moved) / "bin/flarekit", FLAREKIT_SOURCE_DIR));
+    EXPECT_FALSE(fileContains(fs::path(moved) / "bin/flarekit", FLAREKIT_BUILD_DIR));
+
+    // The moved CLI finds its presets, lenses, OCIO config and image module with no variable set.
+    const std::string cli =
+        "env -u FLAREKIT_PRESET_PATH -u FLAREKIT_DATA_DIR -u OCIO "
+        "-u FLAREKIT_OIIO_MODULE " +
+        moved + "/bin/flarekit";
+    const std::string sample = std::string(FLAREKIT_SAMPLES) + "/sunset.png";
+    ASSERT_EQ(run(cli + " presets", log), 0) << slurp(log);
+    EXPECT_NE(slurp(log).find("tanczos-classic"), std::string::npos) << slurp(log);
+    ASSERT_EQ(run(cli + " apply " + sample + " -o " + dir.file("a.bmp") + " --preset starburst " +
+                      "--colorspace-in acescg",
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(
+        run(cli + " postfx " + sample + " -o " + dir.file("p.png") + " --preset killzone2", log), 0)
+        << slurp(log);
+    ASSERT_EQ(
+        run(cli + " lens render angenieux-double-gauss " + sample + " -o " + dir.file("l.png"),
+            log),
+        0)
+        << slurp(log);
+    for (const char* out : {"a.bmp", "p.png", "l.png"})
+        EXPECT_GT(fs::file_size(dir.file(out)), 1000u) << out;
+
+    // The README's "Library" example against flarekit::core, through CMake and pkg-config. A
+    // program that links the static core finds the shipped presets through FLAREKIT_DATA_DIR
+    // (or when it is installed into the same prefix's bin/).
+    const std::string build = dir.file("core-apply");
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " -S " + FLAREKIT_CORE_EXAMPLE_DIR + " -B " +
+                      build + " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + moved,
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --build " + build, log), 0) << slurp(log);
+    const std::string data = "env FLAREKIT_DATA_DIR=" + moved + "/share/flarekit/presets ";
+    ASSERT_EQ(run(data + build + "/core-apply " + sample + " " + dir.file("core.exr"), log), 0)
+        << slurp(log);
+    EXPECT_NE(slurp(log).find("1 light(s) flared"), std::string::npos) << slurp(log);
+    const std::string viaPkgConfig = dir.file("core-apply-pc");
+    const std::string pc = "PKG_CONFIG_PATH=" + moved + "/lib/pkgconfig ";
+    ASSERT_EQ(run("c++ -O1 " + std::string(FLAREKIT_CORE_EXAMPLE_DIR) + "/main.cpp -o " +
+                      viaPkgConfig + " $(" + pc + "pkg-config --cflags --libs flarekit-core)",
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(
+        run(data + viaPkgConfig + " " + sample + " " + dir.file("core-pc.png") + " subtle", log), 0)
+        << slurp(log);
+    // A bad preset is the library's one-line error.
+    EXPECT_EQ(run(data + viaPkgConfig + " " + sample + " " + dir.file("x.png") + " nonesuch", log),
+              2);
+    EXPECT_NE(slurp(log).find("preset 'nonesuch': expected a JSON file or one of:"),
+              std::string::npos)
+        << slurp(log);
+
+    // Licences: what the installed library, the CLI and a core program link is on the list.
+    ASSERT_EQ(
+        run(std::string(FLAREKIT_LICENCE_CHECK) + " " + FLAREKIT_LICENCE_ALLOWLIST + " " + moved +
+                "/lib/libflarekit.so " + moved + "/bin/flarekit " + build + "/core-apply",
+            log),
+        0)
+        << slurp(log);
+    EXPECT_EQ(slurp(log).find("fftw"), std::string::npos) << slurp(log);
+    EXPECT_NE(slurp(log).find("libflarekit.so: libtbb.so.12  libtbb12  Apache-2.0"),
+              std::string::npos)
+        << slurp(log);
+}
+
+TEST(Package, TheLicenceCheckRefusesALibraryOffItsList) {
+    // The same check with an allow-list lacking zlib fails on the CLI and names the package.
+    TempDir dir;
+    const std::string list = dir.file("list.tsv"), log = dir.file("log");
+    {
+        std::ifstream in(FLAREKIT_LICENCE_ALLOWLIST);
+        std::ofstream out(list);
+        for (std::string line; std::getline(in, line);)
+            if (line.rfind("zlib1g", 0) != 0) out << line << "\n";
+    }
+    EXPECT_EQ(run(std::string(FLAREKIT_LICENCE_CHECK) + " " + list + " " + FLAREKIT_CLI, log), 1);
+    EXPECT_NE(slurp(log).find("libz.so.1: package zlib1g is not on the allow-list"),
               std::string::npos)
         << slurp(log);
 }

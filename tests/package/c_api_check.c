@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* flarekit.h as a C compiler sees it, linked through pkg-config: the library's version, and an
  * engine refused before any GL work with its reason in fk_error(NULL). */
 #include <flarekit/flarekit.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # A 40-frame shot rendered by a one-node Slurm cluster as a job array of 4 chunks, every frame
 # (and coverage.csv) compared bit for bit with a single-process render of the whole range.
 # The test starts its own munged (own key and socket) and slurmctld + slurmd (own config, state

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An application's own depth pass, as a game would have it, for testing the engine API apart
 // from flarekit's SceneRenderer: the scene's opaque mesh drawn into a depth texture (2D or
 // multisampled, DEPTH_COMPONENT32F or DEPTH24_STENCIL8) inside any viewport of it, under any of

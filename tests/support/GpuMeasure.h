@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the accuracy test and the accuracy table share: one GPU method run on one still scene,
 // and which scenes are judged against the ray-cast truth.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generated many-light scenes for the engine API: sphere lights among boxes and spheres, some
 // of them partly hidden, with translucent cards (opacity 0.3-0.7) between the camera and every
 // light. Lights sit inside the frame with a margin, so the screen-space measurement and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The generated scenes that GPU visibility methods are judged on against the ray-cast truth
 // : sun fully visible, fully hidden, half behind a box edge, behind foliage of many
 // small spheres, behind a thin pole, near the frame edge, small and large angular radii, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The post-process test images: a single bright dot, several lights, an HDR sky
 // with a sun of value 50, and noise. Built in code, so the tests carry no binary fixtures.
 #pragma once

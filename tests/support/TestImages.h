@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test images made from a formula of the pixel and a seeded uniform source.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // BandPipeline: every band worked exactly once, never before its rows are published, finished
 // on one thread as on two, and nothing left running after a cancel.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seed 002's integer blend formulas, tested exhaustively: every (s, d, a) for the alpha
 // modes (256^3), every (s, d) for the three saturating adds, through the span functions.
 #include <gtest/gtest.h>

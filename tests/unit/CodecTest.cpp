@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit's own PNG, JPEG, TIFF and EXR codecs against an independent implementation:
 // OpenImageIO (linked by the tests only) writes each layout and reads back what flarekit
 // writes. Sample values must agree exactly (JPEG: the same libjpeg-turbo decode).
@@ -255,7 +256,7 @@ TEST(Codec, WritesReadBackExactlyThroughOpenImageIo) {
           Case{"e.exr", SampleFormat::Half, true}, Case{"f.exr", SampleFormat::Float, false},
           Case{"g.bmp", SampleFormat::U8, false}}) {
         const std::string path = dir.file(c.name);
-        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha, true, nullptr}).ok()) << c.name;
+        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha, true, nullptr, {}}).ok()) << c.name;
         auto in = openStraight(path);
         ASSERT_TRUE(in) << c.name;
         const int channels = c.alpha ? 4 : 3;
@@ -298,7 +299,7 @@ TEST(Codec, PngBandsMakeOneValidStreamAtEveryLevel) {
                 for (const bool alpha : {false, true}) {
                     const std::string path = dir.file(std::string("b") + std::to_string(height) +
                                                       "-" + std::to_string(level) + ".png");
-                    ASSERT_TRUE(writeImage(path, image, {format, alpha, true, nullptr}).ok());
+                    ASSERT_TRUE(writeImage(path, image, {format, alpha, true, nullptr, {}}).ok());
                     auto in = openStraight(path);
                     ASSERT_TRUE(in) << path;
                     const int channels = alpha ? 4 : 3;

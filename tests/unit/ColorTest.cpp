@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sRGB encoders against independent references: a binary search over the code boundaries
 // (the previous implementation) and the IEC 61966-2-1 curve evaluated in double precision.
 #include <gtest/gtest.h>

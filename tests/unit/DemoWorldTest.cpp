@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The demo world does what its story says, measured by the ray-cast ground truth: the sun
 // flickers through the trees, vanishes in the tunnel, is clear after it, and leaves the frame
 // in the turn.

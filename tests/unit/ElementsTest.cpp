@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Elements tested as maths: support, symmetry, energy against the analytic integral,
 // determinism. Integrals are computed here from the definitions, not from flarekit code.
 #include <gtest/gtest.h>

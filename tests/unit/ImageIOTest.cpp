@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,7 +49,7 @@ TEST(ImageIO, ExrKeepsLinearHdrValues) {
     Image img(4, 3);
     img.fill({50.f, 0.001f, 2.5f, 0.5f});
     ASSERT_TRUE(
-        writeImage(dir.file("a.exr"), img, {SampleFormat::Float, true, true, nullptr}).ok());
+        writeImage(dir.file("a.exr"), img, {SampleFormat::Float, true, true, nullptr, {}}).ok());
     auto back = readImage(dir.file("a.exr"));
     ASSERT_TRUE(back.ok());
     EXPECT_TRUE(back->wasFloat);
@@ -185,7 +186,8 @@ TEST(ImageIO, AtomicWriteLeavesOnlyTheTarget) {
     TempDir dir;
     ASSERT_TRUE(writeImage(dir.file("x.png"), Image(8, 8)).ok());
     EXPECT_EQ(dir.entries(), 1u);
-    EXPECT_FALSE(writeImage(dir.file("missing/x.png"), Image(8, 8)).ok());
+    // A file standing where a folder must be made: refused, nothing left.
+    EXPECT_FALSE(writeImage(dir.file("x.png/y.png"), Image(8, 8)).ok());
     EXPECT_FALSE(writeImage(dir.file("x.nosuchformat"), Image(8, 8)).ok());
     EXPECT_EQ(dir.entries(), 1u);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lens prescriptions and their optics, each against an independent reference: the patents'
 // stated focal lengths, the quarter-wave closed form and a characteristic-matrix thin film, the
 // Fresnel closed form, a paraxial y-nu trace of every ghost path, energy bounds.

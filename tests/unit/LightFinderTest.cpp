@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // --light auto: which regions are lights, where they are and how much flux they carry. Fluxes
 // are summed here from the images the tests draw, not taken from flarekit.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Many lights and translucent objects in the Scene JSON and the ray-cast truth, against closed
 // forms: a point light's cone is the one its sphere subtends, a ray reaches the light unless
 // an object lies between, and a ray through an object of opacity a keeps 1 - a of the light.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one parameter description (flarekit/Param.h): JSON input and parameters built in code
 // go through the same check, with the same field names and ranges.
 #include <gtest/gtest.h>

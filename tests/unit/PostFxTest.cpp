@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The post-process chain on the CPU: presets, the seed's geometry, linearity, edge cases.
 // CPU vs GL parity is tests/gl/PostFxParityTest.cpp.
 #include <gtest/gtest.h>

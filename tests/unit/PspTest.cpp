@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PSP GE emulation of the Burnout Dominator flare. Expected bytes come from the
 // seed's description and the documented filter precision (docs/psp-burnout.md), computed here
 // by a separate model of the chain, not by the emulator's code.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ray-cast ground truth against closed-form coverages (architecture.md's definition:
 // the visible fraction of the sun's cone, uniform over solid angle).
 #include <gtest/gtest.h>

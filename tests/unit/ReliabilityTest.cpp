@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The safe writer, the JSON bounds and the resource budget, tested as library calls (the CLI's
 // side is in tests/cli/RegressionTest.cpp and tests/fault/fault-injection.sh).
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@ using namespace flarekit;
 using flarekit::test::TempDir;
 
 namespace {
+
 std::string readAll(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -72,12 +74,19 @@ TEST(SafeWrite, WritesDevicesInPlaceAndReportsTheirErrors) {
     EXPECT_TRUE(writeFileSafely("/dev/null", "gone").ok());
 }
 
-TEST(SafeWrite, AMissingDirectoryIsBadInputAndWritesNothing) {
+TEST(SafeWrite, AMissingDirectoryIsMadeAndAFileInItsWayIsBadInputAndWritesNothing) {
     TempDir dir;
-    auto r = writeFileSafely(dir.file("no/such/dir/x.txt"), "x");
+    ASSERT_TRUE(writeFileSafely(dir.file("no/such/dir/x.txt"), "x").ok());
+    EXPECT_EQ(readAll(dir.file("no/such/dir/x.txt")), "x");
+    std::filesystem::remove_all(dir.file("no"));
+    ASSERT_TRUE(writeFileSafely(dir.file("plain"), "p").ok());
+    auto r = writeFileSafely(dir.file("plain/dir/x.txt"), "x");
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
-    EXPECT_EQ(dir.entries(), 0u);
+    EXPECT_NE(r.error().message.find("'" + dir.file("plain") + "' is not a directory"),
+              std::string::npos)
+        << r.error().message;
+    EXPECT_EQ(dir.entries(), 1u);
 }
 
 TEST(SafeWrite, ImageFormatsWithoutAnInMemoryWriterAreRefusedUpFront) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shots: frame patterns and farm ranges, light tracks (both formats, interpolation, every bad
 // input), and a light disc's visibility against the closed-form area of a circular segment.
 #include <gtest/gtest.h>

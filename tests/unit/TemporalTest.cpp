@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The temporal filter: attack/release time constants, frame-rate independence, edge fade and
 // exposure adaptation, against the closed forms of exponential smoothing.
 #include <gtest/gtest.h>

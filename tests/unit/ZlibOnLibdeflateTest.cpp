@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // zlib's one-shot calls answered by libdeflate and, at level 1, ISA-L
 // (src/core/codecs/ZlibOnLibdeflate.cpp): the
 // streams are zlib's own format both ways (checked against zlib's stream API, which is not
@@ -169,7 +170,7 @@ TEST(ZlibOnLibdeflate, OpenExrZipChunksGoThroughIt) {
     for (const Case& c : {Case{"zip", 3}, Case{"zips", 40}}) {
         const std::string path = dir.file(std::string(c.compression) + ".exr");
         ASSERT_TRUE(setExrCompression(c.compression).ok());
-        const WriteOptions options{SampleFormat::Float, true, true, nullptr};
+        const WriteOptions options{SampleFormat::Float, true, true, nullptr, {}};
         const codec::ZlibCalls before = codec::zlibCallsAnsweredByLibdeflate();
         ASSERT_TRUE(writeImage(path, image, options).ok());
         const codec::ZlibCalls written = codec::zlibCallsAnsweredByLibdeflate();

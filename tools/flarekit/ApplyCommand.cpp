@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit apply: composite a preset's sprite flare onto an image, in linear light.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit blend: Tanczos 1999's 8-bit blend formulas on whole images, bit-exact.
 #include "Common.h"
 #include "flarekit/Blend.h"

@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ColorManagement.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <cstdlib>
 
+#include "core/InstallPaths.h"
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
 
@@ -24,8 +26,8 @@ void addColorOptions(CLI::App* cmd, ColorArgs& args) {
     cmd->add_option("--colorspace-out", args.out,
                     "the output's colour space in the OCIO config (default: as the input's kind)");
     cmd->add_option("--ocio-config", args.config,
-                    "OpenColorIO config file (default: $OCIO; flarekit ships "
-                    "presets/ocio/flarekit.ocio, an ACES config works too)");
+                    "OpenColorIO config file (default: $OCIO, else the shipped "
+                    "presets/ocio/flarekit.ocio; an ACES config works too)");
 }
 
 Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const ColorArgs& args) {
@@ -33,10 +35,11 @@ Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const Col
     std::string path = args.config;
     if (path.empty())
         if (const char* env = std::getenv("OCIO")) path = env;
+    if (path.empty()) path = shippedOcioConfig().string();
     if (path.empty())
         return invalidInput(
-            "--colorspace-in/--colorspace-out need an OpenColorIO config: set "
-            "$OCIO or --ocio-config (flarekit ships presets/ocio/flarekit.ocio)");
+            "--colorspace-in/--colorspace-out need an OpenColorIO config: set $OCIO or "
+            "--ocio-config (the shipped presets/ocio/flarekit.ocio was not found beside flarekit)");
     OCIO::ConstConfigRcPtr config;
     try {
         OCIO::ClearAllCaches();
@@ -63,6 +66,7 @@ Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const Col
         if (!args.in.empty())
             cm->m_processors->in = config->getProcessor(args.in.c_str(), OCIO::ROLE_SCENE_LINEAR)
                                        ->getDefaultCPUProcessor();
+        cm->m_outName = args.out;
         if (!args.out.empty())
             cm->m_processors->out = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, args.out.c_str())
                                         ->getDefaultCPUProcessor();
@@ -100,6 +104,7 @@ void ColorManagement::toOutput(Image& image, WriteOptions& options) const {
     if (!m_processors->out) return;
     applyRgba(m_processors->out, image);
     options.srgbEncode = false;
+    options.colorSpace = m_outName;
 }
 
 }  // namespace flarekit::cli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colour spaces in and out through OpenColorIO: the input converted from its colour space to
 // the config's scene_linear (flarekit's working space, linear Rec.709 in the shipped config),
 // the result from there to the output's. Without the options nothing changes: 8/16-bit files
@@ -41,6 +42,7 @@ class ColorManagement {
   private:
     ColorManagement() = default;
     std::unique_ptr<Processors> m_processors;
+    std::string m_outName;  //!< --colorspace-out, the output files' tag
 };
 
 }  // namespace flarekit::cli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "Common.h"
 
 #include "ShotRun.h"
@@ -249,16 +250,6 @@ std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std
         warn(in + ": its " + std::to_string(loaded.extraChannels) +
              " channel(s) past RGBA go only to an EXR output, not to " + out);
     return loaded.exrExtras;
-}
-
-Status makeOutputDirectory(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir)) {
-        return invalidInput(dir + ": cannot create the output directory" +
-                            (ec ? ": " + ec.message() : ""));
-    }
-    return Ok{};
 }
 
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every subcommand shares: turning library errors into one stderr line and an exit code
 // (0 success, 2 bad input, 1 internal failure), warnings, and small argument parsers.
 #pragma once
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/SafeWrite.h"  // makeOutputDirectory, shared by every subcommand
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFxParams.h"
@@ -96,9 +98,6 @@ Result<LoadedImage> readInputImage(const std::string& path, const JobMemory& job
 //! an EXR; to another format a warning that its channels past RGBA are not written there.
 std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
                                             const std::string& out);
-
-//! Creates `dir` (and its parents) for a subcommand's outputs; a one-line error if it cannot.
-Status makeOutputDirectory(const std::string& dir);
 
 //! The tail of every image-writing subcommand: `out` checked before any work (a bad path costs
 //! nothing), the work, one atomic write, the result as an exit code (errors as one line).

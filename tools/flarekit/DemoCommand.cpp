@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit demo: the built-in drive (road, trees, buildings, tunnel, turn) rendered to PNG
 // frames, a coverage log, a strip of six frames and, with ffmpeg installed, an MP4.
 // PNG encoding runs on a writer thread so the GL/raycast/flare work of the next frame overlaps it.

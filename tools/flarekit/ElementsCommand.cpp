@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit elements: a labelled contact sheet of a preset's elements.
 #include "Common.h"
 #include "ParamOptions.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene file through the engine API, as an application would use it: flarekit's renderer
 // draws the frame, the C API measures every light on its depth (and transmittance) in one
 // batched pass and, when asked, adds every light's flare. Shared by `flarekit lights` and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One JSON object on one line, the way `visibility --json` and `psp --json` print it (a
 // contract: key order, ", " and ": " separators, fixed decimals). Strings are escaped by
 // nlohmann-json, so a path or name with quotes still gives valid JSON.

@@ -1,15 +1,20 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit lens: flares from real lens prescriptions (presets/lenses). `ghosts` reports every
 // two-reflection ghost of a distant point source, `render` puts the traced flare on an image,
 // `list` names the shipped lenses with their paraxial figures.
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "Common.h"
 #include "ParamOptions.h"
+#include "Progress.h"
 #include "ShotRun.h"
 #include "flarekit/Lens.h"
 #include "flarekit/Tonemap.h"
@@ -132,15 +137,31 @@ Result<std::vector<LensLight>> findLights(const LensArgs& a, const Image& image)
 //! The flare's layers through the chosen backend.
 Result<LensFlareLayers> renderLayers(const LensArgs& a, const Lens& lens, const Image& image,
                                      const std::vector<LensLight>& lights) {
+    // Many sources take minutes: a bar on a terminal, otherwise (logs, a farm) a line per source.
+    LensRenderOptions render = a.render;
+    std::optional<Progress> bar;
+    if (lights.size() > 1) {
+        if (isatty(fileno(stderr)) == 1) bar.emplace("lens render", int(lights.size()));
+        render.progress = [&](int done, int total) {
+            if (bar) {
+                bar->update(done);
+                if (done == total) bar->finish();
+            } else {
+                std::fprintf(stderr, "lens render: %s: source %d of %d drawn\n", a.in.c_str(), done,
+                             total);
+            }
+            return true;
+        };
+    }
     if (a.backend == "cpu")
-        return renderLensFlare(lens, image.width(), image.height(), lights, a.render);
+        return renderLensFlare(lens, image.width(), image.height(), lights, render);
 #if FLAREKIT_HAS_GL
     auto context = createHeadlessGl();
     if (!context) return context.error();
     if (Status s = checkGlFrame(image.width(), image.height(), 1, a.in + ": image"); !s)
         return s.error();
     LensGlTimes times;
-    auto layers = renderLensFlareGl(lens, image.width(), image.height(), lights, a.render, &times);
+    auto layers = renderLensFlareGl(lens, image.width(), image.height(), lights, render, &times);
     if (layers && a.verbose)
         std::printf("OpenGL: %s: ghosts %.2f GPU ms, read-back %.2f ms\n",
                     (*context)->renderer().c_str(), times.ghostsGpuMs, times.readbackMs);
@@ -304,7 +325,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
 
     CLI::App* render = lens->add_subcommand("render", "the lens's flare on an image");
     // Photographs and HDRIs clip the sun by orders of magnitude (a real one is ~10^5 x the sky),
-    // so the command draws ghosts 100 x their physical share by default; --ghost_gain 1 is the
+    // so the command draws ghosts 100 x their physical share by default; --ghost-gain 1 is the
     // lens's own figure for an unclipped source.
     args->render.ghostGain = 100;
     addLensOptions(render);

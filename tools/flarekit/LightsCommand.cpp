@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit lights: a scene with many lights rendered through the engine API (flarekit.h), the
 // way an application embeds it: the renderer's depth goes to fk_engine_occlusion (every
 // light in one batched pass), and fk_engine_draw adds every light's flare to the HDR frame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one CLI binder of parameter tables (flarekit/Param.h): a numeric flag gets its name,
 // help, default and range check from the parameter's description, so a range typed in a
 // table is the range the CLI enforces.
@@ -33,20 +34,36 @@ std::string paramHelp(const Param<Owner>& p) {
     return std::string(p.help) + (p.unit.empty() ? "" : " (" + std::string(p.unit) + ")");
 }
 
-//! --<key> writing into `target` through the description (numeric parameters).
+//! A table key as a flag: "ghost_gain" is --ghost-gain (flags are spelt with hyphens).
+inline std::string flagName(std::string_view key) {
+    std::string flag = "--" + std::string(key);
+    for (char& c : flag)
+        if (c == '_') c = '-';
+    return flag;
+}
+
+//! --<key> (hyphens for underscores) writing into `target` through the description (numeric
+//! parameters). A key with underscores keeps its old spelling (--ghost_gain) as a hidden alias
+//! that scripts may still use; the help names it as deprecated.
 template <class Owner>
 CLI::Option* addParamOption(CLI::App* cmd, const Param<Owner>& p, Owner& target) {
+    const auto set = [p, &target](double x) {
+        ParamValue v;
+        v.number = x;
+        p.set(target, v);
+    };
+    const std::string flag = flagName(p.key), old = "--" + std::string(p.key);
     auto* option = cmd->add_option_function<double>(
-        "--" + std::string(p.key),
-        [p, &target](double x) {
-            ParamValue v;
-            v.number = x;
-            p.set(target, v);
-        },
-        paramHelp(p));
+        flag, set,
+        paramHelp(p) + (flag == old ? "" : " (" + old + " still works; deprecated spelling)"));
     option->check(paramValidator(p));
     option->type_name(p.type == ParamType::Number ? "FLOAT" : "INT");
     option->default_str(valueText(p, p.get(target)));
+    if (flag != old) {
+        auto* alias = cmd->add_option_function<double>(old, set, "");
+        alias->check(paramValidator(p));
+        alias->group("");  // hidden from --help
+    }
     return option;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit postfx: the image-based lens flare (Killzone 2 / Kawase ghosts, bloom, halo,
 // streaks, chromatic aberration, starburst, dirt) on any image, CPU or OpenGL.
 #include <chrono>

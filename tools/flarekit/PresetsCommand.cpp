@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit presets: list the shipped presets, validate a preset file, or print the parameter
 // reference generated from the table that validates presets.
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress of a long job on stderr: a redrawn bar with rate and ETA on a terminal, one plain
 // line per 10% otherwise (logs and CI keep readable output).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit psp: the Burnout Dominator lens flare (and Ridge Racer's simpler one) run as GE
 // display lists on the emulated PSP Graphics Engine, correct or as a naive emulator runs it.
 #include <algorithm>

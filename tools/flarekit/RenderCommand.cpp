@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit render: the scene through the headless GL renderer, with the sprite flare at the
 // sun scaled by its coverage. With `raycast` the flare is drawn on the CPU over the read-back
 // frame; with a GPU method the flare is drawn on the GPU and reads the method's 1x1 coverage

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A light's visibility over a shot: per frame, the mean visibility of its disc in a matte or
 // depth pass (raw), then the attack/release filter over the frames before it (filtered), and
 // coverage.csv. The filter looks back a fixed number of the shot's frames, starting fresh at

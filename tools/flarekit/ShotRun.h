@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Running a subcommand over a shot: the frames of a pattern (shot.####.exr) or a --frames range
 // rendered in one process, several at once within the memory budget, each written atomically,
 // so a farm can hand out chunks and retry any of them. A call on a single file is unchanged.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // --light auto over a sequence: the light finder on each frame and one light followed through
 // the shot (flarekit/Shot.h's LightTracker). Like the coverage filter, the tracker at a frame
 // runs over a fixed number of the shot's frames before it, starting fresh, so a frame's light is

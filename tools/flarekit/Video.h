@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Encoding numbered PNG frames into an MP4 with ffmpeg, when ffmpeg is installed.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit visibility: how much of the sun a scene's camera sees, by the CPU ground truth
 // (`raycast`) or any GPU method of the seed articles on the headless GL backend.
 #include <algorithm>

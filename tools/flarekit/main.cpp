@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // flarekit: the command-line tool. One subcommand per job; each lives in its own file.
 #include <cstdio>
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every image codec of flarekit shares: the header it reports before decoding, the
 // samples it decodes, the samples it encodes. PNG, JPEG, TIFF and EXR are read and written
 // through their own libraries (libpng, libjpeg-turbo, libtiff, OpenEXR); every other format
@@ -69,6 +70,8 @@ struct Samples {
     //! EXR: the input's header and other channels to write back (its size is this image's).
     const ExrExtras* extras = nullptr;
     bool chosenCompression = false;  //!< the EXR compression was chosen: it overrides the input's
+    //! The samples' colour space (WriteOptions::colorSpace): EXR tags it; empty: untagged.
+    std::string colorSpace;
     //! When set, the rows are not made yet: the encoder calls fillRows(y0, y1) before it reads
     //! rows [y0, y1), for disjoint ranges, possibly from several threads at once (the PNG
     //! encoder: so the rows are made beside libpng or zlib rather than all before them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The codecs flarekit runs itself (see Codec.h). Each read opens the file, reports the header
 // to `check`, and only then allocates and decodes; each encode returns the file's bytes, which
 // ImageIO commits with writeFileSafely.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenEXR through its own C++ library, on its thread pool: reads land straight in flarekit's
 // float RGBA image (each channel a strided slice of it) and writes take their slices from it.
 #include <ImfChannelList.h>
@@ -7,18 +8,21 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 #include <ImfThreading.h>
 #include <half.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -309,6 +313,40 @@ class MemoryStream : public Imf::OStream {
 
 }  // namespace
 
+namespace {
+
+//! The primaries and white point (CIE 1931 xy) of the colour spaces whose names say them: ACEScg
+//! (AP1) and ACES2065-1 (AP0) with the ACES white, from SMPTE ST 2065-1 and the Academy's
+//! S-2014-004; Rec.709 and sRGB with D65, from ITU-R BT.709-6. Matched without case, spaces,
+//! hyphens or underscores, so "ACES - ACEScg", "acescg" and "lin_ap1" are one.
+std::optional<Imf::Chromaticities> knownChromaticities(const std::string& name) {
+    std::string key;
+    for (char c : name)
+        if (std::isalnum(static_cast<unsigned char>(c)))
+            key += char(std::tolower(static_cast<unsigned char>(c)));
+    const auto ends = [&](const char* tail) {
+        const std::string t(tail);
+        return key.size() >= t.size() && key.compare(key.size() - t.size(), t.size(), t) == 0;
+    };
+    const Imath::V2f acesWhite(0.32168f, 0.33767f), d65(0.3127f, 0.3290f);
+    if (ends("acescg") || ends("linap1") || ends("ap1"))
+        return Imf::Chromaticities({0.713f, 0.293f}, {0.165f, 0.830f}, {0.128f, 0.044f}, acesWhite);
+    if (ends("aces20651") || ends("linap0") || ends("ap0"))
+        return Imf::Chromaticities({0.7347f, 0.2653f}, {0.0f, 1.0f}, {0.0001f, -0.077f}, acesWhite);
+    if (ends("rec709") || ends("srgb") || ends("bt709"))
+        return Imf::Chromaticities({0.64f, 0.33f}, {0.30f, 0.60f}, {0.15f, 0.06f}, d65);
+    return std::nullopt;
+}
+
+//! Names the file's colour space as OpenImageIO does (oiio:ColorSpace) and, where its primaries
+//! are known, writes them as the standard chromaticities attribute.
+void tagColorSpace(Imf::Header& header, const std::string& name) {
+    header.insert("oiio:ColorSpace", Imf::StringAttribute(name));
+    if (const auto c = knownChromaticities(name)) Imf::addChromaticities(header, *c);
+}
+
+}  // namespace
+
 Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions& options) {
     startThreadPool();
     if (s.type != SampleType::F32) return internalError("EXR takes float or half samples");
@@ -352,6 +390,7 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
             }
         }
         header.insert("software", Imf::StringAttribute("flarekit"));
+        if (!s.colorSpace.empty()) tagColorSpace(header, s.colorSpace);
         header.zipCompressionLevel() = options.exrZipLevel;
         const Imath::Box2i window = header.dataWindow();
         // OpenEXR's writer takes samples of the file's own type: half samples come packed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What an EXR holds beyond the RGBA flarekit works on, kept from the read for the write: the
 // header (attributes such as timeCode, camera data and custom ones; the data and display
 // windows; compression) and the other channels' pixels in their own types.

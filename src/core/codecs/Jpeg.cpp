@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JPEG through libjpeg-turbo. Its errors arrive by longjmp from error_exit: as in Png.cpp, every
 // C++ object of a function that calls it is constructed before its setjmp.
 #include <csetjmp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The body of libflarekit_oiio.so (see OiioModule.h): OpenImageIO behind the module interface.
 // It links nothing of flarekit: limits and messages stay in the core, which passes its check.
 #include "core/codecs/OiioModule.h"

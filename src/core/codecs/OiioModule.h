@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenImageIO module: every format flarekit does not run itself (Radiance HDR, BMP, TGA,
 // PPM, WebP, DPX, BigTIFF, layered EXR, CMYK JPEG, palette TIFF, ...) and the contact sheet's
 // text. It is a shared object of flarekit's own build (libflarekit_oiio.so) opened with dlopen

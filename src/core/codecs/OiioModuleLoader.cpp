@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finds and opens libflarekit_oiio.so on first use (see OiioModule.h).
 #include <dlfcn.h>
 #include <unistd.h>
@@ -6,34 +7,19 @@
 #include <filesystem>
 #include <mutex>
 
+#include "core/InstallPaths.h"
 #include "core/codecs/OiioModule.h"
-
-// Where the build put the module and where `cmake --install` puts it (src/CMakeLists.txt).
-#ifndef FLAREKIT_BUILD_OIIO_MODULE
-#define FLAREKIT_BUILD_OIIO_MODULE ""
-#endif
-#ifndef FLAREKIT_INSTALL_OIIO_MODULE
-#define FLAREKIT_INSTALL_OIIO_MODULE ""
-#endif
 
 namespace flarekit::codec {
 
 namespace {
 
-//! The places to look, in order: FLAREKIT_OIIO_MODULE, beside an installed executable
-//! (bin/../lib/flarekit/, so a moved install still finds its own), the build tree, the
-//! configured install prefix.
+//! The places to look, in order: FLAREKIT_OIIO_MODULE, then beside this install or build
+//! (core/InstallPaths.h), so a moved install still finds its own.
 std::vector<std::string> candidates() {
     std::vector<std::string> out;
     if (const char* env = std::getenv("FLAREKIT_OIIO_MODULE"); env && *env) out.push_back(env);
-    std::error_code ec;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        out.push_back((exe.parent_path().parent_path() / "lib" / "flarekit" / "libflarekit_oiio.so")
-                          .string());
-    }
-    out.push_back(FLAREKIT_BUILD_OIIO_MODULE);
-    out.push_back(FLAREKIT_INSTALL_OIIO_MODULE);
+    for (const auto& path : oiioModuleCandidates()) out.push_back(path.string());
     return out;
 }
 

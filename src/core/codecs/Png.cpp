@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG through libpng. libpng reports errors by longjmp: every C++ object of a function that
 // calls it is constructed before its setjmp, so the jump skips no destructor.
 #include <png.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TIFF through libtiff: the plain layouts (see Codecs.h); the rest goes to OpenImageIO.
 #include <tiffio.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // zlib's one-shot calls, `compress`, `compress2` and `uncompress`, answered by libdeflate
 // (Eric Biggers' whole-buffer DEFLATE library) and, at level 1, by Intel's ISA-L (igzip) for
 // the program this object is linked into.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // zlib's one-shot calls answered by libdeflate and ISA-L (ZlibOnLibdeflate.cpp): how many it has
 // answered (how a test tells that OpenEXR's ZIP chunks went through it), and a switch back to
 // zlib for the benchmarks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/core/ToneCurves.h: Narkowicz's ACES fit and Hable's filmic curve.
 float acesFitted(float x) {
     precise float y = x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14);

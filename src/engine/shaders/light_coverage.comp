@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // The engine's batched occlusion: one work group per light, 256 threads casting up to
 // perSide^2 stratified, jittered directions (the ray caster's sampling) into the frame's
 // depth. A direction counts as seen where the stored depth is at or beyond the light's own

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // The element's premultiplied image x the light's tinted brightness, added to the
 // application's linear HDR colour (alpha untouched).
 layout(binding = 12) uniform sampler2D element;

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // One flare element of one preset, instanced over every light (gl_InstanceID): a quad on the
 // light's flare vector (flareVectorPoint: through the viewport's centre), collapsed for
 // lights of another preset, behind the camera or with no weight. Its brightness is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per light and view: the raw coverage, its temporally filtered value (attack / release, as
 // TemporalFilter of flarekit/Temporal.h) and the in-frame share, in the state buffer, and the
 // filtered value in the coverage texture the application and the flare draw read. Prepended

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A light of the engine API as the camera sees it, in view space: its cone of directions
 // (axis and half-angle) and where a direction of that cone lands in the depth texture, with
 // the light's own stored depth there. Prepended to light_coverage.comp and light_flare.vert.

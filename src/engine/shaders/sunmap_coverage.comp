@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Texture masking (GPG2, "Texture Masking for Faster Lens Flare", Maughan 2001) for many
 // lights: the application has drawn its occluders black (or grey, for what lets some light
 // through) into each light's tile of the white sun-map atlas, from a camera at the eye looking

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // The element's premultiplied image (rendered at intensity 1 x its own and the preset's
 // intensity) scaled by the flare's intensity: colour scales, coverage (alpha) does not, as in
 // renderFlare, where the intensity multiplies the element's colours only.

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // One flare element as a quad (triangle strip of 4) on the flare vector. Its brightness is
 // read here, in the vertex shader, from the 1x1 weight texture a visibility method or the
 // temporal filter wrote: the CPU never reads it. A weight of 0 collapses the quad, as

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // The CPU rasteriser's per-pixel weight (src/lens/LensRender.cpp, rasterise()) line for line:
 // the pixel centre's barycentric weights from the triangle's edge functions, the clear
 // apertures' and the iris's soft masks of the interpolated coordinates, times the interpolated

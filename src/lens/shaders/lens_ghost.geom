@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Every fragment of a triangle gets its three vertices, flat: the fragment stage computes the
 // barycentric weights itself, relative to the triangle (as the CPU does), rather than trusting
 // the rasteriser's interpolation, whose float error the masks' steep soft edges would magnify.

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // A ghost mesh's vertex in image pixels (x right, y down) with what the fragment stage weighs;
 // the geometry stage hands all three of a triangle's vertices to every fragment, which then
 // interpolates exactly as the CPU rasteriser does (src/lens/LensRender.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `burnout`: the Burnout Dominator chain (PSP), on GL. Over the sun's square a white rectangle
 // is drawn without depth test, then a black one at the far plane with the depth test, which
 // leaves a binary mask of where the sun is visible; it is summed into the blog's 14x14 grid

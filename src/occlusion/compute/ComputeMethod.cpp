@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `compute`: the most accurate GPU estimate. A compute shader weighs every pixel of the disc's
 // box by its area inside the disc and its solid angle (sun_disc.glsl's discWeight), sums the
 // sky pixels' weights and all weights per 16x16 work group in shared memory, and a second

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `pbo`: the lock method without the lock. The depth under the disc is copied into one of a
 // ring of pixel buffer objects (the copy runs on the GPU's timeline), a fence marks it, and a
 // later frame maps the buffer once its fence has signalled, so the CPU never waits; the result

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `query`: occlusion queries. The disc is drawn at the far plane twice over the frame's depth
 // (no colour writes): once with the depth test (GL_SAMPLES_PASSED counts the sky pixels under
 // the disc) and once without (counts all of the disc's pixels on screen). Coverage is their

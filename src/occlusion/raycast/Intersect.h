@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact ray-primitive tests for occlusion: each answers whether the ray origin + t*dir hits
 // the primitive for some t > kMinT. Directions need not be unit length.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `raycast`: the ground-truth coverage. Directions are spread uniformly over the sun's cone
 // (uniform in solid angle) by stratified jittered samples: a square grid of strata is mapped
 // to the unit disc by Shirley and Chiu's concentric map (equal-area, so the strata stay equal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A bounding-volume hierarchy over every object of a scene, for any-hit (shadow-style) rays.
 // Built by median splits on the longest axis of the primitive centroids; leaves hold up to
 // kLeafSize primitives.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CPU kernel of the read-back methods: coverage from a block of depth values.
 #pragma once
 

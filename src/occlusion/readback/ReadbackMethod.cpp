@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `readback`: the seed's "lock" method. After the scene pass, glReadPixels copies the depth
 // under the sun's disc to the CPU, which must wait for the GPU to finish the frame first: the
 // stall the GPG2 article measures. The coverage is computed on the CPU and published. With a

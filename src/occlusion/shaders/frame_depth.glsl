@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The main frame's depth at a point (GL pixel units), for passes that sample it finer than a
 // pixel (texture-mask-screen's sub-texels, burnout's sub-cells). With MSAA the point reads the
 // depth sample of its pixel nearest to it, so occluder edges are resolved to the sample

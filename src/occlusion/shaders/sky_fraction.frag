@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // The share of each pixel through which the sky (and so the sun) is seen: with MSAA the
 // fraction of the pixel's depth samples left at the cleared far value 1, otherwise 0 or 1.
 // It gives the single-sample screen methods (readback, pbo) sub-pixel occluder edges: a pole

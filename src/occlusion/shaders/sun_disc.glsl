@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sun's projected disc, shared by every GPU visibility method (prepended to their shaders
 // after #version). Reads the same, line for line, as src/occlusion/SunDisc.cpp.
 uniform vec3 camRight, camUp, camForward;  // gluLookAt basis

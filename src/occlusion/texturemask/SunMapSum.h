@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The half of GPG2 texture masking that both texture-mask methods share: an N x N sun map
 // (R: sun visible, G: texel in the disc), summed by points into a 1x1 intensity map with
 // additive blending, then resolved to coverage = R / G in a 1x1 R32F texture. No CPU read-back

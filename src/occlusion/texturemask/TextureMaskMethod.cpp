@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `texture-mask`: GPG2 texture masking as the seed does it. A sun camera at the eye looks
 // straight at the sun with a frustum the disc exactly fills; the sun map is cleared, the sun
 // drawn white, the occluders in that narrow view (culled on the CPU against the sun's cone)

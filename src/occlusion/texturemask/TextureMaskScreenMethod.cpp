@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `texture-mask-screen`: texture masking without the re-render. The sun map's texels look up
 // the main frame's depth along their rays (sky = sun visible), 4 x 4 rays a texel so the map
 // holds area shares, not one point each, then the same point sum (float: the map is

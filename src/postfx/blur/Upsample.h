@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The blur of the bloom buffer: the progressive upsample of the dual filter (Jimenez 2014;
 // Marius Bjorge, "Bandwidth-Efficient Rendering", SIGGRAPH 2015). Each level adds a 3x3 tent
 // of the coarser (already blurred) level, one coarse texel apart, to its own downsample:

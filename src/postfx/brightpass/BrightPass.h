@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bright pass: the input, filtered to half resolution (one bilinear tap at the output pixel's
 // centre is the 2x2 box of an even-sized input), through a soft-knee threshold. The curve is
 // the one Unity's post-processing stack uses for its bloom prefilter: zero below

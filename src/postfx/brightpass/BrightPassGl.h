@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL of the BrightPass pass (included by the GL chain only): bright_pass.frag and what it
 // needs.
 #pragma once

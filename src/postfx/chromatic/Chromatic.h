@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lateral chromatic aberration of the flare (ghosts + halo): red is read at (1 + amount) times
 // the pixel's distance from the centre, blue at (1 - amount), green in place, so a ghost splits
 // into a red-outside / blue-inside fringe the way a lens with lateral colour spreads it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one full-resolution pass after the bright pass: the input plus the lens buffer,
 // upsampled bilinearly, then the optional display curve. Alpha is the input's, untouched.
 // Twin: shaders/composite.frag.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL of the Composite pass (included by the GL chain only): composite.frag and what it needs.
 #pragma once
 

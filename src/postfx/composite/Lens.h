@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The lens buffer, at the working (1/4) resolution: everything the chain adds to the image.
 //   flare = chromatic(ghosts + halo) x starburst + streaks
 //   lens  = (bloom x bloomIntensity + flare) x (1 + dirtIntensity x dirt)

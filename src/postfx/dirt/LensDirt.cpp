@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedural lens dirt, so no asset is required: dust specks (small soft discs with a slightly
 // brighter rim, the way out-of-focus dust on a front element looks) and a few large faint
 // smudges (grease), placed by a seeded SplitMix64. Each spot is splatted over its bounding box

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The dirt texture of the last run, regenerated only when its size, seed or speck count
 // changes: both chains keep one, so a video pays makeLensDirt once.
 #pragma once

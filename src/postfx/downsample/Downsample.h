@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One step of the downsample chain: Jorge Jimenez's 13-tap filter ("Next Generation Post
 // Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014). Five overlapping 2x2 boxes
 // (four corner boxes weighted 1/8 each, the centre box 1/2), each one bilinear tap apart, so a

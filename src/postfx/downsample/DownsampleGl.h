@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL of the Downsample pass (included by the GL chain only): downsample.frag and what it
 // needs.
 #pragma once

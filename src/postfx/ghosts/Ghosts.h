@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ghosts: the seed's LensFlarePS (killzone2-post-process-lens-flare.txt), one loop iteration
 // per ghost, plus the falloff and centring that modern engines add. For the output pixel at
 // texture coordinate uv:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Halo: John Chapman's pseudo lens flare halo ("Pseudo Lens Flare", 2013), made aspect-correct.
 // In aspect space (x scaled by width / height, so a circle stays a circle) the pixel's mirrored
 // position m = -q samples the bloom buffer at m - normalize(m) * r for radii r across

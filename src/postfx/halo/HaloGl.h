@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL of the Halo pass (included by the GL chain only): halo.frag and what it needs.
 #pragma once
 

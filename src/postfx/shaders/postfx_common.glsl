@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The twin of src/postfx/Kernel.h: clamped fetches, the seed's point sampler and bilinear
 // filtering written out by hand, so the GL chain filters exactly like the CPU chain (hardware
 // filtering rounds its weights to 8 bits on most GPUs). `precise` keeps the compiler from

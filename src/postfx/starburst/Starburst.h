@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedural starburst modulation of the flare, as John Chapman's pseudo lens flare modulates
 // its ghosts and halo with a starburst texture: here the texture is a function of the angle
 // about each of the frame's bright sources (aspect space; Chapman uses the screen centre,

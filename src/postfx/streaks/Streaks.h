@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Anamorphic streaks: a long horizontal blur of the 1/4-res bright image, built the way
 // Kawase (GDC 2003, the seed's source) and Oat ("Real-Time 3D Scene Post-Processing", GDC
 // 2003) build streaks: a few passes of 4 taps, pass p spaced 4^p texels apart, tap k weighted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL of the Streaks pass (included by the GL chain only): streaks.frag and what it needs.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The composite's display curve on one pixel: none, or a curve of src/core/ToneCurves.h on
 // exposure x colour, alpha untouched. None leaves the values linear (an 8-bit file then clips
 // at 1). Twin: shaders/tone_map.glsl.

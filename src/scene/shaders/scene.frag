@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Lambert lighting from the sun (its irradiance: radiance x the disc's solid angle, so a sun of
 // 2,400 and 1.5 degrees lights surfaces to about 5) times its shadow-map visibility, plus a
 // flat sky ambient.

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Scene geometry: world-space positions, normals and colours, one draw for all objects. The
 // shadow pass uses it too, with the sun's view-projection.
 layout(location = 0) in vec3 position;

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Sky behind everything: a gradient by elevation and the sun disc at infinity, colour x
 // intensity inside its angular radius. The view ray comes from the inverse view-projection.
 uniform mat4 inverseViewProjection;

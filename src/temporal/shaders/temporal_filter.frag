@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // TemporalFilter::update (src/temporal/TemporalFilter.cpp) on the GPU, line for line: one
 // 1x1 fragment reads the previous state and the method's raw coverage and writes the new
 // state (coverage, edge fade, exposure, flare weight). Edge fade comes from the CPU: it needs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tonemapAcesFitted (src/core/Tonemap.cpp) on the GPU: acesFitted (tone_curves.glsl, linked
 // in front of this) per channel of exposure x colour, alpha untouched. The exposure comes from
 // a 1x1 texture (the temporal filter's adapted exposure) so the CPU never reads it.

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Burnout chain, pass 3: the binary sub-cell mask into the 14 x 14 grid. A cell holds
 // (visible x weight, weight): weight = its share of sub-cells in the disc x cos^3 of its
 // centre's angle to the axis (solid angle) x the chain's compensation, so that the uneven

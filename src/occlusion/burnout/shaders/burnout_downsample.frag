@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Burnout chain, passes 4-7: one bilinear tap per destination texel (14 -> 8 -> 4 -> 2 -> 1),
 // as the PSP's texture unit does it. Not a box filter: at 14 -> 8 the taps weigh the source
 // texels unevenly (1/8 to 7/8), which the combine pass compensates. 16-bit targets keep the

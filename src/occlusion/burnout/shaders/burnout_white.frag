@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Burnout chain, pass 1: the white rectangle, drawn without depth test over the sun's square.
 // The square's 14 x 14 cells are split into sub-cells (4 x 4 each), the mask's texels. Each
 // sub-cell also lays the frame's depth at its centre into the mask's own depth buffer (the PSP

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // `compute`, pass 2: one work group adds up the partial sums and writes visible / total into
 // the 1x1 coverage image in place; nothing leaves the GPU.
 layout(local_size_x = 256) in;

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // `compute`, pass 1: each 16x16 work group sums, over its pixels of the disc's box, the disc
 // weight of sky pixels (depth at the cleared 1.0) and of all pixels, by a shared-memory tree
 // reduction, and writes the pair to its slot of the partial sums. Built twice: with MULTISAMPLE

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // Sun map, step 1 (GPG2 step 3): the sun drawn white through the sun camera, whose viewport
 // the disc fills. G marks the texels of the disc for the normalisation and stays when the
 // occluders (drawn next, red channel only) blacken R. A multisampled map is shaded per sample

@@ -1,4 +1,5 @@
 #version 450 core
+// SPDX-License-Identifier: Apache-2.0
 // texture-mask-screen: the sun map built from the main frame's depth instead of a re-render.
 // Each texel is split into 4 x 4 sub-texels whose rays (through the sun camera, below) are
 // projected into the main frame; a sub-texel is sun when the frame shows sky there (depth

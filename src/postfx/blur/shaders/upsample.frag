@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/blur/Upsample.h: U(k) = (D(k) + spread * tent(U(k+1))) * scale.
 layout(binding = 0) uniform sampler2D fine;
 layout(binding = 1) uniform sampler2D coarse;

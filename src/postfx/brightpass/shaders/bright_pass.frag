@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/brightpass/BrightPass.h (read that for the why).
 layout(binding = 0) uniform sampler2D inputImage;
 uniform float threshold, knee, ceiling;

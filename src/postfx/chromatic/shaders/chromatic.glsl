@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/chromatic/Chromatic.h: red outward, blue inward.
 vec4 flareAt(sampler2D ghosts, sampler2D halo, vec2 uv) {
     precise vec4 sum = bilinear(ghosts, uv) + bilinear(halo, uv);

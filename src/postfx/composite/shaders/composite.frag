@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/composite/Composite.h: input + upsampled lens, then the display curve.
 layout(binding = 0) uniform sampler2D inputImage;
 layout(binding = 1) uniform sampler2D lens;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/composite/Lens.h: bloom + flare, times dirt.
 layout(binding = 0) uniform sampler2D bloom;
 layout(binding = 1) uniform sampler2D ghosts;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/downsample/Downsample.h: Jimenez's 13-tap downsample.
 layout(binding = 0) uniform sampler2D source;
 uniform vec2 invOutSize, srcTexel;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/ghosts/Ghosts.h: the seed's LensFlarePS, one iteration per ghost.
 layout(binding = 0) uniform sampler2D bloom;
 uniform vec2 invOutSize, sourceTexel;

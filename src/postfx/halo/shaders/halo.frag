@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/halo/Halo.h: Chapman's halo, aspect-correct.
 layout(binding = 0) uniform sampler2D bloom;
 uniform vec2 invOutSize;

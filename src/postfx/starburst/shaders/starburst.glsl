@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/starburst/Starburst.h: modulation by angle about each bright source.
 uniform float starIntensity, starWidth;
 uniform int starSpokes;

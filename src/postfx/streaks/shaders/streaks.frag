@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/streaks/Streaks.h: one 4-tap pass of a one-sided streak chain.
 layout(binding = 0) uniform sampler2D source;
 layout(binding = 1) uniform sampler2D other;

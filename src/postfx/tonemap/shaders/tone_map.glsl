@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Twin of src/postfx/tonemap/ToneCurves.h (needs tone_curves.glsl). op: 0 none, 1 aces, 2 filmic.
 vec4 toneMap(vec4 c, int op, float exposure) {
     if (op == 0) return c;

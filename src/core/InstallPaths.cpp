@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "core/InstallPaths.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <string>
+
+// The install layout, as paths relative to the folder of the installed executable and of the
+// installed shared library (src/CMakeLists.txt computes them from GNUInstallDirs): relative, so
+// nothing of the build machine is in the binaries.
+#ifndef FLAREKIT_BIN_TO_PRESETS
+#define FLAREKIT_BIN_TO_PRESETS "../share/flarekit/presets"
+#endif
+#ifndef FLAREKIT_LIB_TO_PRESETS
+#define FLAREKIT_LIB_TO_PRESETS "../share/flarekit/presets"
+#endif
+#ifndef FLAREKIT_BIN_TO_MODULES
+#define FLAREKIT_BIN_TO_MODULES "../lib/flarekit"
+#endif
+#ifndef FLAREKIT_LIB_TO_MODULES
+#define FLAREKIT_LIB_TO_MODULES "flarekit"
+#endif
+
+namespace flarekit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path runningExecutable() {
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? fs::path() : exe;
+}
+
+//! The shared library this code was linked into, or empty when it is in the executable itself
+//! (the static core linked into a program: then the executable's prefix is the one).
+fs::path containingSharedLibrary() {
+    Dl_info info{};
+    if (!dladdr(reinterpret_cast<void*>(&containingSharedLibrary), &info) || !info.dli_fname)
+        return {};
+    std::error_code ec;
+    const fs::path library = fs::weakly_canonical(fs::path(info.dli_fname), ec);
+    const fs::path exe = runningExecutable();
+    if (ec || library.empty() || fs::equivalent(library, exe, ec)) return {};
+    return library;
+}
+
+struct BuildTree {
+    fs::path source, binary;
+};
+
+//! When the executable runs from flarekit's own build tree (the CLI, the tests, the benches),
+//! that tree's CMakeCache.txt, found at most three folders up, names the source and build
+//! folders. An installed executable has no such file above it.
+std::optional<BuildTree> buildTree() {
+    fs::path dir = runningExecutable().parent_path();
+    for (int up = 0; up < 4 && !dir.empty(); ++up, dir = dir.parent_path()) {
+        std::ifstream cache(dir / "CMakeCache.txt");
+        if (!cache) continue;
+        BuildTree tree;
+        for (std::string line; std::getline(cache, line);) {
+            for (const auto& [key, field] :
+                 {std::pair{"flarekit_SOURCE_DIR:STATIC=", &tree.source},
+                  std::pair{"flarekit_BINARY_DIR:STATIC=", &tree.binary}}) {
+                if (line.rfind(key, 0) == 0) *field = line.substr(std::string(key).size());
+            }
+        }
+        if (!tree.source.empty() && !tree.binary.empty()) return tree;
+        if (dir == dir.parent_path()) break;
+    }
+    return std::nullopt;
+}
+
+void addFolder(std::vector<fs::path>& out, const fs::path& dir) {
+    std::error_code ec;
+    if (dir.empty() || !fs::is_directory(dir, ec)) return;
+    const fs::path clean = fs::weakly_canonical(dir, ec);
+    if (std::find(out.begin(), out.end(), clean) == out.end()) out.push_back(clean);
+}
+
+}  // namespace
+
+std::vector<fs::path> shippedPresetRoots() {
+    std::vector<fs::path> roots;
+    if (const char* env = std::getenv("FLAREKIT_DATA_DIR"); env && *env) addFolder(roots, env);
+    if (const fs::path exe = runningExecutable(); !exe.empty())
+        addFolder(roots, exe.parent_path() / FLAREKIT_BIN_TO_PRESETS);
+    if (const fs::path library = containingSharedLibrary(); !library.empty())
+        addFolder(roots, library.parent_path() / FLAREKIT_LIB_TO_PRESETS);
+    if (const auto tree = buildTree()) addFolder(roots, tree->source / "presets");
+    return roots;
+}
+
+fs::path shippedOcioConfig() {
+    for (const fs::path& root : shippedPresetRoots()) {
+        std::error_code ec;
+        const fs::path config = root / "ocio" / "flarekit.ocio";
+        if (fs::is_regular_file(config, ec)) return config;
+    }
+    return {};
+}
+
+std::vector<fs::path> oiioModuleCandidates() {
+    constexpr const char* kModule = "libflarekit_oiio.so";
+    std::vector<fs::path> out;
+    if (const fs::path exe = runningExecutable(); !exe.empty())
+        out.push_back(exe.parent_path() / FLAREKIT_BIN_TO_MODULES / kModule);
+    if (const fs::path library = containingSharedLibrary(); !library.empty())
+        out.push_back(library.parent_path() / FLAREKIT_LIB_TO_MODULES / kModule);
+    if (const auto tree = buildTree()) out.push_back(tree->binary / "src" / kModule);
+    return out;
+}
+
+}  // namespace flarekit

@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Documentation that runs: every ```sh block of README.md and docs/*.md, in order, one temporary
+# folder per Markdown file (so a page's blocks build on each other as a reader's would), with
+# `flarekit` on PATH, the repository's samples/, presets/, examples/ and build/ beside, and the
+# small inputs the pages name (photo.exr, plate/sh010.####.exr, sun.csv, ...) made from the
+# shipped samples. A block fails the test when it exits non-zero, when a file it names with -o
+# is missing, or when an image it wrote does not decode. A block that cannot run here is marked
+# in the Markdown on the line before it, and is listed by name as skipped:
+#   <!-- docs-test: skip: the reason -->
+#   run-doc-blocks.sh SOURCE_DIR BUILD_DIR CLI [PAGE.md ...]
+set -uo pipefail
+src="$(cd "$1" && pwd)"
+build="$(cd "$2" && pwd)"
+cli="$(readlink -f "$3")"
+shift 3
+pages=("$@")
+[ ${#pages[@]} -gt 0 ] || pages=("$src/README.md" "$src"/docs/*.md)
+work="$(mktemp -d "${TMPDIR:-/tmp}/flarekit-docs.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/bin"
+ln -s "$cli" "$work/bin/flarekit"
+export PATH="$work/bin:$PATH"
+unset OCIO FLAREKIT_PRESET_PATH FLAREKIT_DATA_DIR DISPLAY
+
+# --- the inputs the pages name, made once from the shipped samples (small, so blocks are fast)
+fixtures="$work/fixtures"
+mkdir -p "$fixtures/plate" "$fixtures/fg"
+(
+  set -e
+  cd "$fixtures"
+  oiiotool "$src/samples/sunset-hdr.exr" --resize 320x180 -o photo.exr
+  cp photo.exr sky.exr
+  oiiotool "$src/samples/sunset.png" --resize 320x180 -o photo.jpg
+  # the PSP's 480x272 screen with an occluder box
+  oiiotool --pattern constant:color=1,1,1 480x272 3 --box:color=0,0,0:fill=1 200,60,300,200 \
+    -d uint8 -o MASK.png
+  oiiotool --pattern noise:type=uniform:min=0.6:max=1 64x64 1 -d uint8 -o my-dust.png
+  cp "$src/presets/subtle.json" my.json
+  cp "$src/presets/postfx/killzone2.json" my-postfx.json
+  cp "$src/tests/package/c_api_check.c" app.c
+  # a 240-frame plate (1001-1240), its foreground matte and a track of its sun
+  oiiotool "$src/samples/sunset-hdr.exr" --resize 160x90 -o plate/sh010.1001.exr
+  oiiotool --pattern constant:color=0 160x90 1 --box:color=1:fill=1 0,60,40,89 -d half -o fg/fg.1001.exr
+  for f in $(seq 1002 1240); do
+    cp plate/sh010.1001.exr "plate/sh010.$f.exr"
+    cp fg/fg.1001.exr "fg/fg.$f.exr"
+  done
+  printf 'frame,x,y\n1001,116.5,31\n1240,120,33.5\n' > sun.csv
+) > "$work/fixtures.log" 2>&1 || { echo "docs: making the inputs failed:"; cat "$work/fixtures.log"; exit 1; }
+
+# --- the blocks: FILE:LINE, its skip reason if marked, its text with the fence's indent removed
+extract() {  # page outdir -> outdir/NNN.sh and outdir/NNN.meta ("LINE<TAB>skip reason")
+  awk -v out="$2" '
+    function flush() { close(file) }
+    /^ *```sh *$/ && !inblock {
+      inblock = 1; n++; indent = match($0, /[^ ]/) - 1
+      file = sprintf("%s/%03d.sh", out, n)
+      meta = sprintf("%s/%03d.meta", out, n)
+      reason = ""
+      if (prev ~ /<!-- docs-test: skip: .* -->/) {
+        reason = prev; sub(/.*<!-- docs-test: skip: /, "", reason); sub(/ *-->.*/, "", reason)
+      }
+      printf "%d\t%s\n", NR, reason > meta; close(meta)
+      printf "" > file
+      next
+    }
+    /^ *``` *$/ && inblock { inblock = 0; flush(); next }
+    inblock { print substr($0, indent + 1) >> file; next }
+    NF { prev = $0 }
+  ' "$1"
+}
+
+status=0 ran=0 skipped=0
+for page in "${pages[@]}"; do
+  name="$(basename "$page" .md)"
+  dir="$work/run-$name"
+  blocks="$work/blocks-$name"
+  mkdir -p "$dir" "$blocks"
+  cp -r "$fixtures/." "$dir/"
+  for shared in samples presets examples; do ln -s "$src/$shared" "$dir/$shared"; done
+  ln -s "$build" "$dir/build"
+  extract "$page" "$blocks"
+  for block in "$blocks"/*.sh; do
+    [ -e "$block" ] || continue
+    IFS=$'\t' read -r line reason < "${block%.sh}.meta"
+    where="${page#"$src"/}:$line"
+    if [ -n "$reason" ]; then
+      echo "docs: SKIP $where: $reason"
+      skipped=$((skipped + 1))
+      continue
+    fi
+    touch "$work/stamp"
+    sleep 0.01
+    start=$(date +%s)
+    if ! (cd "$dir" && bash -euo pipefail "$block") > "$work/log" 2>&1; then
+      echo "docs: FAIL $where: the block exited non-zero:"
+      sed 's/^/    /' "$block"
+      tail -n 20 "$work/log" | sed 's/^/  | /'
+      status=1
+      continue
+    fi
+    problems=""
+    # Every -o target exists (a frame pattern: at least one frame of it).
+    for target in $(grep -o -- '-o [^ ]*' "$block" | cut -d' ' -f2); do
+      pattern="$(sed -e 's/#\+/*/g' -e 's/%0[0-9]d/*/g' <<<"$target")"
+      # shellcheck disable=SC2086
+      ( cd "$dir" && compgen -G "$pattern" > /dev/null ) || problems+=" no $target;"
+    done
+    # Every image it wrote decodes completely: OpenImageIO's iinfo computes each one's pixel
+    # statistics (one process for them all; it reports a failed read in its output).
+    find "$dir" -newer "$work/stamp" -type f \( -name '*.png' -o -name '*.exr' -o -name '*.jpg' \
+      -o -name '*.tif' -o -name '*.ppm' \) -print0 | xargs -0 -r iinfo --stats > "$work/stats" 2>&1
+    if grep -q -E "unable to compute|Error|error" "$work/stats"; then
+      problems+=" an image it wrote does not decode: $(grep -m 3 -E 'Error|error' "$work/stats");"
+    fi
+    if [ -n "$problems" ]; then
+      echo "docs: FAIL $where:$problems"
+      status=1
+    else
+      echo "docs: ok   $where ($(( $(date +%s) - start )) s)"
+      ran=$((ran + 1))
+    fi
+  done
+done
+echo "docs: $ran blocks ran, $skipped skipped by their mark"
+exit $status
