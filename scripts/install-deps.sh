@@ -5,16 +5,18 @@
 set -euo pipefail
 
 packages=(
+  # the compiler, CMake, Ninja, pkg-config and git that build flarekit
   build-essential cmake ninja-build pkg-config git
   # the formatting check of ./setup.sh test (.clang-format)
   clang-format
-  # image I/O: EXR, PNG, JPEG and TIFF through their own libraries (fast start-up), every other
-  # format through OpenImageIO, loaded only when needed; oiiotool for the tests and benches
+  # image I/O: EXR, PNG, JPEG and TIFF through their own libraries (fast start-up)
   libopenexr-dev libimath-dev libpng-dev libjpeg62-turbo-dev libtiff-dev
   # OpenEXR's ZIP chunks deflated and inflated by libdeflate instead of zlib (3x faster)
   libdeflate-dev zlib1g-dev
-  # ... and at level 1, the default, by ISA-L's igzip (3-5x faster than libdeflate's level 1)
+  # OpenEXR's ZIP level 1, the default, deflated by ISA-L's igzip (3-5x faster than libdeflate's)
   libisal-dev
+  # every other image format through OpenImageIO, loaded only when needed; oiiotool and iinfo
+  # for the tests and benches
   libopenimageio-dev openimageio-tools
   # JSON presets and scenes, CLI parsing, threads
   nlohmann-json3-dev libcli11-dev libtbb-dev
@@ -25,8 +27,10 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # contact-sheet labels are rendered by OIIO with this font
   fonts-dejavu-core
-  # headless OpenGL (later issues; Mesa llvmpipe gives GL without a GPU)
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg
+  # headless OpenGL 4.5 through EGL (Mesa llvmpipe gives GL without a GPU)
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+  # the demo's and shots' MP4 (run as a program, not linked)
+  ffmpeg
   # the embedding example opens a window with GLFW when there is a display
   libglfw3-dev
   # the embedding example's window test runs it on a private X server (Xvfb, local socket only)
@@ -38,6 +42,21 @@ packages=(
   # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
   clang libclang-rt-14-dev
 )
+
+# --markdown: the list above as Markdown bullets (each group's packages and its comment), which
+# the README's dependency paragraph is (tests/docs/check-readme-deps.sh compares them).
+if [ "${1:-}" = "--markdown" ]; then
+  awk '
+    /^packages=\(/ { inlist = 1; next }
+    inlist && /^\)/ { if (pkgs != "") print "- " pkgs ": " why; exit }
+    inlist && /^ *#/ {
+      if (pkgs != "") { print "- " pkgs ": " why; pkgs = ""; why = "" }
+      line = $0; sub(/^ *# */, "", line); why = (why == "" ? line : why " " line); next
+    }
+    inlist && NF { for (i = 1; i <= NF; i++) pkgs = pkgs (pkgs == "" ? "" : ", ") "`" $i "`" }
+  ' "$0"
+  exit 0
+fi
 
 missing=()
 for p in "${packages[@]}"; do
