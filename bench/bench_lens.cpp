@@ -6,8 +6,8 @@
 
 #include "flarekit/Lens.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/GpuLens.h"
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/GpuLens.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 
 using namespace flarekit;

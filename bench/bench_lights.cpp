@@ -22,11 +22,11 @@
 
 #include "LightScenes.h"
 #include "engine/EngineInput.h"
-#include "flarekit/EngineScene.h"
-#include "flarekit/GpuTimer.h"
-#include "flarekit/HeadlessGl.h"
-#include "flarekit/Render.h"
 #include "flarekit/flarekit.h"
+#include "flarekit/gl/EngineScene.h"
+#include "flarekit/gl/GpuTimer.h"
+#include "flarekit/gl/HeadlessGl.h"
+#include "flarekit/gl/Render.h"
 
 using namespace flarekit;
 

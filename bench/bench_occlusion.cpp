@@ -33,12 +33,12 @@
 
 #include <epoxy/gl.h>
 #include "flarekit/Demo.h"
-#include "flarekit/GpuFlare.h"
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/GpuFlare.h"
+#include "flarekit/gl/GpuVisibility.h"
 
-#include "flarekit/GpuTimer.h"
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/GpuTimer.h"
+#include "flarekit/gl/HeadlessGl.h"
 #include "scene/CameraMath.h"
 
 using namespace flarekit;

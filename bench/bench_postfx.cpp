@@ -11,8 +11,8 @@
 #include <map>
 
 #include "PostFxImages.h"
-#include "flarekit/HeadlessGl.h"
 #include "flarekit/PostFx.h"
+#include "flarekit/gl/HeadlessGl.h"
 
 using namespace flarekit;
 

@@ -9,10 +9,11 @@
 
 #include <epoxy/gl.h>
 #include "flarekit/Demo.h"
-#include "flarekit/Render.h"
+#include "flarekit/gl/DemoAnimation.h"
+#include "flarekit/gl/Render.h"
 
-#include "flarekit/GpuTimer.h"
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/GpuTimer.h"
+#include "flarekit/gl/HeadlessGl.h"
 
 using namespace flarekit;
 

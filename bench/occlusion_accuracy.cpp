@@ -10,9 +10,9 @@
 
 #include "GpuMeasure.h"
 #include "OcclusionScenes.h"
-#include "flarekit/GpuVisibility.h"
-#include "flarekit/HeadlessGl.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/GpuVisibility.h"
+#include "flarekit/gl/HeadlessGl.h"
 
 using namespace flarekit;
 

@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: core-apply IN OUT [PRESET]\n");
         return 2;
     }
-    auto loaded = flarekit::readImage(argv[1]);                            // Result<LoadedImage>
+    auto loaded = flarekit::readImage(argv[1]);  // Result<LoadedImage>
     auto preset = flarekit::loadPreset(argc > 3 ? argv[3] : "tanczos-classic");  // Result<Preset>
     if (!loaded || !preset) {  // .error().message is one line
         std::fprintf(stderr, "%s\n", (!loaded ? loaded.error() : preset.error()).message.c_str());

@@ -8,9 +8,8 @@
 #include <string>
 
 #include "flarekit/Flare.h"
-#include "flarekit/FramePipeline.h"
 #include "flarekit/Image.h"
-#include "flarekit/Render.h"
+#include "flarekit/Param.h"
 #include "flarekit/Scene.h"
 #include "flarekit/Temporal.h"
 
@@ -51,30 +50,5 @@ inline constexpr Param<DemoSettings> kDemoParams[] = {
 
 //! Range checks of every setting (no GL needed); errors name the setting.
 Status validateDemoSettings(const DemoSettings& settings);
-
-//! A frame of the drive: the pipeline's frame and when in the drive it is.
-struct DemoFrame : PipelineFrame {
-    double time = 0;  //!< seconds into the drive
-};
-
-//! Renders the demo frame by frame (in order: the temporal filter carries state). A GL
-//! context must be current on the calling thread while it lives.
-class DemoAnimation {
-  public:
-    static Result<DemoAnimation> create(const DemoSettings& settings, const Preset& preset);
-    ~DemoAnimation();
-    DemoAnimation(DemoAnimation&&) noexcept;
-    DemoAnimation& operator=(DemoAnimation&&) noexcept;
-
-    int frameCount() const;
-    std::size_t primitiveCount() const;  //!< objects in the world (triangles, spheres, boxes)
-    //! The next frame (0, 1, 2, ...); an error past the last.
-    Result<DemoFrame> next();
-
-  private:
-    struct Impl;
-    explicit DemoAnimation(std::unique_ptr<Impl> impl);
-    std::unique_ptr<Impl> m;
-};
 
 }  // namespace flarekit

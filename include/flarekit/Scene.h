@@ -23,6 +23,9 @@ struct SceneCamera {
     double nearPlane = 0.1, farPlane = 2000;
 };
 inline constexpr double kSceneAnyCoordinate = -kParamUnbounded;
+//! The MSAA sample counts a scene may be rendered with: those every GL 4.5 implementation
+//! supports for RGBA8/depth targets (the GL renderer's and the demo's "msaa" choices).
+inline constexpr int kMsaaSampleCounts[] = {1, 2, 4, 8};
 inline constexpr Param<SceneCamera> kSceneCameraParams[] = {
     required(param<&SceneCamera::position>("position", kSceneAnyCoordinate, kParamUnbounded, "m",
                                            "eye point")),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The sprite flare of a scene's sun (GL-free): the flare added to a frame on the CPU, scaled
-// by the sun's measured coverage. The GPU path (flarekit/GpuFlare.h) reports the same FlaredFrame.
+// by the sun's measured coverage. The GPU path (flarekit/gl/GpuFlare.h) reports the same
+// FlaredFrame.
 #pragma once
 
 #include "flarekit/Flare.h"

@@ -46,7 +46,7 @@ inline constexpr Param<RaycastOptions> kRaycastParams[] = {
 };
 
 //! The contract's GPU method names (readback pbo query texture-mask texture-mask-screen burnout
-//! compute), known to every build; creating one needs the GL library (flarekit/GpuVisibility.h).
+//! compute), known to every build; creating one needs the GL library (flarekit/gl/GpuVisibility.h).
 const std::vector<std::string>& gpuVisibilityMethods();
 bool isGpuVisibilityMethod(const std::string& name);
 //! "raycast readback pbo ...": every method name, for error messages.

@@ -5,7 +5,8 @@
 
 #include "demo/DemoWorld.h"
 #include "flarekit/Demo.h"
-#include "flarekit/FramePipeline.h"
+#include "flarekit/gl/DemoAnimation.h"
+#include "flarekit/gl/FramePipeline.h"
 
 namespace flarekit {
 

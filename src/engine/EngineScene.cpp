@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "flarekit/EngineScene.h"
+#include "flarekit/gl/EngineScene.h"
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 // small program, drawn from each light's sun-map camera by the engine's callback.
 #include <epoxy/gl.h>
 
-#include "flarekit/EngineScene.h"
+#include "flarekit/gl/EngineScene.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/MeshDraw.h"

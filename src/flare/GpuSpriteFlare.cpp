@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "flare/ElementSprites.h"
-#include "flarekit/GpuFlare.h"
+#include "flarekit/gl/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"

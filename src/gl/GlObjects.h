@@ -5,7 +5,7 @@
 
 #include <epoxy/gl.h>
 
-#include "flarekit/GpuTimer.h"
+#include "flarekit/gl/GpuTimer.h"
 
 #include <string>
 #include <utility>

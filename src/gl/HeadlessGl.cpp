@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/HeadlessGl.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>

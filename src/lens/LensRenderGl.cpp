@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// The OpenGL ghost rasteriser of `lens render --backend gl` (see flarekit/GpuLens.h).
+// The OpenGL ghost rasteriser of `lens render --backend gl` (see flarekit/gl/GpuLens.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 
-#include "flarekit/GpuLens.h"
+#include "flarekit/gl/GpuLens.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "lens/GhostMesh.h"

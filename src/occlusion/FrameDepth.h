@@ -8,7 +8,7 @@
 #include <array>
 #include <initializer_list>
 
-#include "flarekit/Render.h"
+#include "flarekit/gl/Render.h"
 #include "gl/GlObjects.h"
 
 namespace flarekit::occlusion {

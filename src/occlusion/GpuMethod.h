@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "flarekit/GpuVisibility.h"
+#include "flarekit/gl/GpuVisibility.h"
 #include "gl/GlObjects.h"
 #include "occlusion/SunDisc.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The GPU method factory: contract names to implementations (one folder each).
-#include "flarekit/GpuVisibility.h"
+#include "flarekit/gl/GpuVisibility.h"
 #include "gl/GlObjects.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 // edges to a sample, not a pixel.
 #pragma once
 
-#include "flarekit/Render.h"
+#include "flarekit/gl/Render.h"
 #include "gl/GlObjects.h"
 #include "occlusion/SunDisc.h"
 

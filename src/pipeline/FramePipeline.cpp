@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// The frame pipeline (flarekit/FramePipeline.h): one wiring of scene -> coverage -> temporal
+// The frame pipeline (flarekit/gl/FramePipeline.h): one wiring of scene -> coverage -> temporal
 // filter -> flare -> tone map, with a CPU and a GPU variant of the last three.
-#include "flarekit/FramePipeline.h"
+#include "flarekit/gl/FramePipeline.h"
 
 #include <chrono>
 #include <optional>
 
-#include "flarekit/GpuFlare.h"
 #include "flarekit/Tonemap.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/GpuFlare.h"
 #include "scene/CameraMath.h"
 
 namespace flarekit {

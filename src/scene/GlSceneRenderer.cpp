@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "flarekit/Color.h"
-#include "flarekit/Render.h"
+#include "flarekit/gl/Render.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"

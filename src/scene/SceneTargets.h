@@ -5,7 +5,7 @@
 
 #include <epoxy/gl.h>
 
-#include "flarekit/Render.h"
+#include "flarekit/gl/Render.h"
 
 namespace flarekit {
 

@@ -3,7 +3,7 @@
 // (read the previous, write the next), so no state ever leaves the GPU.
 #include <array>
 
-#include "flarekit/GpuFlare.h"
+#include "flarekit/gl/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 

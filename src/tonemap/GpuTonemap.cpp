@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // GpuTonemap: shaders/tonemap_aces.frag from the renderer's HDR colour into an RGBA16F
 // display target (linear [0, 1], like tonemapAcesFitted's output).
-#include "flarekit/GpuFlare.h"
+#include "flarekit/gl/GpuFlare.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/SceneTargets.h"

@@ -5,6 +5,7 @@
 
 #include "GlTestContext.h"
 #include "flarekit/Demo.h"
+#include "flarekit/gl/DemoAnimation.h"
 
 using namespace flarekit;
 

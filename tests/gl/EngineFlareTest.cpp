@@ -16,12 +16,12 @@
 #include "GlTestContext.h"
 #include "LightScenes.h"
 #include "flarekit/Flare.h"
-#include "flarekit/Render.h"
 #include "flarekit/SunFlare.h"
 #include "flarekit/Temporal.h"
 #include "flarekit/Visibility.h"
 #include "flarekit/flarekit.h"
 #include "flarekit/flarekit.hpp"
+#include "flarekit/gl/Render.h"
 #include "scene/SceneTargets.h"
 
 using namespace flarekit;

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "GlTestContext.h"
-#include "flarekit/GpuFlare.h"
-#include "flarekit/GpuVisibility.h"
-#include "flarekit/HeadlessGl.h"
 #include "flarekit/PostFx.h"
-#include "flarekit/Render.h"
+#include "flarekit/gl/GpuFlare.h"
+#include "flarekit/gl/GpuVisibility.h"
+#include "flarekit/gl/HeadlessGl.h"
+#include "flarekit/gl/Render.h"
 #include "gl/GlObjects.h"
 
 using namespace flarekit;

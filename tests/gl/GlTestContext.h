@@ -7,7 +7,7 @@
 
 #include <cstdlib>
 
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/HeadlessGl.h"
 
 namespace flarekit::test {
 

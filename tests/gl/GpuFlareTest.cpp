@@ -10,9 +10,9 @@
 
 #include <epoxy/gl.h>
 #include "GlTestContext.h"
-#include "flarekit/GpuFlare.h"
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/Tonemap.h"
+#include "flarekit/gl/GpuFlare.h"
+#include "flarekit/gl/GpuVisibility.h"
 
 #include "scene/CameraMath.h"
 

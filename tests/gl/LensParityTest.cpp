@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "GlTestContext.h"
-#include "flarekit/GpuLens.h"
+#include "flarekit/gl/GpuLens.h"
 
 namespace flarekit {
 namespace {

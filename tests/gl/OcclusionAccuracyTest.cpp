@@ -13,8 +13,8 @@
 #include "GlTestContext.h"
 #include "GpuMeasure.h"
 #include "OcclusionScenes.h"
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/GpuVisibility.h"
 
 using namespace flarekit;
 

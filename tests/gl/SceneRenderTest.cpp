@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "GlTestContext.h"
-#include "flarekit/Render.h"
+#include "flarekit/gl/Render.h"
 #include "scene/CameraMath.h"
 
 using namespace flarekit;

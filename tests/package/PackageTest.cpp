@@ -226,6 +226,26 @@ TEST(Package, AMovedInstallFindsItsOwnFilesLinksNoGplCodeAndBuildsTheCoreExample
           "share/doc/flarekit/NOTICE", "share/doc/flarekit/architecture.md",
           "share/doc/flarekit/examples/core-apply/main.cpp", "include/flarekit/Flare.h"})
         EXPECT_TRUE(fs::exists(fs::path(moved) / file)) << file;
+    // Each installed core header compiles on its own with nothing but the installed include
+    // folder: none pulls in OpenGL (those are under flarekit/gl/) or an uninstalled header.
+    int coreHeaders = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(moved) / "include/flarekit")) {
+        if (!entry.is_regular_file()) continue;
+        const std::string name = entry.path().filename().string();
+        if (name == "flarekit.h" || name == "flarekit.hpp") continue;  // the C API's
+        ++coreHeaders;
+        EXPECT_EQ(run("echo '#include <flarekit/" + name +
+                          ">' | c++ -std=c++20 -fsyntax-only -x c++ -I" + moved + "/include -",
+                      log),
+                  0)
+            << name << ": " << slurp(log);
+        const std::string text = slurp(entry.path().string());
+        EXPECT_EQ(text.find("#include \"flarekit/gl/"), std::string::npos) << name;
+        EXPECT_EQ(text.find("epoxy"), std::string::npos) << name;
+    }
+    EXPECT_GE(coreHeaders, 15);
+    EXPECT_TRUE(fs::exists(fs::path(moved) / "include/flarekit/gl/HeadlessGl.h"));
+
     // Nothing of this machine's source or build folders is compiled into what is installed.
     for (const auto& entry : fs::recursive_directory_iterator(fs::path(moved) / "lib")) {
         if (!entry.is_regular_file() || entry.path().extension() == ".cmake" ||

@@ -13,8 +13,8 @@
 #include <numbers>
 #include <vector>
 
-#include "flarekit/EngineScene.h"
 #include "flarekit/flarekit.h"
+#include "flarekit/gl/EngineScene.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
 #include "scene/SceneMesh.h"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/GpuVisibility.h"
 
 namespace flarekit::test {
 

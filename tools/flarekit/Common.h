@@ -17,7 +17,7 @@
 #include "flarekit/PostFxParams.h"
 #include "flarekit/Result.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 
 namespace flarekit::cli {

@@ -21,11 +21,12 @@
 #include "core/Interrupt.h"
 #include "core/Parallel.h"
 #include "flarekit/Demo.h"
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Limits.h"
+#include "flarekit/gl/DemoAnimation.h"
+#include "flarekit/gl/GpuVisibility.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 
 namespace flarekit::cli {

@@ -6,10 +6,10 @@
 #include <map>
 #include <memory>
 
-#include "flarekit/EngineScene.h"
-#include "flarekit/GpuTimer.h"
-#include "flarekit/HeadlessGl.h"
 #include "flarekit/flarekit.h"
+#include "flarekit/gl/EngineScene.h"
+#include "flarekit/gl/GpuTimer.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 #include <cstdio>
 

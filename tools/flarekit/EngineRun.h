@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "flarekit/Image.h"
-#include "flarekit/Render.h"
 #include "flarekit/Result.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/Render.h"
 
 namespace flarekit::cli {
 

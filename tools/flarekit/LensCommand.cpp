@@ -19,7 +19,7 @@
 #include "flarekit/Lens.h"
 #include "flarekit/Tonemap.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/GpuLens.h"
+#include "flarekit/gl/GpuLens.h"
 #endif
 
 namespace flarekit::cli {

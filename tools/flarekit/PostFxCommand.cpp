@@ -14,7 +14,7 @@
 #include "flarekit/PostFx.h"
 #include "flarekit/Tonemap.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 
 namespace flarekit::cli {

@@ -7,13 +7,13 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
-#include "flarekit/FramePipeline.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFxParams.h"
-#include "flarekit/Render.h"
 #include "flarekit/Tonemap.h"
+#include "flarekit/gl/FramePipeline.h"
+#include "flarekit/gl/Render.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 
 namespace flarekit::cli {

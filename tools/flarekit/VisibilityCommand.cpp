@@ -9,11 +9,11 @@
 #include "EngineRun.h"
 #include "JsonLine.h"
 #include "ParamOptions.h"
-#include "flarekit/Render.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/Render.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/GpuVisibility.h"
-#include "flarekit/HeadlessGl.h"
+#include "flarekit/gl/GpuVisibility.h"
+#include "flarekit/gl/HeadlessGl.h"
 #endif
 
 namespace flarekit::cli {

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "flarekit/GpuChannel.h"
-#include "flarekit/Render.h"
 #include "flarekit/Result.h"
 #include "flarekit/Scene.h"
+#include "flarekit/gl/GpuChannel.h"
+#include "flarekit/gl/Render.h"
 
 namespace flarekit {
 

@@ -9,11 +9,11 @@
 #include <memory>
 
 #include "flarekit/Flare.h"
-#include "flarekit/GpuChannel.h"
 #include "flarekit/Image.h"
-#include "flarekit/Render.h"
 #include "flarekit/Result.h"
 #include "flarekit/Temporal.h"
+#include "flarekit/gl/GpuChannel.h"
+#include "flarekit/gl/Render.h"
 
 namespace flarekit {
 

@@ -11,11 +11,11 @@
 #include <string>
 
 #include "flarekit/Flare.h"
-#include "flarekit/GpuVisibility.h"
 #include "flarekit/Image.h"
-#include "flarekit/Render.h"
 #include "flarekit/Scene.h"
 #include "flarekit/Temporal.h"
+#include "flarekit/gl/GpuVisibility.h"
+#include "flarekit/gl/Render.h"
 
 namespace flarekit {
 

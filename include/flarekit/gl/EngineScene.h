@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "flarekit/Render.h"
 #include "flarekit/Scene.h"
 #include "flarekit/flarekit.h"
+#include "flarekit/gl/Render.h"
 
 namespace flarekit {
 

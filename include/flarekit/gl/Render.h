@@ -22,8 +22,6 @@ struct RenderOptions {
     bool shadows = true;
     double shadowRange = 160;
 };
-//! The sample counts every GL 4.5 implementation supports for RGBA8/depth targets.
-inline constexpr int kMsaaSampleCounts[] = {1, 2, 4, 8};
 inline constexpr Param<RenderOptions> kRenderParams[] = {
     oneOf<&RenderOptions::msaaSamples>("msaa", kMsaaSampleCounts, "samples",
                                        "samples per pixel of the scene pass"),
