@@ -451,7 +451,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve: auto (filmic for HDR input to an 8/16-bit file, else none), "
                     "none, aces, filmic")
-        ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
+        ->check(CLI::IsMember(toneChoices({"auto"})))
         ->capture_default_str();
     cmd->add_option("--layers", args->layersDir,
                     "also write the flare over black (flare.exr: linear, unclamped, float) and "

@@ -299,4 +299,10 @@ ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out, SampleFo
                                                                           : ToneOperator::None;
 }
 
+std::vector<std::string> toneChoices(std::initializer_list<const char*> extra) {
+    std::vector<std::string> choices(extra.begin(), extra.end());
+    for (std::string_view name : kToneOperatorNames) choices.emplace_back(name);
+    return choices;
+}
+
 }  // namespace flarekit::cli

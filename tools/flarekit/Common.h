@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,6 +68,10 @@ inline Result<Image8> readImage8Quietly(const std::string& path) {
 //! The presets a subcommand uses when --preset is not given.
 inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
 inline constexpr const char* kDefaultPostFxPreset = "photo";
+
+//! The --tonemap choices: `extra` (a command's own words, such as "auto" or "preset") and then the
+//! curves' names as kToneOperatorNames types them, so a curve's name is written once.
+std::vector<std::string> toneChoices(std::initializer_list<const char*> extra);
 
 //! The curve a `--tonemap` value names (one of kToneOperatorNames), or nothing for a command's
 //! own default word (`auto`, `preset`).

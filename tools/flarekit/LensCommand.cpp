@@ -365,7 +365,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
         ->add_option("--tonemap", args->tonemap,
                      "display curve for 8/16-bit outputs: auto (filmic for HDR input), none, "
                      "aces, filmic")
-        ->check(CLI::IsMember({"auto", "none", "aces", "filmic"}))
+        ->check(CLI::IsMember(toneChoices({"auto"})))
         ->capture_default_str();
     render->add_option("--dirt-file", args->dirtFile,
                        "the iris plane's transmission from an image (your dust, scratches or "

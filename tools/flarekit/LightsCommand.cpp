@@ -87,7 +87,7 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve of 8/16-bit outputs: aces, filmic, none; EXR stays linear")
-        ->check(CLI::IsMember({"aces", "filmic", "none"}))
+        ->check(CLI::IsMember(toneChoices({})))
         ->capture_default_str();
     cmd->add_flag("--no-shadows", args->noShadows, "light every surface (no sun shadow map)");
     cmd->add_flag("--json", args->json,

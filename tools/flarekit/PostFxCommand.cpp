@@ -258,7 +258,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve: preset (the preset's; filmic for HDR input to an 8/16-bit file "
                     "when the preset has none), none, aces, filmic")
-        ->check(CLI::IsMember({"preset", "none", "aces", "filmic"}))
+        ->check(CLI::IsMember(toneChoices({"preset"})))
         ->capture_default_str();
     addParamOverride(cmd, "--exposure", *findParam<ToneParams>(kToneParams, "exposure"),
                      args->exposure, "the preset's");

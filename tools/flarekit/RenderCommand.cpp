@@ -106,7 +106,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve of 8/16-bit outputs: aces (the demo's), filmic, none (clipped); "
                     "EXR stays linear")
-        ->check(CLI::IsMember({"aces", "filmic", "none"}))
+        ->check(CLI::IsMember(toneChoices({})))
         ->capture_default_str();
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
     cmd->add_flag("--no-shadows", args->noShadows, "light every surface (no sun shadow map)");
