@@ -76,6 +76,17 @@ std::optional<BuildTree> buildTree() {
     return std::nullopt;
 }
 
+//! Where this process runs from: fixed for its life, so found once (the build tree's lookup
+//! reads CMakeCache.txt) rather than on every preset, lens or module lookup.
+struct Locations {
+    fs::path exe, library;
+    std::optional<BuildTree> tree;
+};
+const Locations& locations() {
+    static const Locations found{runningExecutable(), containingSharedLibrary(), buildTree()};
+    return found;
+}
+
 void addFolder(std::vector<fs::path>& out, const fs::path& dir) {
     std::error_code ec;
     if (dir.empty() || !fs::is_directory(dir, ec)) return;
@@ -88,11 +99,10 @@ void addFolder(std::vector<fs::path>& out, const fs::path& dir) {
 std::vector<fs::path> shippedPresetRoots() {
     std::vector<fs::path> roots;
     if (const char* env = std::getenv("FLAREKIT_DATA_DIR"); env && *env) addFolder(roots, env);
-    if (const fs::path exe = runningExecutable(); !exe.empty())
-        addFolder(roots, exe.parent_path() / FLAREKIT_BIN_TO_PRESETS);
-    if (const fs::path library = containingSharedLibrary(); !library.empty())
-        addFolder(roots, library.parent_path() / FLAREKIT_LIB_TO_PRESETS);
-    if (const auto tree = buildTree()) addFolder(roots, tree->source / "presets");
+    const Locations& at = locations();
+    if (!at.exe.empty()) addFolder(roots, at.exe.parent_path() / FLAREKIT_BIN_TO_PRESETS);
+    if (!at.library.empty()) addFolder(roots, at.library.parent_path() / FLAREKIT_LIB_TO_PRESETS);
+    if (at.tree) addFolder(roots, at.tree->source / "presets");
     return roots;
 }
 
@@ -108,11 +118,11 @@ fs::path shippedOcioConfig() {
 std::vector<fs::path> oiioModuleCandidates() {
     constexpr const char* kModule = "libflarekit_oiio.so";
     std::vector<fs::path> out;
-    if (const fs::path exe = runningExecutable(); !exe.empty())
-        out.push_back(exe.parent_path() / FLAREKIT_BIN_TO_MODULES / kModule);
-    if (const fs::path library = containingSharedLibrary(); !library.empty())
-        out.push_back(library.parent_path() / FLAREKIT_LIB_TO_MODULES / kModule);
-    if (const auto tree = buildTree()) out.push_back(tree->binary / "src" / kModule);
+    const Locations& at = locations();
+    if (!at.exe.empty()) out.push_back(at.exe.parent_path() / FLAREKIT_BIN_TO_MODULES / kModule);
+    if (!at.library.empty())
+        out.push_back(at.library.parent_path() / FLAREKIT_LIB_TO_MODULES / kModule);
+    if (at.tree) out.push_back(at.tree->binary / "src" / kModule);
     return out;
 }
 
