@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // Lens flares from prescriptions on 2 cores: the exact ghost analysis (`lens ghosts`), and the
 // CPU render of one light at 1920x1080 through the 22-surface zoom's brightest 66 ghosts (RGB
-// and 16 spectral samples), and `--light all` as the number of sources grows.
+// and 16 spectral samples), `--light all` as the number of sources grows, and the starburst's
+// diffraction pattern (the pupil's 2-D DFT on KissFFT, computed once per iris and cached).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <vector>
+
 #include "flarekit/Lens.h"
+#include "lens/Fraunhofer.h"
 #if FLAREKIT_HAS_GL
 #include "flarekit/gl/GpuLens.h"
 #include "flarekit/gl/HeadlessGl.h"
@@ -25,6 +30,19 @@ void BM_GhostAnalysis(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(analyseGhosts(zoom(), q).ok());
 }
 BENCHMARK(BM_GhostAnalysis)->Unit(benchmark::kMillisecond);
+
+//! The power spectrum behind one iris's PSF: an N x N disc pupil (lens render uses N = 512).
+void BM_StarburstSpectrum(benchmark::State& state) {
+    const int n = int(state.range(0));
+    std::vector<double> pupil(std::size_t(n) * std::size_t(n));
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            pupil[std::size_t(y * n + x)] = std::hypot(x - n / 2 + 0.5, y - n / 2 + 0.5) < n / 8.0;
+    for (auto _ : state) benchmark::DoNotOptimize(lens::centredPowerSpectrum(pupil, n).data());
+    state.counters["MP/s"] = benchmark::Counter(double(n) * n * 1e-6 * double(state.iterations()),
+                                                benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_StarburstSpectrum)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond);
 
 //! `sources` lights spread over the upper half of a 1080p frame, each a 10^6 sun.
 std::vector<LensLight> lights(int sources) {
