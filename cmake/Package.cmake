@@ -1,12 +1,13 @@
 # SPDX-License-Identifier: Apache-2.0
-# The installable package, one export set (flarekitTargets) of three targets:
+# The installable package, one export set (flarekitTargets) of four targets:
 #   flarekit::flarekit  libflarekit.so, the C API over flarekit::gl, exporting only fk_* (GL builds)
 #   flarekit::core      libflarekit_core.a, the GL-free C++ library
 #   flarekit::gl        libflarekit_gl.a, the OpenGL paths over core (GL builds)
+#   flarekit::ocio      libflarekit_ocio.a, the jobs' colour transform over OpenColorIO
 # with flarekitConfig.cmake (which finds the archives' own dependencies), its version file, and a
 # pkg-config file for each.
 include(CMakePackageConfigHelpers)
-set(FLAREKIT_PC_FILES flarekit-core.pc)
+set(FLAREKIT_PC_FILES flarekit-core.pc flarekit-ocio.pc)
 if(FLAREKIT_GL)
   add_library(flarekit SHARED ${PROJECT_SOURCE_DIR}/src/engine/SharedLibrary.cpp)
   add_library(flarekit::flarekit ALIAS flarekit)

@@ -229,10 +229,13 @@ TEST(Package, AMovedInstallFindsItsOwnFilesLinksNoGplCodeAndBuildsTheCoreExample
     // Each installed core header compiles on its own with nothing but the installed include
     // folder: none pulls in OpenGL (those are under flarekit/gl/) or an uninstalled header.
     int coreHeaders = 0;
-    for (const auto& entry : fs::directory_iterator(fs::path(moved) / "include/flarekit")) {
+    // The job layer (job/) and the OCIO transform (ocio/) are core headers too.
+    const fs::path includeDir = fs::path(moved) / "include/flarekit";
+    for (const auto& entry : fs::recursive_directory_iterator(includeDir)) {
         if (!entry.is_regular_file()) continue;
-        const std::string name = entry.path().filename().string();
+        const std::string name = fs::relative(entry.path(), includeDir).string();
         if (name == "flarekit.h" || name == "flarekit.hpp") continue;  // the C API's
+        if (name.rfind("gl/", 0) == 0) continue;                       // flarekit::gl's
         ++coreHeaders;
         EXPECT_EQ(run("echo '#include <flarekit/" + name +
                           ">' | c++ -std=c++20 -fsyntax-only -x c++ -I" + moved + "/include -",
@@ -311,6 +314,27 @@ TEST(Package, AMovedInstallFindsItsOwnFilesLinksNoGplCodeAndBuildsTheCoreExample
     EXPECT_NE(slurp(log).find("preset 'nonesuch': expected a JSON file or one of:"),
               std::string::npos)
         << slurp(log);
+
+    // A front end over the job layer (flarekit::core + flarekit::ocio): a 3-frame sequence with
+    // the light found, written in ACEScg, progress through its callback.
+    const std::string jobBuild = dir.file("job-apply");
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " -S " + FLAREKIT_JOB_EXAMPLE_DIR + " -B " +
+                      jobBuild + " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + moved,
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --build " + jobBuild, log), 0) << slurp(log);
+    fs::create_directories(dir.file("seq"));
+    for (const char* frame : {"seq/in.0001.png", "seq/in.0002.png", "seq/in.0003.png"})
+        fs::copy_file(sample, dir.file(frame));
+    ASSERT_EQ(run(data + jobBuild + "/job-apply " + dir.file("seq/in.####.png") + " " +
+                      dir.file("seq/out.####.exr") + " acescg",
+                  log),
+              0)
+        << slurp(log);
+    EXPECT_NE(slurp(log).find("frame 3 of 3 written"), std::string::npos) << slurp(log);
+    for (const char* frame : {"seq/out.0001.exr", "seq/out.0002.exr", "seq/out.0003.exr"})
+        EXPECT_GT(fs::file_size(dir.file(frame)), 1000u) << frame;
 
     // Licences: what the installed library, the CLI and a core program link is on the list.
     ASSERT_EQ(

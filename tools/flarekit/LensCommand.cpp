@@ -13,9 +13,9 @@
 #include <sstream>
 
 #include "Common.h"
+#include "JobOptions.h"
 #include "ParamOptions.h"
 #include "Progress.h"
-#include "ShotRun.h"
 #include "flarekit/Lens.h"
 #include "flarekit/Tonemap.h"
 #if FLAREKIT_HAS_GL
@@ -34,7 +34,7 @@ struct LensArgs {
     double fNumber = 0, threshold = 2.0, expandGain = 64.0;
     int maxSources = 32, bakeGhosts = 16, sheetWidth = 1600;
     LensRenderOptions render;
-    ShotArgs shot;
+    ShotOptions shot;
 };
 
 Result<Lens> openLens(const LensArgs& a) {
@@ -181,7 +181,7 @@ Result<ImageOutput> renderJob(const LensArgs& a, const std::string& in, const st
 #endif
     auto lens = openLens(a);
     if (!lens) return lens.error();
-    auto loaded = readInputImage(in, lensRenderMemory());
+    auto loaded = readJobInput(in, lensRenderMemory(), warningEvents());
     if (!loaded) return loaded.error();
     Image& image = loaded->image;
     // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
@@ -218,7 +218,7 @@ Result<ImageOutput> renderJob(const LensArgs& a, const std::string& in, const st
         for (int c = 0; c < 3; ++c) composite.data()[4 * i + c] += flare.data()[4 * i + c];
     }
     ToneOperator op = defaultDisplayCurve(loaded->wasFloat, out);
-    if (const auto named = namedToneOperator(a.tonemap)) op = *named;
+    if (const auto named = toneOperatorNamed(a.tonemap)) op = *named;
     toneMapImage(composite, op, 1.f);
     ImageOutput result{std::move(composite), {}};
     result.options.alpha = loaded->hasAlpha;
@@ -237,13 +237,15 @@ int runRender(const LensArgs& given) {
         a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
     }
     if (!isFramePattern(a.in)) return runImageJob(a.out, [&] { return renderJob(a, a.in, a.out); });
-    auto plan = planShot(a.in, a.out, a.shot);
+    CliRun run("lens render");
+    auto plan = planShot(a.in, a.out, a.shot, {}, run.events());
     if (!plan) return report(plan.error());
     auto parallel = framesInFlight(*plan, lensRenderMemory(), a.backend == "gl");
     if (!parallel) return report(parallel.error());
-    return runShot(*plan, "lens render", *parallel, [&](const ShotFrame& f) {
-        return renderJob(a, f.in, f.out, frameSuffix(*plan, f));
-    });
+    return run.finish(runShot(
+        *plan, *parallel,
+        [&](const ShotFrame& f) { return renderJob(a, f.in, f.out, frameSuffix(*plan, f)); },
+        run.events()));
 }
 
 int runBake(const LensArgs& a) {

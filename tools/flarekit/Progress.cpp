@@ -27,6 +27,7 @@ void Progress::update(int done) {
     const double rate = elapsed > 0 ? done / elapsed : 0;
     const double eta = rate > 0 ? (m_total - done) / rate : 0;
     if (m_tty) {
+        m_drawn = true;
         constexpr int kWidth = 30;
         const int filled = done * kWidth / m_total;
         std::string bar(std::size_t(filled), '#');
@@ -44,7 +45,8 @@ void Progress::update(int done) {
 }
 
 void Progress::finish() {
-    if (m_tty) std::fprintf(stderr, "\n");
+    if (m_tty && m_drawn) std::fprintf(stderr, "\n");
+    m_drawn = false;
 }
 
 }  // namespace flarekit::cli

@@ -12,13 +12,15 @@ class Progress {
   public:
     Progress(std::string label, int total);
     void update(int done);  //!< done items so far (monotonic)
-    void finish();          //!< ends the bar's line
+    void setTotal(int total) { m_total = total > 0 ? total : 1; }
+    void finish();  //!< ends the bar's line
 
   private:
     std::string m_label;
     int m_total;
     int m_lastDecile = -1;
     bool m_tty;
+    bool m_drawn = false;  //!< a bar is on the terminal's line
     std::chrono::steady_clock::time_point m_start;
 };
 

@@ -31,4 +31,14 @@ class HeadlessGl {
     std::string m_platform;
 };
 
+//! HeadlessGl::create with Mesa's loader warnings held back: on failure its one line says what
+//! was tried and what failed (with Mesa's first warning), instead of four lines on stderr.
+Result<std::unique_ptr<HeadlessGl>> createQuietHeadlessGl();
+
+//! A frame of width x height rendered with `msaa` samples per pixel in the current context:
+//! refused when a side is over the context's limits (GL_MAX_TEXTURE_SIZE, renderbuffer,
+//! viewport, framebuffer), naming `field` ("scene.json: image" gives "scene.json:
+//! image.width: ..."), or when its render targets and copies are over the memory budget.
+Status checkGlFrame(int width, int height, int msaa, const std::string& field);
+
 }  // namespace flarekit::gl

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ShotRun.h"
+#include "flarekit/job/ShotRun.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,37 +7,23 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <thread>
 
-#include "ParamOptions.h"
-#include "Progress.h"
 #include "core/Interrupt.h"
 #include "flarekit/Limits.h"
+#include "job/ReadClock.h"
 
-namespace flarekit::cli {
+namespace flarekit {
 
-void addShotOptions(CLI::App* cmd, ShotArgs& args) {
-    cmd->add_option("--frames", args.frames,
-                    "with a frame pattern (shot.####.exr or shot.%04d.exr) in and out: the frames "
-                    "A-B[:step] to render (default: every frame found); a farm chunk renders "
-                    "exactly these, each output bit-identical however the shot is chunked");
-    cmd->add_flag("--skip-missing", args.skipMissing,
-                  "render the frames that exist and list the gaps, instead of stopping at the "
-                  "first missing frame");
-    cmd->add_option("--fps", args.fps,
-                    "the shot's frame rate (the temporal filter's time between frames)")
-        ->check(CLI::Range(1.0, 1000.0))
-        ->capture_default_str();
-}
-
-Status checkSingleImage(const std::string& in, const ShotArgs& args) {
-    if (args.frames.empty() && !args.skipMissing) return Ok{};
-    return invalidInput(std::string(args.frames.empty() ? "--skip-missing" : "--frames") + ": " +
+Status checkSingleImage(const std::string& in, const ShotOptions& options) {
+    if (options.frames.empty() && !options.skipMissing) return Ok{};
+    return invalidInput(std::string(options.frames.empty() ? "--skip-missing" : "--frames") + ": " +
                         in + " is one image, not a frame pattern (shot.####.exr)");
 }
 
-Result<ShotPlan> planShot(const std::string& in, const std::string& out, const ShotArgs& args,
-                          const std::vector<FramePattern>& otherInputs) {
+Result<ShotPlan> planShot(const std::string& in, const std::string& out, const ShotOptions& options,
+                          const std::vector<FramePattern>& otherInputs, const JobEvents& events) {
     if (!isFramePattern(out))
         return invalidInput(out + ": the input is a frame pattern, so the output must be one too " +
                             "(e.g. out.####.exr)");
@@ -45,11 +31,11 @@ Result<ShotPlan> planShot(const std::string& in, const std::string& out, const S
     if (!inPattern) return inPattern.error();
     auto outPattern = parseFramePattern(out);
     if (!outPattern) return outPattern.error();
-    ShotPlan plan{*inPattern, *outPattern, {}, framesOnDisk(*inPattern), {}, args.fps};
+    ShotPlan plan{*inPattern, *outPattern, {}, framesOnDisk(*inPattern), {}, options.fps};
     if (plan.shotFrames.empty()) return invalidInput(in + ": no frame of this pattern exists");
     std::vector<int> wanted = plan.shotFrames;
-    if (!args.frames.empty()) {
-        auto range = parseFrameRange(args.frames, "--frames");
+    if (!options.frames.empty()) {
+        auto range = parseFrameRange(options.frames, "--frames");
         if (!range) return range.error();
         wanted = range->frames();
     }
@@ -60,13 +46,13 @@ Result<ShotPlan> planShot(const std::string& in, const std::string& out, const S
         else
             missing.push_back(f);
     }
-    if (!missing.empty() && !args.skipMissing) {
+    if (!missing.empty() && !options.skipMissing) {
         return invalidInput(plan.in.path(missing.front()) + ": frame " +
                             std::to_string(missing.front()) + " is missing (" +
                             std::to_string(missing.size()) +
                             " of the range in all); --skip-missing renders the others");
     }
-    if (!missing.empty()) warn(in + ": skipping missing frames " + describeFrames(missing));
+    if (!missing.empty()) events.warn(in + ": skipping missing frames " + describeFrames(missing));
     if (plan.frames.empty()) return invalidInput(in + ": no frame of the range exists");
     // An output that is one of the inputs would be replaced before it is read.
     namespace fs = std::filesystem;
@@ -90,12 +76,15 @@ Result<ShotPlan> planShot(const std::string& in, const std::string& out, const S
 }
 
 std::string frameSuffix(const ShotPlan& plan, const ShotFrame& f) {
-    return "." + f.in.substr(plan.in.prefix.size(),
-                             f.in.size() - plan.in.prefix.size() - plan.in.suffix.size());
+    // Appended, not "." + substr: GCC 12 warns falsely (-Wrestrict) on the concatenation.
+    std::string suffix(1, '.');
+    suffix.append(f.in, plan.in.prefix.size(),
+                  f.in.size() - plan.in.prefix.size() - plan.in.suffix.size());
+    return suffix;
 }
 
 Result<int> framesInFlight(ShotPlan& plan, const JobMemory& perFrame, bool gl) {
-    auto loaded = readInputImage(plan.in.path(plan.frames.front()), perFrame);
+    auto loaded = readJobInput(plan.in.path(plan.frames.front()), perFrame);
     if (!loaded) return loaded.error();
     plan.width = loaded->image.width();
     plan.height = loaded->image.height();
@@ -107,36 +96,53 @@ Result<int> framesInFlight(ShotPlan& plan, const JobMemory& perFrame, bool gl) {
     return std::clamp(fit, 1, cores);
 }
 
-namespace {
-//! Seconds the frames spent reading their input (readInputImage adds to it), summed over the
-//! threads: the read share of the summary line.
-std::atomic<double> g_readSeconds{0};
+std::string describeShotSummary(const std::string& label, const ShotSummary& s) {
+    const double busy = std::max(1e-9, s.readSeconds + s.effectSeconds + s.writeSeconds);
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "%s: %d frames in %.2f s, %.2f frames/s, %d at once; of the frames' time: read "
+                  "%.0f%%, effect %.0f%%, write %.0f%%",
+                  label.c_str(), s.frames, s.wallSeconds, s.frames / std::max(s.wallSeconds, 1e-9),
+                  s.parallel, 100 * s.readSeconds / busy, 100 * s.effectSeconds / busy,
+                  100 * s.writeSeconds / busy);
+    return line;
+}
 
+namespace {
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+//! A frame's rendered image against the shot's size (a sequence's frames share one size).
+Status checkFrameSize(const ShotPlan& plan, const ShotFrame& frame, const Image& image) {
+    if (image.width() == plan.width && image.height() == plan.height) return Ok{};
+    return invalidInput(frame.in + ": " + std::to_string(image.width()) + "x" +
+                        std::to_string(image.height()) + ", but the sequence's frame " +
+                        plan.in.path(plan.frames.front()) + " is " + std::to_string(plan.width) +
+                        "x" + std::to_string(plan.height) + "; a sequence's frames share one size");
+}
 }  // namespace
 
-void addReadSeconds(double seconds) {
-    g_readSeconds += seconds;
-}
-
-int runShot(const ShotPlan& plan, const std::string& label, int parallel,
-            const std::function<Result<ImageOutput>(const ShotFrame&)>& render) {
+Result<ShotSummary> runShot(const ShotPlan& plan, int parallel,
+                            const std::function<Result<ImageOutput>(const ShotFrame&)>& render,
+                            const JobEvents& events) {
     const auto start = std::chrono::steady_clock::now();
-    g_readSeconds = 0;
+    (void)job_detail::takeReadSeconds();
     std::atomic<double> renderSeconds{0}, writeSeconds{0};
     const int total = int(plan.frames.size());
     std::atomic<int> next{0};
-    std::atomic<bool> stop{false};
+    std::atomic<bool> stop{false}, cancelled{false};
     std::mutex mutex;  // guards everything below
     std::vector<int> written;
     std::optional<std::pair<int, Error>> failure;  // the first failed frame
     int done = 0;
-    Progress progress(label, total);
     auto worker = [&] {
         for (;;) {
-            if (stop || interrupted()) return;
+            if (stop || cancelled) return;
+            if (events.stopRequested()) {
+                cancelled = true;
+                return;
+            }
             const int i = next++;
             if (i >= total) return;
             const int f = plan.frames[std::size_t(i)];
@@ -149,14 +155,7 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
                 const auto writeStart = std::chrono::steady_clock::now();
                 if (!result)
                     status = result.error();
-                else if (result->image.width() != plan.width ||
-                         result->image.height() != plan.height)
-                    status = invalidInput(
-                        frame.in + ": " + std::to_string(result->image.width()) + "x" +
-                        std::to_string(result->image.height()) + ", but the sequence's frame " +
-                        plan.in.path(plan.frames.front()) + " is " + std::to_string(plan.width) +
-                        "x" + std::to_string(plan.height) + "; a sequence's frames share one size");
-                else
+                else if (status = checkFrameSize(plan, frame, result->image); status)
                     status = writeImage(frame.out, result->image, result->options);
                 writeSeconds += secondsSince(writeStart);
             }
@@ -167,14 +166,13 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
                 continue;
             }
             written.push_back(f);
-            progress.update(++done);
+            if (events.progress) events.progress(++done, total);
         }
     };
     std::vector<std::thread> threads;
     for (int t = 1; t < std::clamp(parallel, 1, total); ++t) threads.emplace_back(worker);
     worker();
     for (std::thread& t : threads) t.join();
-    progress.finish();
     std::sort(written.begin(), written.end());
     const std::string writtenText =
         written.empty() ? "no frame was written"
@@ -184,20 +182,22 @@ int runShot(const ShotPlan& plan, const std::string& label, int parallel,
         Error e = failure->second;
         e.message =
             "frame " + std::to_string(failure->first) + ": " + e.message + "; " + writtenText;
-        return report(e);
+        return e;
     }
-    if (interrupted()) return report(interruptedError(writtenText));
-    // Where the frames' time went (summed over the threads working at once).
-    const double wall = secondsSince(start), read = g_readSeconds,
-                 effect = std::max(0.0, renderSeconds - read), write = writeSeconds;
-    const double busy = std::max(1e-9, read + effect + write);
-    std::fprintf(stderr,
-                 "%s: %d frames in %.2f s, %.2f frames/s, %d at once; of the frames' time: read "
-                 "%.0f%%, effect %.0f%%, write %.0f%%\n",
-                 label.c_str(), total, wall, total / std::max(wall, 1e-9),
-                 std::clamp(parallel, 1, total), 100 * read / busy, 100 * effect / busy,
-                 100 * write / busy);
-    return kExitOk;
+    if (cancelled || events.stopRequested()) {
+        // A signal names itself ("interrupted by SIGTERM: ..."); a front end's cancel button
+        // does not.
+        if (interrupted()) return interruptedError(writtenText);
+        return Error{ErrorCode::Interrupted, "cancelled: " + writtenText};
+    }
+    ShotSummary summary;
+    summary.frames = total;
+    summary.parallel = std::clamp(parallel, 1, total);
+    summary.wallSeconds = secondsSince(start);
+    summary.readSeconds = job_detail::takeReadSeconds();
+    summary.effectSeconds = std::max(0.0, renderSeconds - summary.readSeconds);
+    summary.writeSeconds = writeSeconds;
+    return summary;
 }
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

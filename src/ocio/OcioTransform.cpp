@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ColorManagement.h"
+#include "flarekit/ocio/OcioTransform.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 
@@ -11,27 +11,21 @@
 
 namespace OCIO = OCIO_NAMESPACE;
 
-namespace flarekit::cli {
+namespace flarekit {
 
-struct ColorManagement::Processors {
+namespace {
+class OcioTransform final : public ColorTransform {
+  public:
+    void toWorking(LoadedImage& loaded) const override;
+    void toOutput(Image& image, WriteOptions& options) const override;
+
     OCIO::ConstCPUProcessorRcPtr in, out;  //!< null: that side keeps flarekit's default
+    std::string outName;                   //!< the output's colour space, its files' tag
 };
+}  // namespace
 
-ColorManagement::~ColorManagement() = default;
-
-void addColorOptions(CLI::App* cmd, ColorArgs& args) {
-    cmd->add_option("--colorspace-in", args.in,
-                    "the input's colour space in the OCIO config (default: sRGB for 8/16-bit "
-                    "files, scene-linear Rec.709 for float files)");
-    cmd->add_option("--colorspace-out", args.out,
-                    "the output's colour space in the OCIO config (default: as the input's kind)");
-    cmd->add_option("--ocio-config", args.config,
-                    "OpenColorIO config file (default: $OCIO, else the shipped "
-                    "presets/ocio/flarekit.ocio; an ACES config works too)");
-}
-
-Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const ColorArgs& args) {
-    if (!args.enabled()) return std::shared_ptr<const ColorManagement>();
+Result<std::shared_ptr<const ColorTransform>> createOcioTransform(const OcioSettings& args) {
+    if (!args.enabled()) return std::shared_ptr<const ColorTransform>();
     std::string path = args.config;
     if (path.empty())
         if (const char* env = std::getenv("OCIO")) path = env;
@@ -60,20 +54,19 @@ Result<std::shared_ptr<const ColorManagement>> ColorManagement::create(const Col
             return invalidInput(std::string(option) + ": '" + name + "' is not a colour space of " +
                                 path + "; it has: " + known());
     }
-    std::shared_ptr<ColorManagement> cm(new ColorManagement);
-    cm->m_processors = std::make_unique<Processors>();
+    auto cm = std::make_shared<OcioTransform>();
     try {
         if (!args.in.empty())
-            cm->m_processors->in = config->getProcessor(args.in.c_str(), OCIO::ROLE_SCENE_LINEAR)
-                                       ->getDefaultCPUProcessor();
-        cm->m_outName = args.out;
+            cm->in = config->getProcessor(args.in.c_str(), OCIO::ROLE_SCENE_LINEAR)
+                         ->getDefaultCPUProcessor();
+        cm->outName = args.out;
         if (!args.out.empty())
-            cm->m_processors->out = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, args.out.c_str())
-                                        ->getDefaultCPUProcessor();
+            cm->out = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, args.out.c_str())
+                          ->getDefaultCPUProcessor();
     } catch (const std::exception& e) {
         return invalidInput(path + ": " + e.what());
     }
-    return std::shared_ptr<const ColorManagement>(std::move(cm));
+    return std::shared_ptr<const ColorTransform>(std::move(cm));
 }
 
 namespace {
@@ -88,8 +81,8 @@ void applyRgba(const OCIO::ConstCPUProcessorRcPtr& cpu, Image& image) {
 }
 }  // namespace
 
-void ColorManagement::toWorking(LoadedImage& loaded) const {
-    if (!m_processors->in) return;
+void OcioTransform::toWorking(LoadedImage& loaded) const {
+    if (!in) return;
     if (!loaded.wasFloat) {
         // The reader sRGB-decoded the file's codes: encode them back (exactly, in float) so the
         // config converts the file's own values.
@@ -97,14 +90,14 @@ void ColorManagement::toWorking(LoadedImage& loaded) const {
         for (std::size_t i = 0; i < loaded.image.pixelCount() * 4; ++i)
             if (i % 4 != 3) p[i] = linearToSrgb(p[i]);
     }
-    applyRgba(m_processors->in, loaded.image);
+    applyRgba(in, loaded.image);
 }
 
-void ColorManagement::toOutput(Image& image, WriteOptions& options) const {
-    if (!m_processors->out) return;
-    applyRgba(m_processors->out, image);
+void OcioTransform::toOutput(Image& image, WriteOptions& options) const {
+    if (!out) return;
+    applyRgba(out, image);
     options.srgbEncode = false;
-    options.colorSpace = m_outName;
+    options.colorSpace = outName;
 }
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ShotCoverage.h"
+#include "flarekit/job/ShotCoverage.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -11,36 +11,16 @@
 #include <fstream>
 #include <sstream>
 
-#include "ParamOptions.h"
+#include "core/SafeWrite.h"
 
-namespace flarekit::cli {
+namespace flarekit {
 
 namespace {
 //! The ln(1e4) time constants after which a step's weight is under 1e-4 of a value.
 constexpr double kLookBackDecays = 9.2103403719761836;
 }  // namespace
 
-void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args) {
-    cmd->add_option("--matte", args.matte,
-                    "holdout matte (a frame pattern for a sequence): 1 = foreground hiding the "
-                    "light; its alpha, or its red channel when it has none (--matte-channel "
-                    "picks); with --depth-channel, the depth pass");
-    cmd->add_option("--matte-channel", args.matteChannel,
-                    "the matte's channel by name: R, G, B, A or any channel of an EXR (fg.A), of "
-                    "--matte's file, else of the input itself");
-    cmd->add_option("--depth-channel", args.depthChannel,
-                    "the depth pass's channel by name (Z, depth.Z, R, ...) of --matte's file, "
-                    "else of the input: a pixel nearer than --light-depth hides the light");
-    cmd->add_option("--light-depth", args.lightDepth,
-                    "the light's distance, in the depth pass's units");
-    cmd->add_option("--light-radius", args.lightRadius,
-                    "the light's disc in pixels: coverage is the mean visibility over it")
-        ->check(CLI::Range(0.0, 10000.0))
-        ->capture_default_str();
-    addParamOptions<TemporalParams>(cmd, std::span(kTemporalParams).first(3), args.temporal);
-}
-
-Status checkOcclusionArgs(const OcclusionArgs& a) {
+Status checkOcclusionOptions(const OcclusionOptions& a) {
     if (!a.depthChannel.empty()) {
         if (!a.lightDepth)
             return invalidInput("--depth-channel needs --light-depth (the light's distance)");
@@ -54,9 +34,13 @@ Status checkOcclusionArgs(const OcclusionArgs& a) {
     return validateTemporalParams(a.temporal);
 }
 
-ShotCoverage::ShotCoverage(const OcclusionArgs& args, const ShotPlan* plan, std::string single,
-                           std::function<Point(int)> lightAt)
-    : m_args(args), m_plan(plan), m_single(std::move(single)), m_lightAt(std::move(lightAt)) {
+ShotCoverage::ShotCoverage(const OcclusionOptions& args, const ShotPlan* plan, std::string single,
+                           std::function<Point(int)> lightAt, const JobEvents& events)
+    : m_args(args),
+      m_plan(plan),
+      m_single(std::move(single)),
+      m_events(events),
+      m_lightAt(std::move(lightAt)) {
     if (plan && !args.matte.empty()) m_mattePattern = *parseFramePattern(args.matte);
     if (plan) {
         const double tau = std::max(args.temporal.attackSeconds, args.temporal.releaseSeconds);
@@ -75,7 +59,7 @@ Result<double> ShotCoverage::raw(int frame, int current, const LoadedImage& plat
     std::string path = frame == current ? "" : m_plan->in.path(frame);
     if (!m_args.matte.empty()) path = m_mattePattern ? m_mattePattern->path(frame) : m_single;
     if (!path.empty()) {
-        auto loaded = readInputImage(path, {});
+        auto loaded = readJobInput(path, {}, m_events);
         if (!loaded) return loaded.error();
         const Image& m = loaded->image;
         if (m.width() != plate.image.width() || m.height() != plate.image.height())
@@ -92,7 +76,8 @@ Result<double> ShotCoverage::raw(int frame, int current, const LoadedImage& plat
         channel = m_args.depthChannel;
         occluder.lightDepth = m_args.lightDepth;
     } else if (channel.empty()) {
-        channel = read && !read->hasAlpha ? "R" : "A";  // a grey matte: its value
+        // A grey matte: its value. (One character assigned: GCC 12 warns falsely on a literal.)
+        channel.assign(1, read && !read->hasAlpha ? 'R' : 'A');
     }
     const std::string name = !path.empty() ? path : m_plan ? m_plan->in.path(frame) : "the input";
     auto plane = channelByName(source, channel, name);
@@ -137,7 +122,7 @@ Status mergeCsvRows(const std::string& path, const std::string& header,
     // lock on the file's folder (no lock file to leave behind), so no chunk's rows are lost to
     // another's rename.
     std::string dir = std::filesystem::path(path).parent_path().string();
-    if (dir.empty()) dir = ".";
+    if (dir.empty()) dir.assign(1, '.');
     const int lockFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (lockFd >= 0) ::flock(lockFd, LOCK_EX);
     std::map<int, std::string> lines;
@@ -151,7 +136,7 @@ Status mergeCsvRows(const std::string& path, const std::string& header,
     for (const auto& [frame, line] : rows) lines[frame] = line;
     std::string text = header + "\n";
     for (const auto& [frame, line] : lines) text += line + "\n";
-    Status s = writeText(path, text);
+    Status s = writeFileSafely(path, text);
     if (lockFd >= 0) ::close(lockFd);  // releases the lock
     return s;
 }
@@ -169,4 +154,4 @@ Status ShotCoverage::writeCsv(const std::string& dir, const std::vector<Coverage
                         "frame,x,y,coverage,filtered_coverage", lines);
 }
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

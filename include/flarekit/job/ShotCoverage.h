@@ -9,15 +9,19 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
-#include "ShotRun.h"
+#include "flarekit/Param.h"
 #include "flarekit/Temporal.h"
+#include "flarekit/job/ShotRun.h"
 
-namespace flarekit::cli {
+namespace flarekit {
 
-struct OcclusionArgs {
+//! What hides the light over a shot (or in one image): a matte, a channel of the plate, or a
+//! depth pass against the light's distance.
+struct OcclusionOptions {
     std::string matte;         //!< --matte PATTERN (or one file for a single image)
     std::string matteChannel;  //!< --matte-channel NAME (of the matte, else of the input)
     std::string depthChannel;  //!< --depth-channel NAME (of --matte's file, else the input)
@@ -28,9 +32,15 @@ struct OcclusionArgs {
         return !matte.empty() || !matteChannel.empty() || !depthChannel.empty();
     }
 };
-void addOcclusionOptions(CLI::App* cmd, OcclusionArgs& args);
+inline constexpr Param<OcclusionOptions> kOcclusionParams[] = {
+    // Up to 10,000 px: a sun disc larger than any frame still has a finite cost (the disc's
+    // pixels are visited once).
+    param<&OcclusionOptions::lightRadius>(
+        "light_radius", 0, 10000, "px",
+        "the light's disc in pixels: coverage is the mean visibility over it"),
+};
 //! The option combinations, checked before any work (a depth channel needs --light-depth, ...).
-Status checkOcclusionArgs(const OcclusionArgs& args);
+Status checkOcclusionOptions(const OcclusionOptions& options);
 
 //! A per-frame CSV (coverage.csv, a written track): `rows` (by frame) merged into the rows the
 //! file already has under `header` (another chunk's), under a lock on its folder, written
@@ -49,8 +59,8 @@ class ShotCoverage {
   public:
     //! `lightAt`: the light's position in a frame. `plan` null: a single image (`single`, the
     //! matte file or none), no filter.
-    ShotCoverage(const OcclusionArgs& args, const ShotPlan* plan, std::string single,
-                 std::function<Point(int)> lightAt);
+    ShotCoverage(const OcclusionOptions& args, const ShotPlan* plan, std::string single,
+                 std::function<Point(int)> lightAt, const JobEvents& events = {});
     //! The frame's raw and filtered coverage; `frame`'s plate as read (its size is what a matte
     //! must have; its channels serve when the matte or depth is the plate's own).
     Result<CoverageRow> at(int frame, const LoadedImage& plate);
@@ -62,10 +72,11 @@ class ShotCoverage {
     //! `current`: the frame being rendered, whose plate is `plate`.
     Result<double> raw(int frame, int current, const LoadedImage& plate);
 
-    OcclusionArgs m_args;
+    OcclusionOptions m_args;
     const ShotPlan* m_plan;
     std::optional<FramePattern> m_mattePattern;
     std::string m_single;
+    JobEvents m_events;
     std::function<Point(int)> m_lightAt;
     //! Frames the filter looks back: its slowest time constant decays to 1e-4 over them.
     int m_lookBack = 0;
@@ -73,4 +84,4 @@ class ShotCoverage {
     std::map<int, double> m_raw;  //!< cache: frames the look-back of several frames shares
 };
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "ShotTracking.h"
+#include "flarekit/job/ShotTracking.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace flarekit::cli {
+namespace flarekit {
 
-ShotTracking::ShotTracking(const ShotPlan& plan, const LightSearchOptions& search)
-    : m_plan(plan), m_search(search), m_lookBack(int(std::ceil(0.5 * plan.fps))) {}
+ShotTracking::ShotTracking(const ShotPlan& plan, const LightSearchOptions& search,
+                           const JobEvents& events)
+    : m_plan(plan),
+      m_search(search),
+      m_events(events),
+      m_lookBack(int(std::ceil(0.5 * plan.fps))) {}
 
 Result<std::vector<LightCandidate>> ShotTracking::lightsIn(int frame, const Image* image) {
     {
@@ -16,7 +20,7 @@ Result<std::vector<LightCandidate>> ShotTracking::lightsIn(int frame, const Imag
     }
     std::optional<LoadedImage> loaded;
     if (!image) {
-        auto read = readInputImage(m_plan.in.path(frame), {});
+        auto read = readJobInput(m_plan.in.path(frame), {}, m_events);
         if (!read) return read.error();
         loaded = std::move(*read);
         image = &loaded->image;
@@ -48,4 +52,4 @@ Result<TrackedLight> ShotTracking::at(int frame, const Image* image) {
     return light;
 }
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

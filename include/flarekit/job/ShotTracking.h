@@ -8,13 +8,15 @@
 #include <map>
 #include <mutex>
 
-#include "ShotRun.h"
+#include "flarekit/Flare.h"
+#include "flarekit/job/ShotRun.h"
 
-namespace flarekit::cli {
+namespace flarekit {
 
 class ShotTracking {
   public:
-    ShotTracking(const ShotPlan& plan, const LightSearchOptions& search);
+    ShotTracking(const ShotPlan& plan, const LightSearchOptions& search,
+                 const JobEvents& events = {});
     //! The light at `frame`; `image` is its pixels when the caller has them (else it is read).
     Result<TrackedLight> at(int frame, const Image* image = nullptr);
 
@@ -23,6 +25,7 @@ class ShotTracking {
 
     const ShotPlan& m_plan;
     LightSearchOptions m_search;
+    JobEvents m_events;
     //! Frames looked back: half a second of the shot (12 at 24 fps), time for the alpha-beta
     //! filter to settle and for a switch to be decided.
     int m_lookBack;
@@ -31,4 +34,4 @@ class ShotTracking {
     std::map<int, TrackedLight> m_tracked;
 };
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

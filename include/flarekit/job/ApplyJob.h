@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// The sprite-flare job (`flarekit apply`): a preset's flare composited onto an image or every
+// frame of a shot, in linear light, the light placed, found, tracked or projected per frame,
+// dimmed by what hides it, with its passes written as layers when asked.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "flarekit/Flare.h"
+#include "flarekit/Param.h"
+#include "flarekit/Vec3.h"
+#include "flarekit/job/Job.h"
+#include "flarekit/job/ShotCoverage.h"
+#include "flarekit/job/ShotRun.h"
+
+namespace flarekit {
+
+//! The preset an apply job uses when none is named.
+inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
+
+struct ApplyOptions {
+    std::string input;   //!< an image, or a frame pattern (shot.####.exr) for a sequence
+    std::string output;  //!< an image, or a frame pattern for a sequence
+    std::string preset = kDefaultSpritePreset;  //!< shipped name or a JSON file
+    float intensity = 1.f;
+    float exposure = 1.f;
+    //! Where the light is. `light`: fixed, in pixels from the top-left (pixel centres at +0.5);
+    //! `lightTrack`: a track file per frame; `camera` with `lightWorld` (a point) or `sunDir`
+    //! (a direction): projected per frame. None of them: found in the image (a sequence follows
+    //! one light through the shot).
+    std::optional<Point> light;
+    std::string lightTrack, camera;
+    std::optional<Vec3> lightWorld, sunDir;
+    LightSearchOptions lightSearch;
+    SampleFormat depth = SampleFormat::Auto;  //!< output samples; Auto: from the extension
+    //! The display curve; nothing: filmic for HDR input to an 8/16-bit file, else none (and none
+    //! for flareOnly).
+    std::optional<ToneOperator> tonemap;
+    //! Also the flare over black and its passes as float EXRs in this folder (for a sequence
+    //! DIR/flare.1001.exr, ...); the output is then exactly input + flare.
+    std::string layersDir;
+    bool flareOnly = false;  //!< the flare alone over black instead of the composite
+    std::string writeTrack;  //!< a sequence: the light per frame saved as CSV (merged)
+    ShotOptions shot;
+    OcclusionOptions occlusion;
+    std::shared_ptr<const ColorTransform> color;  //!< null: flarekit's defaults
+    bool verbose = false;  //!< detail lines (candidates, flares drawn) through JobEvents::info
+};
+inline constexpr Param<ApplyOptions> kApplyParams[] = {
+    // Up to 1000: a sun's flare on a dim plate; beyond that every element is white.
+    param<&ApplyOptions::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
+    param<&ApplyOptions::exposure>(
+        "exposure", 0, 1000, "", "multiplies the image (flare included) before the display curve"),
+};
+
+//! What an apply job did: for a sequence, where its time went.
+struct JobReport {
+    bool sequence = false;
+    ShotSummary shot;
+};
+
+//! Runs the job: every option checked before any work (errors are one line naming the option or
+//! file, as the CLI prints them), then the image or each frame written atomically.
+Result<JobReport> runApplyJob(const ApplyOptions& options, const JobEvents& events = {});
+
+}  // namespace flarekit

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: Apache-2.0
+// The post-process flare job (`flarekit postfx`): the image-based chain (Killzone 2 / Kawase
+// ghosts, bloom, halo, streaks, starburst, dirt) on an image or every frame of a shot, on a
+// backend the caller chooses: the CPU here, OpenGL from flarekit/gl/PostFxBackend.h.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "flarekit/Param.h"
+#include "flarekit/PostFx.h"
+#include "flarekit/job/ApplyJob.h"
+#include "flarekit/job/Job.h"
+#include "flarekit/job/ShotRun.h"
+
+namespace flarekit {
+
+//! The preset a postfx job uses when none is named.
+inline constexpr const char* kDefaultPostFxPreset = "photo";
+
+//! Where the chain runs. A backend is shared by a shot's frames; each call makes its own chain,
+//! so calls from several threads at once are safe.
+class PostFxBackend {
+  public:
+    virtual ~PostFxBackend() = default;
+    virtual std::string name() const = 0;  //!< "cpu", "gl"
+    virtual bool usesGl() const = 0;       //!< one frame at a time, GL's memory figures
+    //! Runs the chain `repeat` times on `image` (buffers kept, as in a video). `overwrite`: the
+    //! caller has no further use for `image`, which may become the result. `warmSeconds`: the
+    //! mean time of the runs after the first (0 for one run). `in` names the image in errors.
+    virtual Result<PostFxResult> run(Image& image, bool overwrite, const PostFxParams& params,
+                                     const PostFxOptions& options, int repeat, double& warmSeconds,
+                                     const std::string& in, const JobEvents& events) const = 0;
+};
+//! The CPU chain (CpuPostFx).
+std::shared_ptr<const PostFxBackend> cpuPostFxBackend();
+
+struct PostFxJobOptions {
+    std::string input, output;                  //!< images, or frame patterns for a sequence
+    std::string preset = kDefaultPostFxPreset;  //!< shipped name or a JSON file
+    std::shared_ptr<const PostFxBackend> backend = cpuPostFxBackend();
+    //! The display curve; nothing: the preset's (filmic for HDR input to an 8/16-bit file when
+    //! the preset has none).
+    std::optional<ToneOperator> tonemap;
+    std::optional<float> exposure, threshold, knee;  //!< overrides of the preset's
+    //! 8/16-bit input: clipped pixels expanded to this gain x white before the chain (1 to
+    //! 10,000), so the lights of an 8-bit photo flare; the output keeps the original pixels.
+    std::optional<float> expandHighlights;
+    std::string layersDir;  //!< also bloom, ghosts, halo, streaks, lens, final as EXRs here
+    int repeat = 1;         //!< benchmarking: the chain N times, the mean warm time reported
+    bool verbose = false;   //!< each pass's time through JobEvents::info
+    ShotOptions shot;
+    std::shared_ptr<const ColorTransform> color;
+};
+inline constexpr Param<PostFxJobOptions> kPostFxJobParams[] = {
+    // Up to 1000 runs: enough for a stable mean, bounded in time.
+    param<&PostFxJobOptions::repeat>(
+        "repeat", 1, 1000, "runs",
+        "run the chain N times and print the mean time of the warm runs (benchmarking)"),
+};
+
+Result<JobReport> runPostFxJob(const PostFxJobOptions& options, const JobEvents& events = {});
+
+}  // namespace flarekit

@@ -1,0 +1,317 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "flarekit/job/ApplyJob.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include "core/SafeWrite.h"
+#include "flarekit/job/ShotTracking.h"
+#include "job/ShotLight.h"
+
+namespace flarekit {
+
+namespace {
+
+std::string format(const char* fmt, auto... values) {
+    char line[400];
+    std::snprintf(line, sizeof line, fmt, values...);
+    return line;
+}
+
+//! Checked before any work: writeImage would refuse at the end (holdsFloatSamples).
+Status checkDepthFits(const std::string& out, SampleFormat requested) {
+    if (!isFloatFormat(requested) || holdsFloatSamples(out)) return Ok{};
+    return invalidInput(out +
+                        ": --depth half/float needs a float format (.exr, .tif, .hdr), not '" +
+                        std::filesystem::path(out).extension().string() + "'");
+}
+
+//! Verbose: every region the light finder considered, most flux first.
+void sayCandidates(const LightSearch& search, const JobEvents& events) {
+    std::vector<LightCandidate> sorted = search.candidates;
+    std::stable_sort(
+        sorted.begin(), sorted.end(),
+        [](const LightCandidate& a, const LightCandidate& b) { return a.flux > b.flux; });
+    events.say(
+        format("peak luminance %.4g, median %.4g, %s; %zu candidates (most flux first, at "
+               "most 12 listed):",
+               double(search.peak), double(search.frameKey),
+               search.displayReferred ? "display-referred (clipped pixels x clipped-gain)"
+                                      : "scene-referred HDR",
+               sorted.size()));
+    //! Candidates listed at most: the lights and the closest misses, not every speck of sky.
+    constexpr std::size_t kListed = 12;
+    if (sorted.size() > kListed) sorted.resize(kListed);
+    for (const LightCandidate& c : sorted)
+        events.say(
+            format("  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx "
+                   "surroundings, compactness %.2f, halo %.2f, flare scale %.4f: %s",
+                   double(c.position.x), double(c.position.y), double(c.radius), double(c.peak),
+                   c.flux, double(c.prominence), double(c.compactness), double(c.halo),
+                   double(c.flareScale), c.verdict.c_str()));
+}
+
+//! The lights of one frame, each a position and an intensity.
+using Lights = std::vector<std::pair<Point, float>>;
+using LightsOf = std::function<Result<Lights>(const LoadedImage&)>;
+
+//! Measured peak (12 MP, both depths): ~135 MiB of process plus ~43 bytes per pixel: the RGBA
+//! floats, the orientation copy, the encoded samples and the file bytes (plus the decode buffer,
+//! which readImage adds).
+const JobMemory kApplyMemory{40, 160.0 * (1 << 20), "apply: 40 bytes per pixel"};
+
+//! No light given: the lights the finder keeps in the frame, each scaled by its flare scale.
+Lights autoLights(const ApplyOptions& a, const std::string& in, const Image& image,
+                  const JobEvents& events) {
+    const LightSearch search = findLights(image, a.lightSearch);
+    if (a.verbose) sayCandidates(search, events);
+    if (search.lights.empty())
+        events.warn(in + ": " + search.whyNone +
+                    "; image written unchanged (--light X,Y places one)");
+    Lights lights;
+    for (const LightCandidate& light : search.lights)
+        lights.push_back({light.position, a.intensity * light.flareScale});
+    return lights;
+}
+
+//! Layers: each pass and the whole flare as float EXRs in DIR, named NAME + `suffix` + .exr
+//! (".1001" for a sequence's frame, so each pass is a sequence of its own).
+Status writeFlareLayers(const std::string& dir, const std::string& suffix,
+                        const std::vector<FlareLayer>& layers, const Image& flare) {
+    if (Status s = makeOutputDirectory(dir); !s) return s;
+    WriteOptions linear;
+    linear.format = SampleFormat::Float;
+    auto path = [&](const std::string& name) {
+        return (std::filesystem::path(dir) / (name + suffix + ".exr")).string();
+    };
+    for (const FlareLayer& layer : layers)
+        if (Status s = writeImage(path(layer.name), layer.image, linear); !s) return s;
+    return writeImage(path("flare"), flare, linear);
+}
+
+//! The flare over black, pass by pass (written as layers when asked), then the output: the
+//! flare alone, or the input plus exactly that flare.
+Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights& lights,
+                      const std::string& layerSuffix, LoadedImage& loaded) {
+    Image& image = loaded.image;
+    Image flare;
+    const auto layers = renderFlareLayers(image.width(), image.height(), preset, lights, flare);
+    if (!a.layersDir.empty()) {
+        if (Status s = writeFlareLayers(a.layersDir, layerSuffix, layers, flare); !s) return s;
+    }
+    if (a.flareOnly) {
+        loaded.hasAlpha = false;
+        image = std::move(flare);
+        return Ok{};
+    }
+    float* dst = image.data();
+    const float* add = flare.data();
+    for (std::size_t i = 0; i < image.pixelCount() * 4; ++i)
+        if (i % 4 != 3) dst[i] += add[i];
+    return Ok{};
+}
+
+Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, const std::string& out,
+                               const LightsOf& lightsOf, const JobEvents& events,
+                               const std::string& layerSuffix = "") {
+    if (Status s = checkDepthFits(out, a.depth); !s) return s.error();
+    auto preset = loadPreset(a.preset);
+    if (!preset) return preset.error();
+    auto loaded = readJobInput(in, kApplyMemory, events);
+    if (!loaded) return loaded.error();
+    if (a.color) a.color->toWorking(*loaded);
+    Image& image = loaded->image;
+    auto flares = lightsOf(*loaded);
+    if (!flares) return flares.error();
+    if (Status s =
+            checkFlareWork(*preset, image.width(), image.height(), int(flares->size()), a.preset);
+        !s) {
+        return s.error();
+    }
+    if (!a.layersDir.empty() || a.flareOnly) {
+        if (Status s = renderByLayers(a, *preset, *flares, layerSuffix, *loaded); !s)
+            return s.error();
+    } else {
+        for (const auto& [light, intensity] : *flares) {
+            if (!(intensity > 0.f)) continue;
+            const FlareStats stats = renderFlare(image, *preset, light, intensity);
+            if (a.verbose)
+                events.say(
+                    format("flare at %.1f,%.1f, intensity %.4f: %zu elements, %zu pixels "
+                           "shaded",
+                           double(light.x), double(light.y), double(intensity), stats.elementsDrawn,
+                           stats.pixelsShaded));
+        }
+    }
+    // No curve named: defaultDisplayCurve (filmic for HDR input to an 8/16-bit file). The flare
+    // alone stays linear (it is added in the compositing package) unless a curve is named.
+    const ToneOperator curve = a.tonemap.value_or(
+        a.flareOnly ? ToneOperator::None : defaultDisplayCurve(loaded->wasFloat, out, a.depth));
+    toneMapImage(image, curve, a.exposure);
+    ImageOutput result{std::move(image), {}};
+    result.options.alpha = loaded->hasAlpha;
+    result.options.format = a.depth;
+    // An EXR plate's other channels, attributes and windows go on to an EXR output (not to the
+    // flare alone, which is not the plate).
+    if (!a.flareOnly) result.options.exrExtras = keptExtras(*loaded, in, out, events);
+    if (a.color) a.color->toOutput(result.image, result.options);
+    return result;
+}
+
+//! One image: the light given or found, dimmed by the matte's coverage when one is given.
+Status applyToImage(const ApplyOptions& a, const JobEvents& events) {
+    std::optional<ShotCoverage> coverage;
+    if (a.occlusion.enabled())
+        coverage.emplace(
+            a.occlusion, nullptr, a.occlusion.matte, [&](int) { return *a.light; }, events);
+    return writeImageJob(a.output, [&] {
+        return applyFlare(
+            a, a.input, a.output,
+            [&](const LoadedImage& plate) -> Result<Lights> {
+                if (!a.light) return autoLights(a, a.input, plate.image, events);
+                float intensity = a.intensity;
+                if (coverage) {
+                    auto row = coverage->at(0, plate);
+                    if (!row) return row.error();
+                    intensity *= float(row->raw);
+                    if (a.verbose) events.say(format("coverage %.4f", row->raw));
+                }
+                return Lights{{*a.light, intensity}};
+            },
+            events);
+    });
+}
+
+//! What a shot's frames leave behind besides the images: coverage rows, the written track, the
+//! frames where the followed light was not seen. Filled from several threads.
+struct ShotRecords {
+    std::mutex mutex;
+    std::vector<CoverageRow> coverage;
+    std::map<int, std::string> track;
+    std::vector<int> unlit;
+};
+
+//! A frame pattern: every frame of the range, the light fixed, tracked, projected or followed,
+//! its coverage filtered over the shot and written to coverage.csv.
+Result<ShotSummary> applyToShot(const ApplyOptions& a, const JobEvents& events) {
+    std::vector<FramePattern> otherInputs;
+    if (!a.occlusion.matte.empty()) {
+        auto matte = parseFramePattern(a.occlusion.matte);
+        if (!matte)
+            return invalidInput("--matte " + a.occlusion.matte +
+                                ": the input is a frame pattern, so the matte must be one "
+                                "too (matte.####.exr)");
+        otherInputs.push_back(*matte);
+    }
+    auto plan = planShot(a.input, a.output, a.shot, otherInputs, events);
+    if (!plan) return plan.error();
+    auto light = ShotLight::load(a, *plan, events);
+    if (!light) return light.error();
+    auto parallel = framesInFlight(*plan, kApplyMemory, false);
+    if (!parallel) return parallel.error();
+    std::optional<ShotCoverage> coverage;
+    if (a.occlusion.enabled())
+        coverage.emplace(
+            a.occlusion, &*plan, "", [&](int f) { return (*light)->position(f); }, events);
+    ShotRecords records;
+    auto lightsOf = [&](int frame, const LoadedImage& plate) -> Result<Lights> {
+        auto weight = (*light)->weight(frame, plate.image);
+        if (!weight) return weight.error();
+        float intensity = a.intensity * weight->weight;
+        const Point at = (*light)->position(frame, &plate.image);
+        std::optional<CoverageRow> row;
+        if (coverage) {
+            auto measured = coverage->at(frame, plate);
+            if (!measured) return measured.error();
+            row = *measured;
+            intensity *= float(row->filtered);
+        }
+        std::lock_guard lock(records.mutex);
+        if (row) records.coverage.push_back(*row);
+        if ((*light)->followsFinder() && !weight->present) records.unlit.push_back(frame);
+        if (!a.writeTrack.empty() && weight->present)
+            records.track[frame] = format("%d,%.9g,%.9g,%.9g", frame, double(at.x), double(at.y),
+                                          double(weight->weight));
+        return Lights{{at, intensity}};
+    };
+    auto summary = runShot(
+        *plan, *parallel,
+        [&](const ShotFrame& f) {
+            return applyFlare(
+                a, f.in, f.out, [&](const LoadedImage& plate) { return lightsOf(f.frame, plate); },
+                events, frameSuffix(*plan, f));
+        },
+        events);
+    if (!summary) return summary.error();
+    if (!records.unlit.empty()) {
+        std::sort(records.unlit.begin(), records.unlit.end());
+        events.warn(a.input + ": no light found in frames " + describeFrames(records.unlit) +
+                    " (written without a flare; --light X,Y or --light-track places one)");
+    }
+    if (coverage) {
+        if (Status s = coverage->writeCsv(plan->outDir, records.coverage); !s) return s.error();
+    }
+    if (!a.writeTrack.empty()) {
+        if (Status s = mergeCsvRows(a.writeTrack, "frame,x,y,intensity", records.track); !s)
+            return s.error();
+    }
+    return summary;
+}
+
+//! The option combinations, checked before any file is read.
+Status checkApplyOptions(const ApplyOptions& a) {
+    const int sources =
+        int(a.light.has_value()) + int(!a.lightTrack.empty()) + int(!a.camera.empty());
+    if (sources > 1)
+        return invalidInput("--light X,Y, --light-track and --camera: give one of them");
+    if (!a.camera.empty() && a.lightWorld.has_value() == a.sunDir.has_value())
+        return invalidInput(
+            "--camera needs the light: --light-world X,Y,Z (a point) or "
+            "--sun-dir X,Y,Z (the direction toward the sun), one of them");
+    if (a.camera.empty() && (a.lightWorld || a.sunDir))
+        return invalidInput("--light-world/--sun-dir need --camera FILE");
+    if (a.sunDir && !(length(*a.sunDir) > 0))
+        return invalidInput("--sun-dir: expected X,Y,Z (three finite numbers, not all 0)");
+    if (a.occlusion.enabled()) {
+        if (Status s = checkOcclusionOptions(a.occlusion); !s) return s;
+    }
+    if (isFramePattern(a.input)) return Ok{};
+    if (Status s = checkSingleImage(a.input, a.shot); !s) return s;
+    for (const auto& [given, option] :
+         {std::pair{a.lightTrack, "--light-track"}, std::pair{a.camera, "--camera"},
+          std::pair{a.writeTrack, "--write-track"}})
+        if (!given.empty())
+            return invalidInput(std::string(option) +
+                                ": the input is one image, not a frame pattern "
+                                "(shot.####.exr) whose frames it keys");
+    if (a.occlusion.enabled() && !a.light)
+        return invalidInput(
+            "--matte/--matte-channel/--depth-channel on one image "
+            "need the light's position: --light X,Y");
+    return Ok{};
+}
+
+}  // namespace
+
+Result<JobReport> runApplyJob(const ApplyOptions& options, const JobEvents& events) {
+    if (Status s = checkApplyOptions(options); !s) return s.error();
+    JobReport report;
+    report.sequence = isFramePattern(options.input);
+    if (!report.sequence) {
+        if (Status s = applyToImage(options, events); !s) return s.error();
+        return report;
+    }
+    auto summary = applyToShot(options, events);
+    if (!summary) return summary.error();
+    report.shot = *summary;
+    return report;
+}
+
+}  // namespace flarekit

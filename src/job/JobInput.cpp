@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <atomic>
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <iterator>
+
+#include "core/LibraryNoise.h"
+#include "core/SafeWrite.h"
+#include "flarekit/job/Job.h"
+#include "job/ReadClock.h"
+
+namespace flarekit {
+
+namespace job_detail {
+namespace {
+std::atomic<double> g_readSeconds{0};
+}
+void addReadSeconds(double seconds) {
+    g_readSeconds += seconds;
+}
+double takeReadSeconds() {
+    return g_readSeconds.exchange(0);
+}
+}  // namespace job_detail
+
+Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
+                                 const JobEvents& events) {
+    const auto start = std::chrono::steady_clock::now();
+    auto loaded = [&] {
+        LibraryNoiseFilter filter;
+        return readImage(path, job);
+    }();
+    job_detail::addReadSeconds(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (!loaded) return loaded.error();
+    if (loaded->droppedChannels > 0) {
+        return invalidInput(
+            path + ": " + std::to_string(loaded->fileChannels) +
+            " channels; flarekit reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off "
+            "first, e.g. oiiotool IN --ch R,G,B,A -o rgba.exr");
+    }
+    if (loaded->nonFinite > 0)
+        events.warn(path + ": " + std::to_string(loaded->nonFinite) +
+                    " NaN/Inf values replaced by 0");
+    return loaded;
+}
+
+std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
+                                            const std::string& out, const JobEvents& events) {
+    if (!loaded.exrExtras) return nullptr;
+    std::string ext = std::filesystem::path(out).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".exr" && loaded.extraChannels > 0)
+        events.warn(in + ": its " + std::to_string(loaded.extraChannels) +
+                    " channel(s) past RGBA go only to an EXR output, not to " + out);
+    return loaded.exrExtras;
+}
+
+Status writeImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {
+    if (Status s = checkOutputPath(out); !s) return s;
+    auto result = work();
+    if (!result) return result.error();
+    return writeImage(out, result->image, result->options);
+}
+
+std::optional<ToneOperator> toneOperatorNamed(const std::string& name) {
+    for (std::size_t i = 0; i < std::size(kToneOperatorNames); ++i)
+        if (kToneOperatorNames[i] == name) return ToneOperator(i);
+    return std::nullopt;
+}
+
+ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out, SampleFormat requested) {
+    return hdrInput && !isFloatFormat(outputSampleFormat(out, requested)) ? ToneOperator::Filmic
+                                                                          : ToneOperator::None;
+}
+
+}  // namespace flarekit

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "flarekit/job/PostFxJob.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/SafeWrite.h"
+
+namespace flarekit {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+class CpuBackend final : public PostFxBackend {
+  public:
+    std::string name() const override { return "cpu"; }
+    bool usesGl() const override { return false; }
+    //! `overwrite` and one run: the chain composites over the image and moves it into the
+    //! result: no second full-size buffer (a 1080p float frame is 33 MB of fresh pages).
+    Result<PostFxResult> run(Image& image, bool overwrite, const PostFxParams& params,
+                             const PostFxOptions& options, int repeat, double& warmSeconds,
+                             const std::string&, const JobEvents&) const override {
+        PostFxResult result;
+        warmSeconds = 0;
+        if (overwrite && repeat == 1) {
+            if (Status s = CpuPostFx().runInPlace(image, params, result, options); !s)
+                return s.error();
+            result.final = std::move(image);
+            return result;
+        }
+        CpuPostFx chain;
+        for (int i = 0; i < repeat; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            if (Status s = chain.run(image, params, result, options); !s) return s.error();
+            if (i > 0) warmSeconds += secondsSince(start);
+        }
+        if (repeat > 1) warmSeconds /= repeat - 1;
+        return result;
+    }
+};
+
+Status writeLayers(const std::string& dir, const PostFxResult& r) {
+    if (Status s = makeOutputDirectory(dir); !s) return s;
+    const int w = r.final.width(), h = r.final.height();
+    for (auto [name, layer] :
+         {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
+          std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}}) {
+        const std::string path =
+            (std::filesystem::path(dir) / (std::string(name) + ".exr")).string();
+        if (Status s = writeImage(path, resizeBilinear(*layer, w, h)); !s) return s;
+    }
+    return writeImage((std::filesystem::path(dir) / "final.exr").string(), r.final);
+}
+
+//! The chain's peak per input pixel. Measured at 12 MP: the CPU chain ~43 bytes per pixel over
+//! ~135 MiB of process; the GL chain ~83 bytes per pixel (host copies for upload and read-back
+//! beside the driver's own) over ~250 MiB with Mesa. Kept layers add their RGBA floats.
+JobMemory postFxMemory(const PostFxJobOptions& a) {
+    const bool gl = a.backend->usesGl();
+    double perPixel = gl ? 96 : 48;
+    if (!a.layersDir.empty()) perPixel += 6 * 16;  // bloom, ghosts, halo, streaks, lens, final
+    if (a.expandHighlights) perPixel += 16;
+    return {perPixel, (gl ? 256.0 : 160.0) * (1 << 20),
+            std::string("postfx ") + (gl ? "gl" : "cpu") + ": " + std::to_string(int(perPixel)) +
+                " bytes per pixel"};
+}
+
+//! The preset with the job's overrides.
+Result<PostFxParams> jobParams(const PostFxJobOptions& a) {
+    auto params = loadPostFxPreset(a.preset);
+    if (!params) return params;
+    if (a.tonemap) params->tone.op = *a.tonemap;
+    if (a.exposure) params->tone.exposure = *a.exposure;
+    if (a.threshold) params->bright.threshold = *a.threshold;
+    if (a.knee) params->bright.knee = *a.knee;
+    return params;
+}
+
+//! Verbose: each pass's wall time (with glFinish around each GL pass: llvmpipe's timer queries
+//! are not usable) and, on GL, its GPU time.
+void sayPassTimes(const std::vector<PassTime>& times, bool gl, const JobEvents& events) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%-10s %9s %9s %9s", "pass", "wall ms", "MP/s",
+                  gl ? "GPU ms" : "");
+    events.say(line);
+    for (const PassTime& t : times) {
+        int n = std::snprintf(line, sizeof line, "%-10s %9.2f %9.1f", t.pass.c_str(),
+                              t.wallMilliseconds, t.megapixels / (t.wallMilliseconds * 1e-3));
+        if (gl) std::snprintf(line + n, sizeof line - std::size_t(n), " %9.3f", t.milliseconds);
+        events.say(line);
+    }
+}
+
+//! One image (a sequence's frame): `in` through the chain to the image for `out`; the layers
+//! into `layersDir` when it is not empty.
+Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
+                             const std::string& out, const std::string& layersDir,
+                             const JobEvents& events) {
+    auto params = jobParams(a);
+    if (!params) return params.error();
+    auto loaded = readJobInput(in, postFxMemory(a), events);
+    if (!loaded) return loaded.error();
+    if (a.color) a.color->toWorking(*loaded);
+    // No curve named, and the preset has none: the default display curve, as apply's.
+    if (!a.tonemap && params->tone.op == ToneOperator::None)
+        params->tone.op = defaultDisplayCurve(loaded->wasFloat, out);
+    std::vector<PassTime> times;
+    PostFxOptions options;
+    options.keepLayers = !layersDir.empty();
+    options.times = a.verbose ? &times : nullptr;
+    // Expanded highlights: the chain sees the expanded image, the output keeps the original
+    // pixels (the expansion is taken back off the additive composite).
+    const bool expand = a.expandHighlights && !loaded->wasFloat;
+    // The GL chain moves halves where they lose nothing: an input read from a half EXR, a
+    // result only kept as a half EXR (the layers and expanded highlights use the floats).
+    options.halfInput = loaded->halfExact;
+    options.halfReadback =
+        outputSampleFormat(out) == SampleFormat::Half && layersDir.empty() && !expand;
+    if (a.expandHighlights && loaded->wasFloat)
+        events.warn(in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
+    Image expanded;
+    if (expand) {
+        expanded = loaded->image;
+        expandHighlights(expanded, *a.expandHighlights);
+        params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
+    }
+    // The image as read is needed afterwards only to take an expansion back off.
+    Image& chainInput = expand ? expanded : loaded->image;
+    double warmSeconds = 0;
+    auto result =
+        a.backend->run(chainInput, !expand, *params, options, a.repeat, warmSeconds, in, events);
+    if (!result) return result.error();
+    if (a.repeat > 1) {
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "flarekit-postfx %dx%d %s %s: %.4f s per run (mean of %d after the first)",
+                      result->final.width(), result->final.height(), a.backend->name().c_str(),
+                      params->name.c_str(), warmSeconds, a.repeat - 1);
+        events.say(line);
+    }
+    if (expand && params->tone.op == ToneOperator::None) {
+        float* f = result->final.data();
+        const float *e = expanded.data(), *o = loaded->image.data();
+        for (std::size_t i = 0; i < result->final.pixelCount() * 4; ++i)
+            if (i % 4 != 3) f[i] = std::max(0.f, f[i] - (e[i] - o[i]));
+    }
+    if (a.verbose) sayPassTimes(times, a.backend->usesGl(), events);
+    if (!layersDir.empty()) {
+        if (Status s = writeLayers(layersDir, *result); !s) return s.error();
+    }
+    ImageOutput output{std::move(result->final), {}};
+    output.options.alpha = loaded->hasAlpha;
+    output.options.exrExtras = keptExtras(*loaded, in, out, events);
+    if (a.color) a.color->toOutput(output.image, output.options);
+    return output;
+}
+
+}  // namespace
+
+std::shared_ptr<const PostFxBackend> cpuPostFxBackend() {
+    static const auto backend = std::make_shared<const CpuBackend>();
+    return backend;
+}
+
+Result<JobReport> runPostFxJob(const PostFxJobOptions& a, const JobEvents& events) {
+    if (a.expandHighlights && !(*a.expandHighlights >= 1.f && *a.expandHighlights <= 1e4f))
+        return invalidInput("--expand-highlights: expected a gain in [1, 10000]");
+    JobReport report;
+    report.sequence = isFramePattern(a.input);
+    if (!report.sequence) {
+        if (Status s = checkSingleImage(a.input, a.shot); !s) return s.error();
+        if (Status s = writeImageJob(
+                a.output, [&] { return runChain(a, a.input, a.output, a.layersDir, events); });
+            !s)
+            return s.error();
+        return report;
+    }
+    if (a.repeat > 1) return invalidInput("--repeat: for one image, not a sequence");
+    auto plan = planShot(a.input, a.output, a.shot, {}, events);
+    if (!plan) return plan.error();
+    auto parallel = framesInFlight(*plan, postFxMemory(a), a.backend->usesGl());
+    if (!parallel) return parallel.error();
+    auto summary = runShot(
+        *plan, *parallel,
+        [&](const ShotFrame& f) {
+            // A sequence's layers go into a folder per frame: DIR/1001/bloom.exr, ...
+            const std::string layers =
+                a.layersDir.empty()
+                    ? ""
+                    : (std::filesystem::path(a.layersDir) / std::to_string(f.frame)).string();
+            return runChain(a, f.in, f.out, layers, events);
+        },
+        events);
+    if (!summary) return summary.error();
+    report.shot = *summary;
+    return report;
+}
+
+}  // namespace flarekit

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "JobOptions.h"
+
+#include <cstdio>
+#include <mutex>
+#include <span>
+
+#include "Common.h"
+#include "ParamOptions.h"
+#include "core/Interrupt.h"
+
+namespace flarekit::cli {
+
+void addShotOptions(CLI::App* cmd, ShotOptions& options) {
+    cmd->add_option("--frames", options.frames,
+                    "with a frame pattern (shot.####.exr or shot.%04d.exr) in and out: the frames "
+                    "A-B[:step] to render (default: every frame found); a farm chunk renders "
+                    "exactly these, each output bit-identical however the shot is chunked");
+    cmd->add_flag("--skip-missing", options.skipMissing,
+                  "render the frames that exist and list the gaps, instead of stopping at the "
+                  "first missing frame");
+    addParamOptions<ShotOptions>(cmd, kShotParams, options);
+}
+
+void addOcclusionOptions(CLI::App* cmd, OcclusionOptions& options) {
+    cmd->add_option("--matte", options.matte,
+                    "holdout matte (a frame pattern for a sequence): 1 = foreground hiding the "
+                    "light; its alpha, or its red channel when it has none (--matte-channel "
+                    "picks); with --depth-channel, the depth pass");
+    cmd->add_option("--matte-channel", options.matteChannel,
+                    "the matte's channel by name: R, G, B, A or any channel of an EXR (fg.A), of "
+                    "--matte's file, else of the input itself");
+    cmd->add_option("--depth-channel", options.depthChannel,
+                    "the depth pass's channel by name (Z, depth.Z, R, ...) of --matte's file, "
+                    "else of the input: a pixel nearer than --light-depth hides the light");
+    cmd->add_option("--light-depth", options.lightDepth,
+                    "the light's distance, in the depth pass's units");
+    addParamOptions<OcclusionOptions>(cmd, kOcclusionParams, options);
+    addParamOptions<TemporalParams>(cmd, std::span(kTemporalParams).first(3), options.temporal);
+}
+
+void addColorOptions(CLI::App* cmd, OcioSettings& settings) {
+    cmd->add_option("--colorspace-in", settings.in,
+                    "the input's colour space in the OCIO config (default: sRGB for 8/16-bit "
+                    "files, scene-linear Rec.709 for float files)");
+    cmd->add_option("--colorspace-out", settings.out,
+                    "the output's colour space in the OCIO config (default: as the input's kind)");
+    cmd->add_option("--ocio-config", settings.config,
+                    "OpenColorIO config file (default: $OCIO, else the shipped "
+                    "presets/ocio/flarekit.ocio; an ACES config works too)");
+}
+
+CliRun::CliRun(std::string label)
+    : m_label(std::move(label)), m_progress(std::make_shared<Progress>(m_label, 1)) {
+    m_events.warning = [](const std::string& line) { warn(line); };
+    // Detail lines from several frames at once: one whole line at a time.
+    auto stdoutMutex = std::make_shared<std::mutex>();
+    m_events.info = [stdoutMutex](const std::string& line) {
+        std::lock_guard lock(*stdoutMutex);
+        std::printf("%s\n", line.c_str());
+    };
+    m_events.progress = [progress = m_progress](int done, int total) {
+        progress->setTotal(total);
+        progress->update(done);
+    };
+    m_events.cancelled = [] { return interrupted(); };
+}
+
+int CliRun::finish(const Status& status) {
+    return status ? kExitOk : report(status.error());
+}
+
+int CliRun::finish(const Result<ShotSummary>& summary) {
+    m_progress->finish();
+    if (!summary) return report(summary.error());
+    std::fprintf(stderr, "%s\n", describeShotSummary(m_label, *summary).c_str());
+    return kExitOk;
+}
+
+int CliRun::finish(const Result<JobReport>& result) {
+    if (!result) {
+        if (m_progress) m_progress->finish();
+        return report(result.error());
+    }
+    if (!result->sequence) return kExitOk;
+    return finish(Result<ShotSummary>(result->shot));
+}
+
+}  // namespace flarekit::cli
