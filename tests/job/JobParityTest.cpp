@@ -14,6 +14,7 @@
 #include "Cli.h"
 #include "ShotFixtures.h"
 #include "flarekit/job/ApplyJob.h"
+#include "flarekit/job/LensJob.h"
 #include "flarekit/job/PostFxJob.h"
 #include "flarekit/ocio/OcioTransform.h"
 
@@ -132,6 +133,38 @@ TEST(JobParity, PostFxShotMatchesTheCli) {
     auto report = runPostFxJob(o);
     ASSERT_TRUE(report) << report.error().message;
     expectSameFiles(cli.path(), lib.path(), 4 + 4 * 6);
+}
+
+TEST(JobParity, LensShotWithEverySourceMatchesTheCli) {
+    TempDir in;
+    shot::writeShot(in, 3);
+    TempDir cli, lib;
+    const CliResult r = runCli({"lens", "render", "angenieux-double-gauss", in.file("in.####.exr"),
+                                "-o", cli.file("o.####.exr"), "--light", "all", "--layers",
+                                cli.file("layers"), "--ghosts", "6", "--grid", "24"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    LensJobOptions o;
+    o.lens = "angenieux-double-gauss";
+    o.input = in.file("in.####.exr");
+    o.output = lib.file("o.####.exr");
+    o.lightMode = LensLightMode::All;
+    o.layersDir = lib.file("layers");
+    o.render.ghosts = 6;
+    o.render.gridSide = 24;
+    std::vector<std::string> said;
+    std::mutex mutex;
+    JobEvents events;
+    events.info = [&](const std::string& line) {
+        std::lock_guard lock(mutex);
+        said.push_back(line);
+    };
+    auto report = runLensJob(o, events);
+    ASSERT_TRUE(report) << report.error().message;
+    expectSameFiles(cli.path(), lib.path(), 3 + 3 * 4);
+    // One summary line per frame, as the CLI prints on stdout.
+    ASSERT_EQ(said.size(), 3u);
+    for (const std::string& line : said)
+        EXPECT_NE(r.out.find(line.substr(line.find(':'))), std::string::npos) << line;
 }
 
 TEST(JobEvents, BadOptionsAreOneLineErrorsBeforeAnyWork) {

@@ -65,7 +65,11 @@ void warn(const std::string& message) {
 }
 
 const JobEvents& warningEvents() {
-    static const JobEvents events{[](const std::string& line) { warn(line); }, {}, {}, {}};
+    static const JobEvents events = [] {
+        JobEvents e;
+        e.warning = [](const std::string& line) { warn(line); };
+        return e;
+    }();
     return events;
 }
 

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "JobOptions.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <mutex>
+#include <optional>
 #include <span>
 
 #include "Common.h"
@@ -62,6 +65,28 @@ CliRun::CliRun(std::string label)
     m_events.progress = [progress = m_progress](int done, int total) {
         progress->setTotal(total);
         progress->update(done);
+    };
+    // Steps inside an image (a lens render's sources, which take minutes): a bar on a terminal,
+    // otherwise (logs, a farm) a line per step.
+    struct StepBar {
+        std::mutex mutex;
+        std::optional<Progress> bar;
+    };
+    m_events.steps = [label = m_label, state = std::make_shared<StepBar>(),
+                      tty = isatty(fileno(stderr)) == 1](
+                         const std::string& image, const std::string& what, int done, int total) {
+        std::lock_guard lock(state->mutex);
+        if (!tty) {
+            std::fprintf(stderr, "%s: %s: %s %d of %d drawn\n", label.c_str(), image.c_str(),
+                         what.c_str(), done, total);
+            return;
+        }
+        if (!state->bar) state->bar.emplace(label, total);
+        state->bar->update(done);
+        if (done == total) {
+            state->bar->finish();
+            state->bar.reset();
+        }
     };
     m_events.cancelled = [] { return interrupted(); };
 }

@@ -2,8 +2,6 @@
 // flarekit lens: flares from real lens prescriptions (presets/lenses). `ghosts` reports every
 // two-reflection ghost of a distant point source, `render` puts the traced flare on an image,
 // `list` names the shipped lenses with their paraxial figures.
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -15,33 +13,29 @@
 #include "Common.h"
 #include "JobOptions.h"
 #include "ParamOptions.h"
-#include "Progress.h"
 #include "flarekit/Lens.h"
 #include "flarekit/Tonemap.h"
+#include "flarekit/job/LensJob.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/gl/GpuLens.h"
+#include "flarekit/gl/LensBackend.h"
 #endif
 
 namespace flarekit::cli {
 
 namespace {
 
+//! The options of list, ghosts, bake and sheet (render's are the library's LensJobOptions).
 struct LensArgs {
-    std::string lens, angle = "0,0", in, out, light = "auto", layersDir, backend = "cpu",
-                      tonemap = "auto", dirtFile;
-    bool json = false, verbose = false;
+    LensJobOptions lens;  //!< the lens and its f-number, as `render` takes them
+    std::string angle = "0,0", out;
+    bool json = false;
     int rays = 64;
-    double fNumber = 0, threshold = 2.0, expandGain = 64.0;
-    int maxSources = 32, bakeGhosts = 16, sheetWidth = 1600;
+    int bakeGhosts = 16, sheetWidth = 1600;
     LensRenderOptions render;
-    ShotOptions shot;
 };
 
 Result<Lens> openLens(const LensArgs& a) {
-    auto lens = loadLens(a.lens);
-    if (!lens) return lens;
-    if (a.fNumber > 0) return stopDown(*lens, a.fNumber);
-    return lens;
+    return openJobLens(a.lens);
 }
 
 Result<std::array<double, 2>> parseAngle(const std::string& text) {
@@ -104,148 +98,43 @@ int runList() {
     return kExitOk;
 }
 
-//! The render's peak per pixel: the input, the three layers, their sum and the composite.
-JobMemory lensRenderMemory() {
-    return {6 * 16.0, 256.0 * (1 << 20), "lens render: 96 bytes per pixel and the traced meshes"};
-}
+//! The words of `lens render` that the library takes typed.
+struct RenderText {
+    std::string light = "auto", backend = "cpu", tonemap = "auto", dirtFile;
+};
 
-Result<std::vector<LensLight>> findLights(const LensArgs& a, const Image& image) {
-    const int diagonal = int(std::hypot(double(image.width()), double(image.height())));
-    if (a.light == "all")
-        return brightSources(image, a.threshold, std::max(1, diagonal / 64), a.maxSources);
-    if (a.light == "auto") {
-        // The brightest region: bright pixels merged over cells a sixteenth of the diagonal.
-        auto lights = brightSources(image, a.threshold, std::max(1, diagonal / 16), 1);
-        if (lights.empty())
-            warn(a.in + ": no pixel at or above --threshold " + std::to_string(a.threshold) +
-                 ": no light, no flare");
-        return lights;
+Status readRenderText(const RenderText& t, LensJobOptions& o) {
+    if (t.light == "all") {
+        o.lightMode = LensLightMode::All;
+    } else if (t.light != "auto") {
+        const auto p = parsePoint(t.light);
+        if (!p)
+            return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + t.light +
+                                "'");
+        o.lightMode = LensLightMode::At;
+        o.light = *p;
     }
-    const auto p = parsePoint(a.light);
-    if (!p)
-        return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + a.light + "'");
-    // Its energy: the bright pixels within a 32nd of the diagonal.
-    LensLight l = sourceAt(image, p->x, p->y, diagonal / 32.0, a.threshold);
-    if (l.energy[0] + l.energy[1] + l.energy[2] <= 0) {
-        warn(a.in + ": nothing at or above --threshold near " + a.light +
-             ": the light is given the energy of a 100-pixel source of 100 x white");
-        l.energy = {1e4, 1e4, 1e4};
-    }
-    return std::vector<LensLight>{l};
-}
-
-//! The flare's layers through the chosen backend.
-Result<LensFlareLayers> renderLayers(const LensArgs& a, const Lens& lens, const Image& image,
-                                     const std::vector<LensLight>& lights) {
-    // Many sources take minutes: a bar on a terminal, otherwise (logs, a farm) a line per source.
-    LensRenderOptions render = a.render;
-    std::optional<Progress> bar;
-    if (lights.size() > 1) {
-        if (isatty(fileno(stderr)) == 1) bar.emplace("lens render", int(lights.size()));
-        render.progress = [&](int done, int total) {
-            if (bar) {
-                bar->update(done);
-                if (done == total) bar->finish();
-            } else {
-                std::fprintf(stderr, "lens render: %s: source %d of %d drawn\n", a.in.c_str(), done,
-                             total);
-            }
-            return true;
-        };
-    }
-    if (a.backend == "cpu")
-        return renderLensFlare(lens, image.width(), image.height(), lights, render);
+    o.tonemap = toneOperatorNamed(t.tonemap);
+    if (t.backend == "gl") {
 #if FLAREKIT_HAS_GL
-    auto context = createHeadlessGl();
-    if (!context) return context.error();
-    if (Status s = checkGlFrame(image.width(), image.height(), 1, a.in + ": image"); !s)
-        return s.error();
-    LensGlTimes times;
-    auto layers = renderLensFlareGl(lens, image.width(), image.height(), lights, render, &times);
-    if (layers && a.verbose)
-        std::printf("OpenGL: %s: ghosts %.2f GPU ms, read-back %.2f ms\n",
-                    (*context)->renderer().c_str(), times.ghostsGpuMs, times.readbackMs);
-    return layers;
+        o.backend = gl::glLensBackend();
 #else
-    (void)lens, (void)lights;
-    return builtWithoutGl("lens render --backend gl");
+        return builtWithoutGl("lens render --backend gl");
 #endif
-}
-
-//! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
-Result<ImageOutput> renderJob(const LensArgs& a, const std::string& in, const std::string& out,
-                              const std::string& layerSuffix = "") {
-#if !FLAREKIT_HAS_GL
-    // Before any work: a build without OpenGL says so at once.
-    if (a.backend == "gl") return builtWithoutGl("lens render --backend gl");
-#endif
-    auto lens = openLens(a);
-    if (!lens) return lens.error();
-    auto loaded = readJobInput(in, lensRenderMemory(), warningEvents());
-    if (!loaded) return loaded.error();
-    Image& image = loaded->image;
-    // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
-    // a clipped sun carries the energy a flare needs; the output keeps the original pixels.
-    const bool expand = !loaded->wasFloat && a.expandGain > 1.0;
-    Image expanded;
-    if (expand) {
-        expanded = image;
-        expandHighlights(expanded, float(a.expandGain));
     }
-    auto lights = findLights(a, expand ? expanded : image);
-    if (!lights) return lights.error();
-    auto layers = renderLayers(a, *lens, image, *lights);
-    if (!layers) return layers.error();
-    // The flare layer: the three parts' colour, opaque like each of them.
-    Image flare(image.width(), image.height());
-    for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
-        flare.data()[i] = i % 4 == 3 ? 1.f
-                                     : layers->ghosts.data()[i] + layers->starburst.data()[i] +
-                                           layers->glare.data()[i];
-    if (!a.layersDir.empty()) {
-        if (Status s = makeOutputDirectory(a.layersDir); !s) return s.error();
-        const auto path = [&](const char* n) {
-            return (std::filesystem::path(a.layersDir) / (n + layerSuffix + ".exr")).string();
-        };
-        for (const auto& [name, img] :
-             {std::pair{"ghosts", &layers->ghosts}, std::pair{"starburst", &layers->starburst},
-              std::pair{"glare", &layers->glare}, std::pair{"flare", &flare}}) {
-            if (Status s = writeImage(path(name), *img); !s) return s.error();
-        }
-    }
-    Image composite = image;
-    for (std::size_t i = 0; i < composite.pixelCount(); ++i) {
-        for (int c = 0; c < 3; ++c) composite.data()[4 * i + c] += flare.data()[4 * i + c];
-    }
-    ToneOperator op = defaultDisplayCurve(loaded->wasFloat, out);
-    if (const auto named = toneOperatorNamed(a.tonemap)) op = *named;
-    toneMapImage(composite, op, 1.f);
-    ImageOutput result{std::move(composite), {}};
-    result.options.alpha = loaded->hasAlpha;
-    std::printf("%s: %zu light(s), flare through %s (f = %.1f mm)\n", out.c_str(), lights->size(),
-                lens->name.c_str(), paraxial(*lens).focalLength);
-    return result;
-}
-
-//! One image, or every frame of a pattern (the layers then as DIR/ghosts.1001.exr, ...).
-int runRender(const LensArgs& given) {
-    LensArgs a = given;
-    if (!a.dirtFile.empty()) {
+    if (!t.dirtFile.empty()) {
         // Read once, for every frame of a sequence.
-        auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
-        if (!mask) return report(mask.error());
-        a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
+        auto mask = readImage(t.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
+        if (!mask) return mask.error();
+        o.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
     }
-    if (!isFramePattern(a.in)) return runImageJob(a.out, [&] { return renderJob(a, a.in, a.out); });
+    return Ok{};
+}
+
+int runRender(const RenderText& text, LensJobOptions options) {
+    if (Status s = readRenderText(text, options); !s) return report(s.error());
     CliRun run("lens render");
-    auto plan = planShot(a.in, a.out, a.shot, {}, run.events());
-    if (!plan) return report(plan.error());
-    auto parallel = framesInFlight(*plan, lensRenderMemory(), a.backend == "gl");
-    if (!parallel) return report(parallel.error());
-    return run.finish(runShot(
-        *plan, *parallel,
-        [&](const ShotFrame& f) { return renderJob(a, f.in, f.out, frameSuffix(*plan, f)); },
-        run.events()));
+    return run.finish(runLensJob(options, run.events()));
 }
 
 int runBake(const LensArgs& a) {
@@ -276,16 +165,14 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     CLI::App* list = lens->add_subcommand("list", "the shipped lenses and their paraxial figures");
     list->callback([&exitCode] { exitCode = runList(); });
 
-    const auto addLensOptions = [&](CLI::App* cmd) {
-        cmd->add_option("lens", args->lens, "lens prescription: a shipped name or a JSON file")
+    const auto addLensOptions = [](CLI::App* cmd, LensJobOptions& target) {
+        cmd->add_option("lens", target.lens, "lens prescription: a shipped name or a JSON file")
             ->required();
-        cmd->add_option("--f-number", args->fNumber,
-                        "stop the lens down to this working f-number (paraxial)")
-            ->check(CLI::Range(0.1, 1000.0));
+        addParamOptions<LensJobOptions>(cmd, std::span(kLensJobParams).first(1), target);
     };
     CLI::App* ghosts = lens->add_subcommand(
         "ghosts", "every two-reflection ghost of a distant point source, brightest first");
-    addLensOptions(ghosts);
+    addLensOptions(ghosts, args->lens);
     ghosts
         ->add_option("--angle", args->angle,
                      "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
@@ -298,7 +185,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
 
     CLI::App* bake = lens->add_subcommand(
         "bake", "compile the lens into a sprite preset (for apply, render and the engine API)");
-    addLensOptions(bake);
+    addLensOptions(bake, args->lens);
     bake->add_option("-o,--output", args->out, "preset JSON to write")->required();
     bake->add_option("--ghosts", args->bakeGhosts, "the brightest N ghosts baked")
         ->check(CLI::Range(1, 254))
@@ -310,7 +197,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
 
     CLI::App* sheet = lens->add_subcommand(
         "sheet", "the lens in cross-section with its ghost paths, and its flare at three angles");
-    addLensOptions(sheet);
+    addLensOptions(sheet, args->lens);
     sheet->add_option("-o,--output", args->out, "image to write")->required();
     sheet->add_option("--width", args->sheetWidth, "sheet width in pixels (height: 9/16 of it)")
         ->check(CLI::Range(320, 8192))
@@ -326,58 +213,44 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     });
 
     CLI::App* render = lens->add_subcommand("render", "the lens's flare on an image");
-    // Photographs and HDRIs clip the sun by orders of magnitude (a real one is ~10^5 x the sky),
-    // so the command draws ghosts 100 x their physical share by default; --ghost-gain 1 is the
-    // lens's own figure for an unclipped source.
-    args->render.ghostGain = 100;
-    addLensOptions(render);
+    auto job = std::make_shared<LensJobOptions>();
+    auto text = std::make_shared<RenderText>();
+    addLensOptions(render, *job);
     render
-        ->add_option("input", args->in,
+        ->add_option("input", job->input,
                      "input image (EXR kept linear; 8-bit files sRGB), or a frame pattern "
                      "(shot.####.exr) for a sequence")
         ->required();
-    render->add_option("-o,--output", args->out, "output image")->required();
+    render->add_option("-o,--output", job->output, "output image")->required();
     render
-        ->add_option("--light", args->light,
+        ->add_option("--light", text->light,
                      "X,Y in pixels, auto (the brightest region) or all (every bright area "
                      "is a source, merged on a grid)")
         ->capture_default_str();
-    render
-        ->add_option("--threshold", args->threshold,
-                     "linear luminance at which a pixel is a source")
-        ->check(CLI::Range(0.0, 1e12))
-        ->capture_default_str();
-    render->add_option("--max-sources", args->maxSources, "--light all: at most N sources")
-        ->check(CLI::Range(1, 4096))
-        ->capture_default_str();
-    render
-        ->add_option("--expand-highlights", args->expandGain,
-                     "8/16-bit input: clipped pixels count as GAIN x white as sources")
-        ->check(CLI::Range(1.0, 1e6))
-        ->capture_default_str();
-    render->add_option("--layers", args->layersDir,
+    addParamOptions<LensJobOptions>(render, std::span(kLensJobParams).subspan(1), *job);
+    render->add_option("--layers", job->layersDir,
                        "also write ghosts, starburst, glare and flare (their sum) as linear EXR "
                        "into DIR");
     render
-        ->add_option("--backend", args->backend,
+        ->add_option("--backend", text->backend,
                      "cpu, or gl: the ghost meshes rasterised by OpenGL 4.5 (headless EGL)")
         ->check(CLI::IsMember({"cpu", "gl"}))
         ->capture_default_str();
     render
-        ->add_option("--tonemap", args->tonemap,
+        ->add_option("--tonemap", text->tonemap,
                      "display curve for 8/16-bit outputs: auto (filmic for HDR input), none, "
                      "aces, filmic")
         ->check(CLI::IsMember(toneChoices({"auto"})))
         ->capture_default_str();
-    render->add_option("--dirt-file", args->dirtFile,
+    render->add_option("--dirt-file", text->dirtFile,
                        "the iris plane's transmission from an image (your dust, scratches or "
                        "aperture shape): luminance 1 clear, 0 opaque, stretched over the stop; "
                        "it shapes the starburst");
-    render->add_flag("-v,--verbose", args->verbose,
+    render->add_flag("-v,--verbose", job->verbose,
                      "--backend gl: print the GPU and read-back times");
-    for (const auto& p : kLensRenderParams) addParamOption(render, p, args->render);
-    addShotOptions(render, args->shot);
-    render->callback([args, &exitCode] { exitCode = runRender(*args); });
+    for (const auto& p : kLensRenderParams) addParamOption(render, p, job->render);
+    addShotOptions(render, job->shot);
+    render->callback([job, text, &exitCode] { exitCode = runRender(*text, *job); });
 }
 
 }  // namespace flarekit::cli

@@ -27,6 +27,10 @@ struct JobEvents {
     std::function<void(const std::string& line)> info;
     //! A shot's frames: `done` of `total` written (called in order, `done` rising).
     std::function<void(int done, int total)> progress;
+    //! Progress inside one image, for work that takes minutes (a lens render's sources):
+    //! `done` of `total` `what`s ("source") of `image` drawn.
+    std::function<void(const std::string& image, const std::string& what, int done, int total)>
+        steps;
     //! Polled between frames and inside long renders: true stops the job with an Interrupted
     //! error naming what was finished (each file written is complete).
     std::function<bool()> cancelled;

@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "flarekit/job/LensJob.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/SafeWrite.h"
+
+namespace flarekit {
+
+namespace {
+
+class CpuBackend final : public LensBackend {
+  public:
+    std::string name() const override { return "cpu"; }
+    bool usesGl() const override { return false; }
+    Result<LensFlareLayers> render(const Lens& lens, int width, int height,
+                                   const std::vector<LensLight>& lights,
+                                   const LensRenderOptions& options, const std::string&, bool,
+                                   const JobEvents&) const override {
+        return renderLensFlare(lens, width, height, lights, options);
+    }
+};
+
+//! The render's peak per pixel: the input, the three layers, their sum and the composite.
+const JobMemory kLensRenderMemory{6 * 16.0, 256.0 * (1 << 20),
+                                  "lens render: 96 bytes per pixel and the traced meshes"};
+
+std::vector<LensLight> lensLights(const LensJobOptions& a, const std::string& in,
+                                  const Image& image, const JobEvents& events) {
+    const int diagonal = int(std::hypot(double(image.width()), double(image.height())));
+    if (a.lightMode == LensLightMode::All)
+        return brightSources(image, a.threshold, std::max(1, diagonal / 64), a.maxSources);
+    if (a.lightMode == LensLightMode::Brightest) {
+        // The brightest region: bright pixels merged over cells a sixteenth of the diagonal.
+        auto lights = brightSources(image, a.threshold, std::max(1, diagonal / 16), 1);
+        if (lights.empty())
+            events.warn(in + ": no pixel at or above --threshold " + std::to_string(a.threshold) +
+                        ": no light, no flare");
+        return lights;
+    }
+    // Its energy: the bright pixels within a 32nd of the diagonal.
+    LensLight l = sourceAt(image, a.light.x, a.light.y, diagonal / 32.0, a.threshold);
+    if (l.energy[0] + l.energy[1] + l.energy[2] <= 0) {
+        char at[64];
+        std::snprintf(at, sizeof at, "%g,%g", double(a.light.x), double(a.light.y));
+        events.warn(in + ": nothing at or above --threshold near " + at +
+                    ": the light is given the energy of a 100-pixel source of 100 x white");
+        l.energy = {1e4, 1e4, 1e4};
+    }
+    return {l};
+}
+
+//! The flare layers through the chosen backend; many sources report a step per source drawn
+//! and stop when the job is cancelled.
+Result<LensFlareLayers> renderLayers(const LensJobOptions& a, const std::string& in,
+                                     const Lens& lens, const Image& image,
+                                     const std::vector<LensLight>& lights,
+                                     const JobEvents& events) {
+    LensRenderOptions render = a.render;
+    if (lights.size() > 1)
+        render.progress = [&](int done, int total) {
+            if (events.steps) events.steps(in, "source", done, total);
+            return !events.stopRequested();
+        };
+    return a.backend->render(lens, image.width(), image.height(), lights, render, in, a.verbose,
+                             events);
+}
+
+Status writeLensLayers(const std::string& dir, const std::string& suffix,
+                       const LensFlareLayers& layers, const Image& flare) {
+    if (Status s = makeOutputDirectory(dir); !s) return s;
+    const auto path = [&](const char* n) {
+        return (std::filesystem::path(dir) / (n + suffix + ".exr")).string();
+    };
+    for (const auto& [name, img] :
+         {std::pair{"ghosts", &layers.ghosts}, std::pair{"starburst", &layers.starburst},
+          std::pair{"glare", &layers.glare}, std::pair{"flare", &flare}}) {
+        if (Status s = writeImage(path(name), *img); !s) return s;
+    }
+    return Ok{};
+}
+
+//! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
+Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
+                              const std::string& out, const JobEvents& events,
+                              const std::string& layerSuffix = "") {
+    auto lens = openJobLens(a);
+    if (!lens) return lens.error();
+    auto loaded = readJobInput(in, kLensRenderMemory, events);
+    if (!loaded) return loaded.error();
+    Image& image = loaded->image;
+    // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
+    // a clipped sun carries the energy a flare needs; the output keeps the original pixels.
+    const bool expand = !loaded->wasFloat && a.expandGain > 1.0;
+    Image expanded;
+    if (expand) {
+        expanded = image;
+        expandHighlights(expanded, float(a.expandGain));
+    }
+    const auto lights = lensLights(a, in, expand ? expanded : image, events);
+    auto layers = renderLayers(a, in, *lens, image, lights, events);
+    if (!layers) return layers.error();
+    // The flare layer: the three parts' colour, opaque like each of them.
+    Image flare(image.width(), image.height());
+    for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
+        flare.data()[i] = i % 4 == 3 ? 1.f
+                                     : layers->ghosts.data()[i] + layers->starburst.data()[i] +
+                                           layers->glare.data()[i];
+    if (!a.layersDir.empty()) {
+        if (Status s = writeLensLayers(a.layersDir, layerSuffix, *layers, flare); !s)
+            return s.error();
+    }
+    Image composite = image;
+    for (std::size_t i = 0; i < composite.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c) composite.data()[4 * i + c] += flare.data()[4 * i + c];
+    }
+    toneMapImage(composite, a.tonemap.value_or(defaultDisplayCurve(loaded->wasFloat, out)), 1.f);
+    ImageOutput result{std::move(composite), {}};
+    result.options.alpha = loaded->hasAlpha;
+    char line[400];
+    std::snprintf(line, sizeof line, "%s: %zu light(s), flare through %s (f = %.1f mm)",
+                  out.c_str(), lights.size(), lens->name.c_str(), paraxial(*lens).focalLength);
+    events.say(line);
+    return result;
+}
+
+}  // namespace
+
+Result<Lens> openJobLens(const LensJobOptions& a) {
+    auto lens = loadLens(a.lens);
+    if (!lens) return lens;
+    if (a.fNumber > 0) return stopDown(*lens, a.fNumber);
+    return lens;
+}
+
+std::shared_ptr<const LensBackend> cpuLensBackend() {
+    static const auto backend = std::make_shared<const CpuBackend>();
+    return backend;
+}
+
+Result<JobReport> runLensJob(const LensJobOptions& a, const JobEvents& events) {
+    JobReport report;
+    report.sequence = isFramePattern(a.input);
+    if (!report.sequence) {
+        if (Status s = checkSingleImage(a.input, a.shot); !s) return s.error();
+        if (Status s = writeImageJob(a.output, [&] { return renderOne(a, a.input, a.output, events); });
+            !s)
+            return s.error();
+        return report;
+    }
+    auto plan = planShot(a.input, a.output, a.shot, {}, events);
+    if (!plan) return plan.error();
+    auto parallel = framesInFlight(*plan, kLensRenderMemory, a.backend->usesGl());
+    if (!parallel) return parallel.error();
+    auto summary = runShot(
+        *plan, *parallel,
+        [&](const ShotFrame& f) {
+            return renderOne(a, f.in, f.out, events, frameSuffix(*plan, f));
+        },
+        events);
+    if (!summary) return summary.error();
+    report.shot = *summary;
+    return report;
+}
+
+}  // namespace flarekit
