@@ -140,26 +140,29 @@ void BM_DecodeSrgb8(benchmark::State& state) {
 }
 
 //! range(0): threads; the file is written once per iteration (encode, temp file, rename).
-void writeBench(benchmark::State& state, const char* name, int pngLevel = 1) {
+void writeBench(benchmark::State& state, const char* name, const EncodeSettings& encode = {}) {
     ThreadLimit limit(int(state.range(0)));
     const Image& image = photo();
     const std::string path = scratch(name);
-    const int before = pngCompression();
-    setPngCompression(pngLevel);
+    WriteOptions options;
+    options.encode = encode;
     for (auto _ : state) {
-        if (Status s = writeImage(path, image); !s) state.SkipWithError(s.error().message.c_str());
+        if (Status s = writeImage(path, image, options); !s)
+            state.SkipWithError(s.error().message.c_str());
     }
-    setPngCompression(before);
     state.counters["file_MB"] = double(std::filesystem::file_size(path)) * 1e-6;
     std::filesystem::remove(path);
     setRates(state, image);
 }
 
-void readBench(benchmark::State& state, const char* name) {
+void readBench(benchmark::State& state, const char* name, const EncodeSettings& encode = {}) {
     ThreadLimit limit(int(state.range(0)));
     const Image& image = photo();
     const std::string path = scratch(name);
-    if (Status s = writeImage(path, image); !s) state.SkipWithError(s.error().message.c_str());
+    WriteOptions options;
+    options.encode = encode;
+    if (Status s = writeImage(path, image, options); !s)
+        state.SkipWithError(s.error().message.c_str());
     for (auto _ : state) {
         auto r = readImage(path);
         if (!r) state.SkipWithError(r.error().message.c_str());
@@ -170,7 +173,9 @@ void readBench(benchmark::State& state, const char* name) {
 }
 
 void BM_WritePng(benchmark::State& state) {
-    writeBench(state, "w.png", int(state.range(1)));
+    EncodeSettings encode;
+    encode.pngCompression = int(state.range(1));
+    writeBench(state, "w.png", encode);
 }
 void BM_ReadPng(benchmark::State& state) {
     readBench(state, "r.png");
@@ -184,16 +189,15 @@ void BM_ReadExrHalf(benchmark::State& state) {
 // range(1): 1 for zlib itself, 0 for libdeflate answering OpenEXR's zlib calls (what the CLI
 // does, src/core/codecs/ZlibOnLibdeflate.cpp). OpenEXR's ZIP at its default level, 4.
 void zipBench(benchmark::State& state, bool write) {
-    const std::string before = exrCompression();
-    (void)setExrCompression("zip");
     codec::answerZlibCallsWithZlib(state.range(1) == 1);
+    EncodeSettings zip;
+    zip.exrCompression = "zip";
     if (write) {
-        writeBench(state, "wz.exr");
+        writeBench(state, "wz.exr", zip);
     } else {
-        readBench(state, "rz.exr");
+        readBench(state, "rz.exr", zip);
     }
     codec::answerZlibCallsWithZlib(false);
-    (void)setExrCompression(before);
 }
 void BM_WriteExrZip(benchmark::State& state) {
     zipBench(state, true);
@@ -204,13 +208,10 @@ void BM_ReadExrZip(benchmark::State& state) {
 // range(1): the zlib level of ZIP chunks, as --exr-zip-level: 1 is ISA-L's deflate (the
 // default), 2 and up libdeflate's; file_MB says what each level gives for its time.
 void BM_WriteExrZipLevel(benchmark::State& state) {
-    const std::string before = exrCompression();
-    const int level = exrZipLevel();
-    (void)setExrCompression("zip");
-    setExrZipLevel(int(state.range(1)));
-    writeBench(state, "wl.exr");
-    setExrZipLevel(level);
-    (void)setExrCompression(before);
+    EncodeSettings zip;
+    zip.exrCompression = "zip";
+    zip.exrZipLevel = int(state.range(1));
+    writeBench(state, "wl.exr", zip);
 }
 void BM_WriteJpeg(benchmark::State& state) {
     writeBench(state, "w.jpg");

@@ -50,6 +50,23 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job = {}
 
 enum class SampleFormat { Auto, U8, U16, Half, Float };
 
+//! How a file is compressed. Each write carries its own (WriteOptions::encode), so two jobs in
+//! one process may write with different settings.
+struct EncodeSettings {
+    //! zlib level of a PNG, 0 (store) to 9 (smallest); 1: fast (docs/formats.md has the size
+    //! trade-off).
+    int pngCompression = 1;
+    //! OpenEXR compression: none, rle, zips, zip, piz (lossless, fastest and smallest on
+    //! photographs), pxr24, b44, b44a, dwaa, dwab (the last five lossy). Empty: the EXR input's
+    //! own when its extras ride along, else piz. A name given overrides the input's.
+    std::string exrCompression;
+    //! zlib level of the EXR compressions built on deflate (zip, zips, and the lossless part of
+    //! dwaa and dwab), 0 (store) to 9 (smallest); 1, where OpenEXR's own default is 4.
+    int exrZipLevel = 1;
+};
+//! Levels in [0, 9] and a known compression name; otherwise one line naming the field.
+Status checkEncodeSettings(const EncodeSettings& settings);
+
 struct WriteOptions {
     SampleFormat format =
         SampleFormat::Auto;  //!< Auto: .exr half, .hdr float, .tif 16-bit, else 8-bit
@@ -58,7 +75,7 @@ struct WriteOptions {
     //! (false: values an OCIO output transform has already encoded; no sRGB tag is written).
     bool srgbEncode = true;
     //! An EXR output gets the input's other channels, attributes, windows, compression (unless
-    //! --exr-compression chose one) and, with format Auto, its pixel type. Ignored by other
+    //! encode.exrCompression names one) and, with format Auto, its pixel type. Ignored by other
     //! formats and when the image is not the input's size.
     std::shared_ptr<const ExrExtras> exrExtras;
     //! The colour space the values are in, when it is not flarekit's scene-linear Rec.709 (an
@@ -66,6 +83,7 @@ struct WriteOptions {
     //! spaces whose primaries are known (ACEScg, ACES2065-1, Rec.709 and sRGB), with the
     //! matching `chromaticities`. Empty: untagged.
     std::string colorSpace;
+    EncodeSettings encode;  //!< compression
 };
 
 //! The sample format writeImage will use for `path` (Auto resolved from the extension).
@@ -85,27 +103,10 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
 //! Reads an 8-bit file exactly (no colour conversion); fails on other bit depths.
 Result<Image8> readImage8(const std::string& path, const JobMemory& job = {4, 0, {}});
 //! Writes an 8-bit image exactly (no colour conversion), atomically.
-Status writeImage8(const std::string& path, const Image8& image);
+Status writeImage8(const std::string& path, const Image8& image, const EncodeSettings& encode = {});
 
-//! zlib level of every PNG written from now on, 0 (store) to 9 (smallest); 1 by default
-//! (fast: docs/formats.md has the size trade-off). Clamped to [0, 9].
-void setPngCompression(int level);
-int pngCompression();
-//! OpenEXR compression of every EXR written from now on: none, rle, zips, zip, piz (the
-//! default: lossless, fastest and smallest on photographs), pxr24, b44, b44a, dwaa, dwab (the
-//! last five lossy). InvalidInput for another name.
-Status setExrCompression(const std::string& name);
-//! Whether a compression was set by setExrCompression (chosen by the user): it then overrides
-//! the compression an EXR input passes to its output.
-bool exrCompressionChosen();
-//! The names setExrCompression accepts, in OpenEXR's order.
+//! The names EncodeSettings::exrCompression accepts, in OpenEXR's order.
 std::vector<std::string> exrCompressionNames();
-std::string exrCompression();
-//! zlib level of the EXR compressions built on deflate (zip, zips, and the lossless part of
-//! dwaa and dwab) in every EXR written from now on, 0 (store) to 9 (smallest); 1 by default,
-//! where OpenEXR's own default is 4 (docs/formats.md has the size trade-off). Clamped to [0, 9].
-void setExrZipLevel(int level);
-int exrZipLevel();
 
 //! Fails with InvalidInput when the directory `path` would be written into does not exist.
 Status checkOutputPath(const std::string& path);

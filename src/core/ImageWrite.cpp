@@ -4,7 +4,6 @@
 // EXR compression settings; an EXR input's extras given back to an EXR output.
 #include <algorithm>
 #include <atomic>
-#include <mutex>
 #include <vector>
 
 #include "core/HalfFloat.h"
@@ -23,54 +22,26 @@ using imageio::forEachChunk;
 using imageio::lowerExtension;
 using imageio::moduleFor;
 
-namespace {
-
-std::atomic<int> g_pngCompression{codec::EncodeOptions{}.pngCompression};
-std::atomic<int> g_exrZipLevel{codec::EncodeOptions{}.exrZipLevel};
-std::mutex g_exrMutex;
-std::string g_exrCompression = codec::EncodeOptions{}.exrCompression;
-bool g_exrCompressionChosen = false;
-
-}  // namespace
-
-void setPngCompression(int level) {
-    g_pngCompression = std::clamp(level, 0, 9);
-}
-int pngCompression() {
-    return g_pngCompression;
-}
-
-void setExrZipLevel(int level) {
-    g_exrZipLevel = std::clamp(level, 0, 9);
-}
-int exrZipLevel() {
-    return g_exrZipLevel;
-}
-
 std::vector<std::string> exrCompressionNames() {
     return codec::exrCompressionNames();
 }
 
-Status setExrCompression(const std::string& name) {
+Status checkEncodeSettings(const EncodeSettings& settings) {
+    for (const auto& [field, level] : {std::pair{"png_compression", settings.pngCompression},
+                                       std::pair{"exr_zip_level", settings.exrZipLevel}}) {
+        if (level < 0 || level > 9)
+            return invalidInput(std::string(field) + ": expected an integer in [0, 9], got " +
+                                std::to_string(level));
+    }
+    if (settings.exrCompression.empty()) return Ok{};
     const std::vector<std::string> names = codec::exrCompressionNames();
-    if (std::find(names.begin(), names.end(), name) == names.end()) {
+    if (std::find(names.begin(), names.end(), settings.exrCompression) == names.end()) {
         std::string list;
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
         return invalidInput("EXR compression: expected one of " + list + ", got '" +
-                            excerpt(name, 60) + "'");
+                            excerpt(settings.exrCompression, 60) + "'");
     }
-    std::lock_guard lock(g_exrMutex);
-    g_exrCompression = name;
-    g_exrCompressionChosen = true;
     return Ok{};
-}
-bool exrCompressionChosen() {
-    std::lock_guard lock(g_exrMutex);
-    return g_exrCompressionChosen;
-}
-std::string exrCompression() {
-    std::lock_guard lock(g_exrMutex);
-    return g_exrCompression;
 }
 
 namespace {
@@ -103,11 +74,14 @@ Result<Writer> writerFor(const std::string& path) {
     return w;
 }
 
-Status encodeAndWrite(const std::string& path, const Writer& w, const codec::Samples& s) {
+Status encodeAndWrite(const std::string& path, const Writer& w, const codec::Samples& s,
+                      const EncodeSettings& settings) {
+    // Checked here too: a library caller may fill the settings by hand.
+    if (Status check = checkEncodeSettings(settings); !check) return check;
     codec::EncodeOptions options;
-    options.pngCompression = g_pngCompression;
-    options.exrCompression = exrCompression();
-    options.exrZipLevel = g_exrZipLevel;
+    options.pngCompression = settings.pngCompression;
+    if (!settings.exrCompression.empty()) options.exrCompression = settings.exrCompression;
+    options.exrZipLevel = settings.exrZipLevel;
     Result<std::vector<unsigned char>> bytes = internalError("no encoder");
     switch (w.format) {
         case Format::Png:
@@ -207,7 +181,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     s.width = image.width();
     s.height = image.height();
     s.extras = extras;
-    s.chosenCompression = exrCompressionChosen();
+    s.chosenCompression = !options.encode.exrCompression.empty();
     s.colorSpace = options.colorSpace;
     s.channels = channels;
     s.srgb = !isFloat && options.srgbEncode;
@@ -226,13 +200,13 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
         s.data = codes.data();
         if (writer->format != Format::Png) {
             forEachChunk(pixels, encodeRows);
-            return encodeAndWrite(path, *writer, s);
+            return encodeAndWrite(path, *writer, s, options.encode);
         }
         // The PNG encoder has the rows made band by band as it goes (beside zlib, not all first).
         s.fillRows = [&](int y0, int y1) {
             encodeRows(std::size_t(y0) * width, std::size_t(y1) * width);
         };
-        return encodeAndWrite(path, *writer, s);
+        return encodeAndWrite(path, *writer, s, options.encode);
     };
     if (format == SampleFormat::U8)
         return encodeAs(std::uint8_t{}, SampleType::U8,
@@ -252,12 +226,12 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
                          halves.data() + p0 * std::size_t(channels));
         });
         s.data = halves.data();
-        return encodeAndWrite(path, *writer, s);
+        return encodeAndWrite(path, *writer, s, options.encode);
     }
     if (writer->format == Format::Exr && allFinite(image)) {
         s.data = image.data();
         s.pixelStride = 4 * sizeof(float);
-        return encodeAndWrite(path, *writer, s);
+        return encodeAndWrite(path, *writer, s, options.encode);
     }
     std::vector<float, PixelAllocator<float>> linear(pixels * std::size_t(channels));
     forEachChunk(pixels, [&](std::size_t p0, std::size_t p1) {
@@ -269,10 +243,10 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
         }
     });
     s.data = linear.data();
-    return encodeAndWrite(path, *writer, s);
+    return encodeAndWrite(path, *writer, s, options.encode);
 }
 
-Status writeImage8(const std::string& path, const Image8& image) {
+Status writeImage8(const std::string& path, const Image8& image, const EncodeSettings& encode) {
     if (Status s = checkHasPixels(path, image.width, image.height); !s) return s;
     if (Status s = checkWritablePath(path); !s) return s;
     auto writer = writerFor(path);
@@ -291,7 +265,7 @@ Status writeImage8(const std::string& path, const Image8& image) {
     s.channels = image.channels;
     s.type = SampleType::U8;
     s.data = image.pixels.data();
-    return encodeAndWrite(path, w, s);
+    return encodeAndWrite(path, w, s, encode);
 }
 
 }  // namespace flarekit

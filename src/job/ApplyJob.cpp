@@ -84,10 +84,12 @@ Lights autoLights(const ApplyOptions& a, const std::string& in, const Image& ima
 //! Layers: each pass and the whole flare as float EXRs in DIR, named NAME + `suffix` + .exr
 //! (".1001" for a sequence's frame, so each pass is a sequence of its own).
 Status writeFlareLayers(const std::string& dir, const std::string& suffix,
-                        const std::vector<FlareLayer>& layers, const Image& flare) {
+                        const std::vector<FlareLayer>& layers, const Image& flare,
+                        const EncodeSettings& encode) {
     if (Status s = makeOutputDirectory(dir); !s) return s;
     WriteOptions linear;
     linear.format = SampleFormat::Float;
+    linear.encode = encode;
     auto path = [&](const std::string& name) {
         return (std::filesystem::path(dir) / (name + suffix + ".exr")).string();
     };
@@ -104,7 +106,8 @@ Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights&
     Image flare;
     const auto layers = renderFlareLayers(image.width(), image.height(), preset, lights, flare);
     if (!a.layersDir.empty()) {
-        if (Status s = writeFlareLayers(a.layersDir, layerSuffix, layers, flare); !s) return s;
+        if (Status s = writeFlareLayers(a.layersDir, layerSuffix, layers, flare, a.encode); !s)
+            return s;
     }
     if (a.flareOnly) {
         loaded.hasAlpha = false;
@@ -158,6 +161,7 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
     ImageOutput result{std::move(image), {}};
     result.options.alpha = loaded->hasAlpha;
     result.options.format = a.depth;
+    result.options.encode = a.encode;
     // An EXR plate's other channels, attributes and windows go on to an EXR output (not to the
     // flare alone, which is not the plate).
     if (!a.flareOnly) result.options.exrExtras = keptExtras(*loaded, in, out, events);

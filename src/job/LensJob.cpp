@@ -70,15 +70,18 @@ Result<LensFlareLayers> renderLayers(const LensJobOptions& a, const std::string&
 }
 
 Status writeLensLayers(const std::string& dir, const std::string& suffix,
-                       const LensFlareLayers& layers, const Image& flare) {
+                       const LensFlareLayers& layers, const Image& flare,
+                       const EncodeSettings& encode) {
     if (Status s = makeOutputDirectory(dir); !s) return s;
+    WriteOptions options;
+    options.encode = encode;
     const auto path = [&](const char* n) {
         return (std::filesystem::path(dir) / (n + suffix + ".exr")).string();
     };
     for (const auto& [name, img] :
          {std::pair{"ghosts", &layers.ghosts}, std::pair{"starburst", &layers.starburst},
           std::pair{"glare", &layers.glare}, std::pair{"flare", &flare}}) {
-        if (Status s = writeImage(path(name), *img); !s) return s;
+        if (Status s = writeImage(path(name), *img, options); !s) return s;
     }
     return Ok{};
 }
@@ -110,7 +113,7 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
                                      : layers->ghosts.data()[i] + layers->starburst.data()[i] +
                                            layers->glare.data()[i];
     if (!a.layersDir.empty()) {
-        if (Status s = writeLensLayers(a.layersDir, layerSuffix, *layers, flare); !s)
+        if (Status s = writeLensLayers(a.layersDir, layerSuffix, *layers, flare, a.encode); !s)
             return s.error();
     }
     Image composite = image;
@@ -120,6 +123,7 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
     toneMapImage(composite, a.tonemap.value_or(defaultDisplayCurve(loaded->wasFloat, out)), 1.f);
     ImageOutput result{std::move(composite), {}};
     result.options.alpha = loaded->hasAlpha;
+    result.options.encode = a.encode;
     char line[400];
     std::snprintf(line, sizeof line, "%s: %zu light(s), flare through %s (f = %.1f mm)",
                   out.c_str(), lights.size(), lens->name.c_str(), paraxial(*lens).focalLength);
@@ -146,7 +150,8 @@ Result<JobReport> runLensJob(const LensJobOptions& a, const JobEvents& events) {
     report.sequence = isFramePattern(a.input);
     if (!report.sequence) {
         if (Status s = checkSingleImage(a.input, a.shot); !s) return s.error();
-        if (Status s = writeImageJob(a.output, [&] { return renderOne(a, a.input, a.output, events); });
+        if (Status s =
+                writeImageJob(a.output, [&] { return renderOne(a, a.input, a.output, events); });
             !s)
             return s.error();
         return report;

@@ -44,17 +44,19 @@ class CpuBackend final : public PostFxBackend {
     }
 };
 
-Status writeLayers(const std::string& dir, const PostFxResult& r) {
+Status writeLayers(const std::string& dir, const PostFxResult& r, const EncodeSettings& encode) {
     if (Status s = makeOutputDirectory(dir); !s) return s;
+    WriteOptions options;
+    options.encode = encode;
     const int w = r.final.width(), h = r.final.height();
     for (auto [name, layer] :
          {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
           std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}}) {
         const std::string path =
             (std::filesystem::path(dir) / (std::string(name) + ".exr")).string();
-        if (Status s = writeImage(path, resizeBilinear(*layer, w, h)); !s) return s;
+        if (Status s = writeImage(path, resizeBilinear(*layer, w, h), options); !s) return s;
     }
-    return writeImage((std::filesystem::path(dir) / "final.exr").string(), r.final);
+    return writeImage((std::filesystem::path(dir) / "final.exr").string(), r.final, options);
 }
 
 //! The chain's peak per input pixel. Measured at 12 MP: the CPU chain ~43 bytes per pixel over
@@ -151,10 +153,11 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
     }
     if (a.verbose) sayPassTimes(times, a.backend->usesGl(), events);
     if (!layersDir.empty()) {
-        if (Status s = writeLayers(layersDir, *result); !s) return s.error();
+        if (Status s = writeLayers(layersDir, *result, a.encode); !s) return s.error();
     }
     ImageOutput output{std::move(result->final), {}};
     output.options.alpha = loaded->hasAlpha;
+    output.options.encode = a.encode;
     output.options.exrExtras = keptExtras(*loaded, in, out, events);
     if (a.color) a.color->toOutput(output.image, output.options);
     return output;

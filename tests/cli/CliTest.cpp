@@ -153,7 +153,7 @@ TEST(CliApply, KeepsAlpha) {
     Image img(32, 32);
     img.fill({1.f, 1.f, 1.f, 0.5f});
     ASSERT_TRUE(
-        writeImage(dir.file("a.png"), img, {SampleFormat::U8, true, true, nullptr, {}}).ok());
+        writeImage(dir.file("a.png"), img, {SampleFormat::U8, true, true, nullptr, {}, {}}).ok());
     ASSERT_EQ(runCli({"apply", dir.file("a.png"), "-o", dir.file("o.png")}).exitCode, 0);
     auto out = readImage8(dir.file("o.png"));
     ASSERT_TRUE(out.ok());

@@ -256,7 +256,8 @@ TEST(Codec, WritesReadBackExactlyThroughOpenImageIo) {
           Case{"e.exr", SampleFormat::Half, true}, Case{"f.exr", SampleFormat::Float, false},
           Case{"g.bmp", SampleFormat::U8, false}}) {
         const std::string path = dir.file(c.name);
-        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha, true, nullptr, {}}).ok()) << c.name;
+        ASSERT_TRUE(writeImage(path, image, {c.format, c.alpha, true, nullptr, {}, {}}).ok())
+            << c.name;
         auto in = openStraight(path);
         ASSERT_TRUE(in) << c.name;
         const int channels = c.alpha ? 4 : 3;
@@ -287,19 +288,19 @@ TEST(Codec, PngBandsMakeOneValidStreamAtEveryLevel) {
     TempDir dir;
     std::mt19937 rng(21);
     std::uniform_real_distribution<float> value(0.f, 1.f);
-    const int before = pngCompression();
     for (const int height : {1, 128, 129, 300}) {
         Image image(29, height);
         for (std::size_t i = 0; i < image.pixelCount() * 4; ++i) image.data()[i] = value(rng);
         for (int y = 0; y < height; y += 3)  // flat runs too, which deflate finds matches in
             for (int x = 0; x < 29; ++x) image.at(x, y) = image.at(0, y);
         for (const int level : {0, 1, 2, 3, 4, 9}) {
-            setPngCompression(level);
             for (const SampleFormat format : {SampleFormat::U8, SampleFormat::U16}) {
                 for (const bool alpha : {false, true}) {
                     const std::string path = dir.file(std::string("b") + std::to_string(height) +
                                                       "-" + std::to_string(level) + ".png");
-                    ASSERT_TRUE(writeImage(path, image, {format, alpha, true, nullptr, {}}).ok());
+                    ASSERT_TRUE(
+                        writeImage(path, image, {format, alpha, true, nullptr, {}, {level, "", 1}})
+                            .ok());
                     auto in = openStraight(path);
                     ASSERT_TRUE(in) << path;
                     const int channels = alpha ? 4 : 3;
@@ -342,7 +343,6 @@ TEST(Codec, PngBandsMakeOneValidStreamAtEveryLevel) {
             }
         }
     }
-    setPngCompression(before);
     // Grey and grey + alpha, 8-bit as given (writeImage8: the rows are all made beforehand).
     for (const int channels : {1, 2}) {
         Image8 grey{40, 200, channels, {}};
@@ -380,19 +380,18 @@ TEST(Codec, PngCompressionLevelChangesSizeNotPixels) {
     const Image image = test::imageOf(256, 128, 5, [](int x, int y, auto unit) {
         return Rgba{float(x) / 256.f, unit() * 0.1f, float(y) / 128.f, 1.f};
     });
-    const int before = pngCompression();
     std::vector<std::uintmax_t> sizes;
     for (int level : {0, 1, 9}) {
-        setPngCompression(level);
+        WriteOptions options;
+        options.encode.pngCompression = level;
         const std::string path = dir.file(fileName(3, OIIO::TypeDesc::UINT8, level, ".png"));
-        ASSERT_TRUE(writeImage(path, image).ok());
+        ASSERT_TRUE(writeImage(path, image, options).ok());
         sizes.push_back(std::filesystem::file_size(path));
         auto back = readImage(path);
         ASSERT_TRUE(back.ok());
         for (int x = 0; x < image.width(); ++x)
             ASSERT_EQ(linearToSrgb8(back->image.at(x, 5).g), linearToSrgb8(image.at(x, 5).g));
     }
-    setPngCompression(before);
     EXPECT_GT(sizes[0], std::uintmax_t(256 * 128 * 3));  // stored: every byte plus framing
     EXPECT_LT(sizes[1], sizes[0]);
     EXPECT_LT(sizes[2], sizes[1]);
@@ -405,14 +404,13 @@ TEST(Codec, ExrZipLevelChangesSizeNotPixels) {
     const Image image = test::imageOf(320, 96, 9, [](int x, int y, auto unit) {
         return Rgba{float(x) / 32.f, unit() * 0.01f + 2.f, float(y % 7), 1.f};
     });
-    const int before = exrZipLevel();
-    const std::string kept = exrCompression();
-    ASSERT_TRUE(setExrCompression("zip").ok());
     std::vector<std::uintmax_t> sizes;
     for (int level : {0, 1, 9}) {
-        setExrZipLevel(level);
+        WriteOptions options;
+        options.encode.exrCompression = "zip";
+        options.encode.exrZipLevel = level;
         const std::string path = dir.file(std::string("zip") + std::to_string(level) + ".exr");
-        ASSERT_TRUE(writeImage(path, image).ok());
+        ASSERT_TRUE(writeImage(path, image, options).ok());
         sizes.push_back(std::filesystem::file_size(path));
         auto in = openStraight(path);
         ASSERT_TRUE(in);
@@ -423,8 +421,6 @@ TEST(Codec, ExrZipLevelChangesSizeNotPixels) {
             ASSERT_EQ(back[(std::size_t(40) * std::size_t(image.width()) + std::size_t(x)) * 3],
                       float(half(image.at(x, 40).r)));
     }
-    setExrZipLevel(before);
-    ASSERT_TRUE(setExrCompression(kept).ok());
     EXPECT_GT(sizes[0], std::uintmax_t(320 * 96 * 3 * 2));  // stored: every half plus framing
     EXPECT_LT(sizes[1], sizes[0]);
     EXPECT_LT(sizes[2], sizes[1]);

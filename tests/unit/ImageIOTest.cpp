@@ -49,7 +49,8 @@ TEST(ImageIO, ExrKeepsLinearHdrValues) {
     Image img(4, 3);
     img.fill({50.f, 0.001f, 2.5f, 0.5f});
     ASSERT_TRUE(
-        writeImage(dir.file("a.exr"), img, {SampleFormat::Float, true, true, nullptr, {}}).ok());
+        writeImage(dir.file("a.exr"), img, {SampleFormat::Float, true, true, nullptr, {}, {}})
+            .ok());
     auto back = readImage(dir.file("a.exr"));
     ASSERT_TRUE(back.ok());
     EXPECT_TRUE(back->wasFloat);

@@ -64,6 +64,7 @@ Status readText(const ApplyText& t, ApplyOptions& o) {
 
 int runApply(const ApplyText& text, ApplyOptions options) {
     if (Status s = readText(text, options); !s) return report(s.error());
+    options.encode = encodeSettings();
     CliRun run("apply");
     return run.finish(runApplyJob(options, run.events()));
 }

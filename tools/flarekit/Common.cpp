@@ -115,13 +115,24 @@ int runWriteJob(const std::string& out, const std::function<Result<T>()>& work,
 }
 }  // namespace
 
+EncodeSettings& encodeSettings() {
+    static EncodeSettings settings;
+    return settings;
+}
+
 int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {
-    if (Status s = writeImageJob(out, work); !s) return report(s.error());
+    const auto withSettings = [&]() -> Result<ImageOutput> {
+        auto result = work();
+        if (result) result->options.encode = encodeSettings();
+        return result;
+    };
+    if (Status s = writeImageJob(out, withSettings); !s) return report(s.error());
     return kExitOk;
 }
 
 int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work) {
-    return runWriteJob(out, work, [&](const Image8& image) { return writeImage8(out, image); });
+    return runWriteJob(
+        out, work, [&](const Image8& image) { return writeImage8(out, image, encodeSettings()); });
 }
 
 Error builtWithoutGl(const std::string& what) {

@@ -67,6 +67,9 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 
 //! The tail of every image-writing subcommand: `out` checked before any work (a bad path costs
 //! nothing), the work, one atomic write, the result as an exit code (errors as one line).
+//! The compression the global options (--png-compression, --exr-compression, --exr-zip-level)
+//! chose, set once while parsing; every file the CLI writes carries it in its WriteOptions.
+EncodeSettings& encodeSettings();
 int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work);
 int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work);
 

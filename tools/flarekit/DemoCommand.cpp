@@ -85,7 +85,11 @@ class FrameWriter {
             }
             if (!m_status) continue;  // after a failure, drain without writing
             Status s = Ok{};
-            runOnThisThread([&] { s = writeImage(job.first, job.second); });
+            runOnThisThread([&] {
+                WriteOptions options;
+                options.encode = encodeSettings();
+                s = writeImage(job.first, job.second, options);
+            });
             if (!s) {
                 m_status = s;
             } else {
@@ -261,7 +265,10 @@ int runDemo(DemoArgs& a) {
         return kExitOk;
     }
     if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
-    if (Status s = writeImage(dir + "strip.png", strip.image()); !s) return report(s.error());
+    WriteOptions stripOptions;
+    stripOptions.encode = encodeSettings();
+    if (Status s = writeImage(dir + "strip.png", strip.image(), stripOptions); !s)
+        return report(s.error());
     std::printf(
         "demo: per frame %.1f ms render, %.1f ms visibility (%s), %.1f ms flare + tone map\n",
         renderMs / n, visibilityMs / n, a.settings.method.c_str(), flareMs / n);

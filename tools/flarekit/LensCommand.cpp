@@ -133,6 +133,7 @@ Status readRenderText(const RenderText& t, LensJobOptions& o) {
 
 int runRender(const RenderText& text, LensJobOptions options) {
     if (Status s = readRenderText(text, options); !s) return report(s.error());
+    options.encode = encodeSettings();
     CliRun run("lens render");
     return run.finish(runLensJob(options, run.events()));
 }

@@ -50,6 +50,7 @@ Status readText(const PostFxText& t, PostFxJobOptions& o) {
 
 int runPostFx(const PostFxText& text, PostFxJobOptions options) {
     if (Status s = readText(text, options); !s) return report(s.error());
+    options.encode = encodeSettings();
     CliRun run("postfx");
     return run.finish(runPostFxJob(options, run.events()));
 }

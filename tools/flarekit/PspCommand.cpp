@@ -62,10 +62,11 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     in.trace = !a.traceFile.empty();
     auto r = psp::runPspFrame(trick, in);
     if (!r) return report(r.error());
-    if (Status s = writeImage8(a.out, r->frame); !s) return report(s.error());
+    if (Status s = writeImage8(a.out, r->frame, encodeSettings()); !s) return report(s.error());
     for (const psp::PspStep& step : r->steps)
-        if (Status s = writeImage8(
-                (std::filesystem::path(a.dumpDir) / (step.name + ".png")).string(), step.image);
+        if (Status s =
+                writeImage8((std::filesystem::path(a.dumpDir) / (step.name + ".png")).string(),
+                            step.image, encodeSettings());
             !s)
             return report(s.error());
     if (!a.traceFile.empty()) {
@@ -121,7 +122,9 @@ int runPspDemo(const PspDemoArgs& a) {
         if (!naive) return report(naive.error());
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i + 1);
-        if (Status s = writeImage8(dir + name, sideBySide(correct->frame, naive->frame)); !s)
+        if (Status s =
+                writeImage8(dir + name, sideBySide(correct->frame, naive->frame), encodeSettings());
+            !s)
             return report(s.error());
         char row[160];
         std::snprintf(row, sizeof row, "%d,%.4f,%d,%d,%d,%d,%d,%d,%d\n", i + 1, t, in->sunX,

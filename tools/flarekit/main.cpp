@@ -54,13 +54,14 @@ int main(int argc, char** argv) {
                    "refuse images over 16 MP claiming more pixels per file byte than this "
                    "(default 10000: decompression bombs, truncated files)")
         ->check(CLI::PositiveNumber);
-    int pngLevel = flarekit::pngCompression();
-    app.add_option("--png-compression", pngLevel,
+    flarekit::EncodeSettings& encode = encodeSettings();
+    app.add_option("--png-compression", encode.pngCompression,
                    "zlib level of the PNGs written, 0 (none) to 9 (smallest). Default 1 (zlib's "
                    "run-length strategy, the fastest): on an 8-megapixel photograph, 6 (libpng's "
                    "default) writes a file 9% smaller taking 20x as long to compress")
         ->check(CLI::Range(0, 9));
-    std::string exrCompression = flarekit::exrCompression();
+    std::string exrCompression =
+        "piz";  // shown as the default; the input's own is kept unless given
     CLI::Option* exrOption =
         app.add_option(
                "--exr-compression", exrCompression,
@@ -69,8 +70,7 @@ int main(int argc, char** argv) {
                "pxr24, "
                "b44, b44a, dwaa, dwab; an EXR input's own compression is kept unless this is given")
             ->check(CLI::IsMember(flarekit::exrCompressionNames()));
-    int exrZipLevel = flarekit::exrZipLevel();
-    app.add_option("--exr-zip-level", exrZipLevel,
+    app.add_option("--exr-zip-level", encode.exrZipLevel,
                    "zlib level of zip and zips EXRs written (and of dwaa/dwab's lossless part), 0 "
                    "(none) to 9 (smallest). Default 1, ISA-L's fastest deflate: on 1080p HDR "
                    "photographs level 2 (libdeflate) writes files 7-8% smaller (14% on a smooth "
@@ -93,12 +93,9 @@ int main(int argc, char** argv) {
     app.parse_complete_callback([&] {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)
             throw CLI::ValidationError(s.error().message);
-        flarekit::setPngCompression(pngLevel);
-        flarekit::setExrZipLevel(exrZipLevel);
-        if (exrOption->count() > 0) {
-            if (flarekit::Status s = flarekit::setExrCompression(exrCompression); !s)
-                throw CLI::ValidationError(s.error().message);
-        }
+        if (exrOption->count() > 0) encode.exrCompression = exrCompression;
+        if (flarekit::Status s = flarekit::checkEncodeSettings(encode); !s)
+            throw CLI::ValidationError(s.error().message);
     });
     flarekit::installInterruptHandlers();
     try {

@@ -46,6 +46,7 @@ struct ApplyOptions {
     ShotOptions shot;
     OcclusionOptions occlusion;
     std::shared_ptr<const ColorTransform> color;  //!< null: flarekit's defaults
+    EncodeSettings encode;                        //!< compression of the outputs and layers
     bool verbose = false;  //!< detail lines (candidates, flares drawn) through JobEvents::info
 };
 inline constexpr Param<ApplyOptions> kApplyParams[] = {

@@ -42,13 +42,13 @@ enum class LensLightMode {
 };
 
 struct LensJobOptions {
-    std::string lens;            //!< a shipped lens name or a prescription JSON file
-    double fNumber = 0;          //!< > 0: stopped down to this working f-number (paraxial)
-    std::string input, output;   //!< images, or frame patterns for a sequence
+    std::string lens;           //!< a shipped lens name or a prescription JSON file
+    double fNumber = 0;         //!< > 0: stopped down to this working f-number (paraxial)
+    std::string input, output;  //!< images, or frame patterns for a sequence
     LensLightMode lightMode = LensLightMode::Brightest;
-    Point light;                 //!< LensLightMode::At: pixels from the top-left
-    double threshold = 2.0;      //!< linear luminance at which a pixel is a source
-    int maxSources = 32;         //!< LensLightMode::All: at most this many
+    Point light;             //!< LensLightMode::At: pixels from the top-left
+    double threshold = 2.0;  //!< linear luminance at which a pixel is a source
+    int maxSources = 32;     //!< LensLightMode::All: at most this many
     //! 8/16-bit input: clipped pixels count as this gain x white as sources (1: off).
     double expandGain = 64.0;
     //! Also ghosts, starburst, glare and flare (their sum) as linear EXRs here (for a sequence
@@ -67,6 +67,7 @@ struct LensJobOptions {
     }();
     bool verbose = false;
     ShotOptions shot;
+    EncodeSettings encode;  //!< compression of the outputs and layers
 };
 
 inline constexpr Param<LensJobOptions> kLensJobParams[] = {

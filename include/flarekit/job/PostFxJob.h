@@ -52,6 +52,7 @@ struct PostFxJobOptions {
     bool verbose = false;   //!< each pass's time through JobEvents::info
     ShotOptions shot;
     std::shared_ptr<const ColorTransform> color;
+    EncodeSettings encode;  //!< compression of the outputs and layers
 };
 inline constexpr Param<PostFxJobOptions> kPostFxJobParams[] = {
     // Up to 1000 runs: enough for a stable mean, bounded in time.
