@@ -27,6 +27,16 @@ struct LoadedImage {
     bool halfExact = false;     //!< every value came from a half-float channel (an EXR's)
     std::shared_ptr<const ExrExtras> exrExtras;  //!< an EXR's other channels and header
     int extraChannels = 0;  //!< how many channels exrExtras carries (kept, not dropped)
+    //! A multi-part EXR's parts by name ("0", "1" for unnamed ones), in the file's order; the
+    //! ones not read ride in exrExtras to an EXR output unchanged. Empty for any other file.
+    std::vector<std::string> exrParts;
+};
+
+//! How to read a file beyond its memory.
+struct ReadOptions {
+    //! A multi-part EXR's part to read (stereo views, a compositor's layers): its name or its
+    //! index. Empty: the first. Given for a file that has no such part: an error listing them.
+    std::string part;
 };
 
 //! What the job reading an image will need, per pixel of the image and in all, so that its peak
@@ -46,7 +56,8 @@ Result<std::vector<float>> channelByName(const LoadedImage& loaded, const std::s
 
 //! Reads any file flarekit's codecs or OpenImageIO know, by its first bytes. Sizes, the
 //! pixels-per-byte ratio and the job's memory are checked before pixels are allocated.
-Result<LoadedImage> readImage(const std::string& path, const JobMemory& job = {});
+Result<LoadedImage> readImage(const std::string& path, const JobMemory& job = {},
+                              const ReadOptions& options = {});
 
 enum class SampleFormat { Auto, U8, U16, Half, Float };
 

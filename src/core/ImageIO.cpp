@@ -377,7 +377,8 @@ Result<std::vector<float>> channelByName(const LoadedImage& loaded, const std::s
                         "' (it has: " + excerpt(known, 400) + ")");
 }
 
-Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
+Result<LoadedImage> readImage(const std::string& path, const JobMemory& job,
+                              const ReadOptions& options) {
     if (Status s = checkReadable(path); !s) return s.error();
     const codec::HeaderCheck check = [&](const codec::Header& h) {
         return checkHeader(path, h, job);
@@ -385,7 +386,8 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
     const Format format = codec::sniffFormat(path);
     LoadedImage out;
     if (format == Format::Exr) {
-        auto exr = codec::readExr(path, check);
+        auto exr = codec::readExr(path, check, options.part, &out.exrParts);
+        if (exr && out.exrParts.size() == 1) out.exrParts.clear();  // one part: nothing to say
         if (exr) {
             out.fileChannels = exr->header.channels;
             out.hasAlpha = exr->hasAlpha;
@@ -399,8 +401,11 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job) {
             out.image = std::move(exr->image);
             return out;
         }
-        if (!leftToOiio(exr.error())) return exr.error();
+        if (!leftToOiio(exr.error()) || !options.part.empty()) return exr.error();
     }
+    if (!options.part.empty())
+        return invalidInput("--part " + excerpt(options.part, 60) + ": " + path +
+                            " is not a multi-part EXR (parts are an OpenEXR feature)");
     ConvertWhileDecoding png{out.image, {}, 0, {}, {}};
     const codec::PngRowTarget target{
         [&](const codec::Raw& r, int y0, int) { return png.rowsAt(r, y0); },

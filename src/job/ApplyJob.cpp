@@ -127,8 +127,12 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
     if (Status s = checkDepthFits(out, a.depth); !s) return s.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
-    auto loaded = readJobInput(in, kApplyMemory, events);
+    auto loaded = readJobInput(in, kApplyMemory, events, {a.part});
     if (!loaded) return loaded.error();
+    // The flare alone is not the plate: its parts are not written with it.
+    if (!a.flareOnly) {
+        if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
+    }
     if (a.color) a.color->toWorking(*loaded);
     Image& image = loaded->image;
     auto flares = lightsOf(*loaded);

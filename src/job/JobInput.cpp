@@ -25,11 +25,11 @@ double takeReadSeconds() {
 }  // namespace job_detail
 
 Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
-                                 const JobEvents& events) {
+                                 const JobEvents& events, const ReadOptions& read) {
     const auto start = std::chrono::steady_clock::now();
     auto loaded = [&] {
         LibraryNoiseFilter filter;
-        return readImage(path, job);
+        return readImage(path, job, read);
     }();
     job_detail::addReadSeconds(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -46,12 +46,28 @@ Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
     return loaded;
 }
 
+namespace {
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+}  // namespace
+
+Status checkPartsFit(const LoadedImage& loaded, const std::string& in, const std::string& out) {
+    if (loaded.exrParts.empty() || lowerExtension(out) == ".exr") return Ok{};
+    std::string parts;
+    for (const std::string& name : loaded.exrParts) parts += (parts.empty() ? "" : ", ") + name;
+    return invalidInput(in + ": a multi-part EXR (" + std::to_string(loaded.exrParts.size()) +
+                        " parts: " + parts +
+                        "); its other parts go only to an EXR output, not to " + out +
+                        ": write .exr (--part NAME picks the part flared)");
+}
+
 std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
                                             const std::string& out, const JobEvents& events) {
     if (!loaded.exrExtras) return nullptr;
-    std::string ext = std::filesystem::path(out).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".exr" && loaded.extraChannels > 0)
+    if (lowerExtension(out) != ".exr" && loaded.extraChannels > 0)
         events.warn(in + ": its " + std::to_string(loaded.extraChannels) +
                     " channel(s) past RGBA go only to an EXR output, not to " + out);
     return loaded.exrExtras;

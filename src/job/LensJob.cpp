@@ -92,8 +92,9 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
                               const std::string& layerSuffix = "") {
     auto lens = openJobLens(a);
     if (!lens) return lens.error();
-    auto loaded = readJobInput(in, kLensRenderMemory, events);
+    auto loaded = readJobInput(in, kLensRenderMemory, events, {a.part});
     if (!loaded) return loaded.error();
+    if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
     Image& image = loaded->image;
     // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
     // a clipped sun carries the energy a flare needs; the output keeps the original pixels.
@@ -123,6 +124,8 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
     toneMapImage(composite, a.tonemap.value_or(defaultDisplayCurve(loaded->wasFloat, out)), 1.f);
     ImageOutput result{std::move(composite), {}};
     result.options.alpha = loaded->hasAlpha;
+    // An EXR plate's other channels, attributes and parts go on to an EXR output.
+    result.options.exrExtras = keptExtras(*loaded, in, out, events);
     result.options.encode = a.encode;
     char line[400];
     std::snprintf(line, sizeof line, "%s: %zu light(s), flare through %s (f = %.1f mm)",

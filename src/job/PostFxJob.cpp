@@ -105,8 +105,9 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
                              const JobEvents& events) {
     auto params = jobParams(a);
     if (!params) return params.error();
-    auto loaded = readJobInput(in, postFxMemory(a), events);
+    auto loaded = readJobInput(in, postFxMemory(a), events, {a.part});
     if (!loaded) return loaded.error();
+    if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
     if (a.color) a.color->toWorking(*loaded);
     // No curve named, and the preset has none: the default display curve, as apply's.
     if (!a.tonemap && params->tone.op == ToneOperator::None)

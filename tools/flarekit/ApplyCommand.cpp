@@ -125,6 +125,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "the light per frame of a sequence: CSV (frame,x,y or frame,x,y,intensity; "
                     "pixels from the top-left, centres at +0.5) or JSON; linear between keys, the "
                     "end keys held outside them");
+    addPartOption(cmd, args->part);
     addShotOptions(cmd, args->shot);
     addOcclusionOptions(cmd, args->occlusion);
     addColorOptions(cmd, text->color);

@@ -53,6 +53,13 @@ void addColorOptions(CLI::App* cmd, OcioSettings& settings) {
                     "presets/ocio/flarekit.ocio; an ACES config works too)");
 }
 
+void addPartOption(CLI::App* cmd, std::string& part) {
+    cmd->add_option("--part", part,
+                    "a multi-part EXR input (stereo views, comp layers): the part to flare, by "
+                    "name or index (default: the first); every other part goes to the EXR output "
+                    "unchanged");
+}
+
 CliRun::CliRun(std::string label)
     : m_label(std::move(label)), m_progress(std::make_shared<Progress>(m_label, 1)) {
     m_events.warning = [](const std::string& line) { warn(line); };

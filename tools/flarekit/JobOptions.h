@@ -21,6 +21,8 @@ namespace flarekit::cli {
 void addShotOptions(CLI::App* cmd, ShotOptions& options);
 void addOcclusionOptions(CLI::App* cmd, OcclusionOptions& options);
 void addColorOptions(CLI::App* cmd, OcioSettings& settings);
+//! --part NAME|INDEX: a multi-part EXR's part to flare.
+void addPartOption(CLI::App* cmd, std::string& part);
 
 //! One job run from the command line: its events, and its result as an exit code.
 class CliRun {

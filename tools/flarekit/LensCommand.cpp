@@ -250,6 +250,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     render->add_flag("-v,--verbose", job->verbose,
                      "--backend gl: print the GPU and read-back times");
     for (const auto& p : kLensRenderParams) addParamOption(render, p, job->render);
+    addPartOption(render, job->part);
     addShotOptions(render, job->shot);
     render->callback([job, text, &exitCode] { exitCode = runRender(*text, *job); });
 }

@@ -104,6 +104,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxJobOptions>(cmd, kPostFxJobParams, *args);
+    addPartOption(cmd, args->part);
     addShotOptions(cmd, args->shot);
     addColorOptions(cmd, text->color);
     cmd->callback([args, text, &exitCode] { exitCode = runPostFx(*text, *args); });

@@ -24,6 +24,9 @@ struct ApplyOptions {
     std::string input;   //!< an image, or a frame pattern (shot.####.exr) for a sequence
     std::string output;  //!< an image, or a frame pattern for a sequence
     std::string preset = kDefaultSpritePreset;  //!< shipped name or a JSON file
+    //! A multi-part EXR input's part to flare (name or index; empty: the first). The other parts
+    //! go to the EXR output unchanged; another output format is refused.
+    std::string part;
     float intensity = 1.f;
     float exposure = 1.f;
     //! Where the light is. `light`: fixed, in pixels from the top-left (pixel centres at +0.5);

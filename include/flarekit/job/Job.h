@@ -68,8 +68,13 @@ struct ImageOutput {
 //! A job's input image: decoded as readImage does; more than 4 channels refused (flarekit
 //! writes RGBA, so the others would be lost); NaN/Inf replaced with a warning. `job` is the
 //! job's memory per input pixel, checked against the budget from the file's header.
+//! `read.part`: a multi-part EXR's part to flare.
 Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
-                                 const JobEvents& events = {});
+                                 const JobEvents& events = {}, const ReadOptions& read = {});
+
+//! A multi-part EXR input keeps its other parts only in an EXR output: any other `out` is
+//! refused with one line naming the parts, before any work.
+Status checkPartsFit(const LoadedImage& loaded, const std::string& in, const std::string& out);
 
 //! An EXR input's extras (other channels, attributes, windows) for writing `out`: all of it to
 //! an EXR; for another format a warning that its channels past RGBA are not written there.

@@ -45,6 +45,9 @@ struct LensJobOptions {
     std::string lens;           //!< a shipped lens name or a prescription JSON file
     double fNumber = 0;         //!< > 0: stopped down to this working f-number (paraxial)
     std::string input, output;  //!< images, or frame patterns for a sequence
+    //! A multi-part EXR input's part to flare (name or index; empty: the first). The other parts
+    //! go to the EXR output unchanged; another output format is refused.
+    std::string part;
     LensLightMode lightMode = LensLightMode::Brightest;
     Point light;             //!< LensLightMode::At: pixels from the top-left
     double threshold = 2.0;  //!< linear luminance at which a pixel is a source

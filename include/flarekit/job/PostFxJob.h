@@ -39,6 +39,9 @@ std::shared_ptr<const PostFxBackend> cpuPostFxBackend();
 struct PostFxJobOptions {
     std::string input, output;                  //!< images, or frame patterns for a sequence
     std::string preset = kDefaultPostFxPreset;  //!< shipped name or a JSON file
+    //! A multi-part EXR input's part to flare (name or index; empty: the first). The other parts
+    //! go to the EXR output unchanged; another output format is refused.
+    std::string part;
     std::shared_ptr<const PostFxBackend> backend = cpuPostFxBackend();
     //! The display curve; nothing: the preset's (filmic for HDR input to an 8/16-bit file when
     //! the preset has none).

@@ -49,7 +49,11 @@ struct ExrRead {
     std::shared_ptr<const ExrExtras> extras;  //!< the header and the other channels
     std::size_t nonFinite = 0;  //!< NaN and infinite samples, replaced by 0 in `image`
 };
-Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check);
+//! `part`: a multi-part file's part to read, by name or index (empty: the first); the others
+//! ride along in extras->parts. `partNames` gets every part's name ("0", "1" when unnamed).
+Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check,
+                        const std::string& part = {},
+                        std::vector<std::string>* partNames = nullptr);
 
 Result<std::vector<unsigned char>> encodePng(const Samples& s, const EncodeOptions& options);
 Result<std::vector<unsigned char>> encodeJpeg(const Samples& s, const EncodeOptions& options);

@@ -3,14 +3,25 @@
 // float RGBA image (each channel a strided slice of it) and writes take their slices from it.
 #include <ImfChannelList.h>
 #include <ImfCompression.h>
+#include <ImfDeepScanLineInputPart.h>
+#include <ImfDeepScanLineOutputPart.h>
+#include <ImfDeepTiledInputPart.h>
+#include <ImfDeepTiledOutputPart.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <ImfInputPart.h>
+#include <ImfMultiPartInputFile.h>
+#include <ImfMultiPartOutputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfOutputPart.h>
+#include <ImfPartType.h>
 #include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 #include <ImfThreading.h>
+#include <ImfTiledInputPart.h>
+#include <ImfTiledOutputPart.h>
 #include <half.h>
 
 #include <algorithm>
@@ -127,7 +138,8 @@ bool anyNonFinite(const std::uint16_t* halves, std::size_t count) {
 //! lane (R, G, B, A, or Y, -, -, A); one the file lacks is skipped. A band is about 128 rows (2 MiB
 //! of halves at 1920 wide, a core's L2 here): several chunks for each of OpenEXR's threads per
 //! call. Returns how many NaN and infinite values became 0.
-std::size_t readHalfInBands(Imf::InputFile& file, const Imf::FrameBuffer& extras,
+template <class File>
+std::size_t readHalfInBands(File& file, const Imf::FrameBuffer& extras,
                             const std::vector<std::string>& names, bool hasAlpha, bool grey,
                             Image& image) {
     const Imath::Box2i window = file.header().dataWindow();
@@ -164,12 +176,10 @@ std::size_t readHalfInBands(Imf::InputFile& file, const Imf::FrameBuffer& extras
     return nonFinite;
 }
 
-}  // namespace
-
-Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
-    startThreadPool();
-    try {
-        Imf::InputFile file(path.c_str());
+//! The image of `file` (a single-part file, or one part of a multi-part one).
+template <class File>
+Result<ExrRead> readExrImage(File& file, const std::string& path, const HeaderCheck& check) {
+    {
         const Imf::Header& header = file.header();
         const Imath::Box2i window = header.dataWindow();
         const Imf::ChannelList& channels = header.channels();
@@ -260,6 +270,63 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check) {
         file.readPixels(window.min.y, window.max.y);
         out.nonFinite = finishImage(out.image, grey);
         return out;
+    }
+}
+
+//! A part's name as a user gives it: its name attribute, else its index.
+std::string partName(const Imf::Header& header, int index) {
+    return header.hasName() ? header.name() : std::to_string(index);
+}
+
+//! The index of the part `wanted` names (a name, or an index), or the error listing the parts.
+Result<int> choosePart(const Imf::MultiPartInputFile& file, const std::string& wanted,
+                       const std::string& path) {
+    std::string list;
+    for (int i = 0; i < file.parts(); ++i) {
+        const std::string name = partName(file.header(i), i);
+        if (name == wanted || std::to_string(i) == wanted) return i;
+        list += (i ? ", " : "") + std::to_string(i) + " '" + name + "'";
+    }
+    return invalidInput("--part " + excerpt(wanted, 60) + ": " + path + " has no such part (" +
+                        std::to_string(file.parts()) + ": " + excerpt(list, 400) + ")");
+}
+
+}  // namespace
+
+Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check, const std::string& part,
+                        std::vector<std::string>* partNames) {
+    startThreadPool();
+    try {
+        Imf::MultiPartInputFile parts(path.c_str());
+        if (partNames)
+            for (int i = 0; i < parts.parts(); ++i)
+                partNames->push_back(partName(parts.header(i), i));
+        if (parts.parts() == 1 &&
+            (part.empty() || part == "0" || part == partName(parts.header(0), 0))) {
+            Imf::InputFile file(path.c_str());
+            return readExrImage(file, path, check);
+        }
+        int chosen = 0;
+        if (!part.empty()) {
+            auto index = choosePart(parts, part, path);
+            if (!index) return index.error();
+            chosen = *index;
+        }
+        const std::string type = parts.header(chosen).type();
+        if (type != Imf::SCANLINEIMAGE && type != Imf::TILEDIMAGE)
+            return invalidInput(path + ": part " + partName(parts.header(chosen), chosen) +
+                                " is deep (" + type + "); flarekit flares a flat image part");
+        Imf::InputPart input(parts, chosen);
+        auto read = readExrImage(input, path, check);
+        if (!read || parts.parts() == 1) return read;
+        auto kept = std::make_shared<ExrParts>();
+        kept->source = path;
+        kept->chosen = chosen;
+        for (int i = 0; i < parts.parts(); ++i) kept->headers.push_back(parts.header(i));
+        auto extras = std::make_shared<ExrExtras>(*read->extras);
+        extras->parts = std::move(kept);
+        read->extras = std::move(extras);
+        return read;
     } catch (const std::exception& e) {
         return invalidInput(path + ": cannot decode image: " + excerpt(firstLine(e.what()), 200));
     }
@@ -347,6 +414,44 @@ void tagColorSpace(Imf::Header& header, const std::string& name) {
 
 }  // namespace
 
+namespace {
+//! A multi-part file: the flared part written from `frame` in its place among the input's parts,
+//! every other part copied from the input chunk for chunk (no decode, so bit for bit), whatever
+//! its kind (scanline, tiled, deep).
+void writeWithOtherParts(Imf::OStream& memory, Imf::Header flared, const Imf::FrameBuffer& frame,
+                         int height, const ExrParts& parts) {
+    std::vector<Imf::Header> headers = parts.headers;
+    const Imf::Header& original = parts.headers[std::size_t(parts.chosen)];
+    flared.setName(original.name());  // every part of a multi-part file is named
+    flared.setType(Imf::SCANLINEIMAGE);
+    headers[std::size_t(parts.chosen)] = flared;
+    // Shared attributes (display window, pixel aspect, time code, chromaticities) are the first
+    // part's in every part, as the format requires.
+    Imf::MultiPartOutputFile out(memory, headers.data(), int(headers.size()), true);
+    Imf::MultiPartInputFile in(parts.source.c_str());
+    for (int i = 0; i < int(headers.size()); ++i) {
+        const std::string type = headers[std::size_t(i)].type();
+        if (i == parts.chosen) {
+            Imf::OutputPart part(out, i);
+            part.setFrameBuffer(frame);
+            part.writePixels(height);
+        } else if (type == Imf::TILEDIMAGE) {
+            Imf::TiledInputPart from(in, i);
+            Imf::TiledOutputPart(out, i).copyPixels(from);
+        } else if (type == Imf::DEEPSCANLINE) {
+            Imf::DeepScanLineInputPart from(in, i);
+            Imf::DeepScanLineOutputPart(out, i).copyPixels(from);
+        } else if (type == Imf::DEEPTILE) {
+            Imf::DeepTiledInputPart from(in, i);
+            Imf::DeepTiledOutputPart(out, i).copyPixels(from);
+        } else {
+            Imf::InputPart from(in, i);
+            Imf::OutputPart(out, i).copyPixels(from);
+        }
+    }
+}
+}  // namespace
+
 Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptions& options) {
     startThreadPool();
     if (s.type != SampleType::F32) return internalError("EXR takes float or half samples");
@@ -423,7 +528,9 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
         if (extras)
             for (const ExrExtraChannel& e : extras->channels) rawBytes += sampleBytes(e.channel);
         MemoryStream memory(rawBytes * std::size_t(s.width) * std::size_t(s.height) + 65536);
-        {
+        if (extras && extras->parts) {
+            writeWithOtherParts(memory, header, frame, s.height, *extras->parts);
+        } else {
             Imf::OutputFile file(memory, header);
             file.setFrameBuffer(frame);
             file.writePixels(s.height);

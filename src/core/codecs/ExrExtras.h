@@ -7,6 +7,7 @@
 #include <ImfChannelList.h>
 #include <ImfHeader.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,19 @@ struct ExrExtraChannel {
     std::vector<char> pixels;  //!< the data window, rows top first, samples of channel.type
 };
 
+//! A multi-part input (stereo views, a compositor's layers): every part's header and the file the
+//! parts not flared are copied from, chunk for chunk, when the output is written.
+struct ExrParts {
+    std::string source;                //!< the input file, read again at the write
+    int chosen = 0;                    //!< the part read into the image
+    std::vector<Imf::Header> headers;  //!< every part's, in the file's order
+};
+
 struct ExrExtras {
-    Imf::Header header;  //!< the input's whole header
+    Imf::Header header;  //!< the input's whole header (the chosen part's)
     std::vector<ExrExtraChannel> channels;
-    bool rgbHalf = true;  //!< the colour channels were half floats
+    bool rgbHalf = true;                    //!< the colour channels were half floats
+    std::shared_ptr<const ExrParts> parts;  //!< null: a single-part file
 };
 
 }  // namespace flarekit
