@@ -99,18 +99,21 @@ Status writeFlareLayers(const std::string& dir, const std::string& suffix,
 }
 
 //! The flare over black, pass by pass (written as layers when asked), then the output: the
-//! flare alone, or the input plus exactly that flare.
+//! flare alone, or the input plus exactly that flare. `passes` keeps the passes and the flare
+//! for the output's channels (--layers-in-output).
 Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights& lights,
-                      const std::string& layerSuffix, LoadedImage& loaded) {
+                      const std::string& layerSuffix, LoadedImage& loaded,
+                      std::vector<FlareLayer>& passes) {
     Image& image = loaded.image;
     Image flare;
-    const auto layers = renderFlareLayers(image.width(), image.height(), preset, lights, flare);
+    passes = renderFlareLayers(image.width(), image.height(), preset, lights, flare);
     if (!a.layersDir.empty()) {
-        if (Status s = writeFlareLayers(a.layersDir, layerSuffix, layers, flare, a.encode); !s)
+        if (Status s = writeFlareLayers(a.layersDir, layerSuffix, passes, flare, a.encode); !s)
             return s;
     }
     if (a.flareOnly) {
         loaded.hasAlpha = false;
+        if (a.layersInOutput) passes.push_back({"flare", flare});
         image = std::move(flare);
         return Ok{};
     }
@@ -118,6 +121,7 @@ Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights&
     const float* add = flare.data();
     for (std::size_t i = 0; i < image.pixelCount() * 4; ++i)
         if (i % 4 != 3) dst[i] += add[i];
+    if (a.layersInOutput) passes.push_back({"flare", std::move(flare)});
     return Ok{};
 }
 
@@ -125,6 +129,7 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
                                const LightsOf& lightsOf, const JobEvents& events,
                                const std::string& layerSuffix = "") {
     if (Status s = checkDepthFits(out, a.depth); !s) return s.error();
+    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
     auto loaded = readJobInput(in, kApplyMemory, events, {a.part});
@@ -142,8 +147,9 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
         !s) {
         return s.error();
     }
-    if (!a.layersDir.empty() || a.flareOnly) {
-        if (Status s = renderByLayers(a, *preset, *flares, layerSuffix, *loaded); !s)
+    std::vector<FlareLayer> passes;
+    if (!a.layersDir.empty() || a.flareOnly || a.layersInOutput) {
+        if (Status s = renderByLayers(a, *preset, *flares, layerSuffix, *loaded, passes); !s)
             return s.error();
     } else {
         for (const auto& [light, intensity] : *flares) {
@@ -169,6 +175,11 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
     // An EXR plate's other channels, attributes and windows go on to an EXR output (not to the
     // flare alone, which is not the plate).
     if (!a.flareOnly) result.options.exrExtras = keptExtras(*loaded, in, out, events);
+    if (a.layersInOutput) {
+        std::vector<NamedLayer> named;
+        for (const FlareLayer& pass : passes) named.push_back({pass.name, &pass.image});
+        result.options.exrExtras = withLayerChannels(result.options.exrExtras, named);
+    }
     if (a.color) a.color->toOutput(result.image, result.options);
     return result;
 }

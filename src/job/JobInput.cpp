@@ -7,6 +7,7 @@
 
 #include "core/LibraryNoise.h"
 #include "core/SafeWrite.h"
+#include "core/codecs/ExrExtras.h"
 #include "flarekit/job/Job.h"
 #include "job/ReadClock.h"
 
@@ -71,6 +72,39 @@ std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std
         events.warn(in + ": its " + std::to_string(loaded.extraChannels) +
                     " channel(s) past RGBA go only to an EXR output, not to " + out);
     return loaded.exrExtras;
+}
+
+std::shared_ptr<const ExrExtras> withLayerChannels(std::shared_ptr<const ExrExtras> extras,
+                                                   const std::vector<NamedLayer>& layers) {
+    if (layers.empty()) return extras;
+    const Image& first = *layers.front().second;
+    std::shared_ptr<ExrExtras> out;
+    if (extras) {
+        out = std::make_shared<ExrExtras>(*extras);
+    } else {
+        // No EXR input: a header of the image's size, with flarekit's own defaults (half
+        // colour, PIZ) for the rest of the file.
+        out = std::make_shared<ExrExtras>();
+        out->header = Imf::Header(first.width(), first.height());
+        out->header.compression() = Imf::PIZ_COMPRESSION;
+    }
+    for (const auto& [name, image] : layers) {
+        const std::size_t pixels = image->pixelCount();
+        for (int c = 0; c < 3; ++c) {
+            ExrExtraChannel channel{name + "." + "RGB" [c], Imf::Channel(Imf::FLOAT), {}};
+            channel.pixels.resize(pixels * sizeof(float));
+            auto* dst = reinterpret_cast<float*>(channel.pixels.data());
+            for (std::size_t i = 0; i < pixels; ++i) dst[i] = image->data()[4 * i + std::size_t(c)];
+            out->channels.push_back(std::move(channel));
+        }
+    }
+    return out;
+}
+
+Status checkLayersFit(bool layersInOutput, const std::string& out) {
+    if (!layersInOutput || lowerExtension(out) == ".exr") return Ok{};
+    return invalidInput("--layers-in-output: the passes become channels of an EXR output, not of " +
+                        out + " (write .exr, or --layers DIR for files of their own)");
 }
 
 Status writeImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {

@@ -90,6 +90,7 @@ Status writeLensLayers(const std::string& dir, const std::string& suffix,
 Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
                               const std::string& out, const JobEvents& events,
                               const std::string& layerSuffix = "") {
+    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
     auto lens = openJobLens(a);
     if (!lens) return lens.error();
     auto loaded = readJobInput(in, kLensRenderMemory, events, {a.part});
@@ -126,6 +127,12 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
     result.options.alpha = loaded->hasAlpha;
     // An EXR plate's other channels, attributes and parts go on to an EXR output.
     result.options.exrExtras = keptExtras(*loaded, in, out, events);
+    if (a.layersInOutput)
+        result.options.exrExtras =
+            withLayerChannels(result.options.exrExtras, {{"ghosts", &layers->ghosts},
+                                                         {"starburst", &layers->starburst},
+                                                         {"glare", &layers->glare},
+                                                         {"flare", &flare}});
     result.options.encode = a.encode;
     char line[400];
     std::snprintf(line, sizeof line, "%s: %zu light(s), flare through %s (f = %.1f mm)",

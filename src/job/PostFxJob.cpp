@@ -65,7 +65,8 @@ Status writeLayers(const std::string& dir, const PostFxResult& r, const EncodeSe
 JobMemory postFxMemory(const PostFxJobOptions& a) {
     const bool gl = a.backend->usesGl();
     double perPixel = gl ? 96 : 48;
-    if (!a.layersDir.empty()) perPixel += 6 * 16;  // bloom, ghosts, halo, streaks, lens, final
+    if (!a.layersDir.empty() || a.layersInOutput)
+        perPixel += 6 * 16;  // bloom, ghosts, halo, streaks, lens, final
     if (a.expandHighlights) perPixel += 16;
     return {perPixel, (gl ? 256.0 : 160.0) * (1 << 20),
             std::string("postfx ") + (gl ? "gl" : "cpu") + ": " + std::to_string(int(perPixel)) +
@@ -103,6 +104,7 @@ void sayPassTimes(const std::vector<PassTime>& times, bool gl, const JobEvents& 
 Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
                              const std::string& out, const std::string& layersDir,
                              const JobEvents& events) {
+    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
     auto params = jobParams(a);
     if (!params) return params.error();
     auto loaded = readJobInput(in, postFxMemory(a), events, {a.part});
@@ -114,7 +116,7 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
         params->tone.op = defaultDisplayCurve(loaded->wasFloat, out);
     std::vector<PassTime> times;
     PostFxOptions options;
-    options.keepLayers = !layersDir.empty();
+    options.keepLayers = !layersDir.empty() || a.layersInOutput;
     options.times = a.verbose ? &times : nullptr;
     // Expanded highlights: the chain sees the expanded image, the output keeps the original
     // pixels (the expansion is taken back off the additive composite).
@@ -123,7 +125,7 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
     // result only kept as a half EXR (the layers and expanded highlights use the floats).
     options.halfInput = loaded->halfExact;
     options.halfReadback =
-        outputSampleFormat(out) == SampleFormat::Half && layersDir.empty() && !expand;
+        outputSampleFormat(out) == SampleFormat::Half && !options.keepLayers && !expand;
     if (a.expandHighlights && loaded->wasFloat)
         events.warn(in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
     Image expanded;
@@ -160,6 +162,21 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
     output.options.alpha = loaded->hasAlpha;
     output.options.encode = a.encode;
     output.options.exrExtras = keptExtras(*loaded, in, out, events);
+    if (a.layersInOutput) {
+        // The layers at the output's size (the chain runs them at lower resolutions).
+        const int w = output.image.width(), h = output.image.height();
+        const std::pair<const char*, const Image*> layers[] = {{"bloom", &result->bloom},
+                                                               {"ghosts", &result->ghosts},
+                                                               {"halo", &result->halo},
+                                                               {"streaks", &result->streaks},
+                                                               {"lens", &result->lens}};
+        std::vector<Image> sized;
+        for (const auto& layer : layers) sized.push_back(resizeBilinear(*layer.second, w, h));
+        std::vector<NamedLayer> named;
+        for (std::size_t i = 0; i < sized.size(); ++i)
+            named.push_back({layers[i].first, &sized[i]});
+        output.options.exrExtras = withLayerChannels(output.options.exrExtras, named);
+    }
     if (a.color) a.color->toOutput(output.image, output.options);
     return output;
 }

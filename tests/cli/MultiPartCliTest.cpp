@@ -33,7 +33,8 @@ std::vector<half> viewPixels(int seed) {
         for (int x = 0; x < kW; ++x) {
             const float dx = float(x) + 0.5f - float(20 + 20 * seed), dy = float(y) + 0.5f - 20.f;
             const float v = dx * dx + dy * dy < 9.f ? 40.f : 0.05f + 0.002f * float(x + seed);
-            for (int c = 0; c < 3; ++c) px[(std::size_t(y) * kW + x) * 4 + c] = half(v * (1.f - 0.1f * float(c)));
+            for (int c = 0; c < 3; ++c)
+                px[(std::size_t(y) * kW + x) * 4 + c] = half(v * (1.f - 0.1f * float(c)));
             px[(std::size_t(y) * kW + x) * 4 + 3] = half(1.f);
         }
     return px;

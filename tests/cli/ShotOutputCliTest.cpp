@@ -166,3 +166,40 @@ TEST(ShotCli, AnExrsExtraChannelsCountInTheMemoryBudget) {
                   .exitCode,
               0);
 }
+
+TEST(ShotCli, LayersInOutputAreTheLayerFilesAsChannelsOfEachFrame) {
+    TempDir in, out;
+    writeShot(in, 2);
+    CliResult r =
+        runCli({"apply", in.file("in.####.exr"), "-o", out.file("comp.####.exr"), "--light",
+                "100.5,45.5", "--layers", out.file("layers"), "--layers-in-output"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* frame : {"0001", "0002"}) {
+        auto comp = readImage(out.file(std::string("comp.") + frame + ".exr"));
+        ASSERT_TRUE(comp) << comp.error().message;
+        int layers = 0;
+        for (const char* name : {"flare", "glow", "halo", "ghosts", "streaks", "starburst"}) {
+            auto file = readImage(out.file("layers/" + std::string(name) + "." + frame + ".exr"));
+            if (!file) continue;  // a pass the preset does not have
+            ++layers;
+            for (int c = 0; c < 3; ++c) {
+                const std::string channel = std::string(name) + "." + "RGB"[c];
+                auto plane = channelByName(*comp, channel, "comp");
+                ASSERT_TRUE(plane) << plane.error().message;
+                for (std::size_t i = 0; i < plane->size(); ++i)
+                    ASSERT_EQ((*plane)[i], file->image.data()[4 * i + std::size_t(c)])
+                        << channel << " " << i;
+            }
+        }
+        EXPECT_GE(layers, 3) << frame;
+        // Three channels per layer and nothing else (these plates have no channel past RGBA).
+        EXPECT_EQ(comp->extraChannels, 3 * layers) << frame;
+    }
+    // Channels need an EXR: another output is one line, no file.
+    r = runCli({"postfx", in.file("in.0001.exr"), "-o", out.file("p.png"), "--layers-in-output"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--layers-in-output: the passes become channels of an EXR output"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out.file("p.png")));
+}

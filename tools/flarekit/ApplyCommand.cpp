@@ -126,6 +126,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "pixels from the top-left, centres at +0.5) or JSON; linear between keys, the "
                     "end keys held outside them");
     addPartOption(cmd, args->part);
+    addLayersInOutputOption(cmd, args->layersInOutput);
     addShotOptions(cmd, args->shot);
     addOcclusionOptions(cmd, args->occlusion);
     addColorOptions(cmd, text->color);

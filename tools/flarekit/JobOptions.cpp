@@ -60,6 +60,12 @@ void addPartOption(CLI::App* cmd, std::string& part) {
                     "unchanged");
 }
 
+void addLayersInOutputOption(CLI::App* cmd, bool& layersInOutput) {
+    cmd->add_flag("--layers-in-output", layersInOutput,
+                  "also write the passes as named channels of the EXR output (flare.R, ghosts.R, "
+                  "...; linear float), one file per frame as compositing packages expect");
+}
+
 CliRun::CliRun(std::string label)
     : m_label(std::move(label)), m_progress(std::make_shared<Progress>(m_label, 1)) {
     m_events.warning = [](const std::string& line) { warn(line); };

@@ -23,6 +23,8 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionOptions& options);
 void addColorOptions(CLI::App* cmd, OcioSettings& settings);
 //! --part NAME|INDEX: a multi-part EXR's part to flare.
 void addPartOption(CLI::App* cmd, std::string& part);
+//! --layers-in-output: the passes as named channels of the EXR output.
+void addLayersInOutputOption(CLI::App* cmd, bool& layersInOutput);
 
 //! One job run from the command line: its events, and its result as an exit code.
 class CliRun {

@@ -251,6 +251,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
                      "--backend gl: print the GPU and read-back times");
     for (const auto& p : kLensRenderParams) addParamOption(render, p, job->render);
     addPartOption(render, job->part);
+    addLayersInOutputOption(render, job->layersInOutput);
     addShotOptions(render, job->shot);
     render->callback([job, text, &exitCode] { exitCode = runRender(*text, *job); });
 }

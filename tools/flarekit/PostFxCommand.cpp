@@ -105,6 +105,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxJobOptions>(cmd, kPostFxJobParams, *args);
     addPartOption(cmd, args->part);
+    addLayersInOutputOption(cmd, args->layersInOutput);
     addShotOptions(cmd, args->shot);
     addColorOptions(cmd, text->color);
     cmd->callback([args, text, &exitCode] { exitCode = runPostFx(*text, *args); });

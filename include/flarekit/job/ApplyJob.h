@@ -45,6 +45,9 @@ struct ApplyOptions {
     //! DIR/flare.1001.exr, ...); the output is then exactly input + flare.
     std::string layersDir;
     bool flareOnly = false;  //!< the flare alone over black instead of the composite
+    //! The passes and the whole flare also as channels of the EXR output (glow.R, ..., flare.B;
+    //! linear float, one file per frame).
+    bool layersInOutput = false;
     std::string writeTrack;  //!< a sequence: the light per frame saved as CSV (merged)
     ShotOptions shot;
     OcclusionOptions occlusion;

@@ -9,6 +9,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "flarekit/Image.h"
 #include "flarekit/ImageIO.h"
@@ -80,6 +82,15 @@ Status checkPartsFit(const LoadedImage& loaded, const std::string& in, const std
 //! an EXR; for another format a warning that its channels past RGBA are not written there.
 std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
                                             const std::string& out, const JobEvents& events);
+
+//! A job's passes as named channels of its EXR output (NAME.R, NAME.G, NAME.B: linear, float,
+//! one file per frame, as compositing packages expect), beside what `extras` (the input's other
+//! channels and header, or null) already carries.
+using NamedLayer = std::pair<std::string, const Image*>;
+std::shared_ptr<const ExrExtras> withLayerChannels(std::shared_ptr<const ExrExtras> extras,
+                                                   const std::vector<NamedLayer>& layers);
+//! Layers in the output need an EXR output: one line naming the option otherwise.
+Status checkLayersFit(bool layersInOutput, const std::string& out);
 
 //! The tail of every one-image job: `out` checked before any work (a bad path costs nothing),
 //! the work, one atomic write.

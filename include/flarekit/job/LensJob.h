@@ -57,6 +57,8 @@ struct LensJobOptions {
     //! Also ghosts, starburst, glare and flare (their sum) as linear EXRs here (for a sequence
     //! DIR/ghosts.1001.exr, ...).
     std::string layersDir;
+    //! The layers also as channels of the EXR output (ghosts.R, ..., flare.B; linear float).
+    bool layersInOutput = false;
     std::shared_ptr<const LensBackend> backend = cpuLensBackend();
     //! The display curve for 8/16-bit outputs; nothing: filmic for HDR input, else none.
     std::optional<ToneOperator> tonemap;

@@ -51,8 +51,10 @@ struct PostFxJobOptions {
     //! 10,000), so the lights of an 8-bit photo flare; the output keeps the original pixels.
     std::optional<float> expandHighlights;
     std::string layersDir;  //!< also bloom, ghosts, halo, streaks, lens, final as EXRs here
-    int repeat = 1;         //!< benchmarking: the chain N times, the mean warm time reported
-    bool verbose = false;   //!< each pass's time through JobEvents::info
+    //! The layers also as channels of the EXR output (bloom.R, ..., lens.B; linear float).
+    bool layersInOutput = false;
+    int repeat = 1;        //!< benchmarking: the chain N times, the mean warm time reported
+    bool verbose = false;  //!< each pass's time through JobEvents::info
     ShotOptions shot;
     std::shared_ptr<const ColorTransform> color;
     EncodeSettings encode;  //!< compression of the outputs and layers
