@@ -14,6 +14,9 @@
 
 namespace flarekit {
 
+//! The sprite preset a job uses when none is named.
+inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
+
 struct Preset {
     std::string name;
     std::string description;

@@ -27,6 +27,11 @@ extern "C" {
 #define FK_API
 #endif
 
+/* What a failed call returns (fk_error has the one-line reason). */
+#define FK_ERROR_INVALID (-1)     /* a refused argument or file: the caller's data */
+#define FK_ERROR_INTERNAL (-2)    /* a failure inside flarekit or the GL driver */
+#define FK_ERROR_INTERRUPTED (-3) /* stopped by SIGINT/SIGTERM at a safe point */
+
 #define FK_VERSION_MAJOR 0
 #define FK_VERSION_MINOR 2
 /* Views (eyes, multiview layers) one engine measures: rows of fk_engine_coverage_texture. */

@@ -19,11 +19,25 @@ namespace {
 //! fk_error(NULL): why the last fk_engine_create of this thread failed.
 thread_local std::string t_createError;
 
-constexpr int kInvalid = -1;  //!< a refused argument (fk_error says which)
+constexpr int kInvalid = FK_ERROR_INVALID;  //!< a refused argument (fk_error says which)
 constexpr const char* kNoContext =
     "no OpenGL context is current on this thread (the application's GL 4.5 core context must be "
     "current in every call)";
-constexpr int kInternal = -2;  //!< a failure inside flarekit or the GL driver
+constexpr int kInternal = FK_ERROR_INTERNAL;  //!< a failure inside flarekit or the GL driver
+
+//! The C code of a library error: the one place the C API's codes come from Result's.
+int codeOf(flarekit::ErrorCode code) {
+    switch (code) {
+        case flarekit::ErrorCode::InvalidInput:
+        case flarekit::ErrorCode::Io:
+            return FK_ERROR_INVALID;
+        case flarekit::ErrorCode::Interrupted:
+            return FK_ERROR_INTERRUPTED;
+        case flarekit::ErrorCode::Internal:
+            break;
+    }
+    return FK_ERROR_INTERNAL;
+}
 
 //! Runs `call` on the engine, turning a Status or an exception into the C return code and
 //! fk_error's text. Calls that touch GL first check a context is current: without one,
@@ -45,7 +59,7 @@ int guarded(fk_engine* e, const char* name, Call call, bool needsGl = true) {
             return 0;
         }
         e->engine->lastError = std::string(name) + ": " + s.error().message;
-        return s.error().code == flarekit::ErrorCode::Internal ? kInternal : kInvalid;
+        return codeOf(s.error().code);
     } catch (const std::exception& ex) {
         e->engine->lastError = std::string(name) + ": " + ex.what();
     } catch (...) {

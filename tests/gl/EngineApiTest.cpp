@@ -301,7 +301,7 @@ TEST(Engine, BadArgumentsAreRefusedByNameWithNothingDrawnAndNoGlError) {
         for (int x = 0; x < scene.width; ++x) sum += image->at(x, y).r;
     EXPECT_EQ(sum, 0.0);
     EXPECT_EQ(readCoverage(e.get(), 4), measured);
-    EXPECT_EQ(fk_engine_occlusion(nullptr, &frame, good.data(), 4), -1);
+    EXPECT_EQ(fk_engine_occlusion(nullptr, &frame, good.data(), 4), FK_ERROR_INVALID);
 }
 
 TEST(Engine, TheCppWrapperGivesTheSameCoverageAsTheCApi) {

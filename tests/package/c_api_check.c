@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 /* flarekit.h as a C compiler sees it, linked through pkg-config: the library's version, and an
- * engine refused before any GL work with its reason in fk_error(NULL). */
+ * engine refused before any GL work with its reason in fk_error(NULL), and a call on no engine
+ * refused with FK_ERROR_INVALID. */
 #include <flarekit/flarekit.h>
 #include <stdio.h>
 #include <string.h>
@@ -11,6 +12,8 @@ int main(void) {
     engine = fk_engine_create(0);
     if (engine != NULL) return 2;
     if (strstr(fk_error(NULL), "max_lights: expected 1..") == NULL) return 3;
+    /* A call on no engine: the invalid-argument code, the C side of the library's InvalidInput. */
+    if (fk_engine_occlusion(NULL, NULL, NULL, 0) != FK_ERROR_INVALID) return 4;
     printf("%s\n", fk_error(NULL));
     return 0;
 }

@@ -60,6 +60,12 @@ void addPartOption(CLI::App* cmd, std::string& part) {
                     "unchanged");
 }
 
+void addLensChoiceOptions(CLI::App* cmd, LensJobOptions& target) {
+    cmd->add_option("lens", target.lens, "lens prescription: a shipped name or a JSON file")
+        ->required();
+    addParamOptions<LensJobOptions>(cmd, std::span(kLensJobParams).first(1), target);
+}
+
 void addLayersInOutputOption(CLI::App* cmd, bool& layersInOutput) {
     cmd->add_flag("--layers-in-output", layersInOutput,
                   "also write the passes as named channels of the EXR output (flare.R, ghosts.R, "
@@ -105,6 +111,7 @@ CliRun::CliRun(std::string label)
 }
 
 int CliRun::finish(const Status& status) {
+    m_progress->finish();
     return status ? kExitOk : report(status.error());
 }
 

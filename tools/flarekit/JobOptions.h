@@ -12,6 +12,7 @@
 
 #include "Progress.h"
 #include "flarekit/job/ApplyJob.h"
+#include "flarekit/job/LensJob.h"
 #include "flarekit/job/ShotCoverage.h"
 #include "flarekit/job/ShotRun.h"
 #include "flarekit/ocio/OcioTransform.h"
@@ -23,6 +24,8 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionOptions& options);
 void addColorOptions(CLI::App* cmd, OcioSettings& settings);
 //! --part NAME|INDEX: a multi-part EXR's part to flare.
 void addPartOption(CLI::App* cmd, std::string& part);
+//! The lens positional and --f-number, as every `lens` subcommand takes them.
+void addLensChoiceOptions(CLI::App* cmd, LensJobOptions& target);
 //! --layers-in-output: the passes as named channels of the EXR output.
 void addLayersInOutputOption(CLI::App* cmd, bool& layersInOutput);
 

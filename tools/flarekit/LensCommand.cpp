@@ -98,46 +98,6 @@ int runList() {
     return kExitOk;
 }
 
-//! The words of `lens render` that the library takes typed.
-struct RenderText {
-    std::string light = "auto", backend = "cpu", tonemap = "auto", dirtFile;
-};
-
-Status readRenderText(const RenderText& t, LensJobOptions& o) {
-    if (t.light == "all") {
-        o.lightMode = LensLightMode::All;
-    } else if (t.light != "auto") {
-        const auto p = parsePoint(t.light);
-        if (!p)
-            return invalidInput("--light: expected X,Y in pixels, auto or all, got '" + t.light +
-                                "'");
-        o.lightMode = LensLightMode::At;
-        o.light = *p;
-    }
-    o.tonemap = toneOperatorNamed(t.tonemap);
-    if (t.backend == "gl") {
-#if FLAREKIT_HAS_GL
-        o.backend = gl::glLensBackend();
-#else
-        return builtWithoutGl("lens render --backend gl");
-#endif
-    }
-    if (!t.dirtFile.empty()) {
-        // Read once, for every frame of a sequence.
-        auto mask = readImage(t.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
-        if (!mask) return mask.error();
-        o.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
-    }
-    return Ok{};
-}
-
-int runRender(const RenderText& text, LensJobOptions options) {
-    if (Status s = readRenderText(text, options); !s) return report(s.error());
-    options.encode = encodeSettings();
-    CliRun run("lens render");
-    return run.finish(runLensJob(options, run.events()));
-}
-
 int runBake(const LensArgs& a) {
     auto lens = openLens(a);
     if (!lens) return report(lens.error());
@@ -166,14 +126,9 @@ void addLensCommand(CLI::App& app, int& exitCode) {
     CLI::App* list = lens->add_subcommand("list", "the shipped lenses and their paraxial figures");
     list->callback([&exitCode] { exitCode = runList(); });
 
-    const auto addLensOptions = [](CLI::App* cmd, LensJobOptions& target) {
-        cmd->add_option("lens", target.lens, "lens prescription: a shipped name or a JSON file")
-            ->required();
-        addParamOptions<LensJobOptions>(cmd, std::span(kLensJobParams).first(1), target);
-    };
     CLI::App* ghosts = lens->add_subcommand(
         "ghosts", "every two-reflection ghost of a distant point source, brightest first");
-    addLensOptions(ghosts, args->lens);
+    addLensChoiceOptions(ghosts, args->lens);
     ghosts
         ->add_option("--angle", args->angle,
                      "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
@@ -186,7 +141,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
 
     CLI::App* bake = lens->add_subcommand(
         "bake", "compile the lens into a sprite preset (for apply, render and the engine API)");
-    addLensOptions(bake, args->lens);
+    addLensChoiceOptions(bake, args->lens);
     bake->add_option("-o,--output", args->out, "preset JSON to write")->required();
     bake->add_option("--ghosts", args->bakeGhosts, "the brightest N ghosts baked")
         ->check(CLI::Range(1, 254))
@@ -198,7 +153,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
 
     CLI::App* sheet = lens->add_subcommand(
         "sheet", "the lens in cross-section with its ghost paths, and its flare at three angles");
-    addLensOptions(sheet, args->lens);
+    addLensChoiceOptions(sheet, args->lens);
     sheet->add_option("-o,--output", args->out, "image to write")->required();
     sheet->add_option("--width", args->sheetWidth, "sheet width in pixels (height: 9/16 of it)")
         ->check(CLI::Range(320, 8192))
@@ -213,47 +168,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
         });
     });
 
-    CLI::App* render = lens->add_subcommand("render", "the lens's flare on an image");
-    auto job = std::make_shared<LensJobOptions>();
-    auto text = std::make_shared<RenderText>();
-    addLensOptions(render, *job);
-    render
-        ->add_option("input", job->input,
-                     "input image (EXR kept linear; 8-bit files sRGB), or a frame pattern "
-                     "(shot.####.exr) for a sequence")
-        ->required();
-    render->add_option("-o,--output", job->output, "output image")->required();
-    render
-        ->add_option("--light", text->light,
-                     "X,Y in pixels, auto (the brightest region) or all (every bright area "
-                     "is a source, merged on a grid)")
-        ->capture_default_str();
-    addParamOptions<LensJobOptions>(render, std::span(kLensJobParams).subspan(1), *job);
-    render->add_option("--layers", job->layersDir,
-                       "also write ghosts, starburst, glare and flare (their sum) as linear EXR "
-                       "into DIR");
-    render
-        ->add_option("--backend", text->backend,
-                     "cpu, or gl: the ghost meshes rasterised by OpenGL 4.5 (headless EGL)")
-        ->check(CLI::IsMember({"cpu", "gl"}))
-        ->capture_default_str();
-    render
-        ->add_option("--tonemap", text->tonemap,
-                     "display curve for 8/16-bit outputs: auto (filmic for HDR input), none, "
-                     "aces, filmic")
-        ->check(CLI::IsMember(toneChoices({"auto"})))
-        ->capture_default_str();
-    render->add_option("--dirt-file", text->dirtFile,
-                       "the iris plane's transmission from an image (your dust, scratches or "
-                       "aperture shape): luminance 1 clear, 0 opaque, stretched over the stop; "
-                       "it shapes the starburst");
-    render->add_flag("-v,--verbose", job->verbose,
-                     "--backend gl: print the GPU and read-back times");
-    for (const auto& p : kLensRenderParams) addParamOption(render, p, job->render);
-    addPartOption(render, job->part);
-    addLayersInOutputOption(render, job->layersInOutput);
-    addShotOptions(render, job->shot);
-    render->callback([job, text, &exitCode] { exitCode = runRender(*text, *job); });
+    addLensRenderCommand(lens, exitCode);
 }
 
 }  // namespace flarekit::cli

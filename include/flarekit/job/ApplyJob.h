@@ -17,9 +17,6 @@
 
 namespace flarekit {
 
-//! The preset an apply job uses when none is named.
-inline constexpr const char* kDefaultSpritePreset = "tanczos-classic";
-
 struct ApplyOptions {
     std::string input;   //!< an image, or a frame pattern (shot.####.exr) for a sequence
     std::string output;  //!< an image, or a frame pattern for a sequence
