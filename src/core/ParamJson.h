@@ -14,6 +14,7 @@
 
 #include "core/JsonText.h"
 #include "flarekit/Param.h"
+#include "flarekit/ParamText.h"
 
 namespace flarekit {
 

@@ -216,11 +216,11 @@ Result<DemoReport> runDemoJob(const DemoJobOptions& a, const JobEvents& events) 
     auto stopped = [&]() -> Error {
         (void)writer.close();
         const int done = writer.written();
-        const std::string what =
-            done == 0 ? "no frame was written"
-                      : std::to_string(done) + " of " + std::to_string(n) + " frames written (" +
-                            report.framePath(a, 0) + " .. " + report.framePath(a, done - 1) +
-                            ", all complete); no coverage.csv, strip or video";
+        const std::string what = done == 0 ? "no frame was written"
+                                           : std::to_string(done) + " of " + std::to_string(n) +
+                                                 " frames written (" + report.framePath(a, 0) +
+                                                 " .. " + report.framePath(a, done - 1) +
+                                                 ", all complete); no coverage.csv, strip or video";
         return interrupted() ? interruptedError(what)
                              : Error{ErrorCode::Interrupted, "cancelled: " + what};
     };
@@ -248,8 +248,7 @@ Result<DemoReport> runDemoJob(const DemoJobOptions& a, const JobEvents& events) 
     if (Status s = writeFileSafely(dir + "coverage.csv", csv); !s) return s.error();
     WriteOptions stripOptions;
     stripOptions.encode = a.encode;
-    if (Status s = writeImage(dir + "strip.png", strip.image(), stripOptions); !s)
-        return s.error();
+    if (Status s = writeImage(dir + "strip.png", strip.image(), stripOptions); !s) return s.error();
     return report;
 }
 

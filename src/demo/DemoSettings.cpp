@@ -3,6 +3,7 @@
 // PSP demo and the tests share.
 #include "demo/DemoWorld.h"
 #include "flarekit/Demo.h"
+#include "flarekit/ParamText.h"
 #include "flarekit/Visibility.h"
 
 namespace flarekit {

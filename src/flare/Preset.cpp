@@ -12,6 +12,7 @@
 #include "core/ParamJson.h"
 #include "core/PresetFiles.h"
 #include "flarekit/Flare.h"
+#include "flarekit/ParamText.h"
 
 namespace flarekit {
 

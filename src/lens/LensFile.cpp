@@ -7,6 +7,7 @@
 #include "core/ParamJson.h"
 #include "core/PresetFiles.h"
 #include "flarekit/Lens.h"
+#include "flarekit/ParamText.h"
 #include "lens/LensTrace.h"
 
 namespace flarekit {

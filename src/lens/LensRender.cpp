@@ -14,6 +14,7 @@
 #include "core/Parallel.h"
 #include "flarekit/Color.h"
 #include "flarekit/Lens.h"
+#include "flarekit/ParamText.h"
 #include "lens/GhostMesh.h"
 #include "lens/LensTrace.h"
 #include "lens/Spectrum.h"

@@ -7,6 +7,7 @@
 
 #include "core/ParamJson.h"
 #include "core/PresetFiles.h"
+#include "flarekit/ParamText.h"
 #include "flarekit/PostFxParams.h"
 
 namespace flarekit {

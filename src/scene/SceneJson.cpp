@@ -6,6 +6,7 @@
 
 #include "core/ParamJson.h"
 #include "flarekit/Image.h"
+#include "flarekit/ParamText.h"
 #include "flarekit/Scene.h"
 
 namespace flarekit {

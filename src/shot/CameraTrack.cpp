@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/ParamJson.h"
+#include "flarekit/ParamText.h"
 #include "flarekit/Shot.h"
 #include "scene/CameraMath.h"
 

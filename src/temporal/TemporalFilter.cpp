@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flarekit/ParamText.h"
 #include "flarekit/Temporal.h"
 
 namespace flarekit {

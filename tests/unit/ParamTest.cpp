@@ -7,6 +7,7 @@
 
 #include "flarekit/Demo.h"
 #include "flarekit/Flare.h"
+#include "flarekit/ParamText.h"
 #include "flarekit/PostFx.h"
 #include "flarekit/Scene.h"
 #include "flarekit/Temporal.h"

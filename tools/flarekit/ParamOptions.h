@@ -12,6 +12,7 @@
 #include <string>
 
 #include "flarekit/Param.h"
+#include "flarekit/ParamText.h"
 
 namespace flarekit::cli {
 

@@ -26,7 +26,7 @@ struct DemoJobOptions {
 };
 
 struct DemoReport {
-    int frames = 0, digits = 4;  //!< frame_0001.png ..: the number's width
+    int frames = 0, digits = 4;                          //!< frame_0001.png ..: the number's width
     double renderMs = 0, visibilityMs = 0, flareMs = 0;  //!< per frame, averaged
     std::string renderer, platform;                      //!< the GL the frames were drawn on
     //! The frame's file (0-based index): OUT/frame_0001.png, ...
