@@ -12,8 +12,8 @@ int main(void) {
     engine = fk_engine_create(0);
     if (engine != NULL) return 2;
     if (strstr(fk_error(NULL), "max_lights: expected 1..") == NULL) return 3;
+    printf("%s\n", fk_error(NULL));
     /* A call on no engine: the invalid-argument code, the C side of the library's InvalidInput. */
     if (fk_engine_occlusion(NULL, NULL, NULL, 0) != FK_ERROR_INVALID) return 4;
-    printf("%s\n", fk_error(NULL));
     return 0;
 }
