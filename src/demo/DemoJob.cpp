@@ -13,7 +13,6 @@
 #include <mutex>
 #include <thread>
 
-#include "core/Interrupt.h"
 #include "core/Parallel.h"
 #include "core/SafeWrite.h"
 #include "flarekit/Limits.h"
@@ -221,8 +220,7 @@ Result<DemoReport> runDemoJob(const DemoJobOptions& a, const JobEvents& events) 
                                                  " frames written (" + report.framePath(a, 0) +
                                                  " .. " + report.framePath(a, done - 1) +
                                                  ", all complete); no coverage.csv, strip or video";
-        return interrupted() ? interruptedError(what)
-                             : Error{ErrorCode::Interrupted, "cancelled: " + what};
+        return cancelledError(what);
     };
     for (int i = 0; i < n; ++i) {
         if (events.stopRequested()) return stopped();

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <iterator>
 
+#include "core/ImageIOShared.h"
+#include "core/Interrupt.h"
 #include "core/LibraryNoise.h"
 #include "core/SafeWrite.h"
 #include "core/codecs/ExrExtras.h"
@@ -47,16 +49,8 @@ Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
     return loaded;
 }
 
-namespace {
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-}  // namespace
-
 Status checkPartsFit(const LoadedImage& loaded, const std::string& in, const std::string& out) {
-    if (loaded.exrParts.empty() || lowerExtension(out) == ".exr") return Ok{};
+    if (loaded.exrParts.empty() || imageio::lowerExtension(out) == ".exr") return Ok{};
     std::string parts;
     for (const std::string& name : loaded.exrParts) parts += (parts.empty() ? "" : ", ") + name;
     return invalidInput(in + ": a multi-part EXR (" + std::to_string(loaded.exrParts.size()) +
@@ -68,7 +62,7 @@ Status checkPartsFit(const LoadedImage& loaded, const std::string& in, const std
 std::shared_ptr<const ExrExtras> keptExtras(const LoadedImage& loaded, const std::string& in,
                                             const std::string& out, const JobEvents& events) {
     if (!loaded.exrExtras) return nullptr;
-    if (lowerExtension(out) != ".exr" && loaded.extraChannels > 0)
+    if (imageio::lowerExtension(out) != ".exr" && loaded.extraChannels > 0)
         events.warn(in + ": its " + std::to_string(loaded.extraChannels) +
                     " channel(s) past RGBA go only to an EXR output, not to " + out);
     return loaded.exrExtras;
@@ -102,9 +96,15 @@ std::shared_ptr<const ExrExtras> withLayerChannels(std::shared_ptr<const ExrExtr
 }
 
 Status checkLayersFit(bool layersInOutput, const std::string& out) {
-    if (!layersInOutput || lowerExtension(out) == ".exr") return Ok{};
+    if (!layersInOutput || imageio::lowerExtension(out) == ".exr") return Ok{};
     return invalidInput("--layers-in-output: the passes become channels of an EXR output, not of " +
                         out + " (write .exr, or --layers DIR for files of their own)");
+}
+
+Error cancelledError(const std::string& what) {
+    // A signal names itself ("interrupted by SIGTERM: ..."); a front end's cancel does not.
+    if (interrupted()) return interruptedError(what);
+    return {ErrorCode::Interrupted, "cancelled: " + what};
 }
 
 Status writeImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work) {

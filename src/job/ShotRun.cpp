@@ -10,7 +10,6 @@
 #include <optional>
 #include <thread>
 
-#include "core/Interrupt.h"
 #include "flarekit/Limits.h"
 #include "job/ReadClock.h"
 
@@ -184,12 +183,7 @@ Result<ShotSummary> runShot(const ShotPlan& plan, int parallel,
             "frame " + std::to_string(failure->first) + ": " + e.message + "; " + writtenText;
         return e;
     }
-    if (cancelled || events.stopRequested()) {
-        // A signal names itself ("interrupted by SIGTERM: ..."); a front end's cancel button
-        // does not.
-        if (interrupted()) return interruptedError(writtenText);
-        return Error{ErrorCode::Interrupted, "cancelled: " + writtenText};
-    }
+    if (cancelled || events.stopRequested()) return cancelledError(writtenText);
     ShotSummary summary;
     summary.frames = total;
     summary.parallel = std::clamp(parallel, 1, total);

@@ -64,15 +64,6 @@ void warn(const std::string& message) {
     std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str());
 }
 
-const JobEvents& warningEvents() {
-    static const JobEvents events = [] {
-        JobEvents e;
-        e.warning = [](const std::string& line) { warn(line); };
-        return e;
-    }();
-    return events;
-}
-
 std::optional<Point> parsePoint(const std::string& text) {
     const auto comma = text.find(',');
     if (comma == std::string::npos) return std::nullopt;

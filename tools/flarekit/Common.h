@@ -43,8 +43,6 @@ std::string cappedLine(const std::string& message);
 //! The first line of `text`, cut to `max` characters.
 std::string excerptLine(const std::string& text, std::size_t max);
 void warn(const std::string& message);
-//! Events that print warnings as warn() does (for a library call outside a job).
-const JobEvents& warningEvents();
 
 //! readImage8 with library noise filtered.
 inline Result<Image8> readImage8Quietly(const std::string& path) {

@@ -124,7 +124,7 @@ int CliRun::finish(const Result<ShotSummary>& summary) {
 
 int CliRun::finish(const Result<JobReport>& result) {
     if (!result) {
-        if (m_progress) m_progress->finish();
+        m_progress->finish();
         return report(result.error());
     }
     if (!result->sequence) return kExitOk;

@@ -92,6 +92,10 @@ std::shared_ptr<const ExrExtras> withLayerChannels(std::shared_ptr<const ExrExtr
 //! Layers in the output need an EXR output: one line naming the option otherwise.
 Status checkLayersFit(bool layersInOutput, const std::string& out);
 
+//! The Interrupted error of a job stopped by JobEvents::cancelled, `what` saying what it
+//! finished: "interrupted by SIGTERM: ..." when a signal stopped it, else "cancelled: ...".
+Error cancelledError(const std::string& what);
+
 //! The tail of every one-image job: `out` checked before any work (a bad path costs nothing),
 //! the work, one atomic write.
 Status writeImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work);
