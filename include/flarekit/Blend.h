@@ -17,6 +17,9 @@ namespace flarekit {
 // ---- 8-bit, exact (Tanczos 1999) ------------------------------------------------------------
 
 enum class Blend8Mode { Alpha, AlphaShift, Premultiplied, Add };
+//! The modes' names, in Blend8Mode's order.
+inline constexpr std::array<std::string_view, 4> kBlend8ModeNames = {"alpha", "alpha-shift",
+                                                                     "premultiplied", "add"};
 std::optional<Blend8Mode> parseBlend8Mode(std::string_view name);  //!< "alpha", "alpha-shift", ...
 std::string_view blend8ModeName(Blend8Mode mode);
 

@@ -216,6 +216,31 @@ Result<Preset> bakeLens(const Lens& lens, int ghosts);
 //! and of its brightest ghost, above its flare at three field angles; `width` x width 9/16.
 Result<Image> renderLensSheet(const Lens& lens, int width);
 
+//! The numbers the lens tools take beside a prescription (ghosts, bake, sheet), described once
+//! for the library's checks and the CLI's flags.
+struct LensToolOptions {
+    int rays = 64;          //!< GhostQuery::gridSide
+    int ghosts = 16;        //!< bakeLens's ghost count
+    int sheetWidth = 1600;  //!< renderLensSheet's width
+};
+
+inline constexpr Param<LensToolOptions> kLensToolParams[] = {
+    // 1024^2 rays per wavelength and ghost pair: past it the figures stop changing and one
+    // report takes minutes.
+    param<&LensToolOptions::rays>("rays", 2, 1024, "",
+                                  "rays per side over the first clear aperture"),
+    // A preset holds kMaxPresetElements; the glow and the spikes take two of them.
+    param<&LensToolOptions::ghosts>("ghosts", 1, double(kMaxPresetElements) - 2, "",
+                                    "the brightest N ghosts baked"),
+    // 320 px keeps the three flare panels legible; 8192 is the widest a texture viewer shows.
+    param<&LensToolOptions::sheetWidth>("width", 320, 8192, "px",
+                                        "sheet width (height: 9/16 of it)"),
+};
+
+//! "--KEY: expected an integer in [MIN, MAX], got V" when `value` is outside kLensToolParams'
+//! range for `key`.
+Status checkLensToolOption(std::string_view key, int value);
+
 //! The flare's parts over black, linear, on the input's size.
 struct LensFlareLayers {
     Image ghosts, starburst, glare;

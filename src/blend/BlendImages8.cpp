@@ -8,9 +8,6 @@
 namespace flarekit {
 
 namespace {
-constexpr std::array<std::string_view, 4> kBlend8Names = {"alpha", "alpha-shift", "premultiplied",
-                                                          "add"};
-
 //! The first three channels of every pixel, packed as RGB bytes.
 std::vector<std::uint8_t> packRgb(const Image8& image) {
     const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
@@ -24,14 +21,14 @@ std::vector<std::uint8_t> packRgb(const Image8& image) {
 }  // namespace
 
 std::optional<Blend8Mode> parseBlend8Mode(std::string_view name) {
-    for (std::size_t i = 0; i < kBlend8Names.size(); ++i) {
-        if (kBlend8Names[i] == name) return Blend8Mode(i);
+    for (std::size_t i = 0; i < kBlend8ModeNames.size(); ++i) {
+        if (kBlend8ModeNames[i] == name) return Blend8Mode(i);
     }
     return std::nullopt;
 }
 
 std::string_view blend8ModeName(Blend8Mode mode) {
-    return kBlend8Names[std::size_t(mode)];
+    return kBlend8ModeNames[std::size_t(mode)];
 }
 
 Result<Image8> blendImages8(Blend8Mode mode, const Image8& src, const Image8& dst) {

@@ -13,6 +13,7 @@
 #include "core/codecs/ExrExtras.h"
 #include "flarekit/Color.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/ParamText.h"
 
 namespace flarekit {
 
@@ -27,12 +28,7 @@ std::vector<std::string> exrCompressionNames() {
 }
 
 Status checkEncodeSettings(const EncodeSettings& settings) {
-    for (const auto& [field, level] : {std::pair{"png_compression", settings.pngCompression},
-                                       std::pair{"exr_zip_level", settings.exrZipLevel}}) {
-        if (level < 0 || level > 9)
-            return invalidInput(std::string(field) + ": expected an integer in [0, 9], got " +
-                                std::to_string(level));
-    }
+    if (Status s = validateParams<EncodeSettings>(settings, kEncodeParams, ""); !s) return s;
     if (settings.exrCompression.empty()) return Ok{};
     const std::vector<std::string> names = codec::exrCompressionNames();
     if (std::find(names.begin(), names.end(), settings.exrCompression) == names.end()) {

@@ -13,14 +13,13 @@
 #include "flarekit/Result.h"
 #include "flarekit/Temporal.h"
 #include "flarekit/flarekit.h"
+#include "flarekit/gl/EngineScene.h"
 
 namespace flarekit::engine {
 
-//! Directions per side cast per light by default: 32^2 = 1,024 jittered strata give a
-//! standard error near sqrt(2 x 32) / 1024 = 0.008 for an edge across the disc, inside the
-//! 0.02 the API is held to against the ray caster.
-inline constexpr int kDefaultSamplesPerSide = 32;
-inline constexpr int kMaxSamplesPerSide = 64;
+//! The samples per side a new engine casts, and the most it takes (kEngineMeasureParams).
+inline constexpr int kDefaultSamplesPerSide = EngineMeasureSettings{}.samplesPerSide;
+inline constexpr int kMaxSamplesPerSide = int(kEngineMeasureParams[0].max);
 
 class Engine {
   public:

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The instanced flares: per preset element one glDrawArraysInstanced over every light
-// (light_flare.vert places and weighs each instance from the coverage texture).
+// The instanced flares: each used preset's sprites over every light (engine/FlareDraw.h).
 #include "engine/EngineImpl.h"
 #include "engine/EngineInput.h"
+#include "engine/FlareDraw.h"
 #include "engine/GlStateGuard.h"
 
 namespace flarekit::engine {
@@ -39,16 +39,6 @@ Status Engine::draw(int view, const fk_frame* frame, const fk_light* lights, int
         if (Status s = m->ensureSprites(m->presets[p], height); !s) return s;
     }
     const GLuint lightBuffer = m->uploadLights(lights, count);
-    const FlareProgram& f = m->flare;
-    const GLuint p = f.program.get();
-    glProgramUniformMatrix4fv(p, f.view, 1, GL_FALSE, frame->view);
-    glProgramUniformMatrix4fv(p, f.projection, 1, GL_FALSE, frame->projection);
-    glProgramUniform4iv(p, f.viewport, 1, frame->viewport);
-    glProgramUniform1i(p, f.convention, int(frame->depth_convention));
-    glProgramUniform1i(p, f.viewIndex, view);
-    glProgramUniform1f(p, f.guardBand, float(m->temporal.guardBand));
-    glProgramUniform1f(p, f.referenceFlux, float(kReferenceFlux));
-
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     glViewport(frame->viewport[0], frame->viewport[1], frame->viewport[2], frame->viewport[3]);
     setAdditiveDrawState();
@@ -57,18 +47,15 @@ Status Engine::draw(int view, const fk_frame* frame, const fk_light* lights, int
     glBindSampler(kCoverageUnit, m->nearest.get());
     glBindSampler(kElementUnit, 0);  // the element textures' own filtering and border
     glBindVertexArray(m->vertexArray.get());
-    glUseProgram(p);
+    FlareDraw d;
+    d.frame = frame;
+    d.view = view;
+    d.lightCount = count;
+    d.guardBand = float(m->temporal.guardBand);
     for (std::size_t id = 0; id < m->presets.size(); ++id) {
         if (!used[id]) continue;
-        glProgramUniform1i(p, f.presetId, int(id));
-        for (const ElementSprite& s : m->presets[id].sprites) {
-            glProgramUniform1f(p, f.t, s.t);
-            glProgramUniform2f(p, f.halfSize, s.halfW, s.halfH);
-            glProgramUniform1i(p, f.edgeStreak, s.edgeStreak ? 1 : 0);
-            glProgramUniform1f(p, f.reach, s.reach);
-            glBindTextureUnit(kElementUnit, s.texture.get());
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
-        }
+        d.presetId = int(id);
+        drawFlareElements(m->flare, m->presets[id].sprites, d);
     }
     return Ok{};
 }

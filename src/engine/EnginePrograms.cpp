@@ -95,6 +95,8 @@ Result<FlareProgram> linkFlare() {
     f.referenceFlux = gl::uniformLocation(n, "referenceFlux");
     f.edgeStreak = gl::uniformLocation(n, "edgeStreak");
     f.reach = gl::uniformLocation(n, "reach");
+    f.coverageChannel = gl::uniformLocation(n, "coverageChannel");
+    f.fadeAtEdges = gl::uniformLocation(n, "fadeAtEdges");
     return f;
 }
 

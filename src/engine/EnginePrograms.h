@@ -78,11 +78,12 @@ struct SunMapProgram {
 
 Result<SunMapProgram> linkSunMap();
 
-//! The instanced flare draw.
+//! The instanced flare draw (engine/FlareDraw.h).
 struct FlareProgram {
     gl::Program program;
     GLint view = -1, projection = -1, viewport = -1, convention = -1, viewIndex = -1, presetId = -1,
-          t = -1, halfSize = -1, guardBand = -1, referenceFlux = -1, edgeStreak = -1, reach = -1;
+          t = -1, halfSize = -1, guardBand = -1, referenceFlux = -1, edgeStreak = -1, reach = -1,
+          coverageChannel = -1, fadeAtEdges = -1;
 };
 
 Result<FlareProgram> linkFlare();

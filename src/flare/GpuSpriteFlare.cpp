@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: Apache-2.0
 // GpuSpriteFlare: each element is rendered once on the CPU (renderElement, the kernels of
-// renderFlare) into a texture, then drawn every frame as a quad centred where renderFlare puts
-// it. With the element centre on a pixel centre the texels land on pixels one to one and the
-// result equals renderFlare's; elsewhere bilinear filtering shifts it by the sub-pixel offset.
-#include <algorithm>
+// renderFlare) into a texture, then drawn every frame through the engine API's instanced flare
+// draw (engine/FlareDraw.h) with the sun as its one light: the same shader places and weighs
+// the quads for one sun as for an application's thousand lights. With the element centre on
+// a pixel centre the texels land on pixels one to one and the result equals renderFlare's;
+// elsewhere bilinear filtering shifts it by the sub-pixel offset.
 #include <cmath>
 #include <vector>
 
+#include "engine/EngineInput.h"
+#include "engine/EnginePrograms.h"
+#include "engine/FlareDraw.h"
+#include "engine/GlStateGuard.h"
 #include "flare/ElementSprites.h"
+#include "flarekit/Color.h"
+#include "flarekit/gl/EngineScene.h"
 #include "flarekit/gl/GpuFlare.h"
-#include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
 #include "scene/CameraMath.h"
 #include "scene/SceneTargets.h"
@@ -17,36 +23,36 @@
 namespace flarekit {
 
 namespace {
-void setBlend(BlendMode mode) {
-    // Premultiplied source, the same equations as compositeSpan (Blend.h). Add keeps the
-    // destination's alpha; Screen and Over combine alpha as Porter-Duff over.
-    switch (mode) {
-        case BlendMode::Add:
-            glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
-            break;
-        case BlendMode::Screen:
-            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-            break;
-        case BlendMode::Over:
-            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-            break;
-    }
+//! The sun as the engine's one light: white at the sun's luminance, so the shader's flux is
+//! sunFlareScale's and its tint is 1 (renderFlare draws a preset's own colours).
+fk_light sunLight(const Scene& view) {
+    const Vec3 radiance = view.sun.color * view.sun.intensity;
+    fk_light l{};
+    l.type = FK_LIGHT_DIRECTIONAL;
+    l.direction[0] = float(view.sun.direction.x);
+    l.direction[1] = float(view.sun.direction.y);
+    l.direction[2] = float(view.sun.direction.z);
+    l.radius = float(view.sun.angularRadiusDeg);
+    l.color[0] = l.color[1] = l.color[2] = 1.f;
+    l.intensity = luminance(float(radiance.x), float(radiance.y), float(radiance.z));
+    l.preset = 0;
+    return l;
 }
 }  // namespace
 
 struct GpuSpriteFlare::Impl {
     int height = 0;
-    gl::Program program;
+    engine::FlareProgram program;
+    gl::Buffer light;  //!< the one Light record (light_view.glsl)
     gl::VertexArray vao;
     std::vector<ElementSprite> sprites;
+    std::vector<float> packed;
 };
 
 Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) {
     if (Status s = gl::requireCurrentContext("GpuSpriteFlare::create"); !s) return s.error();
     if (height < 1) return invalidInput("sprite flare: frame height must be positive");
-    auto program =
-        gl::linkProgram({{GL_VERTEX_SHADER, "sprite_flare.vert", shaders::sprite_flare_vert},
-                         {GL_FRAGMENT_SHADER, "sprite_flare.frag", shaders::sprite_flare_frag}});
+    auto program = engine::linkFlare();
     if (!program) return program.error();
     auto m = std::make_unique<Impl>();
     m->height = height;
@@ -55,6 +61,9 @@ Result<GpuSpriteFlare> GpuSpriteFlare::create(const Preset& preset, int height) 
     auto sprites = buildElementSprites(preset, height);
     if (!sprites) return sprites.error();
     m->sprites = std::move(*sprites);
+    const fk_light none{};
+    engine::packLights(&none, 1, m->packed);
+    m->light = engine::makeBuffer(GLsizeiptr(m->packed.size() * sizeof(float)));
     return GpuSpriteFlare(std::move(m));
 }
 
@@ -80,39 +89,29 @@ Result<FlaredFrame> GpuSpriteFlare::draw(const SceneRenderer& target, const Scen
     if (!result.sunInFront || !std::isfinite(result.sunPixel.x) ||
         !std::isfinite(result.sunPixel.y))
         return result;
-    const GLuint p = m->program.get();
-    const int w = target.width(), h = target.height();
-    glProgramUniform1i(p, gl::uniformLocation(p, "weightChannel"), weight.channel);
-    glProgramUniform1f(p, gl::uniformLocation(p, "brightnessScale"), result.flareIntensity);
-    glProgramUniform2f(p, gl::uniformLocation(p, "frameSize"), float(w), float(h));
-    const GLint centreAt = gl::uniformLocation(p, "centre"),
-                halfAt = gl::uniformLocation(p, "halfSize"),
-                weightAt = gl::uniformLocation(p, "elementWeight"),
-                transposedAt = gl::uniformLocation(p, "transposed");
+    const fk_frame frame = engineFrame(view, target);
+    const fk_light sun = sunLight(view);
+    engine::packLights(&sun, 1, m->packed);
+    glNamedBufferSubData(m->light.get(), 0, GLsizeiptr(m->packed.size() * sizeof(float)),
+                         m->packed.data());
 
     glBindFramebuffer(GL_FRAMEBUFFER, sceneTargets(target).framebuffer);
-    glViewport(0, 0, w, h);
+    glViewport(0, 0, target.width(), target.height());
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
-    glBindTextureUnit(1, weight.texture);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, engine::kLightsBinding, m->light.get());
+    glBindTextureUnit(engine::kCoverageUnit, weight.texture);
+    glBindSampler(engine::kCoverageUnit, 0);
+    glBindSampler(engine::kElementUnit, 0);
     glBindVertexArray(m->vao.get());
-    glUseProgram(p);
     if (conditionQuery) glBeginConditionalRender(conditionQuery, GL_QUERY_NO_WAIT);
-    for (const ElementSprite& s : m->sprites) {
-        // Top-left origin, as renderFlare places elements.
-        const EdgePlacement edge = s.edgeStreak
-                                       ? edgeStreakPlacement(result.sunPixel, w, h, s.reach)
-                                       : EdgePlacement{{}, 0.f, 1.f};
-        const Point c = s.edgeStreak ? edge.centre : flareVectorPoint(result.sunPixel, w, h, s.t);
-        if (edge.weight <= 0.f) continue;
-        glProgramUniform2f(p, centreAt, c.x, float(h) - c.y);
-        glProgramUniform1f(p, weightAt, edge.weight);
-        glProgramUniform1i(p, transposedAt, edge.rotationDeg != 0.f ? 1 : 0);
-        glProgramUniform2f(p, halfAt, s.halfW, s.halfH);
-        setBlend(s.blend);
-        glBindTextureUnit(0, s.texture.get());
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    }
+    engine::FlareDraw d;
+    d.frame = &frame;
+    d.lightCount = 1;
+    d.coverageChannel = weight.channel;
+    d.fadeAtEdges = false;
+    d.elementBlends = true;
+    engine::drawFlareElements(m->program, m->sprites, d);
     if (conditionQuery) glEndConditionalRender();
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

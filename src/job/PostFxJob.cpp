@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "core/SafeWrite.h"
+#include "flarekit/ParamText.h"
 
 namespace flarekit {
 
@@ -195,9 +197,18 @@ std::shared_ptr<const PostFxBackend> cpuPostFxBackend() {
     return backend;
 }
 
+Status checkExpandHighlights(double gain, const std::string& text) {
+    const Param<ExpandHighlights>& p = kExpandHighlightsParams[0];
+    if (std::isfinite(gain) && numberFits(p, gain)) return Ok{};
+    return invalidInput("--expand-highlights: expected a gain in " +
+                        formatParamRange(p.min, p.max) + ", got '" + text + "'");
+}
+
 Result<JobReport> runPostFxJob(const PostFxJobOptions& a, const JobEvents& events) {
-    if (a.expandHighlights && !(*a.expandHighlights >= 1.f && *a.expandHighlights <= 1e4f))
-        return invalidInput("--expand-highlights: expected a gain in [1, 10000]");
+    if (a.expandHighlights) {
+        const double gain = *a.expandHighlights;
+        if (Status s = checkExpandHighlights(gain, formatParamNumber(gain)); !s) return s.error();
+    }
     JobReport report;
     report.sequence = isFramePattern(a.input);
     if (!report.sequence) {

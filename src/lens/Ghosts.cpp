@@ -7,6 +7,7 @@
 
 #include "core/Parallel.h"
 #include "flarekit/Lens.h"
+#include "flarekit/ParamText.h"
 #include "lens/LensTrace.h"
 
 namespace flarekit {
@@ -66,11 +67,18 @@ GhostFigure figure(const Lens& lens, const std::vector<lens::TraceLens>& traces,
 
 }  // namespace
 
+Status checkLensToolOption(std::string_view key, int value) {
+    const Param<LensToolOptions>* p = findParam<LensToolOptions>(kLensToolParams, key);
+    if (!p) return internalError("no lens tool option '" + std::string(key) + "'");
+    if (numberFits(*p, double(value))) return Ok{};
+    return invalidInput("--" + std::string(key) + ": expected " + expectedText(*p) + ", got " +
+                        std::to_string(value));
+}
+
 Result<GhostReport> analyseGhosts(const Lens& lens, const GhostQuery& query) {
     if (!(std::fabs(query.angleXDeg) < 89.0 && std::fabs(query.angleYDeg) < 89.0))
         return invalidInput("--angle: expected field angles within (-89, 89) degrees");
-    if (query.gridSide < 2 || query.gridSide > 1024)
-        return invalidInput("--rays: expected 2 to 1024 rays per side");
+    if (Status s = checkLensToolOption("rays", query.gridSide); !s) return s.error();
     std::vector<lens::TraceLens> traces{lens::prepareTrace(lens, kLineD)};
     for (const double w : kRgbWavelengthsNm) traces.push_back(lens::prepareTrace(lens, w));
     std::vector<Beam> beams;

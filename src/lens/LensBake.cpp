@@ -22,9 +22,7 @@ constexpr double kBrightestGhost = 0.35;
 }  // namespace
 
 Result<Preset> bakeLens(const Lens& lens, int ghostCount) {
-    if (ghostCount < 1 || ghostCount > int(kMaxPresetElements) - 2)
-        return invalidInput("--ghosts: expected 1 to " + std::to_string(kMaxPresetElements - 2) +
-                            ", got " + std::to_string(ghostCount));
+    if (Status s = checkLensToolOption("ghosts", ghostCount); !s) return s.error();
     const double height = lens.sensor.height;
     const double focal = paraxial(lens).focalLength;
     GhostQuery q;

@@ -94,8 +94,7 @@ void drawBeam(const lens::TraceLens& t, const std::vector<lens::PathStep>& path,
 }  // namespace
 
 Result<Image> renderLensSheet(const Lens& lens, int width) {
-    if (width < 320 || width > 8192)
-        return invalidInput("--width: expected 320 to 8192 pixels, got " + std::to_string(width));
+    if (Status s = checkLensToolOption("width", width); !s) return s.error();
     const int height = width * 9 / 16;
     if (Status s = checkMemory("lens sheet: " + std::to_string(width) + " px wide",
                                double(width) * height * 16.0 * 4);

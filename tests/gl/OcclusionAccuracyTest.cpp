@@ -65,64 +65,50 @@ void judge(const std::string& method, double bound, double poleBound, int msaa =
 
 }  // namespace
 
-TEST(OcclusionAccuracy, Readback) {
-    judge("readback", 0.05, 0.08);
+//! One method's bounds against the ray caster on the judged scenes.
+struct Bounds {
+    const char* name;  //!< the test's name
+    const char* method;
+    double bound, poleBound;
+    int msaa;
+    const char* variant;
+};
+
+class MethodAccuracy : public ::testing::TestWithParam<Bounds> {};
+
+TEST_P(MethodAccuracy, WithinBoundsOfTheRayCaster) {
+    const Bounds& b = GetParam();
+    judge(b.method, b.bound, b.poleBound, b.msaa, b.variant);
 }
-TEST(OcclusionAccuracy, Pbo) {
-    judge("pbo", 0.05, 0.08);
-}
-TEST(OcclusionAccuracy, Query) {
-    judge("query", 0.05, 0.08);
-}
-TEST(OcclusionAccuracy, TextureMaskCircle) {
-    judge("texture-mask", 0.05, 0.08, 1, "circle");
-}
-TEST(OcclusionAccuracy, TextureMaskSquare) {
-    judge("texture-mask", 0.05, 0.08, 1, "square");
-}
-TEST(OcclusionAccuracy, TextureMaskBilinear) {
-    judge("texture-mask", 0.05, 0.08, 1, "bilinear");
-}
-TEST(OcclusionAccuracy, TextureMaskScreen) {
-    judge("texture-mask-screen", 0.05, 0.09);
-}
-TEST(OcclusionAccuracy, Burnout) {
-    judge("burnout", 0.05, 0.10);
-}
-TEST(OcclusionAccuracy, ComputeSingleSample) {
-    judge("compute", 0.05, 0.08);
-}
-TEST(OcclusionAccuracy, ComputeOnMsaaSamplesWithinTwoHundredths) {
-    judge("compute", 0.02, 0.02, 4);
-}
+
+// Single sample: 0.05 everywhere, the documented pole bounds. `compute` on 4x MSAA samples:
+// within two hundredths.
 // With 4x MSAA every method sees occluders to a sample: the read-back methods copy per-pixel
 // sky fractions, the query counts samples, texture-mask multisamples its sun map, and
 // texture-mask-screen and burnout read the depth sample nearest each sub-texel / sub-cell.
 // Within the 0.05 on every judged scene, the thin poles included.
-TEST(OcclusionAccuracy, ReadbackOnMsaaSamples) {
-    judge("readback", 0.05, 0.05, 4);
-}
-TEST(OcclusionAccuracy, PboOnMsaaSamples) {
-    judge("pbo", 0.05, 0.05, 4);
-}
-TEST(OcclusionAccuracy, QueryOnMsaaSamples) {
-    judge("query", 0.05, 0.05, 4);
-}
-TEST(OcclusionAccuracy, TextureMaskCircleOnMsaaSamples) {
-    judge("texture-mask", 0.05, 0.05, 4, "circle");
-}
-TEST(OcclusionAccuracy, TextureMaskSquareOnMsaaSamples) {
-    judge("texture-mask", 0.05, 0.05, 4, "square");
-}
-TEST(OcclusionAccuracy, TextureMaskBilinearOnMsaaSamples) {
-    judge("texture-mask", 0.05, 0.05, 4, "bilinear");
-}
-TEST(OcclusionAccuracy, TextureMaskScreenOnMsaaSamples) {
-    judge("texture-mask-screen", 0.05, 0.05, 4);
-}
-TEST(OcclusionAccuracy, BurnoutOnMsaaSamples) {
-    judge("burnout", 0.05, 0.05, 4);
-}
+INSTANTIATE_TEST_SUITE_P(
+    OcclusionAccuracy, MethodAccuracy,
+    ::testing::Values(
+        Bounds{"Readback", "readback", 0.05, 0.08, 1, "circle"},
+        Bounds{"Pbo", "pbo", 0.05, 0.08, 1, "circle"},
+        Bounds{"Query", "query", 0.05, 0.08, 1, "circle"},
+        Bounds{"TextureMaskCircle", "texture-mask", 0.05, 0.08, 1, "circle"},
+        Bounds{"TextureMaskSquare", "texture-mask", 0.05, 0.08, 1, "square"},
+        Bounds{"TextureMaskBilinear", "texture-mask", 0.05, 0.08, 1, "bilinear"},
+        Bounds{"TextureMaskScreen", "texture-mask-screen", 0.05, 0.09, 1, "circle"},
+        Bounds{"Burnout", "burnout", 0.05, 0.10, 1, "circle"},
+        Bounds{"ComputeSingleSample", "compute", 0.05, 0.08, 1, "circle"},
+        Bounds{"ComputeOnMsaaSamples", "compute", 0.02, 0.02, 4, "circle"},
+        Bounds{"ReadbackOnMsaaSamples", "readback", 0.05, 0.05, 4, "circle"},
+        Bounds{"PboOnMsaaSamples", "pbo", 0.05, 0.05, 4, "circle"},
+        Bounds{"QueryOnMsaaSamples", "query", 0.05, 0.05, 4, "circle"},
+        Bounds{"TextureMaskCircleOnMsaaSamples", "texture-mask", 0.05, 0.05, 4, "circle"},
+        Bounds{"TextureMaskSquareOnMsaaSamples", "texture-mask", 0.05, 0.05, 4, "square"},
+        Bounds{"TextureMaskBilinearOnMsaaSamples", "texture-mask", 0.05, 0.05, 4, "bilinear"},
+        Bounds{"TextureMaskScreenOnMsaaSamples", "texture-mask-screen", 0.05, 0.05, 4, "circle"},
+        Bounds{"BurnoutOnMsaaSamples", "burnout", 0.05, 0.05, 4, "circle"}),
+    [](const ::testing::TestParamInfo<Bounds>& info) { return std::string(info.param.name); });
 
 TEST(OcclusionAccuracy, ExactCasesAreExact) {
     test::glContext();

@@ -18,12 +18,8 @@ struct ApplyText {
 };
 
 std::optional<SampleFormat> parseDepth(const std::string& s) {
-    if (s == "auto") return SampleFormat::Auto;
-    if (s == "8") return SampleFormat::U8;
-    if (s == "16") return SampleFormat::U16;
-    if (s == "half") return SampleFormat::Half;
-    if (s == "float") return SampleFormat::Float;
-    return std::nullopt;
+    const int i = choiceIndex(kSampleFormatNames, s);
+    return i < 0 ? std::nullopt : std::optional<SampleFormat>(SampleFormat(i));
 }
 
 //! "X,Y,Z" (three finite numbers) for `option`; a sun direction must not be all 0.
@@ -94,7 +90,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
     addParamOptions<LightSearchOptions>(cmd, kLightSearchParams, args->lightSearch);
     cmd->add_option("--depth", text->depth,
                     "output samples: auto (from the extension), 8, 16, half, float")
-        ->check(CLI::IsMember({"auto", "8", "16", "half", "float"}))
+        ->check(CLI::IsMember(choiceNames(kSampleFormatNames)))
         ->capture_default_str();
     cmd->add_option("--tonemap", text->tonemap,
                     "display curve: auto (filmic for HDR input to an 8/16-bit file, else none), "

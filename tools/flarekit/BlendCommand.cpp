@@ -36,7 +36,7 @@ void addBlendCommand(CLI::App& app, int& exitCode) {
                     "((d*(255-a)) >> 8); "
                     "add: min(s + d, 255) (SIMD)")
         ->required()
-        ->check(CLI::IsMember({"alpha", "alpha-shift", "premultiplied", "add"}));
+        ->check(CLI::IsMember(choiceNames(kBlend8ModeNames)));
     cmd->add_option("--src", args->src,
                     "source, 8-bit RGBA (its alpha is the blend alpha; RGB allowed for add)")
         ->required();

@@ -141,6 +141,16 @@ ToneOperator renderedFrameCurve(const std::string& out, const std::string& tonem
     return toneOperatorNamed(tonemap).value_or(ToneOperator::Aces);
 }
 
+std::vector<std::string> choiceNames(std::span<const std::string_view> names) {
+    return {names.begin(), names.end()};
+}
+
+int choiceIndex(std::span<const std::string_view> names, std::string_view text) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == text) return int(i);
+    return -1;
+}
+
 std::vector<std::string> toneChoices(std::initializer_list<const char*> extra) {
     std::vector<std::string> choices(extra.begin(), extra.end());
     for (std::string_view name : kToneOperatorNames) choices.emplace_back(name);

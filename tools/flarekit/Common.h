@@ -9,7 +9,9 @@
 #include <functional>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/LibraryNoise.h"
@@ -53,6 +55,10 @@ inline Result<Image8> readImage8Quietly(const std::string& path) {
 //! The --tonemap choices: `extra` (a command's own words, such as "auto" or "preset") and then the
 //! curves' names as kToneOperatorNames types them, so a curve's name is written once.
 std::vector<std::string> toneChoices(std::initializer_list<const char*> extra);
+//! A library's list of choice names as CLI11 takes them (CLI::IsMember).
+std::vector<std::string> choiceNames(std::span<const std::string_view> names);
+//! The index of `text` in `names` (the enum's value), or -1.
+int choiceIndex(std::span<const std::string_view> names, std::string_view text);
 
 //! A rendered frame's curve (render, lights): `--tonemap NAME` for 8/16-bit outputs, none for
 //! float outputs, which stay linear.

@@ -11,6 +11,7 @@
 #include "flarekit/Image.h"
 #include "flarekit/Result.h"
 #include "flarekit/Visibility.h"
+#include "flarekit/gl/EngineScene.h"
 #include "flarekit/gl/Render.h"
 
 namespace flarekit::cli {
@@ -19,7 +20,7 @@ struct EngineRunOptions {
     std::string source;  //!< the scene file, for messages
     std::string method = "compute";
     RenderOptions render;
-    int samplesPerSide = 32;
+    int samplesPerSide = EngineMeasureSettings{}.samplesPerSide;
     bool flares = true;  //!< draw the flares and read the frame back
 };
 

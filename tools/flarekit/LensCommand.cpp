@@ -29,8 +29,7 @@ struct LensArgs {
     LensJobOptions lens;  //!< the lens and its f-number, as `render` takes them
     std::string angle = "0,0", out;
     bool json = false;
-    int rays = 64;
-    int bakeGhosts = 16, sheetWidth = 1600;
+    LensToolOptions tool;
     LensRenderOptions render;
 };
 
@@ -59,7 +58,7 @@ int runGhosts(const LensArgs& a) {
     auto angle = parseAngle(a.angle);
     if (!angle) return report(angle.error());
     GhostQuery q;
-    q.angleXDeg = (*angle)[0], q.angleYDeg = (*angle)[1], q.gridSide = a.rays;
+    q.angleXDeg = (*angle)[0], q.angleYDeg = (*angle)[1], q.gridSide = a.tool.rays;
     auto r = analyseGhosts(*lens, q);
     if (!r) return report(r.error());
     if (a.json) {
@@ -133,9 +132,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
         ->add_option("--angle", args->angle,
                      "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
         ->capture_default_str();
-    ghosts->add_option("--rays", args->rays, "rays per side over the first clear aperture")
-        ->check(CLI::Range(2, 1024))
-        ->capture_default_str();
+    addParamOption<LensToolOptions>(ghosts, kLensToolParams, "rays", args->tool);
     ghosts->add_flag("--json", args->json, "print the report as JSON");
     ghosts->callback([args, &exitCode] { exitCode = runGhosts(*args); });
 
@@ -143,11 +140,9 @@ void addLensCommand(CLI::App& app, int& exitCode) {
         "bake", "compile the lens into a sprite preset (for apply, render and the engine API)");
     addLensChoiceOptions(bake, args->lens);
     bake->add_option("-o,--output", args->out, "preset JSON to write")->required();
-    bake->add_option("--ghosts", args->bakeGhosts, "the brightest N ghosts baked")
-        ->check(CLI::Range(1, 254))
-        ->capture_default_str();
+    addParamOption<LensToolOptions>(bake, kLensToolParams, "ghosts", args->tool);
     bake->callback([args, &exitCode] {
-        args->render.ghosts = args->bakeGhosts;
+        args->render.ghosts = args->tool.ghosts;
         exitCode = runBake(*args);
     });
 
@@ -155,14 +150,12 @@ void addLensCommand(CLI::App& app, int& exitCode) {
         "sheet", "the lens in cross-section with its ghost paths, and its flare at three angles");
     addLensChoiceOptions(sheet, args->lens);
     sheet->add_option("-o,--output", args->out, "image to write")->required();
-    sheet->add_option("--width", args->sheetWidth, "sheet width in pixels (height: 9/16 of it)")
-        ->check(CLI::Range(320, 8192))
-        ->capture_default_str();
+    addParamOption<LensToolOptions>(sheet, kLensToolParams, "width", args->tool);
     sheet->callback([args, &exitCode] {
         exitCode = runImageJob(args->out, [&]() -> Result<ImageOutput> {
             auto opened = openLens(*args);
             if (!opened) return opened.error();
-            auto image = renderLensSheet(*opened, args->sheetWidth);
+            auto image = renderLensSheet(*opened, args->tool.sheetWidth);
             if (!image) return image.error();
             return ImageOutput{std::move(*image), {}};
         });

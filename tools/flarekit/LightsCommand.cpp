@@ -18,7 +18,7 @@ struct LightsArgs {
     std::string scene, out, method = "compute", tonemap = "aces";
     ToneParams tone;
     RenderOptions render;
-    int samples = 32;
+    EngineMeasureSettings measure;
     bool noShadows = false, json = false, verbose = false;
 };
 
@@ -52,7 +52,7 @@ int runLights(const LightsArgs& a) {
         o.method = a.method;
         o.render = a.render;
         o.render.shadows = !a.noShadows;
-        o.samplesPerSide = a.samples;
+        o.samplesPerSide = a.measure.samplesPerSide;
         auto run = runEngine(*scene, o);
         if (!run) return run.error();
         printReport(a, *run);
@@ -77,13 +77,10 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
                     "visibility method of the engine API: compute (the frame's depth, one "
                     "batched GPU pass) or texture-mask (a sun map per light: off-screen lights "
                     "and translucency exact)")
-        ->check(CLI::IsMember({"compute", "texture-mask"}))
+        ->check(CLI::IsMember(choiceNames(kEngineMethodNames)))
         ->capture_default_str();
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
-    cmd->add_option("--samples", args->samples,
-                    "directions per side cast per light (N^2 rays; 32: error near 0.008)")
-        ->check(CLI::Range(1, 64))
-        ->capture_default_str();
+    addParamOption<EngineMeasureSettings>(cmd, kEngineMeasureParams, "samples", args->measure);
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve of 8/16-bit outputs: aces, filmic, none; EXR stays linear")

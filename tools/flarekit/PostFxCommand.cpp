@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // flarekit postfx: the library's image-based flare job (flarekit/job/PostFxJob.h) from the
 // command line, on the CPU or OpenGL.
+#include <cmath>
 #include <cstdlib>
 
 #include "Common.h"
@@ -28,16 +29,15 @@ Status readText(const PostFxText& t, PostFxJobOptions& o) {
     if (!t.expandHighlights.empty()) {
         char* end = nullptr;
         const double g = std::strtod(t.expandHighlights.c_str(), &end);
-        if (end == t.expandHighlights.c_str() || *end != '\0' || !(g >= 1.0 && g <= 1e4))
-            return invalidInput("--expand-highlights: expected a gain in [1, 10000], got '" +
-                                t.expandHighlights + "'");
+        const bool number = end != t.expandHighlights.c_str() && *end == '\0';
+        if (Status s = checkExpandHighlights(number ? g : NAN, t.expandHighlights); !s)
+            return s.error();
         o.expandHighlights = float(g);
     }
     if (t.backend == "gl") {
 #if FLAREKIT_HAS_GL
-        o.backend = gl::glPostFxBackend(t.glTransfer == "half"    ? gl::GlTransfer::Half
-                                        : t.glTransfer == "float" ? gl::GlTransfer::Float
-                                                                  : gl::GlTransfer::Auto);
+        o.backend =
+            gl::glPostFxBackend(gl::GlTransfer(choiceIndex(kGpuTransferNames, t.glTransfer)));
 #else
         return builtWithoutGl("postfx --backend gl");
 #endif
@@ -80,7 +80,7 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
                     "--backend gl: how the image moves to and from the GPU: half (half floats "
                     "where nothing is lost: a half EXR in, a half EXR out), float, or auto (half "
                     "on a GPU, float on llvmpipe, where halves cost a conversion and save nothing)")
-        ->check(CLI::IsMember({"auto", "half", "float"}))
+        ->check(CLI::IsMember(choiceNames(kGpuTransferNames)))
         ->capture_default_str();
     cmd->add_option(
         "--save-layers", args->layersDir,

@@ -100,7 +100,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     cmd->add_option("--variant", args->variant,
                     "texture-mask sampling: square (16x16, 256 points), circle, bilinear")
-        ->check(CLI::IsMember({"square", "circle", "bilinear"}))
+        ->check(CLI::IsMember(choiceNames(kTextureMaskVariantNames)))
         ->capture_default_str();
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);
     cmd->add_option("--tonemap", args->tonemap,

@@ -146,7 +146,7 @@ void addVisibilityCommand(CLI::App& app, int& exitCode) {
     cmd->add_option(
            "--variant", args->variant,
            "texture-mask sampling: square (16x16, 256 points), circle, bilinear (64 points)")
-        ->check(CLI::IsMember({"square", "circle", "bilinear"}))
+        ->check(CLI::IsMember(choiceNames(kTextureMaskVariantNames)))
         ->capture_default_str();
     addParamOptions<RaycastOptions>(cmd, kRaycastParams, args->raycast);
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);

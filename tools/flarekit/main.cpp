@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "Common.h"
+#include "ParamOptions.h"
 #include "core/Interrupt.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Limits.h"
@@ -55,11 +56,8 @@ int main(int argc, char** argv) {
                    "(default 10000: decompression bombs, truncated files)")
         ->check(CLI::PositiveNumber);
     flarekit::EncodeSettings& encode = encodeSettings();
-    app.add_option("--png-compression", encode.pngCompression,
-                   "zlib level of the PNGs written, 0 (none) to 9 (smallest). Default 1 (zlib's "
-                   "run-length strategy, the fastest): on an 8-megapixel photograph, 6 (libpng's "
-                   "default) writes a file 9% smaller taking 20x as long to compress")
-        ->check(CLI::Range(0, 9));
+    addParamOption<flarekit::EncodeSettings>(&app, flarekit::kEncodeParams, "png_compression",
+                                             encode);
     std::string exrCompression =
         "piz";  // shown as the default; the input's own is kept unless given
     CLI::Option* exrOption =
@@ -70,13 +68,8 @@ int main(int argc, char** argv) {
                "pxr24, "
                "b44, b44a, dwaa, dwab; an EXR input's own compression is kept unless this is given")
             ->check(CLI::IsMember(flarekit::exrCompressionNames()));
-    app.add_option("--exr-zip-level", encode.exrZipLevel,
-                   "zlib level of zip and zips EXRs written (and of dwaa/dwab's lossless part), 0 "
-                   "(none) to 9 (smallest). Default 1, ISA-L's fastest deflate: on 1080p HDR "
-                   "photographs level 2 (libdeflate) writes files 7-8% smaller (14% on a smooth "
-                   "sky) for 1.7x a postfx run's CPU; OpenEXR's default 4 is under 1% smaller "
-                   "again")
-        ->check(CLI::Range(0, 9));
+    addParamOption<flarekit::EncodeSettings>(&app, flarekit::kEncodeParams, "exr_zip_level",
+                                             encode);
     int exitCode = kExitOk;
     addBlendCommand(app, exitCode);
     addApplyCommand(app, exitCode);

@@ -9,11 +9,32 @@
 #include <string>
 #include <vector>
 
+#include "flarekit/Param.h"
 #include "flarekit/Scene.h"
 #include "flarekit/flarekit.h"
 #include "flarekit/gl/Render.h"
 
 namespace flarekit {
+
+//! The engine API's visibility methods (fk_engine_create's `method`).
+inline constexpr std::string_view kEngineMethodNames[] = {"compute", "texture-mask"};
+
+//! How the engine measures each light (fk_engine_set_samples), described once for the engine,
+//! the CLI's flags and the docs.
+struct EngineMeasureSettings {
+    //! Directions per side cast per light: 32^2 = 1,024 jittered strata give a standard error
+    //! near sqrt(2 x 32) / 1024 = 0.008 for an edge across the disc, inside the 0.02 the API is
+    //! held to against the ray caster.
+    int samplesPerSide = 32;
+};
+
+inline constexpr Param<EngineMeasureSettings> kEngineMeasureParams[] = {
+    // 64^2 = 4,096 directions, 16 per thread of a light's 256-thread work group
+    // (light_coverage.comp): a light's pass stays one dispatch's small share.
+    param<&EngineMeasureSettings::samplesPerSide>(
+        "samples", 1, 64, "",
+        "directions per side cast per light (N^2 rays; 32: error near 0.008)"),
+};
 
 //! Every light of sceneLights(scene), in order; `presetId` turns a preset name into an id
 //! (-1 for none; a light with preset "" gets -1 without asking).

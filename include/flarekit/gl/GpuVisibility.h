@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flarekit/Result.h"
@@ -16,6 +17,9 @@
 #include "flarekit/gl/Render.h"
 
 namespace flarekit {
+
+//! The texture-mask sampling variants GpuVisibilityOptions::textureMaskVariant takes.
+inline constexpr std::string_view kTextureMaskVariantNames[] = {"square", "circle", "bilinear"};
 
 struct GpuVisibilityOptions {
     //! texture-mask sampling: "square" (the seed: a 16x16 sun map, one point per texel, 256),

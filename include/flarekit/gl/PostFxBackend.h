@@ -13,6 +13,7 @@ namespace flarekit::gl {
 //! EXR out), floats, or Auto: halves on a GPU, floats on llvmpipe/softpipe, where the "GPU" is
 //! this CPU and halves only add a conversion each way (a 4K read-back: 121 ms as floats, 162 ms
 //! as halves).
+//! In kGpuTransferNames' order (flarekit/job/PostFxJob.h).
 enum class GlTransfer { Auto, Half, Float };
 
 std::shared_ptr<const PostFxBackend> glPostFxBackend(GlTransfer transfer = GlTransfer::Auto);

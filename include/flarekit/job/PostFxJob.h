@@ -36,6 +36,25 @@ class PostFxBackend {
 //! The CPU chain (CpuPostFx).
 std::shared_ptr<const PostFxBackend> cpuPostFxBackend();
 
+//! How a GPU backend moves the image to and from the GPU (`--gl-transfer`; gl::GlTransfer in
+//! this order): named here so that a front end built without GL still takes the flag.
+inline constexpr std::string_view kGpuTransferNames[] = {"auto", "half", "float"};
+
+//! --expand-highlights' gain (PostFxJobOptions::expandHighlights), described once.
+struct ExpandHighlights {
+    float gain = 4;  //!< the flag without a value
+};
+
+inline constexpr Param<ExpandHighlights> kExpandHighlightsParams[] = {
+    // 10^4 x white: a clipped sun's core in an 8-bit photo is some 10^4-10^5 x the sky it was
+    // clipped to, and past this the chain's ghosts of a lamp swamp the frame.
+    param<&ExpandHighlights::gain>("expand_highlights", 1, 1e4, "",
+                                   "8/16-bit input: clipped pixels count as GAIN x white"),
+};
+
+//! "--expand-highlights: expected a gain in [1, 10000], got 'TEXT'" unless `gain` fits.
+Status checkExpandHighlights(double gain, const std::string& text);
+
 struct PostFxJobOptions {
     std::string input, output;                  //!< images, or frame patterns for a sequence
     std::string preset = kDefaultPostFxPreset;  //!< shipped name or a JSON file
@@ -47,8 +66,9 @@ struct PostFxJobOptions {
     //! the preset has none).
     std::optional<ToneOperator> tonemap;
     std::optional<float> exposure, threshold, knee;  //!< overrides of the preset's
-    //! 8/16-bit input: clipped pixels expanded to this gain x white before the chain (1 to
-    //! 10,000), so the lights of an 8-bit photo flare; the output keeps the original pixels.
+    //! 8/16-bit input: clipped pixels expanded to this gain x white before the chain
+    //! (kExpandHighlightsParams), so the lights of an 8-bit photo flare; the output keeps the
+    //! original pixels.
     std::optional<float> expandHighlights;
     std::string layersDir;  //!< also bloom, ghosts, halo, streaks, lens, final as EXRs here
     //! The layers also as channels of the EXR output (bloom.R, ..., lens.B; linear float).

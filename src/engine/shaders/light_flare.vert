@@ -4,10 +4,13 @@
 // light's flare vector (flareVectorPoint: through the viewport's centre), collapsed for
 // lights of another preset, behind the camera or with no weight. Its brightness is the
 // light's filtered coverage (read here from the coverage texture, never by the CPU) x its
-// edge fade (edgeFade of flarekit/Temporal.h) x its flux in frame heights squared over
+// edge fade (edgeFade of flarekit/Temporal.h; off where the weight has it already, as the
+// temporal filter's does) x its flux in frame heights squared over
 // kReferenceFlux (sunFlareScale's model: luminance x pi x (tan(angular radius) / (2 tan(fov_y
 // / 2)))^2), tinted by the light's colour at unit luminance.
 layout(binding = 13) uniform sampler2D coverageTexture;
+uniform int coverageChannel;  // the channel of texel (light, view) that weighs the light
+uniform bool fadeAtEdges;     // apply edgeFade here (the weight is a raw measurement)
 uniform int viewIndex;
 uniform int presetId;
 uniform float t;         // position on the flare vector
@@ -64,10 +67,10 @@ void main() {
                               : tan(v.halfAngle);
     float radiusOfHeight = tanRadius * projectionMatrix[1][1] / 2.0;
     float flux = lum * kPi * radiusOfHeight * radiusOfHeight / referenceFlux;
-    float weight = texelFetch(coverageTexture, ivec2(gl_InstanceID, viewIndex), 0).r;
+    float weight = texelFetch(coverageTexture, ivec2(gl_InstanceID, viewIndex), 0)[coverageChannel];
     vec4 edge = edgeStreak ? edgeStreakPlacement(light, size, reach) : vec4(0.0, 0.0, 0.0, 1.0);
     // An edge streak takes the coverage alone: it is what is left of the flare past the edge.
-    float fade = edgeStreak ? edge.w : edgeFade(light, size);
+    float fade = edgeStreak ? edge.w : fadeAtEdges ? edgeFade(light, size) : 1.0;
     float intensity = clip.w > 0.0 && !v.inside ? weight * fade * flux : 0.0;
     tint = lum > 0.0 ? radiance / lum * intensity : vec3(0.0);
     bool drawn = int(l.presetPad.x) == presetId && intensity > 0.0 && !isinf(intensity) &&
