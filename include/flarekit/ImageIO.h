@@ -24,7 +24,7 @@ struct LoadedImage {
     int fileChannels = 0;       //!< channels in the file (1 grey, 2 grey+alpha, 3, 4, ...)
     bool hasAlpha = false;      //!< the file had an alpha channel
     bool wasFloat = false;      //!< half/float file, kept linear; integer files are sRGB-decoded
-    std::size_t nonFinite = 0;  //!< NaN/Inf values replaced by 0
+    std::size_t nonFinite = 0;  //!< NaN (read as 0) and infinities (as +-65504)
     int droppedChannels = 0;    //!< channels past the 4th, not kept
     bool halfExact = false;     //!< every value came from a half-float channel (an EXR's)
     std::shared_ptr<const ExrExtras> exrExtras;  //!< an EXR's other channels and header

@@ -11,10 +11,13 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "flarekit/Image.h"
+#include "flarekit/ImageIO.h"
+#include "flarekit/Param.h"
 #include "flarekit/Result.h"
 #include "flarekit/Scene.h"
 
@@ -66,5 +69,22 @@ Result<PspFrameInput> pspInputFromScene(const Scene& scene);
 
 //! A 480x272 mask image (any channels; non-zero in the first channel = occluder) as occluders.
 Result<std::vector<std::uint8_t>> occludersFromMask(const Image8& mask, const std::string& name);
+
+//! `flarekit psp demo`: the demo drive through the emulator.
+struct PspDemoOptions {
+    std::string outDir;  //!< made when missing
+    int frames = 48;
+    EncodeSettings encode;  //!< of the frames written
+};
+//! 48 frames show the drive's sun blinking; 2000 bounds the run (each frame is two full GE frames).
+inline constexpr Param<PspDemoOptions> kPspDemoParams[] = {
+    param<&PspDemoOptions::frames>("frames", 1, 2000, "", "frames over the drive"),
+};
+
+//! Each frame correct (left) and naive (right) side by side as outDir/frame_NNNN.png, and
+//! outDir/coverage.csv (frame, t, sun_x, sun_y, sun_in_frame, visible_pixels, coverage_byte,
+//! clut_alpha_correct, clut_alpha_naive). `progress(done, total)` after each frame.
+Status runPspDemo(const PspDemoOptions& options,
+                  const std::function<void(int done, int total)>& progress = {});
 
 }  // namespace flarekit::psp

@@ -135,6 +135,7 @@ class LightTracker {
     float m_radius = 0;
     int m_challenged = 0;  //!< frames in a row a brighter light stood elsewhere
     int m_measured = 0;    //!< sightings of the followed light so far
+    float m_peak = 0;      //!< the followed light's peak when last seen
     Point m_challenger;
 };
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flarekit/Param.h"
@@ -14,6 +15,10 @@
 #include "flarekit/Scene.h"
 
 namespace flarekit {
+
+//! The texture-mask method's sampling variants (GpuVisibilityOptions::textureMaskVariant in
+//! flarekit/gl/GpuVisibility.h), named here so that a front end built without GL takes them.
+inline constexpr std::string_view kTextureMaskVariantNames[] = {"square", "circle", "bilinear"};
 
 //! One light's share: for a point light the cone is the one its sphere subtends from the
 //! camera (half-angle asin(radius / distance)); a ray keeps the transmittance of the objects

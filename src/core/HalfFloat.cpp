@@ -24,19 +24,20 @@ void floatsToHalfPortable(const float* rgba, std::size_t pixels, int channels, s
     for (std::size_t p = 0; p < pixels; ++p, rgba += 4, out += channels) {
         for (int c = 0; c < channels; ++c) {
             const float v = rgba[c];
-            out[c] = half(std::isfinite(v) ? v : 0.f).bits();
+            out[c] = half(sanitisedSample(v)).bits();
         }
     }
 }
 
 #if defined(__x86_64__)
-//! One F16C conversion per pixel (its four channels); NaN and infinity (exponent all ones)
-//! masked to 0 first.
+//! One F16C conversion per pixel (its four channels), as sanitisedSample: NaN masked to 0,
+//! then everything clamped to +-65504.
 __attribute__((target("avx,f16c"))) inline __m128i pixelToHalves(const float* rgba) {
-    const __m128 exponent = _mm_castsi128_ps(_mm_set1_epi32(0x7F800000));
     const __m128 v = _mm_loadu_ps(rgba);
-    const __m128 nonFinite = _mm_cmpeq_ps(_mm_and_ps(v, exponent), exponent);
-    return _mm_cvtps_ph(_mm_andnot_ps(nonFinite, v), _MM_FROUND_TO_NEAREST_INT);
+    const __m128 finite = _mm_andnot_ps(_mm_cmpunord_ps(v, v), v);
+    const __m128 clamped =
+        _mm_min_ps(_mm_max_ps(finite, _mm_set1_ps(-kLargestHalf)), _mm_set1_ps(kLargestHalf));
+    return _mm_cvtps_ph(clamped, _MM_FROUND_TO_NEAREST_INT);
 }
 
 //! The four halves are stored as one 8-byte word. With three channels the word's last half

@@ -20,6 +20,7 @@
 
 #include "core/BandPipeline.h"
 #include "core/FirstLine.h"
+#include "core/HalfFloat.h"
 #include "core/ImageIOShared.h"
 #include "core/Parallel.h"
 #include "core/codecs/Codecs.h"
@@ -222,7 +223,7 @@ struct SampleView {
 
 //! `count` pixels of decoded samples (from `bytes`) to linear float RGBA (at `rgba`): integer
 //! colour through the sRGB tables (unless the file says linear), floats as they are,
-//! non-finite values replaced by 0. Returns how many were replaced.
+//! NaN as 0 and infinities as +-65504 (sanitisedSample). Returns how many were replaced.
 std::size_t toLinearRgba(const SampleView& v, const unsigned char* bytes, float* rgba,
                          std::size_t count) {
     const int keep = v.keep;
@@ -263,7 +264,7 @@ std::size_t toLinearRgba(const SampleView& v, const unsigned char* bytes, float*
         const float s = f32[i];
         if (std::isfinite(s)) return s;
         ++bad;
-        return 0.f;
+        return sanitisedSample(s);
     };
     auto colour = [&](std::size_t i) {
         const float s = finite(i);

@@ -45,7 +45,8 @@ Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
     }
     if (loaded->nonFinite > 0)
         events.warn(path + ": " + std::to_string(loaded->nonFinite) +
-                    " NaN/Inf values replaced by 0");
+                    " NaN/Inf values: NaN read as 0, infinities clamped to +-65504 (the largest "
+                    "half float)");
     return loaded;
 }
 

@@ -61,11 +61,14 @@ std::vector<SizedLayer> fullSizeLayers(const PostFxResult& r) {
     return layers;
 }
 
+//! The layers and the final image as EXRs in `dir`, in the input's pixel type: float for a
+//! float input (a half would clip what it holds past 65504), half otherwise.
 Status writeLayers(const std::string& dir, const std::vector<SizedLayer>& layers,
-                   const Image& final, const EncodeSettings& encode) {
+                   const Image& final, const EncodeSettings& encode, bool floatInput) {
     if (Status s = makeOutputDirectory(dir); !s) return s;
     WriteOptions options;
     options.encode = encode;
+    options.format = floatInput ? SampleFormat::Float : SampleFormat::Half;
     for (const SizedLayer& layer : layers) {
         const std::string path =
             (std::filesystem::path(dir) / (std::string(layer.name) + ".exr")).string();
@@ -174,7 +177,8 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
     const std::vector<SizedLayer> layers =
         options.keepLayers ? fullSizeLayers(*result) : std::vector<SizedLayer>{};
     if (!layersDir.empty()) {
-        if (Status s = writeLayers(layersDir, layers, result->final, a.encode); !s)
+        const bool floatInput = loaded->wasFloat && !loaded->halfExact;
+        if (Status s = writeLayers(layersDir, layers, result->final, a.encode, floatInput); !s)
             return s.error();
     }
     ImageOutput output{std::move(result->final), {}};

@@ -9,6 +9,12 @@
 namespace flarekit {
 
 namespace {
+//! A candidate that is not accepted stands for the followed light only with at least this share
+//! of the peak the light last had: a sun dimmed by haze or outshone elsewhere keeps most of its
+//! peak, while the glow left around a sun hidden behind a building peaks thousands of times
+//! lower (6,000x in blender-data's city HDRI) and would drag the track across the sky.
+constexpr double kHeldPeakShare = 0.1;
+
 double distance(Point a, Point b) {
     return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
@@ -27,6 +33,7 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
         m_radius = l.radius;
         m_challenged = 0;
         m_measured = 1;
+        m_peak = l.peak;
         return TrackedLight{true, l.position, l.flux, l.flareScale};
     };
     if (!m_started) return brightest ? start(*brightest) : TrackedLight{};
@@ -36,7 +43,9 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     // The followed light: the accepted light nearest the prediction inside the gate. In a frame
     // where it is not accepted (outshone by a glint elsewhere), the candidate with the highest
     // peak there: the light's core, never the wide dim glow around it (a sky's halo carries more
-    // flux than the sun itself in the city HDRI, at a peak 6,000 times lower).
+    // flux than the sun itself in the city HDRI, at a peak 6,000 times lower). With no candidate
+    // near the light's own peak (kHeldPeakShare) the light is hidden: the track holds its
+    // prediction.
     const LightCandidate* followed = nullptr;
     for (const LightCandidate& l : lights) {
         const double d = distance(l.position, predicted);
@@ -45,7 +54,8 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     }
     if (!followed)
         for (const LightCandidate& l : lights)
-            if (distance(l.position, predicted) <= gate && (!followed || l.peak > followed->peak))
+            if (distance(l.position, predicted) <= gate && l.peak >= kHeldPeakShare * m_peak &&
+                (!followed || l.peak > followed->peak))
                 followed = &l;
     // A brighter light elsewhere takes over only once it has stayed brighter (and in one place)
     // for switchFrames frames in a row; the followed light lost counts as outshone.
@@ -83,6 +93,7 @@ TrackedLight LightTracker::update(const std::vector<LightCandidate>& lights, dou
     }
     ++m_measured;
     m_radius = followed->radius;
+    m_peak = followed->peak;
     return TrackedLight{true, m_position, followed->flux, followed->flareScale};
 }
 

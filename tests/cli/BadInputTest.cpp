@@ -83,13 +83,15 @@ TEST(BadInput, NanAndInfPixelsAreSanitisedWithAWarning) {
                 inf = std::numeric_limits<float>::infinity();
     std::vector<float> px(64 * 64 * 3, 0.05f);
     px[0] = nan;
-    px[100] = inf;
-    px[3 * (32 * 64 + 40)] = px[3 * (32 * 64 + 40) + 1] = px[3 * (32 * 64 + 40) + 2] =
-        200.f;  // a light: 4,000 x the frame's median
+    // A light (4,000 x the frame's median) whose red overflowed: read as 65504, not as a hole.
+    px[3 * (32 * 64 + 40)] = inf;
+    px[3 * (32 * 64 + 40) + 1] = px[3 * (32 * 64 + 40) + 2] = 200.f;
     ASSERT_TRUE(writeRawFloat(dir.file("nan.exr"), 64, 64, 3, px));
     const CliResult r = runCli({"apply", dir.file("nan.exr"), "-o", dir.file("o.exr")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("2 NaN/Inf values replaced by 0"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("2 NaN/Inf values: NaN read as 0, infinities clamped to +-65504"),
+              std::string::npos)
+        << r.err;
     auto out = readImage(dir.file("o.exr"));
     ASSERT_TRUE(out.ok());
     EXPECT_EQ(out->nonFinite, 0u);

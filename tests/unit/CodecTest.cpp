@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -170,8 +171,9 @@ TEST(Codec, ExrLayoutsReadStraightIntoRgba) {
 // Half-float scanline files are read band by band (whole chunks of the file's compression at a
 // time, converted by F16C where the CPU has it). Against OpenImageIO's own decode of the same
 // file to floats: every compression (so every chunk height, 1 to 256 rows), Y, YA, RGB and RGBA,
-// a data window off the origin and a height that leaves a short last band; NaN and infinities
-// read as 0 and counted, alpha 1 where the file has none, grey copied to G and B.
+// a data window off the origin and a height that leaves a short last band; NaN read as 0 and
+// infinities as +-65504 (the largest half), both counted, alpha 1 where the file has none, grey
+// copied to G and B.
 TEST(Codec, HalfExrBandsReadAsOpenImageIoDecodesThem) {
     TempDir dir;
     const int w = 29, h = 300;
@@ -215,7 +217,10 @@ TEST(Codec, HalfExrBandsReadAsOpenImageIoDecodesThem) {
                 for (int c = 0; c < 4; ++c) {
                     float expected = channels <= 2 ? s[0] : s[std::min(c, 2)];
                     if (c == 3) expected = channels == 2 || channels == 4 ? s[channels - 1] : 1.f;
-                    if (!std::isfinite(expected)) ++nonFinite, expected = 0.f;
+                    if (!std::isfinite(expected))
+                        ++nonFinite, expected = std::isnan(expected) ? 0.f
+                                                : expected > 0       ? 65504.f
+                                                                     : -65504.f;
                     mismatches += std::memcmp(&expected, &d[c], sizeof expected) != 0;
                 }
             }
@@ -428,7 +433,9 @@ TEST(Codec, ExrZipLevelChangesSizeNotPixels) {
 
 TEST(Codec, HalfConversionsAreImathsBitForBit) {
     // The F16C path (when the CPU has it) against Imath's half, on floats across the whole
-    // half range and past it: subnormals, rounding ties, overflow to infinity.
+    // half range and past it: subnormals, rounding ties, and overflow, which flarekit clamps to
+    // the largest finite half where Imath would give infinity.
+    const auto inHalfRange = [](float v) { return std::clamp(v, -65504.f, 65504.f); };
     std::vector<float> values;
     for (std::uint32_t bits = 0x33000000u; bits < 0x47900000u; bits += 4099) {
         float v;
@@ -444,7 +451,8 @@ TEST(Codec, HalfConversionsAreImathsBitForBit) {
         floatsToHalf(values.data(), pixels, channels, packed.data());
         for (std::size_t p = 0; p < pixels; ++p)
             for (std::size_t c = 0; c < std::size_t(channels); ++c)
-                ASSERT_EQ(packed[p * std::size_t(channels) + c], half(values[p * 4 + c]).bits())
+                ASSERT_EQ(packed[p * std::size_t(channels) + c],
+                          half(inHalfRange(values[p * 4 + c])).bits())
                     << channels << " " << p;
         EXPECT_EQ(packed.back(), 0xABCD) << channels;
     }
@@ -453,14 +461,21 @@ TEST(Codec, HalfConversionsAreImathsBitForBit) {
     std::vector<float> back(values.size());
     halfsToFloats(halves.data(), halves.size(), back.data());
     for (std::size_t i = 0; i < values.size(); ++i) {
-        ASSERT_EQ(halves[i], half(values[i]).bits()) << values[i];
-        ASSERT_EQ(back[i], float(half(values[i]))) << values[i];
+        ASSERT_EQ(halves[i], half(inHalfRange(values[i])).bits()) << values[i];
+        ASSERT_EQ(back[i], float(half(inHalfRange(values[i])))) << values[i];
     }
     const float odd[4] = {NAN, INFINITY, -INFINITY, 1e6f};
     std::uint16_t out[4];
     floatsToHalf(odd, 1, 4, out);
+    // NaN is 0; past 65504, infinities included, the largest finite half (0x7BFF), never Inf.
     EXPECT_EQ(out[0], 0);
-    EXPECT_EQ(out[1], 0);
-    EXPECT_EQ(out[2], 0);
-    EXPECT_EQ(out[3], half(1e6f).bits());  // past 65504: infinity, as Imath
+    EXPECT_EQ(out[1], 0x7BFF);
+    EXPECT_EQ(out[2], 0xFBFF);
+    EXPECT_EQ(out[3], 0x7BFF);
+    const float edge[4] = {65504.f, 65519.f, 65520.f, -1e30f};  // 65520 would round to Inf
+    floatsToHalf(edge, 1, 4, out);
+    EXPECT_EQ(out[0], 0x7BFF);
+    EXPECT_EQ(out[1], 0x7BFF);
+    EXPECT_EQ(out[2], 0x7BFF);
+    EXPECT_EQ(out[3], 0xFBFF);
 }

@@ -267,4 +267,9 @@ TEST(LightTracker, ASunsOwnGlowCandidatesNeverTakeItOver) {
                                        1);
     EXPECT_NEAR(t.position.x, 154.2f, 1e-3);
     EXPECT_EQ(t.flux, 104000);
+    // Then hidden behind a building: only the glow is left, 12 px off (peak 12 against the
+    // core's 31,730). The track holds its prediction and draws no flare instead of taking it.
+    const TrackedLight hidden = city.update({lightAt(146.2f, 81, 88700, 82, false, 12)}, 1);
+    EXPECT_FALSE(hidden.found);
+    EXPECT_NEAR(hidden.position.x, 134.2f, 1e-3);
 }

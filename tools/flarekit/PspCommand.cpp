@@ -21,15 +21,6 @@ struct PspArgs {
     bool naive = false, json = false;
 };
 
-struct PspDemoArgs {
-    std::string outDir;
-    int frames = 48;
-};
-//! 48 frames show the drive's sun blinking; 2000 bounds the run (each frame is two full GE frames).
-inline constexpr Param<PspDemoArgs> kPspDemoParams[] = {
-    param<&PspDemoArgs::frames>("frames", 1, 2000, "", "frames over the drive"),
-};
-
 std::string jsonLine(psp::PspTrick trick, bool naive, const psp::PspFrameResult& r) {
     const bool burnout = trick == psp::PspTrick::Burnout;
     JsonLine j;
@@ -90,51 +81,12 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     return kExitOk;
 }
 
-//! Side by side: the correct frame left, the naive one right.
-Image8 sideBySide(const Image8& left, const Image8& right) {
-    Image8 out{
-        left.width + right.width, left.height, 3,
-        std::vector<std::uint8_t>(std::size_t((left.width + right.width) * left.height * 3))};
-    for (int y = 0; y < left.height; ++y) {
-        std::copy_n(&left.pixels[std::size_t(y * left.width * 3)], left.width * 3,
-                    &out.pixels[std::size_t(y * out.width * 3)]);
-        std::copy_n(&right.pixels[std::size_t(y * right.width * 3)], right.width * 3,
-                    &out.pixels[std::size_t((y * out.width + left.width) * 3)]);
-    }
-    return out;
-}
-
-int runPspDemo(const PspDemoArgs& a) {
-    if (Status s = makeOutputDirectory(a.outDir); !s) return report(s.error());
-    const std::string dir = std::filesystem::path(a.outDir).string() + "/";
-    std::string csv =
-        "frame,t,sun_x,sun_y,sun_in_frame,visible_pixels,coverage_byte,clut_alpha_correct,clut_"
-        "alpha_naive\n";
+int runPspDemoCommand(const psp::PspDemoOptions& a) {
     Progress progress("psp demo", a.frames);
-    for (int i = 0; i < a.frames; ++i) {
-        const double t = a.frames > 1 ? double(i) / (a.frames - 1) : 0.0;
-        auto in = psp::pspDemoInput(t);
-        if (!in) return report(in.error());
-        auto correct = psp::runPspFrame(psp::PspTrick::Burnout, *in);
-        if (!correct) return report(correct.error());
-        in->naive = true;
-        auto naive = psp::runPspFrame(psp::PspTrick::Burnout, *in);
-        if (!naive) return report(naive.error());
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04d.png", i + 1);
-        if (Status s =
-                writeImage8(dir + name, sideBySide(correct->frame, naive->frame), encodeSettings());
-            !s)
-            return report(s.error());
-        char row[160];
-        std::snprintf(row, sizeof row, "%d,%.4f,%d,%d,%d,%d,%d,%d,%d\n", i + 1, t, in->sunX,
-                      in->sunY, correct->sunInFrame ? 1 : 0, correct->visiblePixels,
-                      correct->coverageByte, correct->clutAlpha, naive->clutAlpha);
-        csv += row;
-        progress.update(i + 1);
-    }
+    if (Status s = psp::runPspDemo(a, [&](int done, int) { progress.update(done); }); !s)
+        return report(s.error());
     progress.finish();
-    if (Status s = writeText(dir + "coverage.csv", csv); !s) return report(s.error());
+    const std::string dir = std::filesystem::path(a.outDir).string() + "/";
     std::printf("psp demo: %d frames (correct left, naive right) in %s, log %scoverage.csv\n",
                 a.frames, dir.c_str(), dir.c_str());
     return kExitOk;
@@ -173,13 +125,16 @@ void addPspCommand(CLI::App& app, int& exitCode) {
         *psp, "ridge-racer", psp::PspTrick::RidgeRacer,
         "Ridge Racer: 16x16 mask summed by blending, coverage as a texture on gouraud hexagons",
         exitCode);
-    auto demo = std::make_shared<PspDemoArgs>();
+    auto demo = std::make_shared<psp::PspDemoOptions>();
     CLI::App* cmd = psp->add_subcommand(
         "demo", "the demo drive through the emulator, correct and naive side by side");
     cmd->add_option("-o,--output", demo->outDir, "output directory (frames + coverage.csv)")
         ->required();
-    addParamOptions<PspDemoArgs>(cmd, kPspDemoParams, *demo);
-    cmd->callback([demo, &exitCode] { exitCode = runPspDemo(*demo); });
+    addParamOptions<psp::PspDemoOptions>(cmd, psp::kPspDemoParams, *demo);
+    cmd->callback([demo, &exitCode] {
+        demo->encode = encodeSettings();  // the global flags, parsed by now
+        exitCode = runPspDemoCommand(*demo);
+    });
 }
 
 }  // namespace flarekit::cli

@@ -13,13 +13,11 @@
 
 #include "flarekit/Result.h"
 #include "flarekit/Scene.h"
+#include "flarekit/Visibility.h"
 #include "flarekit/gl/GpuChannel.h"
 #include "flarekit/gl/Render.h"
 
 namespace flarekit {
-
-//! The texture-mask sampling variants GpuVisibilityOptions::textureMaskVariant takes.
-inline constexpr std::string_view kTextureMaskVariantNames[] = {"square", "circle", "bilinear"};
 
 struct GpuVisibilityOptions {
     //! texture-mask sampling: "square" (the seed: a 16x16 sun map, one point per texel, 256),

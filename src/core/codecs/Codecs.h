@@ -47,7 +47,7 @@ struct ExrRead {
     bool hasAlpha = false;
     bool allHalf = false;                     //!< every channel read was stored as half floats
     std::shared_ptr<const ExrExtras> extras;  //!< the header and the other channels
-    std::size_t nonFinite = 0;  //!< NaN and infinite samples, replaced by 0 in `image`
+    std::size_t nonFinite = 0;                //!< NaN (0 in `image`) and infinite (+-65504) samples
 };
 //! `part`: a multi-part file's part to read, by name or index (empty: the first); the others
 //! ride along in extras->parts. `partNames` gets every part's name ("0", "1" when unnamed).

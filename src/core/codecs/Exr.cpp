@@ -66,8 +66,8 @@ void startThreadPool() {
 constexpr int kRowsPerTask = 8;
 
 //! What an EXR read owes the rest of flarekit, on pixels [begin, end) of float RGBA: a grey
-//! image's Y copied to G and B, then every NaN and infinity replaced by 0. Returns how many
-//! were replaced.
+//! image's Y copied to G and B, then every NaN replaced by 0 and every infinity clamped to
+//! +-65504 (sanitisedSample). Returns how many were replaced.
 std::size_t finishExrPixels(float* begin, float* end, bool grey) {
     if (grey)
         for (float* d = begin; d < end; d += 4) d[1] = d[2] = d[0];
@@ -83,7 +83,7 @@ std::size_t finishExrPixels(float* begin, float* end, bool grey) {
     std::size_t bad = 0;
     for (float* d = begin; d < end; ++d) {
         if (!std::isfinite(*d)) {
-            *d = 0.f;
+            *d = sanitisedSample(*d);
             ++bad;
         }
     }
@@ -137,7 +137,7 @@ bool anyNonFinite(const std::uint16_t* halves, std::size_t count) {
 //! non-finite scan then read the whole image again. `names`: the channel read into each RGBA
 //! lane (R, G, B, A, or Y, -, -, A); one the file lacks is skipped. A band is about 128 rows (2 MiB
 //! of halves at 1920 wide, a core's L2 here): several chunks for each of OpenEXR's threads per
-//! call. Returns how many NaN and infinite values became 0.
+//! call. Returns how many NaN and infinite values were replaced (finishExrPixels).
 template <class File>
 std::size_t readHalfInBands(File& file, const Imf::FrameBuffer& extras,
                             const std::vector<std::string>& names, bool hasAlpha, bool grey,
