@@ -108,7 +108,7 @@ INSTANTIATE_TEST_SUITE_P(
         Bounds{"TextureMaskBilinearOnMsaaSamples", "texture-mask", 0.05, 0.05, 4, "bilinear"},
         Bounds{"TextureMaskScreenOnMsaaSamples", "texture-mask-screen", 0.05, 0.05, 4, "circle"},
         Bounds{"BurnoutOnMsaaSamples", "burnout", 0.05, 0.05, 4, "circle"}),
-    [](const ::testing::TestParamInfo<Bounds>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<Bounds>& p) { return std::string(p.param.name); });
 
 TEST(OcclusionAccuracy, ExactCasesAreExact) {
     test::glContext();

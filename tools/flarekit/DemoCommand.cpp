@@ -7,8 +7,8 @@
 #include "Common.h"
 #include "JobOptions.h"
 #include "ParamOptions.h"
-#include "Video.h"
 #include "flarekit/Demo.h"
+#include "flarekit/Video.h"
 #include "flarekit/gl/GpuVisibility.h"
 #if FLAREKIT_HAS_GL
 #include "flarekit/gl/DemoJob.h"

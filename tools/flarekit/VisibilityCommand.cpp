@@ -27,71 +27,14 @@ struct VisibilityArgs {
 };
 
 #if FLAREKIT_HAS_GL
-//! Every light at once through the engine API's batched pass (`compute` on a scene with
-//! more than the sun): the coverage the embedding API would give an application.
-Result<VisibilityResult> runEngineLights(const VisibilityArgs& a, const Scene& scene) {
-    EngineRunOptions o;
+Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
+    SceneVisibilityOptions o;
     o.source = a.scene;
     o.method = a.method;
+    o.methodOptions.textureMaskVariant = a.variant;
     o.render = a.render;
-    o.render.shadows = false;
-    o.flares = false;
-    const auto start = std::chrono::steady_clock::now();
-    auto run = runEngine(scene, o);
-    if (!run) return run.error();
-    VisibilityResult r;
-    r.method = a.method;
-    r.lights = run->lights;
-    r.coverage = r.lights.front().coverage;
-    r.inFrame = r.lights.front().inFrame;
-    r.milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return r;
+    return gpuSceneVisibility(scene, o, &latency);
 }
-
-//! The seeds' one-light methods measure one light at a time: each light stands in as the
-//! frame's sun (lightAsSun: a point light as the disc its sphere subtends, seen where the
-//! depth reaches its near side), the frame is drawn and measured until its result arrives.
-//! compute and texture-mask on a many-light scene measure every light at once instead.
-//! `latency` says how many extra frames a late method (pbo, query) took.
-Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int& latency) {
-    const std::vector<SceneLight> lights = sceneLights(scene);
-    if ((a.method == "compute" || a.method == "texture-mask") &&
-        (lights.size() > 1 || lights.front().type != LightType::Directional))
-        return runEngineLights(a, scene);
-    auto gl = createHeadlessGl();
-    if (!gl) return gl.error();
-    if (Status s =
-            checkGlFrame(scene.width, scene.height, a.render.msaaSamples, a.scene + ": image");
-        !s)
-        return s.error();
-    RenderOptions render = a.render;
-    render.shadows = false;  // visibility reads depth only
-    auto renderer = SceneRenderer::create(scene, render);
-    if (!renderer) return renderer.error();
-    GpuVisibilityOptions options;
-    options.textureMaskVariant = a.variant;
-    auto method = createGpuVisibility(a.method, scene, options);
-    if (!method) return method.error();
-    const auto start = std::chrono::steady_clock::now();
-    VisibilityResult r;
-    r.method = a.method;
-    for (const SceneLight& light : lights) {
-        Scene view = scene;
-        view.sun = lightAsSun(light, scene.camera);
-        int frames = 0;
-        auto coverage = measureStillFrame(**method, *renderer, view, 16, &frames);
-        if (!coverage) return coverage.error();
-        latency = std::max(latency, frames);
-        r.lights.push_back({*coverage, lightInFrameFraction(scene, light)});
-    }
-    r.coverage = r.lights.front().coverage;
-    r.inFrame = r.lights.front().inFrame;
-    r.milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return r;
-}
-
 #else
 Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene&, int&) {
     return builtWithoutGl("visibility --method " + a.method);

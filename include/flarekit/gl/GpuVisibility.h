@@ -62,4 +62,23 @@ Result<double> measureStillFrame(GpuVisibility& method, SceneRenderer& renderer,
 Result<std::unique_ptr<GpuVisibility>> createGpuVisibility(
     const std::string& method, const Scene& world, const GpuVisibilityOptions& options = {});
 
+//! How `flarekit visibility` measures a scene on the GPU.
+struct SceneVisibilityOptions {
+    std::string source;  //!< the scene file, for messages
+    std::string method;  //!< a GPU method (gpuVisibilityMethods)
+    GpuVisibilityOptions methodOptions;
+    RenderOptions render;  //!< the scene pass (shadows are off: visibility reads depth only)
+};
+
+//! Every light of `scene` measured by a GPU method in its own headless context. The seeds'
+//! one-light methods measure one light at a time: each light stands in as the frame's sun
+//! (lightAsSun: a point light as the disc its sphere subtends, seen where the depth reaches its
+//! near side), the frame is drawn and measured until its result arrives; `latencyFrames` gets
+//! the most extra frames a late method (pbo, query) took. compute and texture-mask on a scene
+//! with more than the sun measure every light at once through the engine API's batched pass
+//! (the coverage the embedding API gives an application).
+Result<VisibilityResult> gpuSceneVisibility(const Scene& scene,
+                                            const SceneVisibilityOptions& options,
+                                            int* latencyFrames = nullptr);
+
 }  // namespace flarekit

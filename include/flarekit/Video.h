@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// Encoding numbered PNG frames into an MP4 with ffmpeg, when ffmpeg is installed.
+// Encoding numbered PNG frames into an MP4 with ffmpeg, when ffmpeg is installed: a program run,
+// not a library linked (NOTICE). Any front end that writes a shot or the demo uses it.
 #pragma once
 
 #include <string>
 
 #include "flarekit/Result.h"
 
-namespace flarekit::cli {
+namespace flarekit {
 
 //! The ffmpeg on PATH, or "" when there is none.
 std::string findFfmpeg();
@@ -17,4 +18,4 @@ std::string findFfmpeg();
 Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double fps,
                    const std::string& output, const std::string& logPath);
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

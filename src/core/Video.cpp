@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "Video.h"
+#include "flarekit/Video.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -16,7 +16,7 @@
 
 #include "core/Interrupt.h"
 
-namespace flarekit::cli {
+namespace flarekit {
 
 std::string findFfmpeg() {
     const char* path = std::getenv("PATH");
@@ -117,4 +117,4 @@ Status encodeVideo(const std::string& ffmpeg, const std::string& pattern, double
     return Ok{};
 }
 
-}  // namespace flarekit::cli
+}  // namespace flarekit

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: Apache-2.0
+// A scene's lights measured by a GPU method (flarekit/gl/GpuVisibility.h): `flarekit
+// visibility --method ...` and any front end that reports what a method sees.
+#include <algorithm>
+#include <chrono>
+
+#include "flarekit/gl/EngineRun.h"
+#include "flarekit/gl/GpuVisibility.h"
+#include "flarekit/gl/HeadlessGl.h"
+
+namespace flarekit {
+
+namespace {
+//! Every light at once through the engine API's batched pass (`compute` on a scene with
+//! more than the sun): the coverage the embedding API would give an application.
+Result<VisibilityResult> engineLightsVisibility(const Scene& scene,
+                                                const SceneVisibilityOptions& a) {
+    EngineRunOptions o;
+    o.source = a.source;
+    o.method = a.method;
+    o.render = a.render;
+    o.render.shadows = false;
+    o.flares = false;
+    const auto start = std::chrono::steady_clock::now();
+    auto run = runEngineScene(scene, o);
+    if (!run) return run.error();
+    VisibilityResult r;
+    r.method = a.method;
+    r.lights = run->lights;
+    r.coverage = r.lights.front().coverage;
+    r.inFrame = r.lights.front().inFrame;
+    r.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+}  // namespace
+
+Result<VisibilityResult> gpuSceneVisibility(const Scene& scene, const SceneVisibilityOptions& a,
+                                            int* latencyFrames) {
+    int latency = 0;
+    const std::vector<SceneLight> lights = sceneLights(scene);
+    if ((a.method == "compute" || a.method == "texture-mask") &&
+        (lights.size() > 1 || lights.front().type != LightType::Directional))
+        return engineLightsVisibility(scene, a);
+    auto context = gl::createQuietHeadlessGl();
+    if (!context) return context.error();
+    if (Status s =
+            gl::checkGlFrame(scene.width, scene.height, a.render.msaaSamples, a.source + ": image");
+        !s)
+        return s.error();
+    RenderOptions render = a.render;
+    render.shadows = false;  // visibility reads depth only
+    auto renderer = SceneRenderer::create(scene, render);
+    if (!renderer) return renderer.error();
+    auto method = createGpuVisibility(a.method, scene, a.methodOptions);
+    if (!method) return method.error();
+    const auto start = std::chrono::steady_clock::now();
+    VisibilityResult r;
+    r.method = a.method;
+    for (const SceneLight& light : lights) {
+        Scene view = scene;
+        view.sun = lightAsSun(light, scene.camera);
+        int frames = 0;
+        auto coverage = measureStillFrame(**method, *renderer, view, 16, &frames);
+        if (!coverage) return coverage.error();
+        latency = std::max(latency, frames);
+        r.lights.push_back({*coverage, lightInFrameFraction(scene, light)});
+    }
+    r.coverage = r.lights.front().coverage;
+    r.inFrame = r.lights.front().inFrame;
+    r.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (latencyFrames) *latencyFrames = latency;
+    return r;
+}
+
+}  // namespace flarekit
