@@ -209,6 +209,20 @@ struct LightSearch {
 //! flood fills that visit each pixel at most once.
 LightSearch findLights(const Image& image, const LightSearchOptions& options = {});
 
+//! The flare scale of a light whose place is given but which lies outside the frame, where
+//! nothing can be measured: 1, the preset's own look (its elements at kReferenceFlux).
+inline constexpr float kOutOfFrameFlareScale = 1.f;
+
+//! A hand-placed light (`--light X,Y`, a track key without an intensity) measured as `--light
+//! auto` measures the lights it finds: the region grown from the brightest pixel within 2% of
+//! the frame height of `at` (at least 4 px), its flux summed the same way (clipped pixels of
+//! 8/16-bit data at clippedGain, HDR down to a quarter of its peak; the region kept within 10% of
+//! the frame height of `at`, since nothing judges it) and its flareScale from that flux. Nothing
+//! there to measure (a black patch) gives flux 0. Outside the frame: flux 0 and flareScale
+//! kOutOfFrameFlareScale. The candidate's `position` is its measured centroid; it is not judged
+//! (`accepted` is true: the user placed it).
+LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOptions& options = {});
+
 //! The preset's flare on every light of `search`, each scaled by its own flux x intensity.
 FlareStats flareLights(Image& image, const Preset& preset, const LightSearch& search,
                        float intensity = 1.f);

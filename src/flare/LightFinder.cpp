@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -176,16 +177,21 @@ struct PixelAt {
     int x = 0, y = 0;
 };
 
-//! Grows the region of `seed` over unseen pixels >= threshold and measures it.
+//! Grows the region of `seed` over unseen pixels >= threshold (whose centres lie within
+//! `maxRadius` px of `capCentre`) and measures it.
 LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float threshold,
                           float clippedGain, bool displayReferred, std::vector<std::uint8_t>& seen,
-                          std::vector<PixelAt>& stack, std::vector<PixelAt>& members) {
+                          std::vector<PixelAt>& stack, std::vector<PixelAt>& members,
+                          float maxRadius = std::numeric_limits<float>::infinity(),
+                          Point capCentre = {}) {
     LightCandidate c;
     c.peak = m.lum[seed];
     double sum = 0, flux = 0, sx = 0, sy = 0;
     members.clear();
     seen[seed] = 1;
-    stack.push_back({int(seed % std::size_t(m.w)), int(seed / std::size_t(m.w))});
+    const int seedX = int(seed % std::size_t(m.w)), seedY = int(seed / std::size_t(m.w));
+    const float cap2 = maxRadius * maxRadius;
+    stack.push_back({seedX, seedY});
     while (!stack.empty()) {
         const PixelAt p = stack.back();
         stack.pop_back();
@@ -199,6 +205,8 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
         sy += l * (y + 0.5);
         auto visit = [&](int nx, int ny) {
             if (nx < 0 || ny < 0 || nx >= m.w || ny >= m.h) return;
+            const float dx = float(nx) + 0.5f - capCentre.x, dy = float(ny) + 0.5f - capCentre.y;
+            if (dx * dx + dy * dy > cap2) return;
             const std::size_t j = std::size_t(ny) * std::size_t(m.w) + std::size_t(nx);
             if (!seen[j] && m.lum[j] >= threshold) {
                 seen[j] = 1;
@@ -286,6 +294,71 @@ void rejectGlareFragments(std::vector<LightCandidate>& candidates, float height)
     }
 }
 
+//! Two accepted candidates are one physical light when their centres lie within
+//! kMergeRadii x (r_a + r_b) + kMergeSlackPx of each other: each candidate already keeps the
+//! disc of twice its radius out of the search, so lights this close are the bright spots of
+//! one strip, tube or window (a ceiling strip found as 4 blobs 5-7 px apart, a church window
+//! twice 16 px apart), while lamps in a row stand many radii apart. The slack covers the
+//! one- or two-pixel spots a thin strip breaks into.
+constexpr float kMergeRadii = 2.f, kMergeSlackPx = 4.f;
+
+//! Candidate `b` folded into `a`: flux and pixels summed, the flux-weighted centre, the larger
+//! peak, the radius of the summed area, a verdict naming how many regions it joins.
+void mergeInto(LightCandidate& a, const LightCandidate& b, int height) {
+    const double fa = a.flux, fb = b.flux, f = fa + fb;
+    if (f > 0)
+        a.position = {float((a.position.x * fa + b.position.x * fb) / f),
+                      float((a.position.y * fa + b.position.y * fb) / f)};
+    a.meanLuminance = float(
+        (double(a.meanLuminance) * double(a.pixels) + double(b.meanLuminance) * double(b.pixels)) /
+        double(a.pixels + b.pixels));
+    a.pixels += b.pixels;
+    a.flux = f;
+    a.peak = std::max(a.peak, b.peak);
+    a.radius = std::sqrt(float(a.pixels) / std::numbers::pi_v<float>);
+    a.flareScale = flareScaleForFlux(a.flux, height);
+}
+
+//! Accepted candidates of one physical light (kMergeRadii) become one, in the place of the
+//! brightest; the others stay in the candidate list, no longer accepted, saying which light
+//! took them.
+void mergeNearbyLights(std::vector<LightCandidate>& candidates, int height) {
+    std::vector<std::size_t> lights;
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        if (candidates[i].accepted) lights.push_back(i);
+    // Union-find over the accepted ones: a strip's spots chain into one light.
+    std::vector<std::size_t> parent(lights.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto root = [&](std::size_t i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        for (std::size_t j = i + 1; j < lights.size(); ++j) {
+            const LightCandidate &a = candidates[lights[i]], &b = candidates[lights[j]];
+            const float reach = kMergeRadii * (a.radius + b.radius) + kMergeSlackPx;
+            if (std::hypot(a.position.x - b.position.x, a.position.y - b.position.y) > reach)
+                continue;
+            const std::size_t ri = root(i), rj = root(j);
+            parent[std::max(ri, rj)] = std::min(ri, rj);  // the root stays the brightest
+        }
+    // Candidates are in seed order, brightest peak first, so a group's root is its brightest.
+    std::vector<int> joined(lights.size(), 1);
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::size_t r = root(i);
+        if (r == i) continue;
+        LightCandidate& into = candidates[lights[r]];
+        LightCandidate& part = candidates[lights[i]];
+        mergeInto(into, part, height);
+        ++joined[r];
+        part.accepted = false;
+        part.verdict = format("part of the light at %.0f,%.0f", into.position.x, into.position.y);
+    }
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (joined[i] > 1)
+            candidates[lights[i]].verdict = format("light (%.0f regions of one light)", joined[i]);
+}
+
 //! The search over the seeds, brightest first: each seed not yet taken grows a candidate, which
 //! is measured, judged and (with its halo) taken out of the search.
 struct CandidateSearch {
@@ -364,6 +437,7 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
     }
 
     rejectGlareFragments(result.candidates, float(m.h));
+    mergeNearbyLights(result.candidates, m.h);
     for (const LightCandidate& c : result.candidates)
         if (c.accepted) result.lights.push_back(c);
     std::stable_sort(
@@ -381,6 +455,59 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
                          best->verdict;
     }
     return result;
+}
+
+//! How far from a hand-placed point the light's peak is looked for: 2% of the frame height
+//! (21 px at 1080p) covers a click beside a sun's core, not the next lamp along a street.
+constexpr float kPlacedReachOfHeight = 0.02f;
+constexpr float kMinPlacedReachPx = 4.f;
+//! A placed light's region stops 10% of the frame height from the point: the finder refuses
+//! regions larger than a light (a clipped sky, an even wall), a placed light has no verdict,
+//! so its region is bounded instead; a low sun's clipped glare in a phone photo, the largest
+//! light the finder takes, stays within it.
+constexpr float kPlacedRegionOfHeight = 0.1f;
+
+LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOptions& options) {
+    LightCandidate c;
+    c.position = at;
+    c.accepted = true;
+    c.verdict = "placed";
+    const bool inside =
+        at.x >= 0 && at.y >= 0 && at.x < float(image.width()) && at.y < float(image.height());
+    if (image.empty() || !inside) {
+        c.flareScale = kOutOfFrameFlareScale;
+        c.verdict = "placed outside the frame: the preset's own flux";
+        return c;
+    }
+    const LuminanceMap m = luminanceMap(image);
+    const bool displayReferred = isDisplayReferred(m.brightestChannel);
+    const float reach = std::max(kMinPlacedReachPx, kPlacedReachOfHeight * float(m.h));
+    std::size_t seed = 0;
+    float peak = -1.f;
+    const int x0 = std::max(0, int(std::floor(at.x - reach))),
+              x1 = std::min(m.w - 1, int(std::floor(at.x + reach))),
+              y0 = std::max(0, int(std::floor(at.y - reach))),
+              y1 = std::min(m.h - 1, int(std::floor(at.y + reach)));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const float dx = float(x) + 0.5f - at.x, dy = float(y) + 0.5f - at.y;
+            const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
+            if (dx * dx + dy * dy <= reach * reach && m.lum[i] > peak) peak = m.lum[i], seed = i;
+        }
+    if (!(peak > 0.f)) return c;
+    // The same region and flux as CandidateSearch::examine.
+    const float core = options.nearPeak * peak;
+    const float threshold =
+        displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
+    std::vector<std::uint8_t> seen(m.lum.size(), 0);
+    std::vector<PixelAt> stack, members;
+    LightCandidate measured =
+        growRegion(m, seed, threshold, options.clippedGain, displayReferred, seen, stack, members,
+                   std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
+    measured.flareScale = flareScaleForFlux(measured.flux, m.h);
+    measured.accepted = true;
+    measured.verdict = "placed";
+    return measured;
 }
 
 }  // namespace flarekit

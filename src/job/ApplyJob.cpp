@@ -196,6 +196,14 @@ Status applyToImage(const ApplyOptions& a, const JobEvents& events) {
             [&](const LoadedImage& plate) -> Result<Lights> {
                 if (!a.light) return autoLights(a, a.input, plate.image, events);
                 float intensity = a.intensity;
+                if (a.fluxMode == FluxMode::Measured) {
+                    const LightCandidate placed =
+                        measureLightAt(plate.image, *a.light, a.lightSearch);
+                    intensity *= placed.flareScale;
+                    if (a.verbose)
+                        events.say(format("placed light: flux %.4g, flare scale %.4f", placed.flux,
+                                          double(placed.flareScale)));
+                }
                 if (coverage) {
                     auto row = coverage->at(0, plate);
                     if (!row) return row.error();

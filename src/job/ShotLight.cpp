@@ -21,6 +21,8 @@ Result<std::unique_ptr<ShotLight>> ShotLight::load(const ApplyOptions& a, const 
                                                    const JobEvents& events) {
     std::unique_ptr<ShotLight> light(new ShotLight(plan));
     light->m_fixed = a.light;
+    light->m_measured = a.fluxMode == FluxMode::Measured;
+    light->m_search = a.lightSearch;
     light->m_guardBand = a.occlusion.temporal.guardBand;
     if (!a.lightTrack.empty()) {
         auto loaded = loadLightTrack(a.lightTrack);
@@ -64,7 +66,13 @@ Point ShotLight::position(int frame, const Image* image) {
 }
 
 Result<ShotLight::Weight> ShotLight::weight(int frame, const Image& image) {
-    if (m_track) return Weight{m_track->at(frame).intensity, true};
+    if (m_track) {
+        const LightTrack::Sample s = m_track->at(frame);
+        const bool measure = m_measured && !m_track->hasIntensity;
+        return Weight{
+            measure ? measureLightAt(image, s.position, m_search).flareScale : s.intensity, true};
+    }
+    if (m_fixed && m_measured) return Weight{measureLightAt(image, *m_fixed, m_search).flareScale};
     if (m_camera) {
         Point p;
         if (!projectLight(m_camera->at(frame), m_plan.width, m_plan.height, m_world, m_sun, p))

@@ -22,8 +22,8 @@ class ShotLight {
     //! The light's position in `frame`; `image` is its pixels when the caller has them.
     Point position(int frame, const Image* image = nullptr);
     //! The intensity multiplier: the track's, the edge fade of a projected light, the followed
-    //! light's flare scale. `present` false: no light this frame (behind the camera, or the
-    //! followed light not seen).
+    //! light's flare scale, a placed light's measured flare scale (FluxMode::Measured). `present`
+    //! false: no light this frame (behind the camera, or the followed light not seen).
     struct Weight {
         float weight = 1;
         bool present = true;
@@ -37,6 +37,8 @@ class ShotLight {
 
     const ShotPlan& m_plan;
     std::optional<Point> m_fixed;
+    bool m_measured = true;  //!< a placed light's flux measured in each frame (FluxMode)
+    LightSearchOptions m_search;
     std::optional<LightTrack> m_track;
     std::optional<CameraTrack> m_camera;
     Vec3 m_world;

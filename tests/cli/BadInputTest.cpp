@@ -151,3 +151,46 @@ TEST(BadInput, BlendRejectsNon8BitInput) {
                            dir.file("d.png"), "-o", dir.file("o.png")}),
                    dir, 2, "expected an 8-bit image");
 }
+
+// A hand-placed light is measured as the finder measures it: placed on the found sun it draws
+// exactly the found sun's flare; --flux-mode fixed draws the preset's own strength instead; a
+// placed light on black draws nothing; an unknown mode is one line, exit 2, nothing written.
+TEST(PlacedLight, IsMeasuredLikeAFoundOneUnlessTheFluxIsFixed) {
+    TempDir dir;
+    std::vector<float> px(96 * 64 * 3, 0.05f);
+    for (int y = 30; y < 34; ++y)
+        for (int x = 60; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) px[std::size_t(3 * (y * 96 + x) + c)] = 400.f;
+    ASSERT_TRUE(writeRawFloat(dir.file("sun.exr"), 96, 64, 3, px));
+    const std::string in = dir.file("sun.exr");
+    ASSERT_EQ(runCli({"apply", in, "-o", dir.file("auto.exr")}).exitCode, 0);
+    ASSERT_EQ(runCli({"apply", in, "-o", dir.file("placed.exr"), "--light", "62,32"}).exitCode, 0);
+    ASSERT_EQ(runCli({"apply", in, "-o", dir.file("fixed.exr"), "--light", "62,32", "--flux-mode",
+                      "fixed"})
+                  .exitCode,
+              0);
+    EXPECT_EQ(slurp(dir.file("auto.exr")), slurp(dir.file("placed.exr")));
+    auto placed = readImage(dir.file("placed.exr")), fixed = readImage(dir.file("fixed.exr"));
+    ASSERT_TRUE(placed.ok() && fixed.ok());
+    // 16 px of 400 in a 64 px tall frame: flare scale 6400 / 64^2 = 1.56, stronger than fixed.
+    EXPECT_GT(placed->image.at(70, 32).r, fixed->image.at(70, 32).r);
+    // On the dim sky far from the sun: the sky's own small flux, a flare under 1% of the fixed
+    // one placed there.
+    ASSERT_EQ(runCli({"apply", in, "-o", dir.file("dim.exr"), "--light", "8,8"}).exitCode, 0);
+    ASSERT_EQ(runCli({"apply", in, "-o", dir.file("dimfixed.exr"), "--light", "8,8", "--flux-mode",
+                      "fixed"})
+                  .exitCode,
+              0);
+    auto dim = readImage(dir.file("dim.exr")), dimFixed = readImage(dir.file("dimfixed.exr"));
+    ASSERT_TRUE(dim.ok() && dimFixed.ok());
+    const float added = dim->image.at(8, 8).r - 0.05f,
+                addedFixed = dimFixed->image.at(8, 8).r - 0.05f;
+    EXPECT_GT(addedFixed, 0.1f);
+    EXPECT_LT(added, 0.01f * addedFixed);
+    const CliResult bad =
+        runCli({"apply", in, "-o", dir.file("bad.exr"), "--light", "8,8", "--flux-mode", "loud"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(lineCount(bad.err), 1) << bad.err;
+    EXPECT_NE(bad.err.find("--flux-mode"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("bad.exr")));
+}

@@ -35,9 +35,10 @@ TEST(ShotCli, ATrackMovesTheLightAndSequenceFramesEqualSingleImageCalls) {
                           "--light-track", in.file("track.csv")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("frames 4 are outside the keys"), std::string::npos) << r.err;
-    // Frame 2 is halfway: the light at 40,30 with intensity 1.5, exactly as one call places it.
+    // Frame 2 is halfway: the light at 40,30 with intensity 1.5, exactly as one call places it
+    // at that strength (a track's intensities are absolute, not measured).
     r = runCli({"apply", in.file("in.0002.exr"), "-o", out.file("single.exr"), "--light", "40,30",
-                "--intensity", "1.5"});
+                "--intensity", "1.5", "--flux-mode", "fixed"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(slurp(out.file("t.0002.exr")), slurp(out.file("single.exr")));
     // postfx over the sequence gives what it gives each frame alone.

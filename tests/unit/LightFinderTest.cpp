@@ -246,3 +246,88 @@ TEST(LightFinderSeeds, BucketsSortedOneByOneAreTheDescendingOrder) {
     EXPECT_EQ(one.keys, SortKeys{42});
     EXPECT_EQ(one.count(), 1u);
 }
+
+// A hand-placed light is measured as the finder measures the light it finds: placed anywhere
+// on or beside the sun (within 2% of the height), it has the found sun's flux and flare scale.
+TEST(MeasureLightAt, APlacedLightHasTheFluxTheFinderMeasuresThere) {
+    for (const bool clippedPhoto : {false, true}) {
+        Image img = background(640, 360, clippedPhoto ? 0.02f : 0.1f);
+        if (clippedPhoto)
+            blob(img, 400.f, 100.f, 24.f, 1.f, 0.6f);
+        else
+            blob(img, 250.5f, 80.25f, 3.f, 5000.f);
+        const LightSearch search = findLights(img);
+        ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+        const LightCandidate& found = search.lights[0];
+        for (const Point offset : {Point{0, 0}, Point{3, -2}, Point{-5, 4}}) {
+            const Point at{found.position.x + offset.x, found.position.y + offset.y};
+            const LightCandidate placed = measureLightAt(img, at);
+            EXPECT_EQ(placed.flux, found.flux) << clippedPhoto << " " << offset.x;
+            EXPECT_EQ(placed.flareScale, found.flareScale);
+            EXPECT_EQ(placed.pixels, found.pixels);
+        }
+    }
+}
+
+TEST(MeasureLightAt, NothingThereIsNoFluxASkyLittleAndOutsideTheFrameThePresetsOwn) {
+    Image img = background(320, 180, 0.f);
+    blob(img, 200.f, 60.f, 4.f, 3000.f);
+    // Far from the light (more than 2% of the height): black, so no flux and no flare.
+    const LightCandidate dark = measureLightAt(img, {40.f, 150.f});
+    EXPECT_EQ(dark.flux, 0.0);
+    EXPECT_EQ(dark.flareScale, 0.f);
+    // Dim sky there: its own small flux, far below the light's.
+    Image sky = background(320, 180, 0.1f);
+    blob(sky, 200.f, 60.f, 4.f, 3000.f);
+    EXPECT_LT(measureLightAt(sky, {40.f, 150.f}).flareScale,
+              1e-3f * measureLightAt(sky, {200.f, 60.f}).flareScale);
+    for (const Point outside : {Point{-10.f, 50.f}, Point{400.f, 90.f}, Point{100.f, 180.f}}) {
+        const LightCandidate off = measureLightAt(img, outside);
+        EXPECT_EQ(off.flux, 0.0);
+        EXPECT_EQ(off.flareScale, kOutOfFrameFlareScale);
+    }
+}
+
+// One flare per physical light: a strip light found as bright spots 6 px apart (each its own
+// peak) and a window found twice 16 px apart are one light each, with the summed flux at the
+// flux-weighted centre; two lamps 60 px apart stay two.
+TEST(LightFinder, SpotsOfOneStripOrWindowAreOneLightLampsApartAreTwo) {
+    Image img = background(640, 360, 0.01f);
+    const float spots[] = {200.f, 206.f, 212.f, 218.f};
+    const float values[] = {3000.f, 2600.f, 2800.f, 2400.f};
+    for (int i = 0; i < 4; ++i) blob(img, spots[i], 100.f, 1.5f, values[i]);
+    blob(img, 420.f, 250.f, 5.f, 1500.f);  // a window's two panes
+    blob(img, 436.f, 250.f, 5.f, 1200.f);
+    blob(img, 560.f, 80.f, 2.f, 2000.f);  // two lamps 60 px apart
+    blob(img, 620.f, 80.f, 2.f, 2000.f);
+    LightSearchOptions options;
+    options.maxLights = 16;
+    const LightSearch search = findLights(img, options);
+    ASSERT_EQ(search.lights.size(), 4u) << search.whyNone;
+    const LightCandidate* strip = nullptr;
+    const LightCandidate* window = nullptr;
+    int lamps = 0;
+    for (const LightCandidate& l : search.lights) {
+        if (std::fabs(l.position.y - 100.f) < 2.f) strip = &l;
+        if (std::fabs(l.position.y - 250.f) < 2.f) window = &l;
+        lamps += std::fabs(l.position.y - 80.f) < 2.f;
+    }
+    ASSERT_TRUE(strip && window);
+    EXPECT_EQ(lamps, 2);
+    double stripFlux = 0, weighted = 0;
+    for (int i = 0; i < 4; ++i) {
+        const double f = discFlux(img, spots[i], 100.f, 2.f);
+        stripFlux += f;
+        weighted += f * spots[i];
+    }
+    EXPECT_NEAR(strip->flux / stripFlux, 1.0, 0.02);
+    EXPECT_NEAR(strip->position.x, weighted / stripFlux, 0.5);
+    EXPECT_EQ(strip->verdict, "light (4 regions of one light)");
+    const double windowFlux = discFlux(img, 420.f, 250.f, 5.5f) + discFlux(img, 436.f, 250.f, 5.5f);
+    EXPECT_NEAR(window->flux / windowFlux, 1.0, 0.02);
+    EXPECT_NEAR(window->flareScale, flareScaleForFlux(window->flux, 360), 1e-6);
+    int parts = 0;
+    for (const LightCandidate& c : search.candidates)
+        parts += c.verdict.rfind("part of the light at", 0) == 0;
+    EXPECT_EQ(parts, 4);  // three spots of the strip, one pane of the window
+}

@@ -87,6 +87,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
                     "'auto' for the brightest region")
         ->capture_default_str();
     addParamOptions<ApplyOptions>(cmd, kApplyParams, *args);
+    addParamChoice<ApplyOptions>(cmd, kApplyParams, "flux_mode", *args);
     addParamOptions<LightSearchOptions>(cmd, kLightSearchParams, args->lightSearch);
     cmd->add_option("--depth", text->depth,
                     "output samples: auto (from the extension), 8, 16, half, float")

@@ -6,10 +6,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "flarekit/Param.h"
 #include "flarekit/ParamText.h"
@@ -75,6 +77,28 @@ CLI::Option* addParamOption(CLI::App* cmd, std::span<const Param<Owner>> table,
     const Param<Owner>* p = findParam(table, key);
     if (!p) throw std::logic_error("no parameter '" + std::string(key) + "'");
     return addParamOption(cmd, *p, target);
+}
+
+//! A choice parameter as --key NAME, the names and the default from its description.
+template <class Owner>
+CLI::Option* addParamChoice(CLI::App* cmd, std::span<const Param<Owner>> table,
+                            std::string_view key, Owner& target) {
+    const Param<Owner>* p = findParam(table, key);
+    if (!p || p->type != ParamType::Choice)
+        throw std::logic_error("no choice parameter '" + std::string(key) + "'");
+    std::vector<std::string> names(p->choices.begin(), p->choices.end());
+    const Param<Owner> described = *p;
+    auto* option = cmd->add_option_function<std::string>(
+        flagName(p->key),
+        [described, names, &target](const std::string& name) {
+            ParamValue v;
+            v.number = double(std::find(names.begin(), names.end(), name) - names.begin());
+            described.set(target, v);
+        },
+        paramHelp(*p));
+    option->check(CLI::IsMember(names));
+    option->default_str(names[std::size_t(p->get(target).number)]);
+    return option;
 }
 
 //! Every numeric parameter of a table as a flag.

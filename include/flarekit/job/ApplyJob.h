@@ -17,6 +17,13 @@
 
 namespace flarekit {
 
+//! How strong a placed light's flare is (`--light X,Y`, a light track without intensities).
+enum class FluxMode {
+    Measured,  //!< measured at the point as `--light auto` measures (measureLightAt)
+    Fixed,     //!< the preset's own look (flare scale 1), whatever is there
+};
+inline constexpr std::string_view kFluxModeNames[] = {"measured", "fixed"};
+
 struct ApplyOptions {
     std::string input;   //!< an image, or a frame pattern (shot.####.exr) for a sequence
     std::string output;  //!< an image, or a frame pattern for a sequence
@@ -31,6 +38,10 @@ struct ApplyOptions {
     //! (a direction): projected per frame. None of them: found in the image (a sequence follows
     //! one light through the shot).
     std::optional<Point> light;
+    //! A placed light's strength: measured there, or fixed (the behaviour before measuring);
+    //! `intensity` scales either. A track with intensities and a projected light are not
+    //! measured.
+    FluxMode fluxMode = FluxMode::Measured;
     std::string lightTrack, camera;
     std::optional<Vec3> lightWorld, sunDir;
     LightSearchOptions lightSearch;
@@ -57,6 +68,10 @@ inline constexpr Param<ApplyOptions> kApplyParams[] = {
     param<&ApplyOptions::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
     param<&ApplyOptions::exposure>(
         "exposure", 0, 1000, "", "multiplies the image (flare included) before the display curve"),
+    choice<&ApplyOptions::fluxMode>(
+        "flux_mode", kFluxModeNames,
+        "--light X,Y and tracks without intensities: measured (the light's flux there, as --light "
+        "auto measures it) or fixed (the preset's own strength)"),
 };
 
 //! What an apply job did: for a sequence, where its time went.
