@@ -186,10 +186,12 @@ struct LightCandidate {
     float prominence = 0.f;     //!< mean luminance / mean luminance of the ring around it
     float compactness = 0.f;    //!< share of its pixels within 1.25 radii of it: 1 for a disc
     float halo = 0.f;           //!< mean luminance just outside it (R+1 to 1.5R+2) / its mean
-    bool clipped = false;       //!< display-referred input and its peak at the clip point
-    float flareScale = 0.f;     //!< flareScaleForFlux(flux)
-    bool accepted = false;      //!< convincing as a light source
-    std::string verdict;        //!< "light", or why not ("1.3x its surroundings, needs 2x")
+    //! Display-referred input and its peak at the file's white in all three channels.
+    bool clipped = false;
+    std::size_t whitePixels = 0;  //!< display-referred: its pixels at white in every channel
+    float flareScale = 0.f;       //!< flareScaleForFlux(flux)
+    bool accepted = false;        //!< convincing as a light source
+    std::string verdict;          //!< "light", or why not ("1.3x its surroundings, needs 2x")
 };
 
 struct LightSearch {

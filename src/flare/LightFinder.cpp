@@ -3,6 +3,7 @@
 // computed once; each candidate is grown from its own peak by a flood fill that visits only
 // pixels near that peak, and judged against the ring of pixels around it.
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -30,6 +31,12 @@ constexpr std::size_t kMaxCandidates = 256;
 //! is 0.90 linear): a light burns out all three channels, with JPEG noise and a warm cast
 //! just under 255, while a saturated orange leaf or a pink sky clips one channel only.
 constexpr float kClipLevel = 0.9f;
+//! What an 8/16-bit light needs at its core: every channel at the file's white, the top code,
+//! or the file's own white point when it stops short of it (limited-range video whites at code
+//! 235; a JPEG of a clipped sun often peaks at 250-254), within kWhiteToleranceCodes of it for
+//! JPEG's ringing. A bright but unclipped region (water under a soft sky, snow, a lit wall, a
+//! cloud) or a warm highlight clipped in one channel has no such core.
+constexpr float kLowestWhiteCode = 235.f, kWhiteToleranceCodes = 3.f;
 //! In HDR data a light's flux is summed over the pixels above this fraction of its peak: the
 //! disc and its brightest fringe (a real sun falls from 31,000 to the sky's 50 within two
 //! pixels), not the sky around it.
@@ -72,12 +79,61 @@ struct LuminanceMap {
     std::vector<float, PixelAllocator<float>> lum;
     float brightestChannel = 0.f;  //!< of the whole frame: decides display- or scene-referred
     std::size_t peakIndex = 0;     //!< the first pixel (raster order) of the largest luminance
+    //! Display-referred frames: 1 where every channel is at the file's white (kLowestWhiteCode).
+    std::vector<std::uint8_t> atWhite;
     float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
     bool clipped(std::size_t i) const { return lum[i] >= kClipLevel; }
+    bool whiteCore(std::size_t i) const { return !atWhite.empty() && atWhite[i] != 0; }
 };
 
+//! A file's own white point below the top code counts only where the file piles pixels up
+//! there, as a clip does (a sun's clipped disc is hundreds of pixels at one level); a natural
+//! highlight's brightest level is held by a handful of pixels.
+constexpr std::size_t kWhitePlateauPixels = 16;
+
+//! The pixels of a display-referred frame whose three channels reach its white: the top code,
+//! or the brightest neutral level of the file if it stops between kLowestWhiteCode and the top
+//! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes.
+void markWhite(const Image& image, LuminanceMap& m) {
+    auto minChannel = [](const Rgba& p) { return std::min({p.r, p.g, p.b}); };
+    std::vector<float> rowWhite(std::size_t(m.h), 0.f);
+    parallelFor(0, m.h, 32, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            const Rgba* row = &image.at(0, y);
+            float white = 0.f;
+            for (int x = 0; x < m.w; ++x) white = std::max(white, minChannel(row[x]));
+            rowWhite[std::size_t(y)] = white;
+        }
+    });
+    const float white = std::min(1.f, *std::max_element(rowWhite.begin(), rowWhite.end()));
+    const float whiteCode = linearToSrgb(white) * 255.f;
+    m.atWhite.assign(m.lum.size(), 0);
+    if (whiteCode < kLowestWhiteCode - 0.5f) return;  // nothing in the file reaches a white
+    auto countAtLeast = [&](float level, bool mark) {
+        std::atomic<std::size_t> count{0};
+        parallelFor(0, m.h, 32, [&](int y0, int y1) {
+            std::size_t n = 0;
+            for (int y = y0; y < y1; ++y) {
+                const Rgba* row = &image.at(0, y);
+                std::uint8_t* out = &m.atWhite[std::size_t(y) * std::size_t(m.w)];
+                for (int x = 0; x < m.w; ++x) {
+                    const bool at = minChannel(row[x]) >= level;
+                    n += at;
+                    if (mark) out[x] = at ? 1 : 0;
+                }
+            }
+            count += n;
+        });
+        return count.load();
+    };
+    if (whiteCode < 254.5f &&
+        countAtLeast(srgbToLinear((whiteCode - 0.5f) / 255.f), false) < kWhitePlateauPixels)
+        return;  // a natural highlight, not a white point
+    countAtLeast(srgbToLinear((std::round(whiteCode) - kWhiteToleranceCodes) / 255.f), true);
+}
+
 LuminanceMap luminanceMap(const Image& image) {
-    LuminanceMap m{image.width(), image.height(), {}, {}};
+    LuminanceMap m{image.width(), image.height(), {}, {}, {}, {}};
     m.lum.resize(image.pixelCount());
     std::vector<float> rowBrightest(std::size_t(m.h), 0.f);
     std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
@@ -101,6 +157,7 @@ LuminanceMap luminanceMap(const Image& image) {
     m.brightestChannel = *std::max_element(rowBrightest.begin(), rowBrightest.end());
     for (const std::size_t peak : rowPeak)
         if (m.lum[peak] > m.lum[m.peakIndex]) m.peakIndex = peak;
+    if (isDisplayReferred(m.brightestChannel)) markWhite(image, m);
     return m;
 }
 
@@ -187,6 +244,7 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
     LightCandidate c;
     c.peak = m.lum[seed];
     double sum = 0, flux = 0, sx = 0, sy = 0;
+    std::size_t whitePixels = 0;
     members.clear();
     seen[seed] = 1;
     const int seedX = int(seed % std::size_t(m.w)), seedY = int(seed / std::size_t(m.w));
@@ -201,6 +259,7 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
         const double l = m.lum[i];
         sum += l;
         flux += displayReferred && m.clipped(i) ? double(clippedGain) : l;
+        whitePixels += m.whiteCore(i) ? 1 : 0;
         sx += l * (x + 0.5);
         sy += l * (y + 0.5);
         auto visit = [&](int nx, int ny) {
@@ -235,7 +294,8 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
         inside += dx * dx + dy * dy <= reach2;
     }
     c.compactness = float(double(inside) / double(c.pixels));
-    c.clipped = displayReferred && m.clipped(seed);
+    c.clipped = displayReferred && m.whiteCore(seed);
+    c.whitePixels = whitePixels;
     return c;
 }
 
@@ -245,7 +305,7 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
     c.flareScale = flareScaleForFlux(c.flux, m.h);
     auto reject = [&](std::string why) { c.verdict = std::move(why); };
     if (displayReferred && !c.clipped)
-        return reject("not clipped (a light in 8/16-bit data reaches white)");
+        return reject("not clipped (a light in 8/16-bit data reaches white in all three channels)");
     if (!displayReferred && c.peak < kMinKeyContrast * frameKey)
         return reject(format("only %.1fx the frame's median luminance (a light is %.0fx)",
                              c.peak / frameKey, kMinKeyContrast));
@@ -256,6 +316,12 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
         if (c.radius < kMinRadiusOfHeight * float(m.h))
             return reject(format("too small: radius %.1f px (needs %.1f)", c.radius,
                                  kMinRadiusOfHeight * float(m.h)));
+        // The core at white must itself be of a light's size: a soft bright region with a few
+        // clipped pixels in it (a glint on water, a lamp's reflection in snow) is not one.
+        const float whiteRadius = std::sqrt(float(c.whitePixels) / std::numbers::pi_v<float>);
+        if (whiteRadius < kMinRadiusOfHeight * float(m.h))
+            return reject(format("its core at white is too small: radius %.1f px (needs %.1f)",
+                                 whiteRadius, kMinRadiusOfHeight * float(m.h)));
         if (double(c.pixels) > kMaxFrameShare * double(m.w) * double(m.h))
             return reject(format("too large: %.1f%% of the frame (at most %.0f%%)",
                                  100.0 * double(c.pixels) / (double(m.w) * double(m.h)),

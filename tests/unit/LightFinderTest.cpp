@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/RadixSort.h"
+#include "flarekit/Color.h"
 #include "flarekit/Flare.h"
 
 using namespace flarekit;
@@ -330,4 +331,65 @@ TEST(LightFinder, SpotsOfOneStripOrWindowAreOneLightLampsApartAreTwo) {
     for (const LightCandidate& c : search.candidates)
         parts += c.verdict.rfind("part of the light at", 0) == 0;
     EXPECT_EQ(parts, 4);  // three spots of the strip, one pane of the window
+}
+
+namespace {
+//! A disc of colour `core` (flat: clipped, or not) with a soft glare of `glare` around it.
+void colouredBlob(Image& img, float cx, float cy, float radius, Rgba core, float glare) {
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const float d = std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy);
+            const float u = d / radius - 1.f;
+            Rgba& p = img.at(x, y);
+            if (d < radius) {
+                p = core;
+            } else {
+                const float g = glare / (1.f + 4.f * u * u);
+                p = {p.r + g, p.g + g, p.b + g, 1.f};
+            }
+        }
+}
+}  // namespace
+
+// 8-bit: a light needs a core at white in all three channels. A soft bright dome that peaks at
+// code 245 without clipping (water under a soft sky, snow) and a warm highlight clipped in red
+// only are not lights; a clipped sun is, and so is one in a file whose white is code 250
+// (a plateau of pixels there: the file's own white point).
+TEST(LightFinder, APhotosLightNeedsACoreAtWhiteInEveryChannel) {
+    Image dome = background(640, 360, 0.02f);
+    const float peak = srgbToLinear(245.f / 255.f);
+    for (int y = 0; y < 360; ++y)
+        for (int x = 0; x < 640; ++x) {
+            const float d = std::hypot(float(x) + 0.5f - 400.f, float(y) + 0.5f - 100.f);
+            const float v = 0.02f + (peak - 0.02f) * std::exp(-(d / 20.f) * (d / 20.f));
+            dome.at(x, y) = {v, v, v, 1.f};
+        }
+    const LightSearch soft = findLights(dome);
+    ASSERT_TRUE(soft.displayReferred);
+    EXPECT_TRUE(soft.lights.empty()) << soft.lights.front().verdict;
+    EXPECT_NE(soft.whyNone.find("not clipped"), std::string::npos) << soft.whyNone;
+
+    Image warm = background(640, 360, 0.02f);
+    colouredBlob(warm, 400.f, 100.f, 24.f, {1.f, 0.93f, 0.75f, 1.f}, 0.f);
+    const LightSearch redOnly = findLights(warm);
+    EXPECT_TRUE(redOnly.lights.empty()) << redOnly.lights.front().verdict;
+
+    for (const float code : {255.f, 250.f}) {
+        Image sun = background(640, 360, 0.02f);
+        const float white = srgbToLinear(code / 255.f);
+        colouredBlob(sun, 400.f, 100.f, 24.f, {white, white, white, 1.f}, 0.6f * white);
+        const LightSearch found = findLights(sun);
+        ASSERT_EQ(found.lights.size(), 1u) << code << ": " << found.whyNone;
+        EXPECT_TRUE(found.lights[0].clipped);
+        EXPECT_NEAR(double(found.lights[0].whitePixels), 3.14159 * 24 * 24, 60.0);
+    }
+}
+
+// A few clipped pixels in a soft bright region (a glint on water) are not a light's core.
+TEST(LightFinder, AClippedSpeckInASoftRegionIsNotALight) {
+    Image img = background(640, 360, 0.02f);
+    colouredBlob(img, 400.f, 100.f, 24.f, {0.92f, 0.92f, 0.92f, 1.f}, 0.5f);
+    img.at(400, 100) = img.at(401, 100) = {1.f, 1.f, 1.f, 1.f};
+    const LightSearch search = findLights(img);
+    EXPECT_TRUE(search.lights.empty()) << search.lights.front().verdict;
 }
