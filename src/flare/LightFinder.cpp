@@ -37,6 +37,11 @@ constexpr float kClipLevel = 0.9f;
 //! JPEG's ringing. A bright but unclipped region (water under a soft sky, snow, a lit wall, a
 //! cloud) or a warm highlight clipped in one channel has no such core.
 constexpr float kLowestWhiteCode = 235.f, kWhiteToleranceCodes = 3.f;
+//! A light's region (its pixels within 90% of its peak) is mostly its core at white: past the
+//! clipped disc a lens's glare falls steeply, so the band between white and 90% is a thin ring
+//! (blender-data's suns rendered to 8-bit: 67-84% at white). A sunlit white object is a broad
+//! plateau just under white with clipped spots in it (a dandelion's seeds: 10%).
+constexpr float kMinWhiteShare = 0.4f;
 //! In HDR data a light's flux is summed over the pixels above this fraction of its peak: the
 //! disc and its brightest fringe (a real sun falls from 31,000 to the sky's 50 within two
 //! pixels), not the sky around it.
@@ -318,6 +323,10 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
                                  kMinRadiusOfHeight * float(m.h)));
         // The core at white must itself be of a light's size: a soft bright region with a few
         // clipped pixels in it (a glint on water, a lamp's reflection in snow) is not one.
+        const float whiteShare = float(c.whitePixels) / float(std::max<std::size_t>(c.pixels, 1));
+        if (whiteShare < kMinWhiteShare)
+            return reject(format("mostly under white: %.0f%% of it at white (a light: %.0f%%)",
+                                 100.0 * whiteShare, 100.0 * kMinWhiteShare));
         const float whiteRadius = std::sqrt(float(c.whitePixels) / std::numbers::pi_v<float>);
         if (whiteRadius < kMinRadiusOfHeight * float(m.h))
             return reject(format("its core at white is too small: radius %.1f px (needs %.1f)",

@@ -393,3 +393,18 @@ TEST(LightFinder, AClippedSpeckInASoftRegionIsNotALight) {
     const LightSearch search = findLights(img);
     EXPECT_TRUE(search.lights.empty()) << search.lights.front().verdict;
 }
+
+// A sunlit white object: a broad plateau just under white with clipped spots in a quarter of
+// it is not a light's core (a light's region is mostly at white).
+TEST(LightFinder, APlateauUnderWhiteWithClippedSpotsIsNotALight) {
+    Image img = background(640, 360, 0.02f);
+    colouredBlob(img, 400.f, 100.f, 30.f, {0.95f, 0.95f, 0.95f, 1.f}, 0.5f);
+    for (int y = 70; y < 130; ++y)
+        for (int x = 370; x < 430; ++x)
+            if (x % 2 == 0 && y % 2 == 0 &&
+                std::hypot(float(x) + 0.5f - 400.f, float(y) + 0.5f - 100.f) < 30.f)
+                img.at(x, y) = {1.f, 1.f, 1.f, 1.f};
+    const LightSearch search = findLights(img);
+    EXPECT_TRUE(search.lights.empty()) << search.lights.front().verdict;
+    EXPECT_NE(search.whyNone.find("mostly under white"), std::string::npos) << search.whyNone;
+}
