@@ -18,12 +18,9 @@ struct EngineDeleter {
 }  // namespace
 
 Result<EngineRun> runEngineScene(const Scene& scene, const EngineRunOptions& o) {
-    auto context = gl::createQuietHeadlessGl();
+    auto context = gl::createFrameContext(scene.width, scene.height, o.render.msaaSamples,
+                                          o.source + ": image");
     if (!context) return context.error();
-    if (Status s =
-            gl::checkGlFrame(scene.width, scene.height, o.render.msaaSamples, o.source + ": image");
-        !s)
-        return s.error();
     auto renderer = SceneRenderer::create(scene, o.render);
     if (!renderer) return renderer.error();
     if (Status s = renderer->draw(scene); !s) return s.error();

@@ -61,4 +61,12 @@ Status checkGlFrame(int width, int height, int msaa, const std::string& field) {
                            std::to_string(std::max(1, msaa)) + " sample(s) per pixel");
 }
 
+Result<std::unique_ptr<HeadlessGl>> createFrameContext(int width, int height, int msaa,
+                                                       const std::string& field) {
+    auto context = createQuietHeadlessGl();
+    if (!context) return context.error();
+    if (Status s = checkGlFrame(width, height, msaa, field); !s) return s.error();
+    return context;
+}
+
 }  // namespace flarekit::gl

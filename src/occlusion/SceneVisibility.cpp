@@ -43,12 +43,9 @@ Result<VisibilityResult> gpuSceneVisibility(const Scene& scene, const SceneVisib
     if ((a.method == "compute" || a.method == "texture-mask") &&
         (lights.size() > 1 || lights.front().type != LightType::Directional))
         return engineLightsVisibility(scene, a);
-    auto context = gl::createQuietHeadlessGl();
+    auto context = gl::createFrameContext(scene.width, scene.height, a.render.msaaSamples,
+                                          a.source + ": image");
     if (!context) return context.error();
-    if (Status s =
-            gl::checkGlFrame(scene.width, scene.height, a.render.msaaSamples, a.source + ": image");
-        !s)
-        return s.error();
     RenderOptions render = a.render;
     render.shadows = false;  // visibility reads depth only
     auto renderer = SceneRenderer::create(scene, render);

@@ -41,4 +41,9 @@ Result<std::unique_ptr<HeadlessGl>> createQuietHeadlessGl();
 //! image.width: ..."), or when its render targets and copies are over the memory budget.
 Status checkGlFrame(int width, int height, int msaa, const std::string& field);
 
+//! createQuietHeadlessGl, then checkGlFrame in it: the context a job that renders one frame
+//! size makes for itself.
+Result<std::unique_ptr<HeadlessGl>> createFrameContext(int width, int height, int msaa,
+                                                       const std::string& field);
+
 }  // namespace flarekit::gl
