@@ -191,6 +191,7 @@ struct LightCandidate {
     std::size_t whitePixels = 0;  //!< display-referred: its pixels at white in every channel
     float flareScale = 0.f;       //!< flareScaleForFlux(flux)
     bool accepted = false;        //!< convincing as a light source
+    int checksPassed = 0;         //!< of the finder's checks, in order, before the one it failed
     std::string verdict;          //!< "light", or why not ("1.3x its surroundings, needs 2x")
 };
 

@@ -308,43 +308,56 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
 void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m,
            bool displayReferred, float frameKey) {
     c.flareScale = flareScaleForFlux(c.flux, m.h);
+    // Each check passed counts, so a frame with no light names the candidate that came closest.
+    c.checksPassed = 0;
     auto reject = [&](std::string why) { c.verdict = std::move(why); };
+    auto passed = [&] { ++c.checksPassed; };
     if (displayReferred && !c.clipped)
         return reject("not clipped (a light in 8/16-bit data reaches white in all three channels)");
+    passed();
     if (!displayReferred && c.peak < kMinKeyContrast * frameKey)
         return reject(format("only %.1fx the frame's median luminance (a light is %.0fx)",
                              c.peak / frameKey, kMinKeyContrast));
+    passed();
     if (c.prominence < o.minProminence)
         return reject(
             format("only %.2fx its surroundings (needs %.2fx)", c.prominence, o.minProminence));
+    passed();
     if (displayReferred) {
         if (c.radius < kMinRadiusOfHeight * float(m.h))
             return reject(format("too small: radius %.1f px (needs %.1f)", c.radius,
                                  kMinRadiusOfHeight * float(m.h)));
+        passed();
         // The core at white must itself be of a light's size: a soft bright region with a few
         // clipped pixels in it (a glint on water, a lamp's reflection in snow) is not one.
         const float whiteShare = float(c.whitePixels) / float(std::max<std::size_t>(c.pixels, 1));
         if (whiteShare < kMinWhiteShare)
             return reject(format("mostly under white: %.0f%% of it at white (a light: %.0f%%)",
                                  100.0 * whiteShare, 100.0 * kMinWhiteShare));
+        passed();
         const float whiteRadius = std::sqrt(float(c.whitePixels) / std::numbers::pi_v<float>);
         if (whiteRadius < kMinRadiusOfHeight * float(m.h))
             return reject(format("its core at white is too small: radius %.1f px (needs %.1f)",
                                  whiteRadius, kMinRadiusOfHeight * float(m.h)));
+        passed();
         if (double(c.pixels) > kMaxFrameShare * double(m.w) * double(m.h))
             return reject(format("too large: %.1f%% of the frame (at most %.0f%%)",
                                  100.0 * double(c.pixels) / (double(m.w) * double(m.h)),
                                  100.0 * kMaxFrameShare));
+        passed();
         if (c.compactness < kMinCompactness)
             return reject(format("not compact: %.2f of it near its centre (needs %.2f)",
                                  c.compactness, kMinCompactness));
+        passed();
         if (c.halo < kMinHaloShare)
             return reject(format("a hard edge, no glare: its rim keeps %.2f of it (needs %.2f)",
                                  c.halo, kMinHaloShare));
+        passed();
     }
     if (c.flareScale < kMinFlareScale)
         return reject(
             format("too faint: flare scale %.4f (needs %.2f)", c.flareScale, kMinFlareScale));
+    passed();
     c.accepted = true;
     c.verdict = "light";
 }
@@ -521,13 +534,17 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
     if (result.lights.size() > std::size_t(options.maxLights))
         result.lights.resize(std::size_t(options.maxLights));
     if (result.lights.empty()) {
-        // Name the candidate that came closest: the one with the most flux.
-        const auto best = std::max_element(
-            result.candidates.begin(), result.candidates.end(),
-            [](const LightCandidate& a, const LightCandidate& b) { return a.flux < b.flux; });
-        result.whyNone = "no convincing light: the strongest candidate, at " +
-                         format("%.0f,%.0f", best->position.x, best->position.y) + ", is " +
-                         best->verdict;
+        // Name the candidate that came closest: the most checks passed, then the most flux (a
+        // small sun that is only too faint, not the wide glow around it that fails first).
+        const auto best = std::max_element(result.candidates.begin(), result.candidates.end(),
+                                           [](const LightCandidate& a, const LightCandidate& b) {
+                                               return a.checksPassed != b.checksPassed
+                                                          ? a.checksPassed < b.checksPassed
+                                                          : a.flux < b.flux;
+                                           });
+        result.whyNone = "no convincing light: the closest candidate, at " +
+                         format("%.0f,%.0f", best->position.x, best->position.y) +
+                         format(" (peak %.4g), is ", double(best->peak)) + best->verdict;
     }
     return result;
 }

@@ -46,9 +46,21 @@ void sayCandidates(const LightSearch& search, const JobEvents& events) {
                search.displayReferred ? "display-referred (clipped pixels x clipped-gain)"
                                       : "scene-referred HDR",
                sorted.size()));
-    //! Candidates listed at most: the lights and the closest misses, not every speck of sky.
+    //! Candidates listed at most by flux: the lights and the closest misses, not every speck of
+    //! sky. The lights and the candidate that came closest (a small sun only too faint) are
+    //! listed after them wherever they rank.
     constexpr std::size_t kListed = 12;
-    if (sorted.size() > kListed) sorted.resize(kListed);
+    if (sorted.size() > kListed) {
+        // The closest miss: the most checks passed, the most flux among those (sorted is in
+        // flux order), the one a warning names.
+        std::size_t closest = 0;
+        for (std::size_t i = 1; i < sorted.size(); ++i)
+            if (sorted[i].checksPassed > sorted[closest].checksPassed) closest = i;
+        std::vector<LightCandidate> listed(sorted.begin(), sorted.begin() + kListed);
+        for (std::size_t i = kListed; i < sorted.size(); ++i)
+            if (sorted[i].accepted || i == closest) listed.push_back(sorted[i]);
+        sorted = std::move(listed);
+    }
     for (const LightCandidate& c : sorted)
         events.say(format(
             "  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx "

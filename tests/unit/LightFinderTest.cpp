@@ -408,3 +408,16 @@ TEST(LightFinder, APlateauUnderWhiteWithClippedSpotsIsNotALight) {
     EXPECT_TRUE(search.lights.empty()) << search.lights.front().verdict;
     EXPECT_NE(search.whyNone.find("mostly under white"), std::string::npos) << search.whyNone;
 }
+
+// With no light convincing, the warning names the candidate that came closest: a small HDR sun
+// that is only too faint, not the wide glow around it that carries more flux but fails first.
+TEST(LightFinder, TheWarningNamesTheClosestCandidateNotTheGlowWithMostFlux) {
+    Image img = background(900, 512, 0.3f);
+    blob(img, 600.f, 200.f, 60.f, 3.f);  // the aureole: 10x the median, far from a light
+    blob(img, 614.5f, 246.5f, 0.8f, 2000.f);
+    const LightSearch search = findLights(img);
+    ASSERT_TRUE(search.lights.empty());
+    EXPECT_NE(search.whyNone.find("the closest candidate, at 614,246 (peak 2000), is too faint"),
+              std::string::npos)
+        << search.whyNone;
+}
