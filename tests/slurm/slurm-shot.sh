@@ -25,6 +25,11 @@ cleanup() {
   sleep 1
   for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
   for p in "${pids[@]}"; do wait "$p" 2>/dev/null || true; done
+  # munged is a daemon, not a child, so wait returns at once; it writes its seed file as it
+  # exits, which would race the rm below. Up to 5 s for each to be gone.
+  for p in "${pids[@]}"; do
+    for _ in $(seq 1 50); do kill -0 "$p" 2>/dev/null || break; sleep 0.1; done
+  done
   rm -rf "$work"
 }
 trap cleanup EXIT
