@@ -99,18 +99,10 @@ constexpr std::size_t kWhitePlateauPixels = 16;
 //! The pixels of a display-referred frame whose three channels reach its white: the top code,
 //! or the brightest neutral level of the file if it stops between kLowestWhiteCode and the top
 //! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes.
-void markWhite(const Image& image, LuminanceMap& m) {
+//! `brightestNeutral`: the frame's largest min(R, G, B), from the luminance pass.
+void markWhite(const Image& image, float brightestNeutral, LuminanceMap& m) {
     auto minChannel = [](const Rgba& p) { return std::min({p.r, p.g, p.b}); };
-    std::vector<float> rowWhite(std::size_t(m.h), 0.f);
-    parallelFor(0, m.h, 32, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            const Rgba* row = &image.at(0, y);
-            float white = 0.f;
-            for (int x = 0; x < m.w; ++x) white = std::max(white, minChannel(row[x]));
-            rowWhite[std::size_t(y)] = white;
-        }
-    });
-    const float white = std::min(1.f, *std::max_element(rowWhite.begin(), rowWhite.end()));
+    const float white = std::min(1.f, brightestNeutral);
     const float whiteCode = linearToSrgb(white) * 255.f;
     m.atWhite.assign(m.lum.size(), 0);
     if (whiteCode < kLowestWhiteCode - 0.5f) return;  // nothing in the file reaches a white
@@ -140,13 +132,13 @@ void markWhite(const Image& image, LuminanceMap& m) {
 LuminanceMap luminanceMap(const Image& image) {
     LuminanceMap m{image.width(), image.height(), {}, {}, {}, {}};
     m.lum.resize(image.pixelCount());
-    std::vector<float> rowBrightest(std::size_t(m.h), 0.f);
+    std::vector<float> rowBrightest(std::size_t(m.h), 0.f), rowWhite(std::size_t(m.h), 0.f);
     std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
     parallelFor(0, m.h, 32, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const Rgba* row = &image.at(0, y);
             const std::size_t first = std::size_t(y) * std::size_t(m.w);
-            float brightest = 0.f;
+            float brightest = 0.f, white = 0.f;
             std::size_t peak = first;
             for (int x = 0; x < m.w; ++x) {
                 const std::size_t i = first + std::size_t(x);
@@ -154,15 +146,18 @@ LuminanceMap luminanceMap(const Image& image) {
                 m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
                 if (m.lum[i] > m.lum[peak]) peak = i;
                 brightest = std::max({brightest, row[x].r, row[x].g, row[x].b});
+                white = std::max(white, std::min({row[x].r, row[x].g, row[x].b}));
             }
             rowBrightest[std::size_t(y)] = brightest;
+            rowWhite[std::size_t(y)] = white;
             rowPeak[std::size_t(y)] = peak;
         }
     });
     m.brightestChannel = *std::max_element(rowBrightest.begin(), rowBrightest.end());
     for (const std::size_t peak : rowPeak)
         if (m.lum[peak] > m.lum[m.peakIndex]) m.peakIndex = peak;
-    if (isDisplayReferred(m.brightestChannel)) markWhite(image, m);
+    if (isDisplayReferred(m.brightestChannel))
+        markWhite(image, *std::max_element(rowWhite.begin(), rowWhite.end()), m);
     return m;
 }
 
