@@ -24,7 +24,7 @@ void printLights(const std::vector<LightVisibility>& lights) {
                     100 * lights[i].inFrame);
 }
 
-Result<EngineRun> runEngine(const Scene& scene, const EngineRunOptions& o) {
+Result<EngineRun> runEngine([[maybe_unused]] const Scene& scene, const EngineRunOptions& o) {
 #if FLAREKIT_HAS_GL
     return runEngineScene(scene, o);
 #else
