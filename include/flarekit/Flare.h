@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -211,6 +212,16 @@ struct LightSearch {
 //! show a flare. Bounded work: one luminance pass, a sort of the pixels above minLuminance and
 //! flood fills that visit each pixel at most once.
 LightSearch findLights(const Image& image, const LightSearchOptions& options = {});
+
+//! The candidate that came closest to being a light: the most of the finder's checks passed,
+//! then the most flux (a small sun that is only too faint, not the wide glow around it that
+//! fails first); the first such. `candidates` must not be empty.
+std::size_t closestCandidate(std::span<const LightCandidate> candidates);
+
+//! The share of a candidate's pixels at the file's white in every channel (8/16-bit data).
+inline float whiteShare(const LightCandidate& c) {
+    return c.pixels ? float(c.whitePixels) / float(c.pixels) : 0.f;
+}
 
 //! The flare scale of a light whose place is given but which lies outside the frame, where
 //! nothing can be measured: 1, the preset's own look (its elements at kReferenceFlux).

@@ -234,6 +234,14 @@ struct PixelAt {
     int x = 0, y = 0;
 };
 
+//! The luminance a light's region is grown down to from its `peak`: its core (nearPeak of the
+//! peak) in 8/16-bit data, where everything near the clip is the light; in HDR down to
+//! kSourceFraction of it, but never below the core when that is under 1 (a dim peak's fringe).
+float regionThreshold(float peak, float nearPeak, bool displayReferred) {
+    const float core = nearPeak * peak;
+    return displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
+}
+
 //! Grows the region of `seed` over unseen pixels >= threshold (whose centres lie within
 //! `maxRadius` px of `capCentre`) and measures it.
 LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float threshold,
@@ -325,10 +333,9 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
         passed();
         // The core at white must itself be of a light's size: a soft bright region with a few
         // clipped pixels in it (a glint on water, a lamp's reflection in snow) is not one.
-        const float whiteShare = float(c.whitePixels) / float(std::max<std::size_t>(c.pixels, 1));
-        if (whiteShare < kMinWhiteShare)
+        if (whiteShare(c) < kMinWhiteShare)
             return reject(format("mostly under white: %.0f%% of it at white (a light: %.0f%%)",
-                                 100.0 * whiteShare, 100.0 * kMinWhiteShare));
+                                 100.0 * double(whiteShare(c)), 100.0 * kMinWhiteShare));
         passed();
         const float whiteRadius = std::sqrt(float(c.whitePixels) / std::numbers::pi_v<float>);
         if (whiteRadius < kMinRadiusOfHeight * float(m.h))
@@ -457,9 +464,7 @@ struct CandidateSearch {
     void examine(std::size_t seed) {
         if (taken(seed)) return;  // by a light found since the seed's group was sorted
         const float peak = m.lum[seed];
-        const float core = options.nearPeak * peak;
-        const float threshold =
-            result.displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
+        const float threshold = regionThreshold(peak, options.nearPeak, result.displayReferred);
         LightCandidate c = growRegion(m, seed, threshold, options.clippedGain,
                                       result.displayReferred, seen, stack, members);
         const float ring = ringMean(m, c.position, std::max(2.f * c.radius, c.radius + 2.f),
@@ -478,6 +483,16 @@ struct CandidateSearch {
 };
 
 }  // namespace
+
+std::size_t closestCandidate(std::span<const LightCandidate> candidates) {
+    // The first of the most checks passed, then the most flux (max_element keeps the first).
+    const auto best = std::max_element(
+        candidates.begin(), candidates.end(), [](const LightCandidate& a, const LightCandidate& b) {
+            return a.checksPassed != b.checksPassed ? a.checksPassed < b.checksPassed
+                                                    : a.flux < b.flux;
+        });
+    return std::size_t(best - candidates.begin());
+}
 
 float flareScaleForFlux(double flux, int height) {
     if (height <= 0 || !(flux > 0)) return 0.f;
@@ -529,14 +544,7 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
     if (result.lights.size() > std::size_t(options.maxLights))
         result.lights.resize(std::size_t(options.maxLights));
     if (result.lights.empty()) {
-        // Name the candidate that came closest: the most checks passed, then the most flux (a
-        // small sun that is only too faint, not the wide glow around it that fails first).
-        const auto best = std::max_element(result.candidates.begin(), result.candidates.end(),
-                                           [](const LightCandidate& a, const LightCandidate& b) {
-                                               return a.checksPassed != b.checksPassed
-                                                          ? a.checksPassed < b.checksPassed
-                                                          : a.flux < b.flux;
-                                           });
+        const LightCandidate* best = &result.candidates[closestCandidate(result.candidates)];
         result.whyNone = "no convincing light: the closest candidate, at " +
                          format("%.0f,%.0f", best->position.x, best->position.y) +
                          format(" (peak %.4g), is ", double(best->peak)) + best->verdict;
@@ -583,9 +591,7 @@ LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOpt
         }
     if (!(peak > 0.f)) return c;
     // The same region and flux as CandidateSearch::examine.
-    const float core = options.nearPeak * peak;
-    const float threshold =
-        displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
+    const float threshold = regionThreshold(peak, options.nearPeak, displayReferred);
     std::vector<std::uint8_t> seen(m.lum.size(), 0);
     std::vector<PixelAt> stack, members;
     LightCandidate measured =

@@ -51,28 +51,22 @@ void sayCandidates(const LightSearch& search, const JobEvents& events) {
     //! listed after them wherever they rank.
     constexpr std::size_t kListed = 12;
     if (sorted.size() > kListed) {
-        // The closest miss: the most checks passed, the most flux among those (sorted is in
-        // flux order), the one a warning names.
-        std::size_t closest = 0;
-        for (std::size_t i = 1; i < sorted.size(); ++i)
-            if (sorted[i].checksPassed > sorted[closest].checksPassed) closest = i;
+        const std::size_t closest = closestCandidate(sorted);  // the one a warning names
         std::vector<LightCandidate> listed(sorted.begin(), sorted.begin() + kListed);
         for (std::size_t i = kListed; i < sorted.size(); ++i)
             if (sorted[i].accepted || i == closest) listed.push_back(sorted[i]);
         sorted = std::move(listed);
     }
     for (const LightCandidate& c : sorted)
-        events.say(format(
-            "  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx "
-            "surroundings, compactness %.2f, halo %.2f,%s flare scale %.4f: %s",
-            double(c.position.x), double(c.position.y), double(c.radius), double(c.peak), c.flux,
-            double(c.prominence), double(c.compactness), double(c.halo),
-            search.displayReferred
-                ? format(" %.0f%% at white,",
-                         100.0 * double(c.whitePixels) / double(std::max<std::size_t>(c.pixels, 1)))
-                      .c_str()
-                : "",
-            double(c.flareScale), c.verdict.c_str()));
+        events.say(
+            format("  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx "
+                   "surroundings, compactness %.2f, halo %.2f,%s flare scale %.4f: %s",
+                   double(c.position.x), double(c.position.y), double(c.radius), double(c.peak),
+                   c.flux, double(c.prominence), double(c.compactness), double(c.halo),
+                   search.displayReferred
+                       ? format(" %.0f%% at white,", 100.0 * double(whiteShare(c))).c_str()
+                       : "",
+                   double(c.flareScale), c.verdict.c_str()));
 }
 
 //! The lights of one frame, each a position and an intensity.

@@ -3,6 +3,7 @@
 // visibility --method ...` and any front end that reports what a method sees.
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 #include "flarekit/gl/EngineRun.h"
 #include "flarekit/gl/GpuVisibility.h"
@@ -11,6 +12,16 @@
 namespace flarekit {
 
 namespace {
+using Clock = std::chrono::steady_clock;
+
+//! The first light's numbers as the result's own, and the time since `start`.
+VisibilityResult finished(VisibilityResult r, Clock::time_point start) {
+    r.coverage = r.lights.front().coverage;
+    r.inFrame = r.lights.front().inFrame;
+    r.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return r;
+}
+
 //! Every light at once through the engine API's batched pass (`compute` on a scene with
 //! more than the sun): the coverage the embedding API would give an application.
 Result<VisibilityResult> engineLightsVisibility(const Scene& scene,
@@ -21,17 +32,13 @@ Result<VisibilityResult> engineLightsVisibility(const Scene& scene,
     o.render = a.render;
     o.render.shadows = false;
     o.flares = false;
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     auto run = runEngineScene(scene, o);
     if (!run) return run.error();
     VisibilityResult r;
     r.method = a.method;
     r.lights = run->lights;
-    r.coverage = r.lights.front().coverage;
-    r.inFrame = r.lights.front().inFrame;
-    r.milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return r;
+    return finished(std::move(r), start);
 }
 
 }  // namespace
@@ -52,7 +59,7 @@ Result<VisibilityResult> gpuSceneVisibility(const Scene& scene, const SceneVisib
     if (!renderer) return renderer.error();
     auto method = createGpuVisibility(a.method, scene, a.methodOptions);
     if (!method) return method.error();
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     VisibilityResult r;
     r.method = a.method;
     for (const SceneLight& light : lights) {
@@ -64,12 +71,8 @@ Result<VisibilityResult> gpuSceneVisibility(const Scene& scene, const SceneVisib
         latency = std::max(latency, frames);
         r.lights.push_back({*coverage, lightInFrameFraction(scene, light)});
     }
-    r.coverage = r.lights.front().coverage;
-    r.inFrame = r.lights.front().inFrame;
-    r.milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (latencyFrames) *latencyFrames = latency;
-    return r;
+    return finished(std::move(r), start);
 }
 
 }  // namespace flarekit
