@@ -21,6 +21,13 @@ the repository root; it only writes the two files):
 import json
 import math
 
+# Canon's Super Spectra Coating was multi-layer, its colour varying surface by surface: broadband
+# quarter-half-quarter stacks at 530, 500 and 550 nm and single MgF2 layers at 470 nm, in turn
+# over the glass-air surfaces (the same cycle as the other multi-coated lenses, from its third).
+COATINGS = [{"design": "broadband", "design_nm": 530}, {"design": "mgf2", "design_nm": 470},
+            {"design": "broadband", "design_nm": 500}, {"design": "broadband", "design_nm": 550}]
+COATING_START = 2
+
 # Example 1: radius, thickness to the next surface, n_d and v_d of the medium after it (None =
 # air). "d5", "d10" and "d13" are the variable gaps.
 TABLE = [
@@ -122,6 +129,7 @@ def main():
         print(f"{p}: f {f:.3f} (stated {f_stated}), back focus {bf:.3f}, track {track:.2f}, "
               f"track/f {track / f:.3f}, stop radius {abs(marginal[stop]):.3f}")
         rows = []
+        coated = 0
         for i, (r, t, n, v, is_stop) in enumerate(surfs):
             t = round(bf, 3) if t == "bf" else round(t, 3)
             if is_stop:
@@ -134,7 +142,8 @@ def main():
             row["semi_aperture"] = clear[i]
             before = surfs[i - 1][2] if i else None
             if not (n and before):  # a glass-air surface carries the coating, a cemented one not
-                row["coating"] = "mgf2"
+                row["coating"] = COATINGS[(coated + COATING_START) % len(COATINGS)]
+                coated += 1
             rows.append(row)
         lens = {
             "name": "canon-zoom-70-210" + suffix,
@@ -145,6 +154,7 @@ def main():
                       "the stop 1 mm before group IV; paraxial back focus)",
             "f_number": F_NUMBER,
             "patent_focal_length_mm": f_stated,
+            "coating": COATINGS[0],
             "surfaces": rows,
             "aperture": {"blades": 8, "rotation_deg": 0, "roundness": 0.0},
             "sensor": {"width": 36, "height": 24},

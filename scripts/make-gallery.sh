@@ -34,3 +34,25 @@ for s in city night forest; do
     "$build/flarekit" apply "$crops/$s.exr" -o "$out/$s-apply.jpg" --max-lights 4
     "$build/flarekit" postfx "$crops/$s.exr" -o "$out/$s-postfx.jpg"
 done
+# Every shipped lens at the `lens render` defaults (ghosts at the flux level, spectral
+# starburst) on the sunrise crop.
+for l in $("$build/flarekit" lens list | awk 'NR > 1 {print $1}'); do
+    "$build/flarekit" lens render "$l" "$crops/sunrise.exr" -o "$out/sunrise-lens-$l.jpg"
+done
+# An HDR interior with bright windows: every postfx preset at its defaults.
+oiiotool "$world/interior.exr" --cut 640x360+300+60 --origin +0+0 --fullpixels -d half \
+    -o "$crops/interior.exr"
+oiiotool "$crops/interior.exr" --colorconvert linear sRGB -d uint8 -o "$out/interior-input.jpg"
+for p in anamorphic killzone2 modern photo subtle; do
+    "$build/flarekit" postfx "$crops/interior.exr" -o "$out/interior-postfx-$p.jpg" --preset "$p"
+done
+# An 8-bit photograph with no light in it (MATE's GreenMeadow, from mate-backgrounds when
+# installed): apply and postfx --expand-highlights leave it as it is.
+meadow=/usr/share/backgrounds/mate/nature/GreenMeadow.jpg
+if [ -f "$meadow" ]; then
+    oiiotool "$meadow" --resize 640x0 -o "$crops/meadow.png"
+    oiiotool "$crops/meadow.png" -o "$out/meadow-input.jpg"
+    "$build/flarekit" apply "$crops/meadow.png" -o "$out/meadow-apply.jpg" 2>/dev/null
+    "$build/flarekit" postfx "$crops/meadow.png" -o "$out/meadow-postfx.jpg" \
+        --preset killzone2 --expand-highlights 2>/dev/null
+fi

@@ -237,6 +237,17 @@ inline constexpr float kOutOfFrameFlareScale = 1.f;
 //! (`accepted` is true: the user placed it).
 LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOptions& options = {});
 
+//! Most lights an 8/16-bit frame's highlights are expanded around (kLightSearchParams' largest
+//! max-lights).
+inline constexpr int kMaxExpandedLights = 64;
+
+//! `--expand-highlights` on the lights of an 8/16-bit frame only: expandHighlights' inverse
+//! curve (Tonemap.h), weighed by each pixel's nearness to a light findLights accepts (1 within
+//! twice the light's radius plus 4 px, the reach it suppresses as the light's glare, easing to 0
+//! at 1.5 times that). A bright sky, snow or a white wall, which are no light, stay as they are,
+//! so the chain flares the lights and not every plateau near white. Returns the lights found.
+LightSearch expandHighlightsAtLights(Image& image, float gain, LightSearchOptions options = {});
+
 //! The preset's flare on every light of `search`, each scaled by its own flux x intensity.
 FlareStats flareLights(Image& image, const Preset& preset, const LightSearch& search,
                        float intensity = 1.f);

@@ -25,19 +25,52 @@
 
 namespace flarekit {
 
-//! An anti-reflection coating: none, the classic single quarter-wave MgF2 layer (n = 1.38 at a
-//! 550 nm design wavelength), or any single layer given by its index and thickness.
-struct LensCoating {
-    double n = 1.0;            //!< the layer's index; 1 with thickness 0 = no coating
+//! One layer of an anti-reflection stack: its index and physical thickness.
+struct CoatingLayer {
+    double n = 1.0;            //!< the layer's index (dispersion-free: coating materials vary
+                               //!< by under 1% over the visible)
     double thicknessNm = 0.0;  //!< physical thickness
-    bool present() const { return thicknessNm > 0; }
+    bool operator==(const CoatingLayer&) const = default;
 };
 
-//! MgF2's index (1.38, the value the format names) and its quarter-wave thickness at 550 nm.
-inline constexpr double kMgF2Index = 1.38;
+//! An anti-reflection coating: a stack of thin layers, listed from the air side (the
+//! lower-index medium of the surface) toward the glass. Empty: uncoated glass. Reflectance is
+//! the same from either side of a lossless stack, so one order serves both directions.
+struct LensCoating {
+    std::vector<CoatingLayer> layers;
+    bool present() const { return !layers.empty(); }
+    bool operator==(const LensCoating&) const = default;
+};
+
+//! The coating designs a prescription can name, each tuned to a design wavelength:
+//! - mgf2: one quarter-wave layer of MgF2 (n 1.38), the single coating of the 1950s-70s (Zeiss
+//!   T, Asahi's SMC predecessors): least reflective at the design wavelength, rising toward
+//!   both ends of the visible, so its ghosts are magenta or purple at a 550 nm design;
+//! - broadband: the quarter-half-quarter stack of multi-coated lenses (Lockhart and King, "Three-
+//!   layered reflection-reducing coatings", JOSA 1947; MgF2 1.38 / ZrO2 2.05 / CeF3 1.63): two
+//!   reflectance minima either side of the design wavelength and a small residual peak at it, so
+//!   a surface's ghost takes the design wavelength's colour (green at 520, amber at 590, blue at
+//!   470), the mixed greens, ambers and blues of a multi-coated lens;
+//! - vcoat: two quarter-wave layers, MgF2 outside and CeF3 against the glass: near zero at the
+//!   design wavelength only, a steep V with strong violet and red residuals.
+enum class CoatingDesign { Mgf2, Broadband, VCoat };
+inline constexpr std::string_view kCoatingDesignNames[] = {"mgf2", "broadband", "vcoat"};
+
+//! Layer indices of the designs (Macleod, Thin-Film Optical Filters, 2001, tables of coating
+//! materials): MgF2 1.38, CeF3 1.63, ZrO2 2.05.
+inline constexpr double kMgF2Index = 1.38, kCeF3Index = 1.63, kZrO2Index = 2.05;
+//! The design wavelength of "mgf2" without one: the eye's peak sensitivity, where the classic
+//! single coatings were centred.
 inline constexpr double kMgF2DesignNm = 550.0;
-inline LensCoating mgf2Coating() {
-    return {kMgF2Index, kMgF2DesignNm / (4.0 * kMgF2Index)};
+
+//! A quarter-wave (optical thickness lambda / 4) layer of index n at `designNm`.
+inline CoatingLayer quarterWave(double n, double designNm) {
+    return {n, designNm / (4.0 * n)};
+}
+//! A named design at its design wavelength.
+LensCoating coatingDesign(CoatingDesign design, double designNm);
+inline LensCoating mgf2Coating(double designNm = kMgF2DesignNm) {
+    return coatingDesign(CoatingDesign::Mgf2, designNm);
 }
 
 struct LensSurface {
@@ -93,6 +126,9 @@ struct Lens {
     std::string name, source;
     double fNumber = 0.0;            //!< the patent's (recorded, not used)
     double patentFocalLength = 0.0;  //!< mm, the value the source states; 0 = not stated
+    //! The lens's coating: on every glass-air surface that states none of its own (the file's
+    //! top-level "coating"; absent: uncoated).
+    LensCoating coating;
     std::vector<LensSurface> surfaces;
     LensAperture aperture;
     LensSensor sensor;
@@ -120,7 +156,8 @@ inline constexpr double kLineF = 486.13, kLineD = 587.56, kLineC = 656.27;
 double refractiveIndex(const LensSurface& s, double lambdaNm);
 
 //! Fresnel reflectance of an interface from index n0 to n2, unpolarised (the mean of s and p),
-//! at incidence cosine cos0 in medium n0, through an optional single-layer coating.
+//! at incidence cosine cos0 in medium n0, through the surface's coating (any stack of layers,
+//! by the characteristic-matrix method; none: Fresnel's bare interface).
 double interfaceReflectance(double n0, double n2, double cos0, const LensCoating& coating,
                             double lambdaNm);
 
@@ -164,15 +201,37 @@ struct LensLight {
     std::array<double, 3> energy{};
 };
 
+//! How bright the ghosts are drawn: `flux` (the default) puts the brightest ghost of the
+//! brightest light at kFluxGhostShare of that light's measured energy, the others at their
+//! traced ratios to it, so every lens shows its ghost chain on any sun, as the sprite presets'
+//! energy model does; `physical` draws each ghost at its traced share of the light (real, and
+//! invisible on a clipped sun, whose energy a photograph or HDRI understates by orders of
+//! magnitude). Either way `ghost_gain` multiplies the result.
+enum class GhostLevel { Flux, Physical };
+inline constexpr std::string_view kGhostLevelNames[] = {"flux", "physical"};
+
+//! The brightest ghost's share of its light in `flux` mode: 2%, twice the top of the 0.2-1% the
+//! sprite presets' ghosts carry at kReferenceFlux (docs/energy.md): a traced lens spreads its
+//! light over dozens of ghosts, most far larger and fainter than its brightest, which at 1%
+//! left them under the `subtle` sprite preset's. Calibrated on the blender-data sunrise (a
+//! 640x360 crop, the sun of 31,000 at 420,120): the Canon zoom's green rings and the double
+//! Gauss's purple ghosts show, the uncoated Petzval's are no longer a white veil.
+inline constexpr double kFluxGhostShare = 0.02;
+
 struct LensRenderOptions {
-    int ghosts = 66;              //!< the brightest ghosts rendered
-    int spectral = 0;             //!< 0: RGB (3 wavelengths); >= 3: that many spectral samples
-    int gridSide = 48;            //!< rays per side of each ghost's traced mesh
-    double starburst = 0.02;      //!< share of a source's energy drawn as the starburst
+    int ghosts = 66;          //!< the brightest ghosts rendered
+    int spectral = 0;         //!< 0: RGB (3 wavelengths); >= 3: that many spectral samples
+    int gridSide = 48;        //!< rays per side of each ghost's traced mesh
+    double starburst = 0.02;  //!< share of a source's energy drawn as the starburst
+    //! Wavelengths the starburst is drawn at, whatever `spectral` is for the ghosts: its
+    //! pattern scales with the wavelength, so each one's fringes fall elsewhere along a spike;
+    //! 3 (RGB) leaves them as beads, 32 sums them smooth (+0.4 s at 640x360 on 2 cores).
+    int starburstSamples = 32;
     double starburstSize = 0.25;  //!< its radius at 550 nm, as a share of the image diagonal
     double glare = 0.01;          //!< share drawn as the veiling glare halo
-    double ghostGain = 1.0;       //!< multiplies the physical ghost intensities
-    double dirt = 0.0;            //!< dust and scratches on the iris plane (starburst fringes)
+    GhostLevel ghostLevel = GhostLevel::Flux;
+    double ghostGain = 1.0;  //!< multiplies the ghost intensities (after ghostLevel)
+    double dirt = 0.0;       //!< dust and scratches on the iris plane (starburst fringes)
     std::uint32_t dirtSeed = 1;
     //! The iris plane's transmission from an image (the user's own dust, scratches or aperture
     //! shape): its luminance, clamped to [0, 1], multiplies the iris, the image stretched over
@@ -193,12 +252,19 @@ inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {
                                         "rays per side of each ghost's traced mesh"),
     param<&LensRenderOptions::starburst>("starburst", 0, 1, "",
                                          "share of each source's energy in the starburst"),
+    param<&LensRenderOptions::starburstSamples>(
+        "starburst_samples", 3, 128, "wavelengths",
+        "wavelengths over 400-700 nm the starburst is drawn at (3 shows its fringes as beads)"),
     param<&LensRenderOptions::starburstSize>("starburst_size", 0, 4, "",
                                              "starburst radius at 550 nm / image diagonal"),
     param<&LensRenderOptions::glare>("glare", 0, 1, "",
                                      "share of each source's energy in the glare halo"),
+    choice<&LensRenderOptions::ghostLevel>(
+        "ghost_level", kGhostLevelNames,
+        "\"flux\": the brightest ghost at 2% of its light's measured energy, the rest at their "
+        "traced ratios to it; \"physical\": each at its traced share (invisible on a clipped sun)"),
     param<&LensRenderOptions::ghostGain>("ghost_gain", 0, 1e9, "",
-                                         "multiplies the physical ghost intensities"),
+                                         "multiplies the ghost intensities (after ghost_level)"),
     param<&LensRenderOptions::dirt>("dirt", 0, 1, "",
                                     "dust and scratches on the iris plane: 0 clean, 1 a badly "
                                     "kept lens; they break the starburst into rainbow fringes"),

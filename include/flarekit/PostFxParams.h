@@ -74,6 +74,15 @@ inline constexpr Param<BloomParams> kBloomParams[] = {
 
 inline constexpr std::string_view kGhostFilterNames[] = {"point", "bilinear"};
 
+//! The default border fade of ghosts and halo: an eighth of the buffer on each side is the
+//! narrowest ease that a ghost magnified 2x (the seed's scale 0.5) still shows as a soft
+//! gradient over a sixteenth of the frame rather than a ramp of a few pixels.
+inline constexpr float kDefaultBorderFade = 0.125f;
+//! The default share of a ghost tint's colour kept: half, so a purple ghost of a warm lamp is a
+//! warm pink rather than the tint's own magenta, while the preset's colours still tell the
+//! ghosts apart.
+inline constexpr float kDefaultGhostSaturation = 0.5f;
+
 //! One ghost: the seed's LensFlarePS with its uniforms, plus the modern falloff.
 struct GhostParams {
     Rgb tint{1.f, 1.f, 1.f};  //!< vTint of the seed
@@ -89,6 +98,17 @@ struct GhostParams {
                             //!< about the point
     bool linearFilter =
         false;  //!< false: the seed's point sampler; true: bilinear (smoother magnified ghosts)
+    //! Share of the bloom buffer, on each side, over which a tap's weight eases to 0, so the
+    //! mirrored frame border never shows as a straight edge; 0 is the seed's hard cut.
+    float borderFade = kDefaultBorderFade;
+    //! How much of the tint's colour is kept (its luminance always is): 1 the seed's vTint, 0 a
+    //! grey of the same luminance, so the ghost takes the colour of what it samples.
+    float saturation = kDefaultGhostSaturation;
+    //! A ghost magnified 1 / |scale| times spreads the light it samples over 1 / scale^2 the
+    //! area, as a real lens's defocused ghost does: its brightness is multiplied by scale^2 when
+    //! |scale| < 1. false: the seed's, every ghost as bright as what it samples (a magnified
+    //! ghost of a lit window is a window-bright wash over a quarter of the frame).
+    bool conserveArea = true;
 };
 //! Below |scale| 0.05 a ghost magnifies one bloom texel over the frame.
 inline constexpr double kMinGhostScale = 0.05;
@@ -111,6 +131,18 @@ inline constexpr Param<GhostParams> kGhostParams[] = {
         "false: the seed's sample offsets 1, -1, -3, ...; true: symmetric about the point"),
     choice<&GhostParams::linearFilter>("filter", kGhostFilterNames,
                                        "\"point\" (the seed's PointSampler) or \"bilinear\""),
+    param<&GhostParams::borderFade>(
+        "border_fade", 0, 0.5, "buffer widths",
+        "each tap eases to 0 over this share of the bloom buffer at its border, so no straight "
+        "frame edge is mirrored; 0: the seed's hard cut"),
+    param<&GhostParams::saturation>(
+        "saturation", 0, 1, "",
+        "share of the tint's colour kept (its luminance always is): 1 the seed's vTint, 0 grey, "
+        "so the ghost takes the colour of what it samples"),
+    param<&GhostParams::conserveArea>(
+        "conserve_area", 0, 1, "",
+        "a magnified ghost (|scale| < 1) is dimmed by scale^2, the area its light spreads over; "
+        "false: the seed's, as bright as what it samples"),
 };
 
 //! `ghost_series`: `count` ghosts of scale start - i x spacing sharing the ghost keys.
@@ -135,6 +167,7 @@ struct HaloParams {
     float threshold = 0.1f;  //!< subtracted from each bloom sample
     float falloff = 5.f;     //!< (1 - |p| / sqrt 2)^falloff of the mid-radius sample point
     Rgb tint{1.f, 1.f, 1.f};
+    float borderFade = kDefaultBorderFade;  //!< as GhostParams::borderFade
 };
 inline constexpr Param<HaloParams> kHaloParams[] = {
     param<&HaloParams::intensity>("intensity", 0, 100, "", "0 switches the halo off"),
@@ -147,6 +180,9 @@ inline constexpr Param<HaloParams> kHaloParams[] = {
         "falloff", 0, 64, "",
         "(1 - |p|/sqrt 2)^falloff of the ring's mid-radius sample point (Chapman uses 5)"),
     param<&HaloParams::tint>("tint", 0, 100, "linear RGB", "ring colour"),
+    param<&HaloParams::borderFade>(
+        "border_fade", 0, 0.5, "buffer widths",
+        "each tap eases to 0 over this share of the bloom buffer at its border; 0: a hard cut"),
 };
 
 //! Anamorphic streaks: a long horizontal blur of the 1/4-res bright image.

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "core/SafeWrite.h"
+#include "flarekit/Flare.h"
 #include "flarekit/ParamText.h"
 
 namespace flarekit {
@@ -149,7 +150,10 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
     Image expanded;
     if (expand) {
         expanded = loaded->image;
-        expandHighlights(expanded, *a.expandHighlights);
+        // Only around the frame's lights: a bright sky or snow expanded would flare as a slab.
+        const LightSearch lights = expandHighlightsAtLights(expanded, *a.expandHighlights);
+        if (lights.lights.empty())
+            events.warn(in + ": --expand-highlights: no light to expand (" + lights.whyNone + ")");
         params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
     // The image as read is needed afterwards only to take an expansion back off.

@@ -16,30 +16,90 @@ namespace {
 
 constexpr std::string_view kLensDir = "lenses";
 
-//! "mgf2", "none" or {"n": 1.38, "thickness_nm": 99.6}.
+//! A design's wavelength: within the visible, where a lens's coatings are centred.
+constexpr double kMinDesignNm = 380.0, kMaxDesignNm = 780.0;
+//! Layers in one stack: real lens coatings have 1-12; more is a filter, not a lens coating.
+constexpr std::size_t kMaxCoatingLayers = 16;
+
+constexpr const char* kCoatingForms =
+    "\"none\", \"mgf2\", \"broadband\", \"vcoat\", {\"design\": NAME, \"design_nm\": "
+    "380-780}, {\"n\": 1-3, \"thickness_nm\": 0-10000} or {\"layers\": [{\"n\", "
+    "\"thickness_nm\"}, ...]}";
+
+//! {"n": 1.38, "thickness_nm": 99.6}: one layer.
+Result<CoatingLayer> readLayer(const nlohmann::json& v, const JsonPlace& place) {
+    if (!v.is_object())
+        return place.fail("expected {\"n\": ..., \"thickness_nm\": ...}, got " + jsonExcerpt(v));
+    CoatingLayer c;
+    for (const auto& [key, value] : v.items()) {
+        if ((key != "n" && key != "thickness_nm") || !value.is_number())
+            return (place / key)
+                .fail("expected \"n\" (1-3) or \"thickness_nm\" (0-10000), got " +
+                      jsonExcerpt(value));
+        (key == "n" ? c.n : c.thicknessNm) = value.get<double>();
+    }
+    if (!(c.n >= 1.0 && c.n <= 3.0))
+        return (place / "n").fail("expected a number in [1, 3], got " + formatParamNumber(c.n));
+    if (!(c.thicknessNm > 0.0 && c.thicknessNm <= 10000.0))
+        return (place / "thickness_nm")
+            .fail("expected a number in (0, 10000], got " + formatParamNumber(c.thicknessNm));
+    return c;
+}
+
+//! The index of a coating design's name; -1 for none.
+int designIndex(std::string_view name) {
+    for (std::size_t i = 0; i < std::size(kCoatingDesignNames); ++i)
+        if (kCoatingDesignNames[i] == name) return int(i);
+    return -1;
+}
+
+//! {"design": "broadband", "design_nm": 520}: a named design at its wavelength.
+Result<LensCoating> readDesign(const nlohmann::json& v, const JsonPlace& place) {
+    double designNm = kMgF2DesignNm;
+    int design = -1;
+    for (const auto& [key, value] : v.items()) {
+        if (key == "design" && value.is_string())
+            design = designIndex(value.get<std::string>());
+        else if (key == "design_nm" && value.is_number())
+            designNm = value.get<double>();
+        else
+            return (place / key)
+                .fail("expected \"design\" (a name) or \"design_nm\", got " + jsonExcerpt(value));
+    }
+    if (design < 0) return (place / "design").fail("expected \"mgf2\", \"broadband\" or \"vcoat\"");
+    if (!(designNm >= kMinDesignNm && designNm <= kMaxDesignNm))
+        return (place / "design_nm")
+            .fail("expected a wavelength in [380, 780] nm, got " + formatParamNumber(designNm));
+    return coatingDesign(CoatingDesign(design), designNm);
+}
+
+//! Any of kCoatingForms.
 Result<LensCoating> readCoating(const nlohmann::json& v, const JsonPlace& place) {
     if (v.is_string()) {
         if (v.get<std::string>() == "none") return LensCoating{};
-        if (v.get<std::string>() == "mgf2") return mgf2Coating();
+        const int design = designIndex(v.get<std::string>());
+        if (design >= 0) return coatingDesign(CoatingDesign(design), kMgF2DesignNm);
     }
-    if (v.is_object()) {
+    if (v.is_object() && v.contains("design")) return readDesign(v, place);
+    if (v.is_object() && v.contains("layers")) {
+        const nlohmann::json& layers = v["layers"];
+        if (v.size() != 1 || !layers.is_array() || layers.empty() ||
+            layers.size() > kMaxCoatingLayers)
+            return (place / "layers").fail("expected 1 to 16 layers, got " + jsonExcerpt(layers));
         LensCoating c;
-        for (const auto& [key, value] : v.items()) {
-            if ((key != "n" && key != "thickness_nm") || !value.is_number())
-                return (place / key)
-                    .fail("expected \"n\" (1-3) or \"thickness_nm\" (0-10000), got " +
-                          jsonExcerpt(value));
-            (key == "n" ? c.n : c.thicknessNm) = value.get<double>();
+        for (std::size_t i = 0; i < layers.size(); ++i) {
+            auto layer = readLayer(layers[i], (place / "layers").index(i));
+            if (!layer) return layer.error();
+            c.layers.push_back(*layer);
         }
-        if (!(c.n >= 1.0 && c.n <= 3.0))
-            return (place / "n").fail("expected a number in [1, 3], got " + formatParamNumber(c.n));
-        if (!(c.thicknessNm > 0.0 && c.thicknessNm <= 10000.0))
-            return (place / "thickness_nm")
-                .fail("expected a number in (0, 10000], got " + formatParamNumber(c.thicknessNm));
         return c;
     }
-    return place.fail("expected \"none\", \"mgf2\" or {\"n\": ..., \"thickness_nm\": ...}, got " +
-                      jsonExcerpt(v));
+    if (v.is_object()) {
+        auto layer = readLayer(v, place);
+        if (!layer) return layer.error();
+        return LensCoating{{*layer}};
+    }
+    return place.fail(std::string("expected ") + kCoatingForms + ", got " + jsonExcerpt(v));
 }
 
 Status checkPhysics(const Lens& lens, const JsonPlace& place) {
@@ -105,9 +165,14 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
     const JsonPlace place(source);
     if (!j.is_object()) return place.fail("expected an object, got " + jsonExcerpt(j));
     Lens lens;
+    std::vector<bool> ownCoating;  //!< per surface: whether it states its own coating
     for (const auto& [key, value] : j.items()) {
         const JsonPlace at = place / key;
-        if (key == "name" || key == "source") {
+        if (key == "coating") {
+            auto c = readCoating(value, at);
+            if (!c) return c.error();
+            lens.coating = *c;
+        } else if (key == "name" || key == "source") {
             if (!value.is_string()) return at.fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? lens.name : lens.source) = value.get<std::string>();
         } else if (key == "f_number" || key == "patent_focal_length_mm") {
@@ -129,6 +194,7 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
                     if (!c) return c.error();
                     s.coating = *c;
                 }
+                ownCoating.push_back(value[i].contains("coating"));
                 if (!value[i].contains("n_d") && value[i].contains("v_d"))
                     return (si / "v_d").fail("given without n_d: air does not disperse");
                 lens.surfaces.push_back(s);
@@ -145,8 +211,15 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
         } else {
             return at.fail(
                 "unknown key (expected one of: name, source, f_number, patent_focal_length_mm, "
-                "surfaces, aperture, sensor)");
+                "coating, surfaces, aperture, sensor)");
         }
+    }
+    // The lens's coating goes on every glass-air surface that states none of its own; cemented
+    // (glass-glass) surfaces and the stop stay bare.
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+        LensSurface& s = lens.surfaces[i];
+        const bool airBefore = i == 0 || lens.surfaces[i - 1].nd == 1.0;
+        if (!ownCoating[i] && !s.stop && airBefore != (s.nd == 1.0)) s.coating = lens.coating;
     }
     if (!j.contains("surfaces")) return (place / "surfaces").fail("missing; expected an array");
     if (auto s = checkPhysics(lens, place); !s) return s.error();

@@ -261,18 +261,27 @@ void rasteriseBand(const std::vector<Mesh>& meshes, const lens::Iris& iris, Imag
 }
 
 //! Which ghosts to draw: the brightest `count` at the angle of the brightest source.
-std::vector<std::array<int, 2>> pickGhosts(const Lens& lens, std::array<double, 2> angle,
-                                           int count) {
-    std::vector<std::array<int, 2>> out;
+//! The `count` brightest ghosts at `angle` (pairs of surfaces) and the brightest one's share of
+//! the light (luminance-weighted over its RGB figures; 0 when none reaches the sensor).
+struct PickedGhosts {
+    std::vector<std::array<int, 2>> pairs;
+    double share = 0;
+};
+
+PickedGhosts pickGhosts(const Lens& lens, std::array<double, 2> angle, int count) {
+    PickedGhosts out;
     if (count <= 0) return out;
     GhostQuery q;
     q.angleXDeg = angle[0], q.angleYDeg = angle[1], q.gridSide = 16;
     auto report = analyseGhosts(lens, q);
     if (!report) return out;
     for (const GhostFigure& g : report->ghosts) {
-        if (int(out.size()) >= count) break;
-        if (g.intensity[0] + g.intensity[1] + g.intensity[2] > 0)
-            out.push_back({g.first, g.second});
+        if (int(out.pairs.size()) >= count) break;
+        if (g.intensity[0] + g.intensity[1] + g.intensity[2] <= 0) continue;
+        out.pairs.push_back({g.first, g.second});
+        // Rec. 709 luminance, in double: the shares run down to 1e-9.
+        out.share = std::max(
+            out.share, 0.2126 * g.intensity[0] + 0.7152 * g.intensity[1] + 0.0722 * g.intensity[2]);
     }
     return out;
 }
@@ -411,6 +420,7 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
     map.width = width, map.height = height;
     map.mmPerPixel = std::min(lens.sensor.width / width, lens.sensor.height / height);
     const auto samples = lens::spectralSamples(options.spectral);
+    const auto starburstSamples = lens::spectralSamples(options.starburstSamples);
     std::vector<TraceLens> traces;
     for (const auto& s : samples) traces.push_back(lens::prepareTrace(lens, s.lambdaNm));
     const TraceLens dLine = lens::prepareTrace(lens, kLineD);
@@ -425,12 +435,17 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
         const auto sum = [](const LensLight& l) { return l.energy[0] + l.energy[1] + l.energy[2]; };
         if (sum(lights[i]) > sum(lights[brightest])) brightest = i;
     }
-    std::vector<std::array<int, 2>> ghosts;
+    PickedGhosts picked;
     if (!lights.empty()) {
         const LensLight& l = lights[brightest];
-        ghosts = pickGhosts(lens, fieldAngle(dLine, focal, map.toMmX(l.x), map.toMmY(l.y)),
+        picked = pickGhosts(lens, fieldAngle(dLine, focal, map.toMmX(l.x), map.toMmY(l.y)),
                             options.ghosts);
     }
+    const std::vector<std::array<int, 2>>& ghosts = picked.pairs;
+    // Flux level: one factor for every ghost of every light, so their traced ratios stay.
+    const double ghostGain = options.ghostLevel == GhostLevel::Flux && picked.share > 0
+                                 ? options.ghostGain * kFluxGhostShare / picked.share
+                                 : options.ghostGain;
     const int side = options.gridSide;
     // Each grid cell is (2 sa / (side - 1))^2 of the entrance; a triangle half of it, and the
     // light entering is spread over the first surface's clear disc.
@@ -455,7 +470,7 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
                     lens::ghostPath(int(lens.surfaces.size()), ghosts[g][0], ghosts[g][1]);
                 Mesh m = traceMesh(traces[w], path, dir, side, map);
                 for (int c = 0; c < 3; ++c)
-                    m.weight[std::size_t(c)] = options.ghostGain * light.energy[std::size_t(c)] *
+                    m.weight[std::size_t(c)] = ghostGain * light.energy[std::size_t(c)] *
                                                samples[w].weight[std::size_t(c)] * triangleShare;
                 meshes[std::size_t(k)] = std::move(m);
             }
@@ -465,7 +480,7 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
             if (s.error().code == ErrorCode::Interrupted) return stopped(done);
             return s.error();
         }
-        addStarburst(lens, dirt, samples, light, options.starburst,
+        addStarburst(lens, dirt, starburstSamples, light, options.starburst,
                      options.starburstSize * diagonal, layers.starburst);
         addGlare(light, options.glare, 0.01 * diagonal, layers.glare);
         if (options.progress && !options.progress(done + 1, total)) return stopped(done + 1);

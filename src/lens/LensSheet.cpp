@@ -132,8 +132,7 @@ Result<Image> renderLensSheet(const Lens& lens, int width) {
     // The flare of a point source at three field angles, each in its own panel.
     const int panelW = width / 3, panelH = height - sectionHeight;
     LensRenderOptions o;
-    o.ghosts = 32;
-    o.ghostGain = 100;
+    o.ghosts = 32;  // at the flux level: every lens's ghosts show, whatever its coating
     for (int k = 0; k < 3; ++k) {
         LensLight light;
         light.x = panelW * (0.5 + 0.18 * k), light.y = panelH * (0.5 - 0.12 * k);

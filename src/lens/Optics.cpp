@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The optics every lens computation shares: dispersion, Fresnel and thin-film reflectance, the
-// paraxial (y-nu) trace.
+// The optics every lens computation shares: dispersion, Fresnel and multi-layer thin-film
+// reflectance, the paraxial (y-nu) trace.
 #include <cmath>
 #include <complex>
 
@@ -30,7 +30,29 @@ Amplitudes fresnel(double na, Complex ca, double nb, Complex cb) {
     return {(na * ca - nb * cb) / (na * ca + nb * cb), (nb * ca - na * cb) / (nb * ca + na * cb)};
 }
 
+//! Tilted admittance of a medium of index n at cosine c: n cos for s, n / cos for p.
+Complex admittance(double n, Complex c, bool p) {
+    return p ? n / c : n * c;
+}
+
 }  // namespace
+
+LensCoating coatingDesign(CoatingDesign design, double designNm) {
+    switch (design) {
+        case CoatingDesign::Mgf2:
+            return {{quarterWave(kMgF2Index, designNm)}};
+        case CoatingDesign::Broadband:
+            // Quarter, half, quarter: the half-wave ZrO2 is absent at the design wavelength
+            // (the stack reflects there as the two quarters alone) and flattens the curve
+            // either side of it.
+            return {{quarterWave(kMgF2Index, designNm),
+                     {kZrO2Index, designNm / (2.0 * kZrO2Index)},
+                     quarterWave(kCeF3Index, designNm)}};
+        case CoatingDesign::VCoat:
+            return {{quarterWave(kMgF2Index, designNm), quarterWave(kCeF3Index, designNm)}};
+    }
+    return {};
+}
 
 double interfaceReflectance(double n0, double n2, double cos0, const LensCoating& coating,
                             double lambdaNm) {
@@ -46,18 +68,30 @@ double interfaceReflectance(double n0, double n2, double cos0, const LensCoating
         const Amplitudes r = fresnel(n0, c0, n2, c2);
         return 0.5 * (std::norm(r.s) + std::norm(r.p));
     }
-    // One layer (index n1, thickness d) between n0 and n2: the two interfaces' amplitudes
-    // summed over all internal bounces (Airy), r = (r01 + r12 e^{-2i delta}) /
-    // (1 + r01 r12 e^{-2i delta}), delta = 2 pi n1 d cos1 / lambda (Born & Wolf, Principles of
-    // Optics, 1959, section 1.6).
-    const double n1 = coating.n;
-    const Complex c1 = cosIn(n1);
-    const Amplitudes r01 = fresnel(n0, c0, n1, c1), r12 = fresnel(n1, c1, n2, c2);
-    const Complex phase =
-        std::exp(Complex(0.0, -2.0) * (2.0 * M_PI * n1 * coating.thicknessNm / lambdaNm) * c1);
-    const Complex rs = (r01.s + r12.s * phase) / (1.0 + r01.s * r12.s * phase);
-    const Complex rp = (r01.p + r12.p * phase) / (1.0 + r01.p * r12.p * phase);
-    return std::min(1.0, 0.5 * (std::norm(rs) + std::norm(rp)));
+    // The characteristic matrix of the stack (Macleod, Thin-Film Optical Filters, 2001,
+    // chapter 2): each layer j multiplies [[cos d, i sin d / y], [i y sin d, cos d]], d = 2 pi
+    // n_j t_j cos_j / lambda, y its tilted admittance; [B, C] = M [1, y_exit] and r = (y0 B - C)
+    // / (y0 B + C). The layers are listed from the lower-index side, so the product runs from
+    // n0 when n0 is that side and from n2 otherwise.
+    const bool fromLow = n0 <= n2;
+    double reflectance = 0.0;
+    for (const bool p : {false, true}) {
+        Complex m00 = 1.0, m01 = 0.0, m10 = 0.0, m11 = 1.0;
+        const std::size_t count = coating.layers.size();
+        for (std::size_t k = 0; k < count; ++k) {
+            const CoatingLayer& layer = coating.layers[fromLow ? k : count - 1 - k];
+            const Complex c = cosIn(layer.n), y = admittance(layer.n, c, p);
+            const Complex delta = 2.0 * M_PI * layer.n * layer.thicknessNm * c / lambdaNm;
+            const Complex cd = std::cos(delta), sd = Complex(0.0, 1.0) * std::sin(delta);
+            const Complex a00 = m00 * cd + m01 * y * sd, a01 = m00 * sd / y + m01 * cd;
+            const Complex a10 = m10 * cd + m11 * y * sd, a11 = m10 * sd / y + m11 * cd;
+            m00 = a00, m01 = a01, m10 = a10, m11 = a11;
+        }
+        const Complex y0 = admittance(n0, c0, p), yExit = admittance(n2, c2, p);
+        const Complex b = m00 + m01 * yExit, c = m10 + m11 * yExit;
+        reflectance += 0.5 * std::norm((y0 * b - c) / (y0 * b + c));
+    }
+    return std::min(1.0, reflectance);
 }
 
 Paraxial paraxial(const Lens& lens, double lambdaNm) {

@@ -208,6 +208,18 @@ inline float centreFalloff(Vec2 p, float exponent) {
     return std::pow(std::max(0.f, 1.f - r), exponent);
 }
 
+//! How much of a tap at s (uv in the buffer it samples) counts: 1 inside, easing to 0 over the
+//! last `fade` of the buffer on every side (smoothstep in x times smoothstep in y), so a ghost
+//! or halo that mirrors or magnifies the buffer never shows its border as a straight edge.
+//! fade 0 is the seed's hard cut: every tap inside [0, 1] counts fully. The caller still skips
+//! taps outside [0, 1].
+inline float borderWindow(Vec2 s, float fade) {
+    if (fade <= 0.f) return 1.f;
+    const float tx = std::clamp(std::min(s.x, 1.f - s.x) / fade, 0.f, 1.f);
+    const float ty = std::clamp(std::min(s.y, 1.f - s.y) / fade, 0.f, 1.f);
+    return tx * tx * (3.f - 2.f * tx) * (ty * ty * (3.f - 2.f * ty));
+}
+
 //! Half the size, rounded up, never below 1: each level of the chain.
 inline int halfSize(int n) {
     return std::max(1, (n + 1) / 2);

@@ -62,7 +62,7 @@ TEST(Golden, EveryLensOnTheRealSunrise) {
         auto lens = loadLens(name);
         ASSERT_TRUE(lens.ok()) << name;
         LensRenderOptions o;
-        o.ghosts = 32, o.ghostGain = 100;
+        o.ghosts = 32;
         auto layers = renderLensFlare(*lens, 320, 180, lights, o);
         ASSERT_TRUE(layers.ok()) << name << ": " << layers.error().message;
         Image image = input;

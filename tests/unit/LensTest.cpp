@@ -4,9 +4,11 @@
 // Fresnel closed form, a paraxial y-nu trace of every ghost path, energy bounds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <vector>
 
 #include "flarekit/Lens.h"
 #include "lens/LensTrace.h"
@@ -163,13 +165,137 @@ TEST(Lens, CoatingMatchesTheQuarterWaveClosedFormAndTheMatrixMethod) {
             for (const double lambda : {450.0, 550.0, 650.0}) {
                 const double c = std::cos(deg * M_PI / 180);
                 EXPECT_NEAR(interfaceReflectance(1.0, n2, c, mgf2, lambda),
-                            matrixReflectance(1.0, 1.38, mgf2.thicknessNm, n2, c, lambda), 1e-9)
+                            matrixReflectance(1.0, 1.38, mgf2.layers[0].thicknessNm, n2, c, lambda),
+                            1e-9)
                     << n2 << " " << deg << " " << lambda;
             }
         }
     }
     // Past the critical angle from glass into air everything reflects.
     EXPECT_EQ(interfaceReflectance(1.6, 1.0, std::cos(50 * M_PI / 180), mgf2, 550), 1.0);
+}
+
+namespace {
+
+//! Reflectance of a stack (layers from the n0 side) by Rouard's recursion: the amplitude of the
+//! innermost interface, then each layer outward r = (r_j + r' e^{-2i d}) / (1 + r_j r' e^{-2i
+//! d}): a second method, independent of the characteristic matrix flarekit uses.
+double rouardReflectance(double n0, const std::vector<CoatingLayer>& layers, double n2, double cos0,
+                         double lambda) {
+    using C = std::complex<double>;
+    const double inv = n0 * std::sqrt(1 - cos0 * cos0);  // n sin, the same in every medium
+    const auto cosIn = [&](double n) { return std::sqrt(C(1 - (inv / n) * (inv / n))); };
+    double r = 0;
+    for (int pol = 0; pol < 2; ++pol) {
+        const auto amp = [&](double na, double nb) {
+            const C ca = cosIn(na), cb = cosIn(nb);
+            return pol == 0 ? (na * ca - nb * cb) / (na * ca + nb * cb)
+                            : (nb * ca - na * cb) / (nb * ca + na * cb);
+        };
+        C total = 0;
+        for (std::size_t k = layers.size(); k-- > 0;) {
+            const CoatingLayer& l = layers[k];
+            const C rj = k + 1 == layers.size() ? amp(l.n, n2) : total;
+            const C phase =
+                std::exp(C(0, -2) * (2 * M_PI * l.n * l.thicknessNm / lambda) * cosIn(l.n));
+            const double above = k == 0 ? n0 : layers[k - 1].n;
+            const C ra = amp(above, l.n);
+            total = (ra + rj * phase) / (1.0 + ra * rj * phase);
+        }
+        r += 0.5 * std::norm(total);
+    }
+    return r;
+}
+
+}  // namespace
+
+// Multi-layer stacks against closed forms at the design wavelength and normal incidence (two
+// quarter waves: R = ((n0 - Y) / (n0 + Y))^2, Y = n1^2 n_s / n2^2; a half-wave layer is absent
+// there), and against Rouard's recursion at every angle and wavelength; the same from either
+// side, as a lossless stack must be.
+TEST(Lens, MultiLayerCoatingsMatchClosedFormsAndRouardsRecursion) {
+    const double design = 530;
+    const LensCoating qq{{quarterWave(1.38, design), quarterWave(1.70, design)}};
+    const LensCoating broadband = coatingDesign(CoatingDesign::Broadband, design);
+    ASSERT_EQ(broadband.layers.size(), 3u);
+    for (const double ns : {1.5168, 1.62, 1.7552}) {
+        const double y = 1.38 * 1.38 * ns / (1.70 * 1.70);
+        EXPECT_NEAR(interfaceReflectance(1.0, ns, 1.0, qq, design), std::pow((1 - y) / (1 + y), 2),
+                    1e-12)
+            << ns;
+        const double yb = 1.38 * 1.38 * ns / (kCeF3Index * kCeF3Index);
+        EXPECT_NEAR(interfaceReflectance(1.0, ns, 1.0, broadband, design),
+                    std::pow((1 - yb) / (1 + yb), 2), 1e-12)
+            << ns;
+        for (const LensCoating* c : {&qq, &broadband}) {
+            for (const double deg : {0.0, 20.0, 40.0, 60.0, 80.0}) {
+                const double cosAir = std::cos(deg * M_PI / 180);
+                for (const double lambda : {420.0, 465.0, 550.0, 610.0, 690.0}) {
+                    const double r = interfaceReflectance(1.0, ns, cosAir, *c, lambda);
+                    EXPECT_NEAR(r, rouardReflectance(1.0, c->layers, ns, cosAir, lambda), 1e-10)
+                        << ns << " " << deg << " " << lambda;
+                    // The same ray from the glass side (the layers then met in reverse).
+                    const double sinGlass = std::sin(deg * M_PI / 180) / ns;
+                    EXPECT_NEAR(interfaceReflectance(ns, 1.0, std::sqrt(1 - sinGlass * sinGlass),
+                                                     *c, lambda),
+                                r, 1e-10)
+                        << ns << " " << deg << " " << lambda;
+                }
+            }
+        }
+    }
+    // A broadband stack reflects far less than bare glass across the visible, and its residual
+    // peaks near the design wavelength between two minima (the colour of its ghosts).
+    double peakAt = 0, peak = 0;
+    for (double lambda = 440; lambda <= 640; lambda += 5) {
+        const double r = interfaceReflectance(1.0, 1.62, 1.0, broadband, lambda);
+        EXPECT_LT(r, 0.012) << lambda;
+        if (r > peak) peak = r, peakAt = lambda;
+    }
+    EXPECT_NEAR(peakAt, design, 20.0);
+}
+
+// The shipped lenses state their coatings and their ghosts show it: the uncoated Petzval's are
+// neutral, the single-coated double Gauss's magenta or purple (green weakest), the multi-coated
+// zoom's include greens (green strongest); stripped of its coating the double Gauss's brightest
+// ghosts are several times brighter in all.
+TEST(Lens, ShippedCoatingsGiveTheirGhostsTheirColours) {
+    const auto ghostsOf = [](const char* name, bool strip = false) {
+        auto lens = loadLens(name);
+        EXPECT_TRUE(lens.ok()) << name;
+        if (strip && lens.ok())
+            for (LensSurface& s : lens->surfaces) s.coating = {};
+        GhostQuery q;
+        q.angleXDeg = 8.0, q.gridSide = 24;
+        auto r = analyseGhosts(*lens, q);
+        EXPECT_TRUE(r.ok()) << name;
+        return r.ok() ? r->ghosts : std::vector<GhostFigure>{};
+    };
+    const auto share = [](const GhostFigure& g, int c) {
+        return g.intensity[std::size_t(c)] / (g.intensity[0] + g.intensity[1] + g.intensity[2]);
+    };
+    const auto petzval = ghostsOf("kodak-petzval");
+    ASSERT_FALSE(petzval.empty());
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(share(petzval[0], c), 1.0 / 3.0, 0.03) << c;
+    const auto gauss = ghostsOf("angenieux-double-gauss");
+    ASSERT_GE(gauss.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_LT(share(gauss[i], 1), share(gauss[i], 0)) << i;
+        EXPECT_LT(share(gauss[i], 1), share(gauss[i], 2)) << i;
+    }
+    const auto zoom = ghostsOf("nikon-zoom-80-200");
+    int green = 0;
+    for (std::size_t i = 0; i < std::min<std::size_t>(zoom.size(), 8); ++i)
+        green += share(zoom[i], 1) > std::max(share(zoom[i], 0), share(zoom[i], 2));
+    EXPECT_GE(green, 2);
+    const auto bare = ghostsOf("angenieux-double-gauss", true);
+    ASSERT_FALSE(bare.empty());
+    const auto total = [](const std::vector<GhostFigure>& ghosts) {
+        double sum = 0;
+        for (const GhostFigure& g : ghosts) sum += g.intensity[1];
+        return sum;
+    };
+    EXPECT_GT(total(bare), 3.0 * total(gauss));
 }
 
 namespace {
@@ -364,6 +490,7 @@ TEST(Lens, RenderedGhostsCarryTheirReportedEnergy) {
     ASSERT_TRUE(lens.ok());
     LensRenderOptions o;
     o.ghosts = 1, o.starburst = 0, o.glare = 0, o.gridSide = 96;
+    o.ghostLevel = GhostLevel::Physical;
     LensLight light;
     light.x = 160, light.y = 120;  // on the axis of a 320 x 240 frame: the ghost is whole in it
     // Bright enough that no triangle falls under the renderer's visibility floor.
@@ -386,6 +513,20 @@ TEST(Lens, RenderedGhostsCarryTheirReportedEnergy) {
         EXPECT_NEAR(sum[c], 1e7 * g.intensity[std::size_t(c)],
                     0.03 * 1e7 * g.intensity[std::size_t(c)])
             << c;
+    // At the flux level the brightest ghost carries kFluxGhostShare of the light's energy
+    // (luminance), its colour as traced: the physical figures times share / luminance(share).
+    o.ghostLevel = GhostLevel::Flux;
+    auto flux = renderLensFlare(*lens, 320, 240, {light}, o);
+    ASSERT_TRUE(flux.ok());
+    double fluxSum[3] = {0, 0, 0};
+    for (int y = 0; y < 240; ++y)
+        for (int x = 0; x < 320; ++x) {
+            const Rgba& p = flux->ghosts.at(x, y);
+            fluxSum[0] += p.r, fluxSum[1] += p.g, fluxSum[2] += p.b;
+        }
+    EXPECT_NEAR(0.2126 * fluxSum[0] + 0.7152 * fluxSum[1] + 0.0722 * fluxSum[2],
+                1e7 * kFluxGhostShare, 0.05 * 1e7 * kFluxGhostShare);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(fluxSum[c] / fluxSum[1], sum[c] / sum[1], 1e-3) << c;
 }
 
 TEST(Lens, BakedPresetsPlaceEachGhostWhereTheTraceDoes) {
@@ -436,6 +577,37 @@ TEST(Lens, BakedPresetsPlaceEachGhostWhereTheTraceDoes) {
             EXPECT_EQ(again->elements[i].seed, p->elements[i].seed) << name;
         }
     }
+}
+
+// The starburst is drawn at 32 wavelengths by default: each wavelength's fringes fall elsewhere
+// along a spike, so summed they leave a smooth spike, where 3 wavelengths leave beads. Measured
+// as the spike's second differences along the row through the light (a six-bladed iris has a
+// horizontal spike), relative to its brightness.
+TEST(Lens, TheDefaultStarburstIsSmoothAlongItsSpikes) {
+    auto lens = loadLens("asahi-takumar-50");
+    ASSERT_TRUE(lens.ok());
+    const auto roughness = [&](int wavelengths) {
+        LensRenderOptions o;
+        o.ghosts = 0, o.glare = 0, o.starburst = 0.1, o.starburstSize = 0.3;
+        o.starburstSamples = wavelengths;
+        LensLight light;
+        light.x = 200.5, light.y = 200.5;
+        light.energy = {1e4, 1e4, 1e4};
+        auto layers = renderLensFlare(*lens, 400, 400, {light}, o);
+        EXPECT_TRUE(layers.ok());
+        if (!layers.ok()) return 0.0;
+        double bends = 0, level = 0;
+        for (int x = 215; x < 320; ++x) {
+            const auto g = [&](int px) { return double(layers->starburst.at(px, 200).g); };
+            bends += std::abs(g(x + 1) - 2 * g(x) + g(x - 1));
+            level += g(x);
+        }
+        return bends / level;
+    };
+    EXPECT_EQ(LensRenderOptions{}.starburstSamples, 32);
+    const double beaded = roughness(3), smooth = roughness(32);
+    EXPECT_GT(beaded, 0.0);
+    EXPECT_LT(smooth, 0.35 * beaded) << "3: " << beaded << ", 32: " << smooth;
 }
 
 TEST(Lens, StarburstCarriesItsShareAndDirtChangesOnlyItsPattern) {
@@ -540,6 +712,7 @@ TEST(Lens, SmallMeshGridsAgreeWithTheExactTrace) {
     for (const int grid : {8, 16, 32, 96}) {
         LensRenderOptions o;
         o.ghosts = 1, o.starburst = 0, o.glare = 0, o.gridSide = grid;
+        o.ghostLevel = GhostLevel::Physical;
         auto layers = renderLensFlare(*lens, 320, 240, {light}, o);
         ASSERT_TRUE(layers.ok());
         double sum = 0, cx = 0;

@@ -98,9 +98,10 @@ void addPostFxCommand(CLI::App& app, int& exitCode) {
     addParamOverride(cmd, "--knee", *findParam<BrightParams>(kBrightParams, "knee"), args->knee,
                      "the preset's");
     cmd->add_flag("--expand-highlights{4}", text->expandHighlights,
-                  "8/16-bit input: an inverse tone curve on near-clipped pixels (clipped ones "
-                  "become GAIN x white, 4 by default; --expand-highlights=8 sets it) so the "
-                  "lights of an 8-bit photo flare");
+                  "8/16-bit input: an inverse tone curve on the near-clipped pixels of the "
+                  "lights that --light auto finds (clipped ones become GAIN x white, 4 by "
+                  "default; --expand-highlights=8 sets it) so the lights of an 8-bit photo "
+                  "flare and its bright sky, snow and walls do not");
     cmd->add_flag("-v,--verbose", args->verbose,
                   "print each pass's time (summed over --repeat runs)");
     addParamOptions<PostFxJobOptions>(cmd, kPostFxJobParams, *args);

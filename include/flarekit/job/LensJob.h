@@ -62,14 +62,10 @@ struct LensJobOptions {
     std::shared_ptr<const LensBackend> backend = cpuLensBackend();
     //! The display curve for 8/16-bit outputs; nothing: filmic for HDR input, else none.
     std::optional<ToneOperator> tonemap;
-    //! The render's settings. Photographs and HDRIs clip the sun by orders of magnitude (a real
-    //! one is ~10^5 x the sky), so the job draws ghosts 100 x their physical share by default;
-    //! a ghost gain of 1 is the lens's own figure for an unclipped source.
-    LensRenderOptions render = [] {
-        LensRenderOptions r;
-        r.ghostGain = 100;
-        return r;
-    }();
+    //! The render's settings: ghosts at the flux level (GhostLevel): photographs and HDRIs
+    //! clip the sun by orders of magnitude (a real one is ~10^5 x the sky), so its traced share
+    //! of the measured energy would not show.
+    LensRenderOptions render;
     bool verbose = false;
     ShotOptions shot;
     EncodeSettings encode;  //!< compression of the outputs and layers

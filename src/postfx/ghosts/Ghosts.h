@@ -16,9 +16,16 @@
 //   `sourceTexel` below is that 1 / size, passed in, never the output's size.
 // The seed's offsets run from +1 to 1 - 2 (samples - 1) steps: nearly all of the blur lies
 // away from the centre. `centered` uses (samples - 1) - 2i instead, the same span about p.
+// Three modern additions, each off at the seed's values: each tap is weighed by borderWindow, so
+// the mirrored border of the buffer fades instead of cutting (the seed's ghosts draw it as a
+// straight-edged slab when a bright sky or lamp touches the frame edge); the tint can be
+// desaturated toward its own luminance (ghostTint), so a ghost over a warm lamp stays warm; and
+// a magnified ghost is dimmed by the area it spreads over (ghostTint), so a lit window's ghost
+// is not a window-bright wash over a quarter of the frame.
 // Twin: shaders/ghosts.frag.
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <string>
 #include <vector>
@@ -35,6 +42,21 @@ struct GhostsUniforms {
     float intensity = 1.f;  //!< flareIntensity
 };
 
+//! Rec. 709 luminance weights: the tint's luminance is what `saturation` keeps.
+inline constexpr float kLumaR = 0.2126f, kLumaG = 0.7152f, kLumaB = 0.0722f;
+
+//! The tint the pass multiplies by: the seed's vTint with its colour scaled by `saturation`
+//! about its luminance, and dimmed by scale^2 for a magnified ghost when `conserveArea` (computed
+//! once per pass, so the shader receives it ready).
+inline Rgb ghostTint(const GhostParams& g) {
+    const float area = g.conserveArea ? std::min(1.f, g.scale * g.scale) : 1.f;
+    if (g.saturation >= 1.f && area >= 1.f) return g.tint;  // the seed's vTint bit for bit
+    const float luma = kLumaR * g.tint[0] + kLumaG * g.tint[1] + kLumaB * g.tint[2];
+    Rgb tint;
+    for (int c = 0; c < 3; ++c) tint[c] = (luma + (g.tint[c] - luma) * g.saturation) * area;
+    return tint;
+}
+
 inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, Vec2 uv) {
     const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale, ((1.f - uv.y) * 2.f - 1.f) * g.scale};
     const float len = std::sqrt(n.x * n.x + n.y * n.y);
@@ -45,7 +67,8 @@ inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, V
     // The falloff is weighed once, at the unblurred point n: per sample it would cost a pow per
     // tap for a difference the blur hides.
     const float weight = centreFalloff(n, g.falloff);
-    const F4 tint{g.tint[0] * weight, g.tint[1] * weight, g.tint[2] * weight, 0.f};
+    const Rgb base = ghostTint(g);
+    const F4 tint{base[0] * weight, base[1] * weight, base[2] * weight, 0.f};
     F4 sum = splat(0.f);
     for (int i = 0; i < g.samples; ++i) {
         const float offset = first - 2.f * float(i);
@@ -53,7 +76,7 @@ inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, V
         const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
         if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
             const F4 texel = g.linearFilter ? bilinear(bloom, s) : pointSample(bloom, s);
-            sum += max0(texel - g.threshold) * tint;
+            sum += max0(texel - g.threshold) * tint * borderWindow(s, g.borderFade);
         }
     }
     return sum / float(g.samples);
@@ -81,11 +104,12 @@ void bindUniforms(const GhostsUniforms& u, Sink& s) {
         const auto at = [i](const char* array) {
             return std::string(array) + "[" + std::to_string(i) + "]";
         };
-        s.set(at("tints").c_str(), g.tint), s.set(at("scales").c_str(), g.scale);
+        s.set(at("tints").c_str(), ghostTint(g)), s.set(at("scales").c_str(), g.scale);
         s.set(at("blurs").c_str(), g.blur), s.set(at("thresholds").c_str(), g.threshold);
         s.set(at("falloffs").c_str(), g.falloff), s.set(at("sampleCounts").c_str(), g.samples);
         s.set(at("centered").c_str(), int(g.centered)),
             s.set(at("useBilinear").c_str(), int(g.linearFilter));
+        s.set(at("borderFades").c_str(), g.borderFade);
     }
 }
 

@@ -5,7 +5,8 @@
 // [radius - thickness/2, radius + thickness/2]. A light at the centre lights the full ring
 // |q| = radius; a light at l lights an arc of radius `radius + |l|` on the far side, which is
 // how real lens halos swing with the light. Samples outside the image are skipped, as the
-// seed's ghosts do. Twin: shaders/halo.frag.
+// seed's ghosts do, and those near its border weighed down by borderWindow, as the ghosts' are.
+// Twin: shaders/halo.frag.
 #pragma once
 
 #include "flarekit/PostFx.h"
@@ -40,7 +41,7 @@ inline F4 haloPixel(const HaloUniforms& u, const Tex& bloom, int x, int y) {
         const Vec2 p{(m.x - dir.x * r) / u.aspect, m.y - dir.y * r};  // back to [-1, 1]
         const Vec2 s{p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f};
         if (s.x >= 0.f && s.x <= 1.f && s.y >= 0.f && s.y <= 1.f) {
-            sum += max0(bilinear(bloom, s) - u.halo.threshold);
+            sum += max0(bilinear(bloom, s) - u.halo.threshold) * borderWindow(s, u.halo.borderFade);
         }
     }
     return rgbOnly(sum * tint * (u.intensity / float(kHaloSamples)));
@@ -56,6 +57,7 @@ void bindUniforms(const HaloUniforms& u, Sink& s) {
     s.set("thickness", u.halo.thickness), s.set("threshold", u.halo.threshold),
         s.set("falloff", u.halo.falloff);
     s.set("intensity", u.intensity), s.set("tint", u.halo.tint);
+    s.set("borderFade", u.halo.borderFade);
 }
 
 }  // namespace flarekit::postfx

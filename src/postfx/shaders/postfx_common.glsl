@@ -47,3 +47,11 @@ float centreFalloff(vec2 p, float exponent) {
     precise float r = sqrt(p.x * p.x + p.y * p.y) * kInvCornerDistance;
     return pow(max(0.0, 1.0 - r), exponent);
 }
+
+float borderWindow(vec2 s, float fade) {
+    if (fade <= 0.0) return 1.0;
+    precise float tx = clamp(min(s.x, 1.0 - s.x) / fade, 0.0, 1.0);
+    precise float ty = clamp(min(s.y, 1.0 - s.y) / fade, 0.0, 1.0);
+    precise float w = tx * tx * (3.0 - 2.0 * tx) * (ty * ty * (3.0 - 2.0 * ty));
+    return w;
+}

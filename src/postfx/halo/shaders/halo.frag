@@ -2,7 +2,7 @@
 // Twin of src/postfx/halo/Halo.h: Chapman's halo, aspect-correct.
 layout(binding = 0) uniform sampler2D bloom;
 uniform vec2 invOutSize;
-uniform float aspect, radius, thickness, threshold, falloff, intensity;
+uniform float aspect, radius, thickness, threshold, falloff, intensity, borderFade;
 uniform vec3 tint;
 out vec4 result;
 
@@ -20,7 +20,7 @@ void main() {
         precise vec2 p = vec2((m.x - dir.x * r) / aspect, m.y - dir.y * r);
         precise vec2 s = vec2(p.x * 0.5 + 0.5, p.y * 0.5 + 0.5);
         if (s.x >= 0.0 && s.x <= 1.0 && s.y >= 0.0 && s.y <= 1.0) {
-            sum += max(bilinear(bloom, s) - threshold, vec4(0.0));
+            sum += max(bilinear(bloom, s) - threshold, vec4(0.0)) * borderWindow(s, borderFade);
         }
     }
     result = rgbOnly(sum * vec4(tint * weight, 0.0) * (intensity / float(kHaloSamples)));

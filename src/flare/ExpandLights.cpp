@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+// Highlight expansion gated by the light finder: an 8-bit photo's clipped lights get their
+// energy back, its near-white plateaus (sky, snow, walls) do not.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/Parallel.h"
+#include "flarekit/Flare.h"
+#include "flarekit/Tonemap.h"
+
+namespace flarekit {
+
+namespace {
+
+//! The reach of a light's expansion: full within twice its radius plus 4 px (the disc the
+//! finder keeps out of the search as the light's own glare), easing to 0 at kFadeReach times it.
+constexpr float kReachRadii = 2.f, kReachSlackPx = 4.f, kFadeReach = 1.5f;
+
+float smoothstep01(float t) {
+    t = std::clamp(t, 0.f, 1.f);
+    return t * t * (3.f - 2.f * t);
+}
+
+}  // namespace
+
+LightSearch expandHighlightsAtLights(Image& image, float gain, LightSearchOptions options) {
+    options.maxLights = kMaxExpandedLights;
+    LightSearch search = findLights(image, options);
+    if (search.lights.empty()) return search;
+    // Each pixel's nearness to the nearest light, filled light by light over its own box only.
+    const int w = image.width(), h = image.height();
+    std::vector<float> nearness(std::size_t(w) * std::size_t(h), 0.f);
+    for (const LightCandidate& l : search.lights) {
+        const float reach = kReachRadii * l.radius + kReachSlackPx, outer = kFadeReach * reach;
+        const int x0 = std::max(0, int(std::floor(l.position.x - outer))),
+                  x1 = std::min(w - 1, int(std::ceil(l.position.x + outer))),
+                  y0 = std::max(0, int(std::floor(l.position.y - outer))),
+                  y1 = std::min(h - 1, int(std::ceil(l.position.y + outer)));
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const float d =
+                    std::hypot(float(x) + 0.5f - l.position.x, float(y) + 0.5f - l.position.y);
+                float& n = nearness[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+                n = std::max(n, 1.f - smoothstep01((d - reach) / (outer - reach)));
+            }
+    }
+    parallelFor(0, h, 16, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* p = image.row(y);
+            const float* near = &nearness[std::size_t(y) * std::size_t(w)];
+            for (int x = 0; x < w; ++x, p += 4) {
+                if (near[x] <= 0.f) continue;
+                const float m = std::max({p[0], p[1], p[2]});
+                const float s = std::clamp((m - kExpandKnee) / (1.f - kExpandKnee), 0.f, 1.f);
+                const float factor = 1.f + (gain - 1.f) * s * s * near[x];
+                p[0] *= factor, p[1] *= factor, p[2] *= factor;
+            }
+        }
+    });
+    return search;
+}
+
+}  // namespace flarekit
