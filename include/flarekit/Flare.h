@@ -187,6 +187,15 @@ struct LightCandidate {
     float prominence = 0.f;     //!< mean luminance / mean luminance of the ring around it
     float compactness = 0.f;    //!< share of its pixels within 1.25 radii of it: 1 for a disc
     float halo = 0.f;           //!< mean luminance just outside it (R+1 to 1.5R+2) / its mean
+    //! Scene-referred (HDR) input: the light its aureole carries, summed over the rings around
+    //! the region while their mean keeps falling, above the sky level where it stops (already
+    //! in `flux`); a hazy or capture-clipped sun carries most of its light there.
+    double aureoleFlux = 0.0;
+    int aureoleRings = 0;  //!< the rings over which the aureole kept falling
+    //! Scene-referred input: its pixels whose largest channel is within 1.5% of the region's
+    //! largest, when they are at least 30% of its core (0 otherwise); 9 or more are a plateau, a
+    //! light clipped at capture (its flux then counts them at clippedGain x the plateau).
+    std::size_t flatTopPixels = 0;
     //! Display-referred input and its peak at the file's white in all three channels.
     bool clipped = false;
     std::size_t whitePixels = 0;  //!< display-referred: its pixels at white in every channel

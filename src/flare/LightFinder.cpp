@@ -70,7 +70,23 @@ constexpr float kSuppressFrameShare = 0.04f;
 //! cloud 5-250 x.
 constexpr float kMinKeyContrast = 1000.f;
 //! A light whose flare would be this faint (ghosts at 2% of the preset's look) is not flared.
-constexpr float kMinFlareScale = 0.02f;
+//! In HDR data a region that passed the contrast check (1000x the frame's median) is a light
+//! whatever its size, so the floor is halved there: blender-data's low, hazy sunset sun (2,090
+//! over two pixels, its aureole a few times the sky) measures 0.012.
+constexpr float kMinFlareScale = 0.02f, kMinHdrFlareScale = 0.01f;
+//! A sun clipped at capture: an HDR merge that ran out of range stores its disc as a plateau
+//! of one value in the channels it clipped. At least kFlatTopPixels pixels whose largest
+//! channel is within kFlatTopTolerance of the region's largest is such a clip (a real peak, or
+//! a bright sky's smooth crest, holds its top value in one or two pixels), and like a clipped 8-bit
+//! light it needs only kMinClippedContrast times the frame's median (a sun clipped at 22-676 in
+//! frames whose median is 0.1-0.3), while its flux counts each plateau pixel at clippedGain x the
+//! plateau, as the 8-bit path counts its clipped pixels at clippedGain x white (only below a
+//! light's contrast: above it a plateau is a rendered emitter, recorded whole).
+//! The tolerance is 1.5%: lossy EXR compression (DWAA/DWAB) jitters a clipped plateau by about
+//! 1%. A plateau is also most of the region's core (kMinFlatTopShare of its pixels at half its
+//! largest channel or more): a bright sky's crest is a few dozen pixels of a broad region.
+constexpr std::size_t kFlatTopPixels = 9;
+constexpr float kFlatTopTolerance = 0.015f, kMinFlatTopShare = 0.15f, kMinClippedContrast = 50.f;
 
 std::string format(const char* fmt, double a, double b = 0) {
     char buf[160];
@@ -228,6 +244,71 @@ float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
     return n ? float(sum / n) : -1.f;
 }
 
+//! The aureole is followed outward on rings from R + 1 px, each kAureoleStep times the last
+//! radius plus a pixel (so a 1-pixel sun's glow of 100 px takes about 20 rings), no further
+//! than kAureoleReachOfHeight of the frame height (a hazy sun's glow spans a tenth to a fifth of
+//! a wide frame), while each ring's mean stays below kAureoleFalling of the ring inside it.
+constexpr float kAureoleStep = 1.2f, kAureoleReachOfHeight = 0.25f, kAureoleFalling = 0.98f;
+
+struct Aureole {
+    double flux = 0;
+    int rings = 0;
+};
+
+//! The upper quartile of the luminance on the ring [inner, outer] around c (pixels inside the
+//! frame; -1 if none): the aureole's level at that radius where it is seen. A sun low over the
+//! horizon has the sea or a skyline under half of every ring, and a glitter path on the water,
+//! a branch or a mast crosses a few of its angles; all of them move a mean or a median, not the
+//! brighter quarter of the ring.
+float ringUpperQuartile(const LuminanceMap& m, Point c, float inner, float outer) {
+    std::vector<float> samples;
+    samples.reserve(kRingCircles * kRingAngles);
+    for (int i = 0; i < kRingCircles; ++i) {
+        const float r = inner + (outer - inner) * float(i) / float(kRingCircles - 1);
+        for (int a = 0; a < kRingAngles; ++a) {
+            const float angle = 2.f * std::numbers::pi_v<float> * (float(a) + 0.5f * float(i & 1)) /
+                                float(kRingAngles);
+            const int x = int(std::floor(c.x + r * std::cos(angle)));
+            const int y = int(std::floor(c.y + r * std::sin(angle)));
+            if (x < 0 || y < 0 || x >= m.w || y >= m.h) continue;
+            samples.push_back(m.at(x, y));
+        }
+    }
+    if (samples.empty()) return -1.f;
+    const auto quartile = samples.begin() + std::ptrdiff_t(samples.size() * 3 / 4);
+    std::nth_element(samples.begin(), quartile, samples.end());
+    return *quartile;
+}
+
+//! The light a candidate's aureole carries: over the rings around it whose upper quartile keeps
+//! falling, each ring's excess over the level where the falling stops (the local sky), times
+//! its area.
+Aureole measureAureole(const LuminanceMap& m, Point c, float radius) {
+    std::vector<std::pair<float, float>> rings;  // (inner radius, mean) of each ring
+    const float reach = kAureoleReachOfHeight * float(m.h);
+    float inner = radius + 1.f, last = std::numeric_limits<float>::infinity();
+    while (inner < reach) {
+        const float outer = inner * kAureoleStep + 1.f;
+        const float mean = ringUpperQuartile(m, c, inner, outer);
+        if (mean < 0.f || !(mean < kAureoleFalling * last)) {
+            rings.push_back({inner, std::max(mean, 0.f)});
+            break;
+        }
+        rings.push_back({inner, mean});
+        last = mean, inner = outer;
+    }
+    Aureole a;
+    if (rings.size() < 2) return a;
+    const float sky = rings.back().second;
+    for (std::size_t k = 0; k + 1 < rings.size(); ++k) {
+        const double r0 = rings[k].first, r1 = rings[k + 1].first;
+        a.flux +=
+            std::max(0.0, double(rings[k].second - sky)) * std::numbers::pi * (r1 * r1 - r0 * r0);
+    }
+    a.rings = int(rings.size()) - 1;
+    return a;
+}
+
 //! A pixel by its coordinates: the flood fill and the compactness count work in them, with no
 //! division per pixel to recover them from an index.
 struct PixelAt {
@@ -244,9 +325,10 @@ float regionThreshold(float peak, float nearPeak, bool displayReferred) {
 
 //! Grows the region of `seed` over unseen pixels >= threshold (whose centres lie within
 //! `maxRadius` px of `capCentre`) and measures it.
-LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float threshold,
-                          float clippedGain, bool displayReferred, std::vector<std::uint8_t>& seen,
-                          std::vector<PixelAt>& stack, std::vector<PixelAt>& members,
+LightCandidate growRegion(const LuminanceMap& m, const Image* image, std::size_t seed,
+                          float threshold, float clippedGain, bool displayReferred,
+                          std::vector<std::uint8_t>& seen, std::vector<PixelAt>& stack,
+                          std::vector<PixelAt>& members,
                           float maxRadius = std::numeric_limits<float>::infinity(),
                           Point capCentre = {}) {
     LightCandidate c;
@@ -286,6 +368,21 @@ LightCandidate growRegion(const LuminanceMap& m, std::size_t seed, float thresho
         visit(x, y + 1);
     }
     c.pixels = members.size();
+    if (!displayReferred && image) {
+        // A plateau at the top of the largest channel: the clip of an HDR merge (kFlatTopPixels).
+        const auto brightest = [&](PixelAt p) {
+            const Rgba& px = image->at(p.x, p.y);
+            return std::max({px.r, px.g, px.b});
+        };
+        float top = 0.f;
+        for (const PixelAt p : members) top = std::max(top, brightest(p));
+        std::size_t plateau = 0, core = 0;
+        for (const PixelAt p : members) {
+            plateau += brightest(p) >= top * (1.f - kFlatTopTolerance);
+            core += brightest(p) >= 0.5f * top;
+        }
+        if (float(plateau) >= kMinFlatTopShare * float(core)) c.flatTopPixels = plateau;
+    }
     c.flux = flux;
     c.meanLuminance = float(sum / double(c.pixels));
     c.position = sum > 0 ? Point{float(sx / sum), float(sy / sum)}
@@ -318,9 +415,11 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
     if (displayReferred && !c.clipped)
         return reject("not clipped (a light in 8/16-bit data reaches white in all three channels)");
     passed();
-    if (!displayReferred && c.peak < kMinKeyContrast * frameKey)
+    const float keyContrast =
+        c.flatTopPixels >= kFlatTopPixels ? kMinClippedContrast : kMinKeyContrast;
+    if (!displayReferred && c.peak < keyContrast * frameKey)
         return reject(format("only %.1fx the frame's median luminance (a light is %.0fx)",
-                             c.peak / frameKey, kMinKeyContrast));
+                             c.peak / frameKey, keyContrast));
     passed();
     if (c.prominence < o.minProminence)
         return reject(
@@ -356,9 +455,19 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
                                  c.halo, kMinHaloShare));
         passed();
     }
-    if (c.flareScale < kMinFlareScale)
-        return reject(
-            format("too faint: flare scale %.4f (needs %.2f)", c.flareScale, kMinFlareScale));
+    if (!displayReferred && c.flatTopPixels >= kFlatTopPixels) {
+        // A plateau is judged as a clipped 8-bit light is: a compact disc, not a clipped sky.
+        if (double(c.pixels) > kMaxFrameShare * double(m.w) * double(m.h) ||
+            c.compactness < kMinCompactness)
+            return reject(
+                format("a clipped plateau, not a light's disc: compactness %.2f, "
+                       "%.1f%% of the frame",
+                       c.compactness, 100.0 * double(c.pixels) / (double(m.w) * double(m.h))));
+    }
+    passed();
+    const float minScale = displayReferred ? kMinFlareScale : kMinHdrFlareScale;
+    if (c.flareScale < minScale)
+        return reject(format("too faint: flare scale %.4f (needs %.2f)", c.flareScale, minScale));
     passed();
     c.accepted = true;
     c.verdict = "light";
@@ -453,6 +562,7 @@ void mergeNearbyLights(std::vector<LightCandidate>& candidates, int height) {
 //! is measured, judged and (with its halo) taken out of the search.
 struct CandidateSearch {
     const LuminanceMap& m;
+    const Image& image;
     const LightSearchOptions& options;
     LightSearch& result;
     std::vector<std::uint8_t> seen;  //!< taken: in a candidate's region or halo
@@ -465,13 +575,24 @@ struct CandidateSearch {
         if (taken(seed)) return;  // by a light found since the seed's group was sorted
         const float peak = m.lum[seed];
         const float threshold = regionThreshold(peak, options.nearPeak, result.displayReferred);
-        LightCandidate c = growRegion(m, seed, threshold, options.clippedGain,
+        LightCandidate c = growRegion(m, &image, seed, threshold, options.clippedGain,
                                       result.displayReferred, seen, stack, members);
         const float ring = ringMean(m, c.position, std::max(2.f * c.radius, c.radius + 2.f),
                                     std::max(4.f * c.radius, c.radius + 6.f));
         c.prominence = ring > 0.f ? c.meanLuminance / ring : 1e6f;
         const float rim = ringMean(m, c.position, c.radius + 1.f, 1.5f * c.radius + 2.f);
         c.halo = rim >= 0.f ? rim / c.meanLuminance : 0.f;
+        if (!result.displayReferred) {
+            const Aureole a = measureAureole(m, c.position, c.radius);
+            c.aureoleFlux = a.flux, c.aureoleRings = a.rings;
+            c.flux += a.flux;
+            // A plateau short of a light's contrast is a capture clip: its pixels stand for
+            // clippedGain x the plateau. One at a light's contrast (a rendered emitter of
+            // constant radiance) is recorded whole.
+            if (c.flatTopPixels >= kFlatTopPixels && c.peak < kMinKeyContrast * result.frameKey)
+                c.flux +=
+                    double(c.flatTopPixels) * double(options.clippedGain - 1.f) * double(c.peak);
+        }
         judge(c, options, m, result.displayReferred, result.frameKey);
         // Small regions keep their halo (the disc of twice their radius) out of the search; a
         // huge one already holds it.
@@ -524,7 +645,8 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
     HighBuckets seeds =
         bucketByHigh32Descending(seedKeys(m, options.minLuminance),
                                  bitsOf(std::max(options.minLuminance, 0.f)), bitsOf(result.peak));
-    CandidateSearch search{m, options, result, std::vector<std::uint8_t>(m.lum.size(), 0), {}, {}};
+    CandidateSearch search{m,  image, options, result, std::vector<std::uint8_t>(m.lum.size(), 0),
+                           {}, {}};
     for (std::size_t b = 0; b < seeds.count() && !search.full(); ++b) {
         const auto first = seeds.keys.begin() + std::ptrdiff_t(seeds.begin[b]);
         const auto last =
@@ -595,8 +717,8 @@ LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOpt
     std::vector<std::uint8_t> seen(m.lum.size(), 0);
     std::vector<PixelAt> stack, members;
     LightCandidate measured =
-        growRegion(m, seed, threshold, options.clippedGain, displayReferred, seen, stack, members,
-                   std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
+        growRegion(m, &image, seed, threshold, options.clippedGain, displayReferred, seen, stack,
+                   members, std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
     measured.flareScale = flareScaleForFlux(measured.flux, m.h);
     measured.accepted = true;
     measured.verdict = "placed";

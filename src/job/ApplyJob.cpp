@@ -58,15 +58,15 @@ void sayCandidates(const LightSearch& search, const JobEvents& events) {
         sorted = std::move(listed);
     }
     for (const LightCandidate& c : sorted)
-        events.say(
-            format("  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx "
-                   "surroundings, compactness %.2f, halo %.2f,%s flare scale %.4f: %s",
-                   double(c.position.x), double(c.position.y), double(c.radius), double(c.peak),
-                   c.flux, double(c.prominence), double(c.compactness), double(c.halo),
-                   search.displayReferred
-                       ? format(" %.0f%% at white,", 100.0 * double(whiteShare(c))).c_str()
-                       : "",
-                   double(c.flareScale), c.verdict.c_str()));
+        events.say(format(
+            "  at %.1f,%.1f radius %.1f px, peak %.4g, flux %.4g, %.2fx "
+            "surroundings, compactness %.2f, halo %.2f,%s flare scale %.4f: %s",
+            double(c.position.x), double(c.position.y), double(c.radius), double(c.peak), c.flux,
+            double(c.prominence), double(c.compactness), double(c.halo),
+            search.displayReferred
+                ? format(" %.0f%% at white,", 100.0 * double(whiteShare(c))).c_str()
+                : format(" aureole %.4g over %d rings,", c.aureoleFlux, c.aureoleRings).c_str(),
+            double(c.flareScale), c.verdict.c_str()));
 }
 
 //! The lights of one frame, each a position and an intensity.

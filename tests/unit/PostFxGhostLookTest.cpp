@@ -26,9 +26,9 @@ TEST(PostFxBorderWindow, IsTheProductOfTwoSmoothstepsOverTheFade) {
     EXPECT_EQ(borderWindow({0.125f, 0.875f}, 0.125f), 1.f);
     EXPECT_EQ(borderWindow({0.f, 0.5f}, 0.125f), 0.f);
     EXPECT_EQ(borderWindow({0.5f, 1.f}, 0.125f), 0.f);
-    EXPECT_FLOAT_EQ(borderWindow({0.0625f, 0.5f}, 0.125f), 0.5f);  // smoothstep(1/2)
+    EXPECT_FLOAT_EQ(borderWindow({0.0625f, 0.5f}, 0.125f), 0.5f);       // smoothstep(1/2)
     EXPECT_FLOAT_EQ(borderWindow({0.5f, 0.96875f}, 0.125f), 0.15625f);  // smoothstep(1/4)
-    EXPECT_FLOAT_EQ(borderWindow({0.0625f, 0.0625f}, 0.125f), 0.25f);  // both sides
+    EXPECT_FLOAT_EQ(borderWindow({0.0625f, 0.0625f}, 0.125f), 0.25f);   // both sides
     EXPECT_EQ(borderWindow({0.f, 0.f}, 0.f), 1.f);
     EXPECT_EQ(borderWindow({1.f, 0.3f}, 0.f), 1.f);
 }
@@ -172,7 +172,8 @@ TEST(PostFxExpand, OnlyTheLightsOfAnEightBitFrameAreExpanded) {
         for (int x = 0; x < w; ++x) {
             const float dx = float(x) + 0.5f - 240.f, dy = float(y) + 0.5f - 50.f;
             const float d = std::sqrt(dx * dx + dy * dy);
-            float v = 0.25f + 0.75f / (1.f + 0.02f * std::max(0.f, d - 6.f) * std::max(0.f, d - 6.f));
+            float v =
+                0.25f + 0.75f / (1.f + 0.02f * std::max(0.f, d - 6.f) * std::max(0.f, d - 6.f));
             if (d <= 6.f) v = 1.f;
             Rgba p{v, v, v, 1.f};
             if (y >= 120 && x < 200) p = {0.95f, 0.95f, 0.95f, 1.f};  // the snowfield
