@@ -225,10 +225,10 @@ float medianLuminance(const LuminanceMap& m) {
     return std::max(medianOf(sample), 1e-4f);
 }
 
-//! Mean luminance of the ring [inner, outer] around c (pixels inside the frame only; -1 if none).
-float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
-    double sum = 0;
-    int n = 0;
+//! Calls `visit(luminance)` for each sample of the ring [inner, outer] around c that lies inside
+//! the frame: kRingCircles circles of kRingAngles points, every other circle turned half a step.
+template <class Visit>
+void forRingSamples(const LuminanceMap& m, Point c, float inner, float outer, Visit&& visit) {
     for (int i = 0; i < kRingCircles; ++i) {
         const float r = inner + (outer - inner) * float(i) / float(kRingCircles - 1);
         for (int a = 0; a < kRingAngles; ++a) {
@@ -237,10 +237,16 @@ float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
             const int x = int(std::floor(c.x + r * std::cos(angle)));
             const int y = int(std::floor(c.y + r * std::sin(angle)));
             if (x < 0 || y < 0 || x >= m.w || y >= m.h) continue;
-            sum += m.at(x, y);
-            ++n;
+            visit(m.at(x, y));
         }
     }
+}
+
+//! Mean luminance of the ring [inner, outer] around c (pixels inside the frame only; -1 if none).
+float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
+    double sum = 0;
+    int n = 0;
+    forRingSamples(m, c, inner, outer, [&](float l) { sum += l, ++n; });
     return n ? float(sum / n) : -1.f;
 }
 
@@ -263,17 +269,7 @@ struct Aureole {
 float ringUpperQuartile(const LuminanceMap& m, Point c, float inner, float outer) {
     std::vector<float> samples;
     samples.reserve(kRingCircles * kRingAngles);
-    for (int i = 0; i < kRingCircles; ++i) {
-        const float r = inner + (outer - inner) * float(i) / float(kRingCircles - 1);
-        for (int a = 0; a < kRingAngles; ++a) {
-            const float angle = 2.f * std::numbers::pi_v<float> * (float(a) + 0.5f * float(i & 1)) /
-                                float(kRingAngles);
-            const int x = int(std::floor(c.x + r * std::cos(angle)));
-            const int y = int(std::floor(c.y + r * std::sin(angle)));
-            if (x < 0 || y < 0 || x >= m.w || y >= m.h) continue;
-            samples.push_back(m.at(x, y));
-        }
-    }
+    forRingSamples(m, c, inner, outer, [&](float l) { samples.push_back(l); });
     if (samples.empty()) return -1.f;
     const auto quartile = samples.begin() + std::ptrdiff_t(samples.size() * 3 / 4);
     std::nth_element(samples.begin(), quartile, samples.end());

@@ -33,6 +33,27 @@ TEST(PostFxBorderWindow, IsTheProductOfTwoSmoothstepsOverTheFade) {
     EXPECT_EQ(borderWindow({1.f, 0.3f}, 0.f), 1.f);
 }
 
+//! A chain of one ghost of `scale` alone: no bloom added, no ceiling, a compact bloom buffer,
+//! one unblurred bilinear tap, no threshold; the ghost layer is kept.
+PostFxParams oneGhost(float brightThreshold, float scale) {
+    PostFxParams p;
+    p.bright = {brightThreshold, 0.f};
+    p.bright.ceiling = 0.f;
+    p.bloom = {0.f, 2, 1.f};
+    GhostParams g;
+    g.scale = scale, g.blur = 0.f, g.samples = 1, g.threshold = 0.f, g.linearFilter = true;
+    p.ghosts = {g};
+    return p;
+}
+
+Image ghostLayer(const Image& in, const PostFxParams& p) {
+    PostFxOptions o;
+    o.keepLayers = true;
+    auto r = postFxCpu(in, p, o);
+    EXPECT_TRUE(r.ok());
+    return r.ok() ? r->ghosts : Image{};
+}
+
 //! One magnifying ghost (scale 2: the buffer's border s = 0 lands at 3/4 of the frame) of a sky
 //! that is brightest at the left frame edge and falls off linearly over 40% of the width.
 Image ghostOfABrightEdge(float borderFade) {
@@ -44,19 +65,9 @@ Image ghostOfABrightEdge(float borderFade) {
             sky.at(x, y) = {v, v, v, 1.f};
         }
     }
-    PostFxParams p;
-    p.bright = {1.f, 0.f};
-    p.bright.ceiling = 0.f;
-    p.bloom = {0.f, 2, 1.f};
-    GhostParams g;
-    g.scale = 2.f, g.blur = 0.f, g.samples = 1, g.threshold = 0.f, g.linearFilter = true;
-    g.borderFade = borderFade;
-    p.ghosts = {g};
-    PostFxOptions o;
-    o.keepLayers = true;
-    auto r = postFxCpu(sky, p, o);
-    EXPECT_TRUE(r.ok());
-    return r.ok() ? r->ghosts : Image{};
+    PostFxParams p = oneGhost(1.f, 2.f);
+    p.ghosts[0].borderFade = borderFade;
+    return ghostLayer(sky, p);
 }
 
 //! The largest step between neighbours along the middle row, as a share of the row's peak.
@@ -91,23 +102,13 @@ Rgb ghostColour(float saturation) {
     lamp.fill({0.f, 0.f, 0.f, 1.f});
     for (int y = 60; y < 68; ++y)
         for (int x = 160; x < 168; ++x) lamp.at(x, y) = {8.f, 4.f, 1.f, 1.f};
-    PostFxParams p;
-    p.bright = {0.5f, 0.f};
-    p.bright.ceiling = 0.f;
-    p.bloom = {0.f, 2, 1.f};
-    GhostParams g;
-    g.tint = {0.7f, 0.2f, 0.9f};  // the seed's purple ghost
-    g.scale = 1.f, g.blur = 0.f, g.samples = 1, g.threshold = 0.f, g.linearFilter = true;
-    g.saturation = saturation;
-    p.ghosts = {g};
-    PostFxOptions o;
-    o.keepLayers = true;
-    auto r = postFxCpu(lamp, p, o);
-    EXPECT_TRUE(r.ok());
+    PostFxParams p = oneGhost(0.5f, 1.f);
+    p.ghosts[0].tint = {0.7f, 0.2f, 0.9f};  // the seed's purple ghost
+    p.ghosts[0].saturation = saturation;
+    const Image ghosts = ghostLayer(lamp, p);
     Rgb sum{0.f, 0.f, 0.f};
-    if (!r.ok()) return sum;
-    for (std::size_t i = 0; i < r->ghosts.pixelCount(); ++i)
-        for (int c = 0; c < 3; ++c) sum[c] += r->ghosts.data()[4 * i + c];
+    for (std::size_t i = 0; i < ghosts.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c) sum[c] += ghosts.data()[4 * i + c];
     return sum;
 }
 
