@@ -400,6 +400,24 @@ LightCandidate growRegion(const LuminanceMap& m, const Image* image, std::size_t
     return c;
 }
 
+//! A hazy sun: haze spreads most of its light into a wide aureole and leaves a dim core (a
+//! peak of 44 at 76x the frame's median). Its aureole keeps falling over at least
+//! kHazyAureoleRings rings (out to about 30 core radii) and carries at least
+//! kHazyAureoleShare of its flux, where a lit window or a patch of sky ends within a few rings;
+//! such a candidate needs only kMinClippedContrast times the median, like a clipped one, and
+//! still its prominence and compactness.
+//! It must also carry a sun's flux (a flare scale of kMinHazyFlareScale): a dim window in a
+//! night frame sits in the falling glow of the lamps around it and measures an aureole too,
+//! but at a flare scale of 0.015-0.019 (blender-data's night).
+constexpr int kHazyAureoleRings = 10;
+constexpr double kHazyAureoleShare = 2.0 / 3.0;
+constexpr float kMinHazyFlareScale = 0.05f;
+
+bool isHazySun(const LightCandidate& c) {
+    return c.aureoleRings >= kHazyAureoleRings && c.aureoleFlux >= kHazyAureoleShare * c.flux &&
+           c.compactness >= kMinCompactness && c.flareScale >= kMinHazyFlareScale;
+}
+
 //! Judges a measured candidate; sets accepted and verdict.
 void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m,
            bool displayReferred, float frameKey) {
@@ -412,7 +430,7 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
         return reject("not clipped (a light in 8/16-bit data reaches white in all three channels)");
     passed();
     const float keyContrast =
-        c.flatTopPixels >= kFlatTopPixels ? kMinClippedContrast : kMinKeyContrast;
+        c.flatTopPixels >= kFlatTopPixels || isHazySun(c) ? kMinClippedContrast : kMinKeyContrast;
     if (!displayReferred && c.peak < keyContrast * frameKey)
         return reject(format("only %.1fx the frame's median luminance (a light is %.0fx)",
                              c.peak / frameKey, keyContrast));

@@ -491,3 +491,32 @@ TEST(LightFinder, TheAureoleCarriesAHazySunsLight) {
     EXPECT_GE(sun.aureoleRings, 10);
     EXPECT_GT(sun.flux, 3.0 * 5000.0);  // the core alone: 5,000
 }
+
+// A hazy sun: a dim core (peak 44 at about 80x the median) in a wide aureole that carries most
+// of its light is a light; the same core without the aureole, at that contrast, is not.
+TEST(LightFinder, AHazySunIsFoundByItsAureole) {
+    const auto sky = [](bool haze) {
+        Image img = background(640, 360, 0.5f);
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x) {
+                const float d = std::hypot(float(x) + 0.5f - 420.5f, float(y) + 0.5f - 100.5f);
+                float v = 0.5f + (haze ? 12.f / (1.f + (d / 12.f) * (d / 12.f)) : 0.f);
+                if (d < 2.f) v = std::max(v, 44.f - 10.f * d);  // a peak, not a clipped plateau
+                img.at(x, y) = {v, v, v, 1.f};
+            }
+        return img;
+    };
+    const LightSearch hazy = findLights(sky(true));
+    ASSERT_EQ(hazy.lights.size(), 1u) << hazy.whyNone;
+    EXPECT_NEAR(hazy.lights[0].position.x, 420.5f, 1.f);
+    EXPECT_GE(hazy.lights[0].aureoleRings, 10);
+    EXPECT_LT(hazy.lights[0].peak, 1000.f * hazy.frameKey);  // under a clear sun's contrast
+    const LightSearch bare = findLights(sky(false));
+    EXPECT_TRUE(bare.lights.empty());
+    const auto core = std::find_if(bare.candidates.begin(), bare.candidates.end(),
+                                   [](const LightCandidate& c) { return c.peak == 44.f; });
+    ASSERT_NE(core, bare.candidates.end());
+    EXPECT_NE(core->verdict.find("the frame's median luminance (a light is 1000x)"),
+              std::string::npos)
+        << core->verdict;
+}
