@@ -177,3 +177,37 @@ TEST(LensCli, FlagsAreSpeltWithHyphensAndTheOldUnderscoreSpellingStillWorks) {
         << help.out;
     EXPECT_EQ(help.out.find("--ghost_gain FLOAT"), std::string::npos) << help.out;
 }
+
+// --ghost-level picks how bright the ghosts are drawn: the traced shares ("physical") times
+// --ghost-gain, or the flux level (the default); physical x 1 is far fainter than the flux
+// level on a photograph's sun. An unknown level is one line, exit 2, nothing written.
+TEST(LensCli, GhostLevelFluxIsTheDefaultAndPhysicalIsTheTracedShare) {
+    TempDir dir;
+    const std::string in = std::string(FLAREKIT_SAMPLES) + "/sunset-hdr.exr";
+    const auto ghosts = [&](const std::string& name, const std::vector<std::string>& flags) {
+        std::vector<std::string> args = {
+            "lens",     "render",       "asahi-takumar-50", in, "-o", dir.file(name + ".exr"),
+            "--layers", dir.file(name), "--starburst",      "0"};
+        args.insert(args.end(), flags.begin(), flags.end());
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        auto layer = readImage(dir.file(name) + "/ghosts.exr");
+        double sum = 0;
+        if (layer.ok())
+            for (std::size_t i = 0; i < layer->image.pixelCount(); ++i)
+                sum += layer->image.data()[4 * i + 1];
+        return sum;
+    };
+    const double flux = ghosts("default", {});
+    const double named = ghosts("flux", {"--ghost-level", "flux"});
+    const double physical = ghosts("physical", {"--ghost-level", "physical"});
+    EXPECT_GT(flux, 0.0);
+    EXPECT_NEAR(named, flux, 1e-6 * flux);
+    EXPECT_GT(physical, 0.0);
+    EXPECT_GT(flux, 10.0 * physical);
+    const CliResult bad = runCli({"lens", "render", "asahi-takumar-50", in, "-o",
+                                  dir.file("bad.exr"), "--ghost-level", "bright"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--ghost-level"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("bad.exr")));
+}

@@ -93,7 +93,8 @@ void addLensRenderCommand(CLI::App* lens, int& exitCode) {
                        "it shapes the starburst");
     render->add_flag("-v,--verbose", job->verbose,
                      "--backend gl: print the GPU and read-back times");
-    for (const auto& p : kLensRenderParams) addParamOption(render, p, job->render);
+    addParamOptions<LensRenderOptions>(render, kLensRenderParams, job->render);
+    addParamChoice<LensRenderOptions>(render, kLensRenderParams, "ghost_level", job->render);
     addPartOption(render, job->part);
     addLayersInOutputOption(render, job->layersInOutput);
     addShotOptions(render, job->shot);
