@@ -305,14 +305,27 @@ void addStarburst(const Lens& lens, const lens::PupilDirt& dirt,
     // frame or not) is not exactly its integral: each wavelength's pattern is normalised by
     // that sum, so the pixels hold exactly `share` of the light, less what falls off the frame.
     const int fx0 = int(std::floor(-reach)), fx1 = int(std::ceil(reach));
+    // The PSF is one period of a discrete transform on a square grid: a spike is cut where it
+    // meets the square, at a distance that depends on its direction, and its tail wraps round
+    // to the opposite edge, where it shows as a hooked tip. A radial window ends every spike
+    // alike, well inside the grid: 1 out to kSpikeFadeStart of the grid's half size, easing
+    // (smoothstep) to 0 at kSpikeFadeEnd.
+    constexpr double kSpikeFadeStart = 0.55, kSpikeFadeEnd = 0.9;
+    const auto windowed = [&](double x, double y) {
+        const double r = std::hypot(x, y) / (kPsfSize / 2.0);
+        if (r >= kSpikeFadeEnd) return 0.0;
+        const double t =
+            std::clamp((kSpikeFadeEnd - r) / (kSpikeFadeEnd - kSpikeFadeStart), 0.0, 1.0);
+        return t * t * (3.0 - 2.0 * t) * lens::samplePsf(psf, x, y);
+    };
     for (const lens::SpectralSample& s : samples) {
         const double samplesPerPixel = (kPsfSize / 2.0) / (radiusPx * s.lambdaNm / 550.0);
         const double ox = light.x - std::floor(light.x), oy = light.y - std::floor(light.y);
         double total = 0;
         for (int dy = fx0; dy <= fx1; ++dy)
             for (int dx = fx0; dx <= fx1; ++dx)
-                total += lens::samplePsf(psf, (dx + 0.5 - ox) * samplesPerPixel,
-                                         (dy + 0.5 - oy) * samplesPerPixel);
+                total +=
+                    windowed((dx + 0.5 - ox) * samplesPerPixel, (dy + 0.5 - oy) * samplesPerPixel);
         if (total <= 0) continue;
         std::array<double, 3> k{};
         for (int c = 0; c < 3; ++c)
@@ -322,8 +335,8 @@ void addStarburst(const Lens& lens, const lens::PupilDirt& dirt,
             for (int y = begin; y < end; ++y) {
                 float* row = out.row(y);
                 for (int x = x0; x <= x1; ++x) {
-                    const double v = lens::samplePsf(psf, (x + 0.5 - light.x) * samplesPerPixel,
-                                                     (y + 0.5 - light.y) * samplesPerPixel);
+                    const double v = windowed((x + 0.5 - light.x) * samplesPerPixel,
+                                              (y + 0.5 - light.y) * samplesPerPixel);
                     if (v == 0.0) continue;
                     float* p = row + 4 * x;
                     p[0] += float(v * k[0]), p[1] += float(v * k[1]), p[2] += float(v * k[2]);

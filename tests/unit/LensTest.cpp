@@ -610,6 +610,32 @@ TEST(Lens, TheDefaultStarburstIsSmoothAlongItsSpikes) {
     EXPECT_LT(smooth, 0.35 * beaded) << "3: " << beaded << ", 32: " << smooth;
 }
 
+// The spikes end alike in every direction, inside the PSF's grid: nothing is drawn past 0.9 of
+// the grid's half size at the longest wavelength, where a spike met the square's edge at a
+// distance set by its direction and its tail wrapped round as a hooked tip.
+TEST(Lens, StarburstSpikesEndInsideTheGridWithoutWrappedTips) {
+    auto lens = loadLens("asahi-takumar-50");
+    ASSERT_TRUE(lens.ok());
+    LensRenderOptions o;
+    o.ghosts = 0, o.glare = 0, o.starburst = 0.1, o.starburstSize = 0.2;
+    LensLight light;
+    light.x = 200.5, light.y = 200.5;
+    light.energy = {1e4, 1e4, 1e4};
+    auto layers = renderLensFlare(*lens, 400, 400, {light}, o);
+    ASSERT_TRUE(layers.ok());
+    // The grid's half size is the 550 nm radius; the longest sampled wavelength is just under
+    // 700 nm.
+    const double radius = 0.2 * std::hypot(400.0, 400.0), reach = 0.9 * radius * 700.0 / 550.0;
+    double inside = 0, outside = 0;
+    for (int y = 0; y < 400; ++y)
+        for (int x = 0; x < 400; ++x) {
+            const double v = layers->starburst.at(x, y).g;
+            (std::hypot(x + 0.5 - light.x, y + 0.5 - light.y) > reach + 1 ? outside : inside) += v;
+        }
+    EXPECT_GT(inside, 0.0);
+    EXPECT_EQ(outside, 0.0);
+}
+
 TEST(Lens, StarburstCarriesItsShareAndDirtChangesOnlyItsPattern) {
     const Lens lens = shipped("angenieux-double-gauss");
     LensLight light;
