@@ -51,10 +51,8 @@ struct LensCoating {
 //!   reflectance minima either side of the design wavelength and a small residual peak at it, so
 //!   a surface's ghost takes the design wavelength's colour (green at 520, amber at 590, blue at
 //!   470), the mixed greens, ambers and blues of a multi-coated lens;
-//! - vcoat: two quarter-wave layers, MgF2 outside and CeF3 against the glass: near zero at the
-//!   design wavelength only, a steep V with strong violet and red residuals.
-enum class CoatingDesign { Mgf2, Broadband, VCoat };
-inline constexpr std::string_view kCoatingDesignNames[] = {"mgf2", "broadband", "vcoat"};
+enum class CoatingDesign { Mgf2, Broadband };
+inline constexpr std::string_view kCoatingDesignNames[] = {"mgf2", "broadband"};
 
 //! Layer indices of the designs (Macleod, Thin-Film Optical Filters, 2001, tables of coating
 //! materials): MgF2 1.38, CeF3 1.63, ZrO2 2.05.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/Parallel.h"
+#include "core/Smoothstep.h"
 #include "flarekit/Flare.h"
 #include "flarekit/Tonemap.h"
 
@@ -16,11 +17,6 @@ namespace {
 //! The reach of a light's expansion: full within twice its radius plus 4 px (the disc the
 //! finder keeps out of the search as the light's own glare), easing to 0 at kFadeReach times it.
 constexpr float kReachRadii = 2.f, kReachSlackPx = 4.f, kFadeReach = 1.5f;
-
-float smoothstep01(float t) {
-    t = std::clamp(t, 0.f, 1.f);
-    return t * t * (3.f - 2.f * t);
-}
 
 }  // namespace
 

@@ -22,7 +22,7 @@ constexpr double kMinDesignNm = 380.0, kMaxDesignNm = 780.0;
 constexpr std::size_t kMaxCoatingLayers = 16;
 
 constexpr const char* kCoatingForms =
-    "\"none\", \"mgf2\", \"broadband\", \"vcoat\", {\"design\": NAME, \"design_nm\": "
+    "\"none\", \"mgf2\", \"broadband\", {\"design\": NAME, \"design_nm\": "
     "380-780}, {\"n\": 1-3, \"thickness_nm\": 0-10000} or {\"layers\": [{\"n\", "
     "\"thickness_nm\"}, ...]}";
 
@@ -66,7 +66,7 @@ Result<LensCoating> readDesign(const nlohmann::json& v, const JsonPlace& place) 
             return (place / key)
                 .fail("expected \"design\" (a name) or \"design_nm\", got " + jsonExcerpt(value));
     }
-    if (design < 0) return (place / "design").fail("expected \"mgf2\", \"broadband\" or \"vcoat\"");
+    if (design < 0) return (place / "design").fail("expected \"mgf2\" or \"broadband\"");
     if (!(designNm >= kMinDesignNm && designNm <= kMaxDesignNm))
         return (place / "design_nm")
             .fail("expected a wavelength in [380, 780] nm, got " + formatParamNumber(designNm));

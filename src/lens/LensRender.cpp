@@ -12,6 +12,7 @@
 
 #include "core/Interrupt.h"
 #include "core/Parallel.h"
+#include "core/Smoothstep.h"
 #include "flarekit/Color.h"
 #include "flarekit/Lens.h"
 #include "flarekit/ParamText.h"
@@ -314,9 +315,8 @@ void addStarburst(const Lens& lens, const lens::PupilDirt& dirt,
     const auto windowed = [&](double x, double y) {
         const double r = std::hypot(x, y) / (kPsfSize / 2.0);
         if (r >= kSpikeFadeEnd) return 0.0;
-        const double t =
-            std::clamp((kSpikeFadeEnd - r) / (kSpikeFadeEnd - kSpikeFadeStart), 0.0, 1.0);
-        return t * t * (3.0 - 2.0 * t) * lens::samplePsf(psf, x, y);
+        return smoothstep01((kSpikeFadeEnd - r) / (kSpikeFadeEnd - kSpikeFadeStart)) *
+               lens::samplePsf(psf, x, y);
     };
     for (const lens::SpectralSample& s : samples) {
         const double samplesPerPixel = (kPsfSize / 2.0) / (radiusPx * s.lambdaNm / 550.0);

@@ -48,8 +48,6 @@ LensCoating coatingDesign(CoatingDesign design, double designNm) {
             return {{quarterWave(kMgF2Index, designNm),
                      {kZrO2Index, designNm / (2.0 * kZrO2Index)},
                      quarterWave(kCeF3Index, designNm)}};
-        case CoatingDesign::VCoat:
-            return {{quarterWave(kMgF2Index, designNm), quarterWave(kCeF3Index, designNm)}};
     }
     return {};
 }

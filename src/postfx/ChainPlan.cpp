@@ -57,7 +57,7 @@ void addBloom(ChainPlan& plan, const PostFxParams& p) {
 void addGhostsAndHalo(ChainPlan& plan, const PostFxParams& p) {
     const Size work = plan.work();
     const Vec2 invWork = inverseSize(work.width, work.height);
-    GhostsUniforms ghosts{invWork, invWork, p.ghosts, p.flareIntensity};
+    GhostsUniforms ghosts = ghostsUniforms(invWork, invWork, p.ghosts, p.flareIntensity);
     const bool ghostsOn = !ghosts.ghosts.empty() && ghosts.intensity > 0.f;
     add(plan, "ghosts", ghostsOn ? PassUniforms(std::move(ghosts)) : PassUniforms(ClearStep{}),
         {plan.bloom}, named(BufferKind::Ghosts));

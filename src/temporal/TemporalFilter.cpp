@@ -2,17 +2,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Smoothstep.h"
 #include "flarekit/ParamText.h"
 #include "flarekit/Temporal.h"
 
 namespace flarekit {
-
-namespace {
-double smoothstep01(double x) {
-    x = std::clamp(x, 0.0, 1.0);
-    return x * x * (3 - 2 * x);
-}
-}  // namespace
 
 Status validateTemporalParams(const TemporalParams& p) {
     return validateParams<TemporalParams>(p, kTemporalParams, "");

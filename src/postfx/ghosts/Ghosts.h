@@ -39,7 +39,8 @@ struct GhostsUniforms {
     Vec2 invOutSize;
     Vec2 sourceTexel;  //!< 1 / bloom size (g_vSourceDimensions)
     std::vector<GhostParams> ghosts;
-    float intensity = 1.f;  //!< flareIntensity
+    float intensity = 1.f;   //!< flareIntensity
+    std::vector<Rgb> tints;  //!< ghostTint of each ghost, once per pass (ghostsUniforms)
 };
 
 //! Rec. 709 luminance weights: the tint's luminance is what `saturation` keeps.
@@ -57,7 +58,16 @@ inline Rgb ghostTint(const GhostParams& g) {
     return tint;
 }
 
-inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, Vec2 uv) {
+//! The pass's uniforms, each ghost's tint resolved once (as the shader receives it).
+inline GhostsUniforms ghostsUniforms(Vec2 invOutSize, Vec2 sourceTexel,
+                                     const std::vector<GhostParams>& ghosts, float intensity) {
+    GhostsUniforms u{invOutSize, sourceTexel, ghosts, intensity, {}};
+    for (const GhostParams& g : ghosts) u.tints.push_back(ghostTint(g));
+    return u;
+}
+
+inline F4 ghostPixel(const GhostParams& g, const Rgb& base, Vec2 sourceTexel, const Tex& bloom,
+                     Vec2 uv) {
     const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale, ((1.f - uv.y) * 2.f - 1.f) * g.scale};
     const float len = std::sqrt(n.x * n.x + n.y * n.y);
     const Vec2 toward = len > 0.f ? Vec2{-n.x / len, -n.y / len} : Vec2{0.f, 0.f};
@@ -67,7 +77,6 @@ inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, V
     // The falloff is weighed once, at the unblurred point n: per sample it would cost a pow per
     // tap for a difference the blur hides.
     const float weight = centreFalloff(n, g.falloff);
-    const Rgb base = ghostTint(g);
     const F4 tint{base[0] * weight, base[1] * weight, base[2] * weight, 0.f};
     F4 sum = splat(0.f);
     for (int i = 0; i < g.samples; ++i) {
@@ -85,7 +94,8 @@ inline F4 ghostPixel(const GhostParams& g, Vec2 sourceTexel, const Tex& bloom, V
 inline F4 ghostsPixel(const GhostsUniforms& u, const Tex& bloom, int x, int y) {
     const Vec2 uv = pixelUv(x, y, u.invOutSize);
     F4 total = splat(0.f);
-    for (const GhostParams& g : u.ghosts) total += ghostPixel(g, u.sourceTexel, bloom, uv);
+    for (std::size_t i = 0; i < u.ghosts.size(); ++i)
+        total += ghostPixel(u.ghosts[i], u.tints[i], u.sourceTexel, bloom, uv);
     return rgbOnly(total * u.intensity);
 }
 
@@ -104,7 +114,7 @@ void bindUniforms(const GhostsUniforms& u, Sink& s) {
         const auto at = [i](const char* array) {
             return std::string(array) + "[" + std::to_string(i) + "]";
         };
-        s.set(at("tints").c_str(), ghostTint(g)), s.set(at("scales").c_str(), g.scale);
+        s.set(at("tints").c_str(), u.tints[i]), s.set(at("scales").c_str(), g.scale);
         s.set(at("blurs").c_str(), g.blur), s.set(at("thresholds").c_str(), g.threshold);
         s.set(at("falloffs").c_str(), g.falloff), s.set(at("sampleCounts").c_str(), g.samples);
         s.set(at("centered").c_str(), int(g.centered)),
