@@ -3,7 +3,6 @@
 // computed once; each candidate is grown from its own peak by a flood fill that visits only
 // pixels near that peak, and judged against the ring of pixels around it.
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +16,8 @@
 #include "core/LuminanceSample.h"
 #include "core/Parallel.h"
 #include "core/RadixSort.h"
+#include "flare/LightRings.h"
+#include "flare/LuminanceMap.h"
 #include "flarekit/Color.h"
 #include "flarekit/Flare.h"
 
@@ -24,19 +25,11 @@ namespace flarekit {
 
 namespace {
 
+using namespace lightfinder;
+
 //! Regions examined at most: far more lights than any flare shows, few enough that the ring
 //! sampling (kRingSamples each) stays a small fraction of one pass over a 1080p frame.
 constexpr std::size_t kMaxCandidates = 256;
-//! A display-referred pixel is clipped to white when its luminance reaches this (sRGB grey 243
-//! is 0.90 linear): a light burns out all three channels, with JPEG noise and a warm cast
-//! just under 255, while a saturated orange leaf or a pink sky clips one channel only.
-constexpr float kClipLevel = 0.9f;
-//! What an 8/16-bit light needs at its core: every channel at the file's white, the top code,
-//! or the file's own white point when it stops short of it (limited-range video whites at code
-//! 235; a JPEG of a clipped sun often peaks at 250-254), within kWhiteToleranceCodes of it for
-//! JPEG's ringing. A bright but unclipped region (water under a soft sky, snow, a lit wall, a
-//! cloud) or a warm highlight clipped in one channel has no such core.
-constexpr float kLowestWhiteCode = 235.f, kWhiteToleranceCodes = 3.f;
 //! A light's region (its pixels within 90% of its peak) is mostly its core at white: past the
 //! clipped disc a lens's glare falls steeply, so the band between white and 90% is a thin ring
 //! (blender-data's suns rendered to 8-bit: 67-84% at white). A sunlit white object is a broad
@@ -46,9 +39,6 @@ constexpr float kMinWhiteShare = 0.4f;
 //! disc and its brightest fringe (a real sun falls from 31,000 to the sky's 50 within two
 //! pixels), not the sky around it.
 constexpr float kSourceFraction = 0.25f;
-//! The ring judged for prominence: from max(2R, R + 2 px) to max(4R, R + 6 px); the rim
-//! judged for a halo: from R + 1 px to 1.5R + 2 px; each sampled on 4 circles of 64 points.
-constexpr int kRingCircles = 4, kRingAngles = 64;
 //! Display-referred shape limits: a light is a compact blob (most of a sun's clipped glare lies
 //! within 1.25 radii of its centre, even cut by branches; a cloud or a lit edge spreads out), no
 //! smaller than 0.4% of the frame height in radius (a 4-pixel glint on a boat is not a light at
@@ -92,89 +82,6 @@ std::string format(const char* fmt, double a, double b = 0) {
     char buf[160];
     std::snprintf(buf, sizeof buf, fmt, a, b);
     return buf;
-}
-
-struct LuminanceMap {
-    int w = 0, h = 0;
-    // Pixel memory (see Image.h): every element is written by luminanceMap, none cleared first.
-    std::vector<float, PixelAllocator<float>> lum;
-    float brightestChannel = 0.f;  //!< of the whole frame: decides display- or scene-referred
-    std::size_t peakIndex = 0;     //!< the first pixel (raster order) of the largest luminance
-    //! Display-referred frames: 1 where every channel is at the file's white (kLowestWhiteCode).
-    std::vector<std::uint8_t> atWhite;
-    float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
-    bool clipped(std::size_t i) const { return lum[i] >= kClipLevel; }
-    bool whiteCore(std::size_t i) const { return !atWhite.empty() && atWhite[i] != 0; }
-};
-
-//! A file's own white point below the top code counts only where the file piles pixels up
-//! there, as a clip does (a sun's clipped disc is hundreds of pixels at one level); a natural
-//! highlight's brightest level is held by a handful of pixels.
-constexpr std::size_t kWhitePlateauPixels = 16;
-
-//! The pixels of a display-referred frame whose three channels reach its white: the top code,
-//! or the brightest neutral level of the file if it stops between kLowestWhiteCode and the top
-//! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes.
-//! `brightestNeutral`: the frame's largest min(R, G, B), from the luminance pass.
-void markWhite(const Image& image, float brightestNeutral, LuminanceMap& m) {
-    auto minChannel = [](const Rgba& p) { return std::min({p.r, p.g, p.b}); };
-    const float white = std::min(1.f, brightestNeutral);
-    const float whiteCode = linearToSrgb(white) * 255.f;
-    m.atWhite.assign(m.lum.size(), 0);
-    if (whiteCode < kLowestWhiteCode - 0.5f) return;  // nothing in the file reaches a white
-    auto countAtLeast = [&](float level, bool mark) {
-        std::atomic<std::size_t> count{0};
-        parallelFor(0, m.h, 32, [&](int y0, int y1) {
-            std::size_t n = 0;
-            for (int y = y0; y < y1; ++y) {
-                const Rgba* row = &image.at(0, y);
-                std::uint8_t* out = &m.atWhite[std::size_t(y) * std::size_t(m.w)];
-                for (int x = 0; x < m.w; ++x) {
-                    const bool at = minChannel(row[x]) >= level;
-                    n += at;
-                    if (mark) out[x] = at ? 1 : 0;
-                }
-            }
-            count += n;
-        });
-        return count.load();
-    };
-    if (whiteCode < 254.5f &&
-        countAtLeast(srgbToLinear((whiteCode - 0.5f) / 255.f), false) < kWhitePlateauPixels)
-        return;  // a natural highlight, not a white point
-    countAtLeast(srgbToLinear((std::round(whiteCode) - kWhiteToleranceCodes) / 255.f), true);
-}
-
-LuminanceMap luminanceMap(const Image& image) {
-    LuminanceMap m{image.width(), image.height(), {}, {}, {}, {}};
-    m.lum.resize(image.pixelCount());
-    std::vector<float> rowBrightest(std::size_t(m.h), 0.f), rowWhite(std::size_t(m.h), 0.f);
-    std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
-    parallelFor(0, m.h, 32, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            const Rgba* row = &image.at(0, y);
-            const std::size_t first = std::size_t(y) * std::size_t(m.w);
-            float brightest = 0.f, white = 0.f;
-            std::size_t peak = first;
-            for (int x = 0; x < m.w; ++x) {
-                const std::size_t i = first + std::size_t(x);
-                const float l = luminance(row[x].r, row[x].g, row[x].b);
-                m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
-                if (m.lum[i] > m.lum[peak]) peak = i;
-                brightest = std::max({brightest, row[x].r, row[x].g, row[x].b});
-                white = std::max(white, std::min({row[x].r, row[x].g, row[x].b}));
-            }
-            rowBrightest[std::size_t(y)] = brightest;
-            rowWhite[std::size_t(y)] = white;
-            rowPeak[std::size_t(y)] = peak;
-        }
-    });
-    m.brightestChannel = *std::max_element(rowBrightest.begin(), rowBrightest.end());
-    for (const std::size_t peak : rowPeak)
-        if (m.lum[peak] > m.lum[m.peakIndex]) m.peakIndex = peak;
-    if (isDisplayReferred(m.brightestChannel))
-        markWhite(image, *std::max_element(rowWhite.begin(), rowWhite.end()), m);
-    return m;
 }
 
 //! A float's bits: for non-negative values they order as the values do.
@@ -223,86 +130,6 @@ float medianLuminance(const LuminanceMap& m) {
     std::vector<float> sample;
     for (std::size_t i = 0; i < m.lum.size(); i += stride) sample.push_back(m.lum[i]);
     return std::max(medianOf(sample), 1e-4f);
-}
-
-//! Calls `visit(luminance)` for each sample of the ring [inner, outer] around c that lies inside
-//! the frame: kRingCircles circles of kRingAngles points, every other circle turned half a step.
-template <class Visit>
-void forRingSamples(const LuminanceMap& m, Point c, float inner, float outer, Visit&& visit) {
-    for (int i = 0; i < kRingCircles; ++i) {
-        const float r = inner + (outer - inner) * float(i) / float(kRingCircles - 1);
-        for (int a = 0; a < kRingAngles; ++a) {
-            const float angle = 2.f * std::numbers::pi_v<float> * (float(a) + 0.5f * float(i & 1)) /
-                                float(kRingAngles);
-            const int x = int(std::floor(c.x + r * std::cos(angle)));
-            const int y = int(std::floor(c.y + r * std::sin(angle)));
-            if (x < 0 || y < 0 || x >= m.w || y >= m.h) continue;
-            visit(m.at(x, y));
-        }
-    }
-}
-
-//! Mean luminance of the ring [inner, outer] around c (pixels inside the frame only; -1 if none).
-float ringMean(const LuminanceMap& m, Point c, float inner, float outer) {
-    double sum = 0;
-    int n = 0;
-    forRingSamples(m, c, inner, outer, [&](float l) { sum += l, ++n; });
-    return n ? float(sum / n) : -1.f;
-}
-
-//! The aureole is followed outward on rings from R + 1 px, each kAureoleStep times the last
-//! radius plus a pixel (so a 1-pixel sun's glow of 100 px takes about 20 rings), no further
-//! than kAureoleReachOfHeight of the frame height (a hazy sun's glow spans a tenth to a fifth of
-//! a wide frame), while each ring's mean stays below kAureoleFalling of the ring inside it.
-constexpr float kAureoleStep = 1.2f, kAureoleReachOfHeight = 0.25f, kAureoleFalling = 0.98f;
-
-struct Aureole {
-    double flux = 0;
-    int rings = 0;
-};
-
-//! The upper quartile of the luminance on the ring [inner, outer] around c (pixels inside the
-//! frame; -1 if none): the aureole's level at that radius where it is seen. A sun low over the
-//! horizon has the sea or a skyline under half of every ring, and a glitter path on the water,
-//! a branch or a mast crosses a few of its angles; all of them move a mean or a median, not the
-//! brighter quarter of the ring.
-float ringUpperQuartile(const LuminanceMap& m, Point c, float inner, float outer) {
-    std::vector<float> samples;
-    samples.reserve(kRingCircles * kRingAngles);
-    forRingSamples(m, c, inner, outer, [&](float l) { samples.push_back(l); });
-    if (samples.empty()) return -1.f;
-    const auto quartile = samples.begin() + std::ptrdiff_t(samples.size() * 3 / 4);
-    std::nth_element(samples.begin(), quartile, samples.end());
-    return *quartile;
-}
-
-//! The light a candidate's aureole carries: over the rings around it whose upper quartile keeps
-//! falling, each ring's excess over the level where the falling stops (the local sky), times
-//! its area.
-Aureole measureAureole(const LuminanceMap& m, Point c, float radius) {
-    std::vector<std::pair<float, float>> rings;  // (inner radius, mean) of each ring
-    const float reach = kAureoleReachOfHeight * float(m.h);
-    float inner = radius + 1.f, last = std::numeric_limits<float>::infinity();
-    while (inner < reach) {
-        const float outer = inner * kAureoleStep + 1.f;
-        const float mean = ringUpperQuartile(m, c, inner, outer);
-        if (mean < 0.f || !(mean < kAureoleFalling * last)) {
-            rings.push_back({inner, std::max(mean, 0.f)});
-            break;
-        }
-        rings.push_back({inner, mean});
-        last = mean, inner = outer;
-    }
-    Aureole a;
-    if (rings.size() < 2) return a;
-    const float sky = rings.back().second;
-    for (std::size_t k = 0; k + 1 < rings.size(); ++k) {
-        const double r0 = rings[k].first, r1 = rings[k + 1].first;
-        a.flux +=
-            std::max(0.0, double(rings[k].second - sky)) * std::numbers::pi * (r1 * r1 - r0 * r0);
-    }
-    a.rings = int(rings.size()) - 1;
-    return a;
 }
 
 //! A pixel by its coordinates: the flood fill and the compactness count work in them, with no

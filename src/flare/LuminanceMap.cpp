@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "flare/LuminanceMap.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include "core/LuminanceSample.h"
+#include "core/Parallel.h"
+#include "flarekit/Color.h"
+#include "flarekit/Flare.h"
+
+namespace flarekit::lightfinder {
+
+namespace {
+
+//! A file's own white point below the top code counts only where the file piles pixels up
+//! there, as a clip does (a sun's clipped disc is hundreds of pixels at one level); a natural
+//! highlight's brightest level is held by a handful of pixels.
+constexpr std::size_t kWhitePlateauPixels = 16;
+
+//! The pixels of a display-referred frame whose three channels reach its white: the top code,
+//! or the brightest neutral level of the file if it stops between kLowestWhiteCode and the top
+//! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes.
+//! `brightestNeutral`: the frame's largest min(R, G, B), from the luminance pass.
+void markWhite(const Image& image, float brightestNeutral, LuminanceMap& m) {
+    auto minChannel = [](const Rgba& p) { return std::min({p.r, p.g, p.b}); };
+    const float white = std::min(1.f, brightestNeutral);
+    const float whiteCode = linearToSrgb(white) * 255.f;
+    m.atWhite.assign(m.lum.size(), 0);
+    if (whiteCode < kLowestWhiteCode - 0.5f) return;  // nothing in the file reaches a white
+    auto countAtLeast = [&](float level, bool mark) {
+        std::atomic<std::size_t> count{0};
+        parallelFor(0, m.h, 32, [&](int y0, int y1) {
+            std::size_t n = 0;
+            for (int y = y0; y < y1; ++y) {
+                const Rgba* row = &image.at(0, y);
+                std::uint8_t* out = &m.atWhite[std::size_t(y) * std::size_t(m.w)];
+                for (int x = 0; x < m.w; ++x) {
+                    const bool at = minChannel(row[x]) >= level;
+                    n += at;
+                    if (mark) out[x] = at ? 1 : 0;
+                }
+            }
+            count += n;
+        });
+        return count.load();
+    };
+    if (whiteCode < 254.5f &&
+        countAtLeast(srgbToLinear((whiteCode - 0.5f) / 255.f), false) < kWhitePlateauPixels)
+        return;  // a natural highlight, not a white point
+    countAtLeast(srgbToLinear((std::round(whiteCode) - kWhiteToleranceCodes) / 255.f), true);
+}
+
+}  // namespace
+
+LuminanceMap luminanceMap(const Image& image) {
+    LuminanceMap m{image.width(), image.height(), {}, {}, {}, {}};
+    m.lum.resize(image.pixelCount());
+    std::vector<float> rowBrightest(std::size_t(m.h), 0.f), rowWhite(std::size_t(m.h), 0.f);
+    std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
+    parallelFor(0, m.h, 32, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            const Rgba* row = &image.at(0, y);
+            const std::size_t first = std::size_t(y) * std::size_t(m.w);
+            float brightest = 0.f, white = 0.f;
+            std::size_t peak = first;
+            for (int x = 0; x < m.w; ++x) {
+                const std::size_t i = first + std::size_t(x);
+                const float l = luminance(row[x].r, row[x].g, row[x].b);
+                m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
+                if (m.lum[i] > m.lum[peak]) peak = i;
+                brightest = std::max({brightest, row[x].r, row[x].g, row[x].b});
+                white = std::max(white, std::min({row[x].r, row[x].g, row[x].b}));
+            }
+            rowBrightest[std::size_t(y)] = brightest;
+            rowWhite[std::size_t(y)] = white;
+            rowPeak[std::size_t(y)] = peak;
+        }
+    });
+    m.brightestChannel = *std::max_element(rowBrightest.begin(), rowBrightest.end());
+    for (const std::size_t peak : rowPeak)
+        if (m.lum[peak] > m.lum[m.peakIndex]) m.peakIndex = peak;
+    if (isDisplayReferred(m.brightestChannel))
+        markWhite(image, *std::max_element(rowWhite.begin(), rowWhite.end()), m);
+    return m;
+}
+
+}  // namespace flarekit::lightfinder

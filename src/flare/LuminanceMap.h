@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: Apache-2.0
+// The light finder's luminance pass: each pixel's linear luminance once, the frame's brightest
+// channel and peak, and (8/16-bit frames) which pixels sit at the file's white.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "flarekit/Image.h"
+
+namespace flarekit::lightfinder {
+
+//! A display-referred pixel is clipped to white when its luminance reaches this (sRGB grey 243
+//! is 0.90 linear): a light burns out all three channels, with JPEG noise and a warm cast
+//! just under 255, while a saturated orange leaf or a pink sky clips one channel only.
+constexpr float kClipLevel = 0.9f;
+//! What an 8/16-bit light needs at its core: every channel at the file's white, the top code,
+//! or the file's own white point when it stops short of it (limited-range video whites at code
+//! 235; a JPEG of a clipped sun often peaks at 250-254), within kWhiteToleranceCodes of it for
+//! JPEG's ringing. A bright but unclipped region (water under a soft sky, snow, a lit wall, a
+//! cloud) or a warm highlight clipped in one channel has no such core.
+constexpr float kLowestWhiteCode = 235.f, kWhiteToleranceCodes = 3.f;
+
+struct LuminanceMap {
+    int w = 0, h = 0;
+    // Pixel memory (see Image.h): every element is written by luminanceMap, none cleared first.
+    std::vector<float, PixelAllocator<float>> lum;
+    float brightestChannel = 0.f;  //!< of the whole frame: decides display- or scene-referred
+    std::size_t peakIndex = 0;     //!< the first pixel (raster order) of the largest luminance
+    //! Display-referred frames: 1 where every channel is at the file's white (kLowestWhiteCode).
+    std::vector<std::uint8_t> atWhite;
+    float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
+    bool clipped(std::size_t i) const { return lum[i] >= kClipLevel; }
+    bool whiteCore(std::size_t i) const { return !atWhite.empty() && atWhite[i] != 0; }
+};
+
+//! The luminance pass over `image` (the white core marked where it is display-referred).
+LuminanceMap luminanceMap(const Image& image);
+
+}  // namespace flarekit::lightfinder
