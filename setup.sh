@@ -31,11 +31,12 @@ case "$job" in
     cmake -S . -B build-nogl -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_BENCH=OFF \
       -DFLAREKIT_WERROR="$werror"
     cmake --build build-nogl -j"$(nproc)"
-    ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure
+    ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure -LE slow
     # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the whole suite again,
     # except the package test and the documentation's blocks (they build examples against the
     # installed library with the system compiler's plain flags, which cannot link an
-    # instrumented library). Leak checking
+    # instrumented library) and the `slow` accuracy sweeps (the same tracer code the unit tests
+    # run, for minutes more: the main build runs them). Leak checking
     # is off here: Mesa unloads its driver at eglTerminate, so its one-time allocations are
     # reported against "<unknown module>" and cannot be suppressed by name, and libstdc++ and
     # OIIO have no frame pointers for the fast unwinder. The fuzz targets (no GL) check leaks.
@@ -44,7 +45,7 @@ case "$job" in
     cmake --build build-asan -j"$(nproc)"
     ASAN_OPTIONS=detect_leaks=0:strict_string_checks=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^(Package|DocBlocks)'
+      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^(Package|DocBlocks)' -LE slow
     FLAREKIT_WERROR="$werror" ./scripts/fuzz.sh 60
     ;;
 esac

@@ -24,12 +24,18 @@ const Lens& zoom() {
     return lens;
 }
 
+//! Argument: GhostQuery::ghostRays (0: the 64-ray beam alone; 32768: the default refinement).
 void BM_GhostAnalysis(benchmark::State& state) {
     GhostQuery q;
     q.angleXDeg = 5, q.angleYDeg = 2;
+    q.ghostRays = int(state.range(0));
     for (auto _ : state) benchmark::DoNotOptimize(analyseGhosts(zoom(), q).ok());
 }
-BENCHMARK(BM_GhostAnalysis)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GhostAnalysis)
+    ->Arg(0)
+    ->Arg(kDefaultGhostRays)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 //! The power spectrum behind one iris's PSF: an N x N disc pupil (lens render uses N = 512).
 void BM_StarburstSpectrum(benchmark::State& state) {

@@ -20,6 +20,8 @@ class SplitMix64 {
     }
     //! Uniform in [0, 1): the top 24 bits, exactly representable in a float.
     float nextFloat() { return float(next() >> 40) * 0x1.0p-24f; }
+    //! Uniform in [0, 1): the top 53 bits, exactly representable in a double.
+    double nextDouble() { return double(next() >> 11) * 0x1.0p-53; }
 
   private:
     std::uint64_t m_state;

@@ -128,21 +128,25 @@ std::array<double, 2> fieldAngle(const TraceLens& t, double focal, double x, dou
 Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens::Vec dir, int side,
                const SensorMap& map) {
     Mesh m;
-    m.side = side;
-    m.rays.resize(std::size_t(side) * std::size_t(side));
     const double sa = t.surfaces.front().semiAperture;
+    // The grid's spacing stays that of `side` vertices over the clear diameter; an oblique beam
+    // adds rows and columns so that the light entering past the square is drawn too (the first
+    // surface's clear aperture masks the rest per pixel).
+    const double spacing = 2.0 * sa / (side - 1);
+    const int margin = lens::beamMargin(t, dir, spacing);
+    m.side = side + 2 * margin;
+    m.rays.resize(std::size_t(m.side) * std::size_t(m.side));
     m.minY = 1e30, m.maxY = -1e30;
-    for (int iy = 0; iy < side; ++iy) {
-        for (int ix = 0; ix < side; ++ix) {
-            const double x = sa * (2.0 * ix / (side - 1) - 1.0),
-                         y = sa * (2.0 * iy / (side - 1) - 1.0);
+    for (int iy = 0; iy < m.side; ++iy) {
+        for (int ix = 0; ix < m.side; ++ix) {
+            const double x = -sa + (ix - margin) * spacing, y = -sa + (iy - margin) * spacing;
             RayResult r = lens::traceRay(t, path, lens::beamOrigin(t, dir, x, y), dir, false);
             if (r.alive) {
                 r.x = lens::snapToSubpixel(map.toPxX(r.x)),
                 r.y = lens::snapToSubpixel(map.toPxY(r.y));
                 m.minY = std::min(m.minY, r.y), m.maxY = std::max(m.maxY, r.y);
             }
-            m.rays[std::size_t(iy) * std::size_t(side) + std::size_t(ix)] = r;
+            m.rays[std::size_t(iy) * std::size_t(m.side) + std::size_t(ix)] = r;
         }
     }
     return m;
@@ -274,6 +278,7 @@ PickedGhosts pickGhosts(const Lens& lens, std::array<double, 2> angle, int count
     if (count <= 0) return out;
     GhostQuery q;
     q.angleXDeg = angle[0], q.angleYDeg = angle[1], q.gridSide = 16;
+    q.ghostRays = 0;  // the intensities only: positions are drawn from the meshes
     auto report = analyseGhosts(lens, q);
     if (!report) return out;
     for (const GhostFigure& g : report->ghosts) {

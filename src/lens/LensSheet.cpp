@@ -122,6 +122,7 @@ Result<Image> renderLensSheet(const Lens& lens, int width) {
     drawBeam(t, lens::ghostPath(n, -1, -1), field, {0.1f, 0.45f, 0.5f}, cv);
     GhostQuery q;
     q.angleYDeg = field;
+    q.ghostRays = 0;  // the brightest path is all it draws
     auto report = analyseGhosts(lens, q);
     if (!report) return report.error();
     if (!report->ghosts.empty()) {

@@ -105,4 +105,26 @@ bool entersLens(const TraceLens& lens, Vec origin, Vec dir);
 Vec beamDirection(double angleXDeg, double angleYDeg);
 Vec beamOrigin(const TraceLens& lens, Vec dir, double x, double y);
 
+//! The parallel beam `dir` over a grid of `gridSide` cells per clear diameter on the first
+//! surface's vertex plane, widened by beamMargin so that it holds all the light entering the
+//! first surface. One ray at a fixed random place in each cell (stratified jitter, the same for
+//! every wavelength and call): a regular grid's rows line up with the iris's flat edges and
+//! bias compact ghosts.
+struct Beam {
+    Vec dir;
+    double semiAperture = 0, spacing = 0;
+    int margin = 0, cellsPerSide = 0;
+    std::vector<Vec> origins;  //!< the rays that enter the first surface's clear aperture
+    std::vector<int> cells;    //!< the grid cell of each origin, row-major
+    //! The origin of the point (fx, fy) in [0, 1)^2 of grid cell `cell`.
+    Vec origin(const TraceLens& lens, int cell, double fx, double fy) const;
+};
+Beam makeBeam(const TraceLens& lens, Vec dir, int gridSide);
+
+//! Grid steps of `spacing` to add on every side of the square [-sa, sa]^2 on the first
+//! surface's vertex plane so that the grid holds every ray of the oblique beam `dir` that
+//! enters the clear aperture: a curved first surface's rim lies sag(sa) from the vertex plane,
+//! and the rays entering there cross that plane sag tan(angle) further out.
+int beamMargin(const TraceLens& lens, Vec dir, double spacing);
+
 }  // namespace flarekit::lens

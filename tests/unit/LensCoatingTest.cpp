@@ -155,6 +155,7 @@ TEST(Lens, ShippedCoatingsGiveTheirGhostsTheirColours) {
             for (LensSurface& s : lens->surfaces) s.coating = {};
         GhostQuery q;
         q.angleXDeg = 8.0, q.gridSide = 24;
+        q.ghostRays = 0;  // colours only
         auto r = analyseGhosts(*lens, q);
         EXPECT_TRUE(r.ok()) << name;
         return r.ok() ? r->ghosts : std::vector<GhostFigure>{};

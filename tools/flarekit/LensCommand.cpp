@@ -48,8 +48,26 @@ nlohmann::json figureJson(const GhostFigure& g) {
     if (g.first >= 0) j["surfaces"] = {g.first, g.second};
     j["center"] = {g.centerX, g.centerY};
     j["radius_mm"] = g.radius;
+    j["radius50_mm"] = g.radius50;
+    j["radius90_mm"] = g.radius90;
+    j["on_sensor"] = g.onSensor;
+    j["beam_share"] = g.beamShare;
     j["intensity"] = {g.intensity[0], g.intensity[1], g.intensity[2]};
     return j;
+}
+
+//! What each figure's field means, written into the JSON beside them.
+nlohmann::json figureFields() {
+    return {{"surfaces", "reflects at the first surface, then at the second (0 = front)"},
+            {"center",
+             "mm on the sensor plane: centroid of the rays landing on the sensor (d line); the "
+             "median of the arriving rays when none lands"},
+            {"radius_mm", "centre to the farthest ray reaching the sensor plane"},
+            {"radius50_mm", "radius around the landing rays' median holding 50% of them"},
+            {"radius90_mm", "radius around the landing rays' median holding 90% of them"},
+            {"on_sensor", "share of the rays reaching the sensor plane that land on the sensor"},
+            {"beam_share", "share of the rays entering the lens that reach the sensor plane"},
+            {"intensity", "share of the light entering the first surface, R G B"}};
 }
 
 int runGhosts(const LensArgs& a) {
@@ -59,12 +77,14 @@ int runGhosts(const LensArgs& a) {
     if (!angle) return report(angle.error());
     GhostQuery q;
     q.angleXDeg = (*angle)[0], q.angleYDeg = (*angle)[1], q.gridSide = a.tool.rays;
+    q.ghostRays = a.tool.ghostRays;
     auto r = analyseGhosts(*lens, q);
     if (!r) return report(r.error());
     if (a.json) {
         nlohmann::json j;
         j["lens"] = lens->name;
         j["focal_length_mm"] = r->focalLength;
+        j["fields"] = figureFields();
         j["direct"] = figureJson(r->direct);
         j["ghosts"] = nlohmann::json::array();
         for (const GhostFigure& g : r->ghosts) j["ghosts"].push_back(figureJson(g));
@@ -73,11 +93,13 @@ int runGhosts(const LensArgs& a) {
     }
     std::printf("%s: f = %.3f mm, %zu ghosts at %g,%g degrees\n", lens->name.c_str(),
                 r->focalLength, r->ghosts.size(), q.angleXDeg, q.angleYDeg);
-    std::printf("%-8s %10s %10s %10s %12s %12s %12s\n", "path", "x mm", "y mm", "radius mm", "R",
-                "G", "B");
+    std::printf("%-8s %10s %10s %10s %8s %12s %12s %12s\n", "path", "x mm", "y mm", "r90 mm",
+                "sensor", "R", "G", "B");
+    // A ghost most of whose rays miss the sensor is marked: its centre is that of the part seen.
     const auto row = [](const std::string& name, const GhostFigure& g) {
-        std::printf("%-8s %10.3f %10.3f %10.3f %12.3e %12.3e %12.3e\n", name.c_str(), g.centerX,
-                    g.centerY, g.radius, g.intensity[0], g.intensity[1], g.intensity[2]);
+        std::printf("%-8s %10.3f %10.3f %10.3f %7.0f%% %12.3e %12.3e %12.3e%s\n", name.c_str(),
+                    g.centerX, g.centerY, g.radius90, 100 * g.onSensor, g.intensity[0],
+                    g.intensity[1], g.intensity[2], g.onSensor < 0.5 ? "  mostly off sensor" : "");
     };
     row("direct", r->direct);
     for (const GhostFigure& g : r->ghosts)
@@ -133,6 +155,7 @@ void addLensCommand(CLI::App& app, int& exitCode) {
                      "field angle X,Y in degrees: rays travel along (tan X, tan Y, 1)")
         ->capture_default_str();
     addParamOption<LensToolOptions>(ghosts, kLensToolParams, "rays", args->tool);
+    addParamOption<LensToolOptions>(ghosts, kLensToolParams, "ghost_rays", args->tool);
     ghosts->add_flag("--json", args->json, "print the report as JSON");
     ghosts->callback([args, &exitCode] { exitCode = runGhosts(*args); });
 
