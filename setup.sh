@@ -16,20 +16,35 @@ case "$job" in
   *) echo "usage: $0 demo|test" >&2; exit 2 ;;
 esac
 
+# Each stage's start on stdout, so a log tells where the time went.
+start=$SECONDS
+stage() { echo "== setup.sh: $* (at $((SECONDS - start)) s)"; }
+
+stage "packages"
 ./scripts/install-deps.sh
 
 werror=OFF
 if [ "${CI:-}" = "true" ]; then werror=ON; fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_WERROR="$werror"
+# Every build compiles through ccache (installed above): with the clone as the base directory
+# and the working directory left out of the hash, a fresh clone on this machine reuses what any
+# earlier clone compiled. 5 GB holds the four builds.
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-5G}"
+export FLAREKIT_LAUNCHER="-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
+stage "main build"
+# shellcheck disable=SC2086 # two flags, split on purpose
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_WERROR="$werror" $FLAREKIT_LAUNCHER
 cmake --build build -j"$(nproc)"
 
 case "$job" in
   demo) ./scripts/demo.sh build/flarekit out ;;
   test)
+    stage "format check and main suite"
     ./scripts/check-format.sh
     ctest --test-dir build -j"$(nproc)" --output-on-failure
+    stage "no-GL build and suite"
+    # shellcheck disable=SC2086
     cmake -S . -B build-nogl -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_BENCH=OFF \
-      -DFLAREKIT_WERROR="$werror"
+      -DFLAREKIT_WERROR="$werror" $FLAREKIT_LAUNCHER
     cmake --build build-nogl -j"$(nproc)"
     ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure -LE slow
     # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the whole suite again,
@@ -40,12 +55,18 @@ case "$job" in
     # is off here: Mesa unloads its driver at eglTerminate, so its one-time allocations are
     # reported against "<unknown module>" and cannot be suppressed by name, and libstdc++ and
     # OIIO have no frame pointers for the fast unwinder. The fuzz targets (no GL) check leaks.
+    stage "ASan + UBSan build and suite"
+    # shellcheck disable=SC2086
     cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DFLAREKIT_SANITIZE=address,undefined -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="$werror"
+      -DFLAREKIT_SANITIZE=address,undefined -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="$werror" \
+      $FLAREKIT_LAUNCHER
     cmake --build build-asan -j"$(nproc)"
     ASAN_OPTIONS=detect_leaks=0:strict_string_checks=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^(Package|DocBlocks)' -LE slow
+    stage "fuzz targets"
     FLAREKIT_WERROR="$werror" ./scripts/fuzz.sh 60
+    stage "done"
+    ccache -s
     ;;
 esac

@@ -12,9 +12,11 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(FuzzPreset FuzzPostFxPreset FuzzScene FuzzImageRead FuzzPsp)
 
 if [ "${FLAREKIT_FUZZ_NO_BUILD:-}" != 1 ]; then  # set by callers that run targets in parallel
+# FLAREKIT_LAUNCHER: setup.sh's ccache flags (two words, split on purpose)
+# shellcheck disable=SC2086
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
   -DCMAKE_CXX_COMPILER=clang++ -DFLAREKIT_FUZZ=ON -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_TESTS=OFF \
-  -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="${FLAREKIT_WERROR:-OFF}" >/dev/null
+  -DFLAREKIT_BUILD_BENCH=OFF -DFLAREKIT_WERROR="${FLAREKIT_WERROR:-OFF}" ${FLAREKIT_LAUNCHER:-} >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
 fi
 

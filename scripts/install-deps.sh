@@ -9,6 +9,9 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   # the formatting check of ./setup.sh test (.clang-format)
   clang-format
+  # a compiler cache: setup.sh builds through it, so a fresh clone reuses what an earlier build
+  # on this machine compiled
+  ccache
   # image I/O: EXR, PNG, JPEG and TIFF through their own libraries (fast start-up)
   libopenexr-dev libimath-dev libpng-dev libjpeg62-turbo-dev libtiff-dev
   # OpenEXR's ZIP chunks deflated and inflated by libdeflate instead of zlib (3x faster)

@@ -127,7 +127,11 @@ void placeFigure(const Arrivals& a, const LensSensor& sensor, GhostFigure& g) {
         g.centerX /= double(landed.size()), g.centerY /= double(landed.size());
     }
     std::vector<double> radii;
-    for (const auto& h : spread) radii.push_back(std::hypot(h[0] - medianX, h[1] - medianY));
+    // sqrt, not std::hypot (glibc's is slow): sensor-plane millimetres cannot overflow.
+    for (const auto& h : spread) {
+        const double dx = h[0] - medianX, dy = h[1] - medianY;
+        radii.push_back(std::sqrt(dx * dx + dy * dy));
+    }
     g.radius50 = quantile(radii, 0.5), g.radius90 = quantile(radii, 0.9);
     for (const auto& h : a.hits)
         g.radius = std::max(g.radius, std::hypot(h[0] - g.centerX, h[1] - g.centerY));

@@ -318,7 +318,7 @@ void addStarburst(const Lens& lens, const lens::PupilDirt& dirt,
     // (smoothstep) to 0 at kSpikeFadeEnd.
     constexpr double kSpikeFadeStart = 0.55, kSpikeFadeEnd = 0.9;
     const auto windowed = [&](double x, double y) {
-        const double r = std::hypot(x, y) / (kPsfSize / 2.0);
+        const double r = std::sqrt(x * x + y * y) / (kPsfSize / 2.0);
         if (r >= kSpikeFadeEnd) return 0.0;
         return smoothstep01((kSpikeFadeEnd - r) / (kSpikeFadeEnd - kSpikeFadeStart)) *
                lens::samplePsf(psf, x, y);
