@@ -163,4 +163,9 @@ TEST(LensGhostAccuracy, TheBeamHoldsAllTheLightEnteringACurvedFirstSurface) {
       {"stop": true, "thickness": 60, "semi_aperture": 8}]})");
     const lens::TraceLens tf = lens::prepareTrace(flat, kLineD);
     EXPECT_EQ(lens::makeBeam(tf, lens::beamDirection(12, 0), 64).margin, 0);
+    for (const double angle : {0.0, 12.0, 30.0}) {
+        const lens::Beam b = lens::makeBeam(tf, lens::beamDirection(angle, 0), 256);
+        const double area = double(b.origins.size()) * b.spacing * b.spacing;
+        EXPECT_NEAR(area / (M_PI * 10 * 10), 1.0, 0.002) << angle;
+    }
 }
