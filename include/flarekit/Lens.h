@@ -313,7 +313,7 @@ inline constexpr Param<LensToolOptions> kLensToolParams[] = {
     // 1024^2 rays per wavelength and ghost pair: past it the figures stop changing and one
     // report takes minutes.
     param<&LensToolOptions::rays>("rays", 2, 1024, "",
-                                  "rays per side over the first clear aperture"),
+                                  "the beam's rays per clear diameter of the first surface"),
     // 2^20 arriving rays: a ghost's centre stops changing well before it.
     param<&LensToolOptions::ghostRays>(
         "ghost_rays", 0, 1 << 20, "",
