@@ -134,24 +134,24 @@ void placeFigure(const Arrivals& a, const LensSensor& sensor, GhostFigure& g) {
     }
     g.radius50 = quantile(radii, 0.5), g.radius90 = quantile(radii, 0.9);
     for (const auto& h : a.hits)
-        g.radius = std::max(g.radius, std::hypot(h[0] - g.centerX, h[1] - g.centerY));
+        g.radius = std::max(g.radius, std::sqrt((h[0] - g.centerX) * (h[0] - g.centerX) +
+                                                (h[1] - g.centerY) * (h[1] - g.centerY)));
 }
 
-GhostFigure figure(const Lens& lens, const std::vector<lens::TraceLens>& traces,
-                   const std::vector<Beam>& beams, int first, int second, int ghostRays) {
+GhostFigure figure(const Lens& lens, const std::vector<lens::TraceLens>& traces, const Beam& beam,
+                   int first, int second, int ghostRays) {
     GhostFigure g;
     g.first = first, g.second = second;
     const auto path = lens::ghostPath(int(lens.surfaces.size()), first, second);
     // traces[0] is the d line (geometry), traces[1..3] the R, G, B wavelengths (intensity).
-    placeFigure(traceArrivals(traces[0], beams[0], path, lens.sensor, ghostRays), lens.sensor, g);
+    placeFigure(traceArrivals(traces[0], beam, path, lens.sensor, ghostRays), lens.sensor, g);
     for (std::size_t c = 0; c < 3; ++c) {
-        const Beam& b = beams[c + 1];
         double sum = 0;
-        for (const lens::Vec& o : b.origins) {
-            const lens::RayResult r = lens::traceRay(traces[c + 1], path, o, b.dir, true);
+        for (const lens::Vec& o : beam.origins) {
+            const lens::RayResult r = lens::traceRay(traces[c + 1], path, o, beam.dir, true);
             if (r.alive) sum += r.throughput;
         }
-        g.intensity[c] = b.origins.empty() ? 0.0 : sum / double(b.origins.size());
+        g.intensity[c] = beam.origins.empty() ? 0.0 : sum / double(beam.origins.size());
     }
     return g;
 }
@@ -173,12 +173,13 @@ Result<GhostReport> analyseGhosts(const Lens& lens, const GhostQuery& query) {
     if (Status s = checkLensToolOption("ghost_rays", query.ghostRays); !s) return s.error();
     std::vector<lens::TraceLens> traces{lens::prepareTrace(lens, kLineD)};
     for (const double w : kRgbWavelengthsNm) traces.push_back(lens::prepareTrace(lens, w));
-    std::vector<Beam> beams;
-    const lens::Vec dir = lens::beamDirection(query.angleXDeg, query.angleYDeg);
-    for (const auto& t : traces) beams.push_back(lens::makeBeam(t, dir, query.gridSide));
+    // Which rays enter depends on the first surface's shape alone, not on the wavelength: one
+    // beam serves every trace.
+    const Beam beam = lens::makeBeam(
+        traces[0], lens::beamDirection(query.angleXDeg, query.angleYDeg), query.gridSide);
     GhostReport report;
     report.focalLength = paraxial(lens).focalLength;
-    report.direct = figure(lens, traces, beams, -1, -1, query.ghostRays);
+    report.direct = figure(lens, traces, beam, -1, -1, query.ghostRays);
     std::vector<std::array<int, 2>> pairs;
     const int n = int(lens.surfaces.size());
     for (int i = 0; i < n; ++i) {
@@ -190,7 +191,7 @@ Result<GhostReport> analyseGhosts(const Lens& lens, const GhostQuery& query) {
     report.ghosts.resize(pairs.size());
     parallelFor(0, int(pairs.size()), 1, [&](int begin, int end) {
         for (int k = begin; k < end; ++k)
-            report.ghosts[std::size_t(k)] = figure(lens, traces, beams, pairs[std::size_t(k)][0],
+            report.ghosts[std::size_t(k)] = figure(lens, traces, beam, pairs[std::size_t(k)][0],
                                                    pairs[std::size_t(k)][1], query.ghostRays);
     });
     // A light outside the field still flares, as long as some path reaches the sensor plane.
