@@ -143,6 +143,48 @@ TEST(LensGhostAccuracy, BackwardLegRaysMovingTowardTheSensorStillCrossFromTheBac
     EXPECT_GE(steep, 4);
 }
 
+TEST(LensGhostAccuracy, AGhostCarriedBySteepBackwardLegRaysSitsWhereTheSecondTracerPutsIt) {
+    // Three meniscus surfaces concave to the front, at 24 degrees: ghost 2,0 reflects off the
+    // steep rim of surface 2 so hard that its rays go on toward +z, and they meet surface 1,
+    // on the way back to surface 0, from behind while moving toward the sensor. Every ray of
+    // that ghost that lands is such a ray (found by a search over random four-surface lenses,
+    // then refined), so the whole ghost moves if that crossing is taken as air to air.
+    const Lens lens = parsed(R"({"surfaces": [
+      {"radius": -34.65, "thickness": 6.6, "n_d": 1.8, "semi_aperture": 30.3},
+      {"radius": -36.87, "thickness": 6.25, "semi_aperture": 36.3},
+      {"radius": -40.96, "thickness": 7.7, "n_d": 1.6, "semi_aperture": 38},
+      {"stop": true, "thickness": 3.4, "semi_aperture": 18.25},
+      {"radius": 25.4, "thickness": 48.6, "semi_aperture": 13.1}],
+      "sensor": {"width": 120, "height": 120}})");
+    const double ax = 24, diag = diagonal(lens);
+    const reference::Figure right = reference::measure(lens, ax, 0, 2, 0, 128, 16384);
+    std::printf("ghost 2,0 at %g deg: share %.4f, on sensor %.3f, steep %.3f\n", ax, right.share,
+                right.landed, right.steep);
+    ASSERT_GT(right.share, 0.01);
+    EXPECT_GT(right.landed, 0.5);
+    EXPECT_GT(right.steep, 0.9);
+    // The old rule puts the ghost elsewhere, or loses it: the lens tells the two apart.
+    const reference::Figure wrong =
+        reference::measure(lens, ax, 0, 2, 0, 128, 16384, 0, reference::Media::ByDirectionSign);
+    if (wrong.landed > 0) {
+        EXPECT_GT(std::hypot(wrong.centerX - right.centerX, wrong.centerY - right.centerY) / diag,
+                  0.01);
+    }
+    GhostQuery q;
+    q.angleXDeg = ax;
+    auto r = analyseGhosts(lens, q);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const GhostFigure* g = nullptr;
+    for (const GhostFigure& f : r->ghosts)
+        if (f.first == 2 && f.second == 0) g = &f;
+    ASSERT_NE(g, nullptr);
+    std::printf("flarekit %.3f,%.3f, reference %.3f,%.3f, old rule %.3f,%.3f (share %.4f)\n",
+                g->centerX, g->centerY, right.centerX, right.centerY, wrong.centerX, wrong.centerY,
+                wrong.share);
+    EXPECT_LT(std::hypot(g->centerX - right.centerX, g->centerY - right.centerY) / diag, 0.003);
+    EXPECT_NEAR(g->beamShare, right.share, 0.002 + 0.02 * right.share);
+}
+
 TEST(LensGhostAccuracy, TheBeamHoldsAllTheLightEnteringACurvedFirstSurface) {
     // The rays entering the first surface's clear aperture, seen along the beam on its vertex
     // plane, fill a disc of the aperture's radius (the rim circle, moved by sag tan(angle)):

@@ -60,9 +60,14 @@ struct Result {
     bool steepBackwardLeg = false;
 };
 
+//! Which side of a refracting surface the ray comes from: by the path's legs (right), or by the
+//! sign of d.z (the rule flarekit's tracer used before, kept to show the tests can tell).
+enum class Media { ByLeg, ByDirectionSign };
+
 class Tracer {
   public:
-    explicit Tracer(const flarekit::Lens& lens) : m_lens(lens) {
+    explicit Tracer(const flarekit::Lens& lens, Media media = Media::ByLeg)
+        : m_lens(lens), m_media(media) {
         double z = 0;
         for (const flarekit::LensSurface& s : lens.surfaces) {
             m_vertex.push_back(z);
@@ -114,8 +119,9 @@ class Tracer {
                 forward = !forward;
             } else {
                 steep = steep || (!forward && d.z > 0);
-                const double n0 = forward ? before(k) : after(k);
-                const double n1 = forward ? after(k) : before(k);
+                const bool front = m_media == Media::ByLeg ? forward : d.z > 0;
+                const double n0 = front ? before(k) : after(k);
+                const double n1 = front ? after(k) : before(k);
                 const double sin2 = (n0 / n1) * (n0 / n1) * (1 - cosIn * cosIn);
                 if (sin2 > 1) return {};
                 const double cosOut = std::sqrt(1 - sin2);
@@ -162,6 +168,7 @@ class Tracer {
 
   private:
     const flarekit::Lens& m_lens;
+    Media m_media;
     std::vector<double> m_vertex;
     double m_sensorZ = 0;
 };
@@ -172,6 +179,7 @@ struct Figure {
     double centerX = 0, centerY = 0;  //!< centroid of the rays landing on the sensor
     double landed = 0;                //!< landing rays over arriving rays
     double radius90 = 0;              //!< around that centroid, holding 90% of the landing rays
+    double steep = 0;  //!< landing rays refracted on the backward leg while moving toward +z
     long arrived = 0;
 };
 
@@ -181,8 +189,9 @@ struct Figure {
 //! points, k chosen for about `target` arriving rays; a path whose first-pass share is under
 //! `refineFrom`, or (with a refineFrom) under 40% of whose rays land, gets its shares alone.
 inline Figure measure(const flarekit::Lens& lens, double angleXDeg, double angleYDeg, int first,
-                      int second, int side, long target, double refineFrom = 0) {
-    const Tracer tracer(lens);
+                      int second, int side, long target, double refineFrom = 0,
+                      Media media = Media::ByLeg) {
+    const Tracer tracer(lens, media);
     V3 d{std::tan(angleXDeg * M_PI / 180), std::tan(angleYDeg * M_PI / 180), 1};
     d = (1 / std::sqrt(dot(d, d))) * d;
     // An orthonormal pair across the beam.
@@ -230,6 +239,7 @@ inline Figure measure(const flarekit::Lens& lens, double angleXDeg, double angle
     const int k = std::max(
         1, std::min(48, int(std::ceil(std::sqrt(double(target) / double(arrivedCoarse))))));
     std::vector<std::array<double, 2>> landed;
+    long steep = 0;
     for (int j = 0; j < side; ++j) {
         for (int i = 0; i < side; ++i) {
             bool near = false;
@@ -246,8 +256,10 @@ inline Figure measure(const flarekit::Lens& lens, double angleXDeg, double angle
                     if (!r.arrived) continue;
                     ++f.arrived;
                     if (std::fabs(r.x) <= lens.sensor.width / 2 &&
-                        std::fabs(r.y) <= lens.sensor.height / 2)
+                        std::fabs(r.y) <= lens.sensor.height / 2) {
                         landed.push_back({r.x, r.y});
+                        steep += r.steepBackwardLeg;
+                    }
                 }
             }
         }
@@ -255,6 +267,7 @@ inline Figure measure(const flarekit::Lens& lens, double angleXDeg, double angle
     f.share = double(f.arrived) / (double(entering) * k * k);
     if (landed.empty()) return f;
     f.landed = double(landed.size()) / double(f.arrived);
+    f.steep = double(steep) / double(landed.size());
     for (const auto& l : landed) f.centerX += l[0], f.centerY += l[1];
     f.centerX /= double(landed.size()), f.centerY /= double(landed.size());
     std::vector<double> radii;
