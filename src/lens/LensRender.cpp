@@ -125,9 +125,10 @@ std::array<double, 2> fieldAngle(const TraceLens& t, double focal, double x, dou
     return {std::atan(tx) * 180 / M_PI, std::atan(ty) * 180 / M_PI};
 }
 
-Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens::Vec dir, int side,
-               const SensorMap& map) {
-    Mesh m;
+//! Traces the mesh into `m`, reusing its rays' storage: a light after the first fills the
+//! meshes the one before it left (no allocation, no page faults on fresh memory per source).
+void traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens::Vec dir, int side,
+               const SensorMap& map, Mesh& m) {
     const double sa = t.surfaces.front().semiAperture;
     // The grid's spacing stays that of `side` vertices over the clear diameter; an oblique beam
     // adds rows and columns so that the light entering past the square is drawn too (the first
@@ -149,7 +150,6 @@ Mesh traceMesh(const TraceLens& t, const std::vector<lens::PathStep>& path, lens
             m.rays[std::size_t(iy) * std::size_t(m.side) + std::size_t(ix)] = r;
         }
     }
-    return m;
 }
 
 void rasterisePiece(const Mesh& m, const lens::Iris& iris, const RayResult& a, const RayResult& b,
@@ -470,6 +470,7 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
     const double cell = 2.0 * sa / (side - 1);
     const double triangleShare = 0.5 * cell * cell / (M_PI * sa * sa);
     const int total = int(lights.size());
+    std::vector<Mesh> meshes;
     for (int done = 0; done < total; ++done) {
         const LensLight& light = lights[std::size_t(done)];
         const auto stopped = [total](int drawn) {
@@ -479,18 +480,18 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
         if (interrupted()) return stopped(done);
         const auto angle = fieldAngle(dLine, focal, map.toMmX(light.x), map.toMmY(light.y));
         const lens::Vec dir = lens::beamDirection(angle[0], angle[1]);
-        std::vector<Mesh> meshes(ghosts.size() * samples.size());
+        meshes.resize(ghosts.size() * samples.size());
         parallelFor(0, int(meshes.size()), 1, [&](int begin, int end) {
             for (int k = begin; k < end && !interrupted(); ++k) {
                 const std::size_t g = std::size_t(k) / samples.size(),
                                   w = std::size_t(k) % samples.size();
                 const auto path =
                     lens::ghostPath(int(lens.surfaces.size()), ghosts[g][0], ghosts[g][1]);
-                Mesh m = traceMesh(traces[w], path, dir, side, map);
+                Mesh& m = meshes[std::size_t(k)];
+                traceMesh(traces[w], path, dir, side, map, m);
                 for (int c = 0; c < 3; ++c)
                     m.weight[std::size_t(c)] = ghostGain * light.energy[std::size_t(c)] *
                                                samples[w].weight[std::size_t(c)] * triangleShare;
-                meshes[std::size_t(k)] = std::move(m);
             }
         });
         if (interrupted()) return stopped(done);
