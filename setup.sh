@@ -46,12 +46,17 @@ case "$job" in
     cmake -S . -B build-nogl -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_BENCH=OFF \
       -DFLAREKIT_WERROR="$werror" $FLAREKIT_LAUNCHER
     cmake --build build-nogl -j"$(nproc)"
-    ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure -LE slow
-    # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the whole suite again,
-    # except the package test and the documentation's blocks (they build examples against the
-    # installed library with the system compiler's plain flags, which cannot link an
-    # instrumented library) and the `slow` accuracy sweeps (the same tracer code the unit tests
-    # run, for minutes more: the main build runs them). Leak checking
+    # What differs without GL: the CLI (its GL paths refuse with "built without OpenGL", the
+    # rest must work) and the job layer against it. The unit and golden tests run the same core
+    # objects as the main build's; the Slurm test checks the farm, not the CLI.
+    ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure -L 'cli|job' -LE 'slow|slurm'
+    # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the core, codecs, jobs,
+    # CLI (fault injection included), the C API and the GL plumbing and GPU paths (labels unit,
+    # cli, job, gl). Left out: the package test and the documentation's blocks (they build
+    # examples against the installed library with the system compiler's plain flags, which
+    # cannot link an instrumented library); the GL accuracy sweeps, golden images and `slow`
+    # sweeps (the same code the other tests run, over many cases for numbers: the main build
+    # runs them); the Slurm farm (the CLI it runs is the one the cli tests run). Leak checking
     # is off here: Mesa unloads its driver at eglTerminate, so its one-time allocations are
     # reported against "<unknown module>" and cannot be suppressed by name, and libstdc++ and
     # OIIO have no frame pointers for the fast unwinder. The fuzz targets (no GL) check leaks.
@@ -63,7 +68,8 @@ case "$job" in
     cmake --build build-asan -j"$(nproc)"
     ASAN_OPTIONS=detect_leaks=0:strict_string_checks=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -E '^(Package|DocBlocks)' -LE slow
+      ctest --test-dir build-asan -j"$(nproc)" --output-on-failure -L 'unit|cli|job|gl' \
+      -LE 'slow|accuracy|golden|package|docs|slurm'
     stage "fuzz targets"
     FLAREKIT_WERROR="$werror" ./scripts/fuzz.sh 60
     stage "done"

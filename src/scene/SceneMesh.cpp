@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace flarekit {
 
@@ -14,10 +15,22 @@ void push(std::vector<MeshVertex>& out, Vec3 p, Vec3 n, Vec3 c) {
                    {float(c.x), float(c.y), float(c.z)}});
 }
 
+//! The unit sphere's tessellation vertices, computed once (every sphere of every scene scales
+//! and moves the same table; the sines and cosines were most of a scene's set-up).
 Vec3 unitSphere(int slice, int stack) {
-    const double theta = std::numbers::pi * stack / kSphereStacks,
-                 phi = 2 * std::numbers::pi * slice / kSphereSlices;
-    return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+    static const std::vector<Vec3> table = [] {
+        std::vector<Vec3> t;
+        for (int st = 0; st <= kSphereStacks; ++st) {
+            for (int sl = 0; sl <= kSphereSlices; ++sl) {
+                const double theta = std::numbers::pi * st / kSphereStacks,
+                             phi = 2 * std::numbers::pi * sl / kSphereSlices;
+                t.push_back({std::sin(theta) * std::cos(phi), std::cos(theta),
+                             std::sin(theta) * std::sin(phi)});
+            }
+        }
+        return t;
+    }();
+    return table[std::size_t(stack) * (kSphereSlices + 1) + std::size_t(slice)];
 }
 //! The scene's triangles and its ground's, in the order both mesh functions walk them.
 std::vector<Triangle> allTriangles(const Scene& scene) {
@@ -28,7 +41,11 @@ std::vector<Triangle> allTriangles(const Scene& scene) {
 }  // namespace
 
 std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
+    const std::vector<Triangle> triangles = allTriangles(scene);
     std::vector<MeshVertex> out;
+    // Sized once: growing a vector of a few hundred thousand vertices copies it a dozen times.
+    out.reserve(scene.spheres.size() * 6 * kSphereSlices * kSphereStacks + scene.boxes.size() * 36 +
+                triangles.size() * 3);
     for (const Sphere& s : scene.spheres) {
         for (int st = 0; st < kSphereStacks; ++st) {
             for (int sl = 0; sl < kSphereSlices; ++sl) {
@@ -67,7 +84,7 @@ std::vector<MeshVertex> buildSceneMesh(const Scene& scene) {
             }
         }
     }
-    for (const Triangle& t : allTriangles(scene)) {
+    for (const Triangle& t : triangles) {
         const Vec3 c = cross(t.b - t.a, t.c - t.a);
         const Vec3 n = length(c) > 0 ? normalize(c) : Vec3{0, 1, 0};
         push(out, t.a, n, t.color);

@@ -23,31 +23,55 @@ ln -s "$cli" "$work/bin/flarekit"
 export PATH="$work/bin:$PATH"
 unset OCIO FLAREKIT_PRESET_PATH FLAREKIT_DATA_DIR DISPLAY
 
-# --- the inputs the pages name, made once from the shipped samples (small, so blocks are fast)
-fixtures="$work/fixtures"
-mkdir -p "$fixtures/plate" "$fixtures/fg"
-(
-  set -e
-  cd "$fixtures"
-  oiiotool "$src/samples/sunset-hdr.exr" --resize 320x180 -o photo.exr
-  cp photo.exr sky.exr
-  oiiotool "$src/samples/sunset.png" --resize 320x180 -o photo.jpg
-  # the PSP's 480x272 screen with an occluder box
-  oiiotool --pattern constant:color=1,1,1 480x272 3 --box:color=0,0,0:fill=1 200,60,300,200 \
-    -d uint8 -o MASK.png
-  oiiotool --pattern noise:type=uniform:min=0.6:max=1 64x64 1 -d uint8 -o my-dust.png
-  cp "$src/presets/subtle.json" my.json
-  cp "$src/presets/postfx/killzone2.json" my-postfx.json
-  cp "$src/tests/package/c_api_check.c" app.c
-  # a 240-frame plate (1001-1240), its foreground matte and a track of its sun
-  oiiotool "$src/samples/sunset-hdr.exr" --resize 160x90 -o plate/sh010.1001.exr
-  oiiotool --pattern constant:color=0 160x90 1 --box:color=1:fill=1 0,60,40,89 -d half -o fg/fg.1001.exr
-  for f in $(seq 1002 1240); do
-    cp plate/sh010.1001.exr "plate/sh010.$f.exr"
-    cp fg/fg.1001.exr "fg/fg.$f.exr"
-  done
-  printf 'frame,x,y\n1001,116.5,31\n1240,120,33.5\n' > sun.csv
-) > "$work/fixtures.log" 2>&1 || { echo "docs: making the inputs failed:"; cat "$work/fixtures.log"; exit 1; }
+# --- the inputs the pages name, made from the shipped samples (small, so blocks are fast). ctest
+# runs each page as its own test: its DocFixtures test (FIXTURES=make) makes them once in the
+# build folder, and the pages' tests take them from there (FLAREKIT_DOC_FIXTURES); run by hand,
+# the script makes them itself, the 240-frame plate only when a page names it.
+make_fixtures() {  # folder with-plate(0/1)
+  mkdir -p "$1/plate" "$1/fg"
+  (
+    set -e
+    cd "$1"
+    oiiotool "$src/samples/sunset-hdr.exr" --resize 320x180 -o photo.exr
+    cp photo.exr sky.exr
+    oiiotool "$src/samples/sunset.png" --resize 320x180 -o photo.jpg
+    # the PSP's 480x272 screen with an occluder box
+    oiiotool --pattern constant:color=1,1,1 480x272 3 --box:color=0,0,0:fill=1 200,60,300,200 \
+      -d uint8 -o MASK.png
+    oiiotool --pattern noise:type=uniform:min=0.6:max=1 64x64 1 -d uint8 -o my-dust.png
+    cp "$src/presets/subtle.json" my.json
+    cp "$src/presets/postfx/killzone2.json" my-postfx.json
+    cp "$src/tests/package/c_api_check.c" app.c
+    # a 240-frame plate (1001-1240), its foreground matte and a track of its sun
+    printf 'frame,x,y\n1001,116.5,31\n1240,120,33.5\n' > sun.csv
+    [ "$2" = 1 ] || exit 0
+    oiiotool "$src/samples/sunset-hdr.exr" --resize 160x90 -o plate/sh010.1001.exr
+    oiiotool --pattern constant:color=0 160x90 1 --box:color=1:fill=1 0,60,40,89 -d half -o fg/fg.1001.exr
+    for f in $(seq 1002 1240); do
+      cp plate/sh010.1001.exr "plate/sh010.$f.exr"
+      cp fg/fg.1001.exr "fg/fg.$f.exr"
+    done
+  ) > "$work/fixtures.log" 2>&1 || { echo "docs: making the inputs failed:"; cat "$work/fixtures.log"; exit 1; }
+}
+if [ "${FIXTURES:-}" = make ]; then
+  rm -rf "$build/doc-fixtures"
+  make_fixtures "$build/doc-fixtures" 1
+  echo "docs: the pages' inputs are in $build/doc-fixtures"
+  exit 0
+fi
+if ! grep -q -E '^ *```sh *$' "${pages[@]}"; then
+  echo "docs: no command blocks in ${pages[*]##*/}"
+  exit 0
+fi
+if [ -n "${FLAREKIT_DOC_FIXTURES:-}" ]; then
+  fixtures="$FLAREKIT_DOC_FIXTURES"
+  [ -f "$fixtures/sun.csv" ] || { echo "docs: $fixtures holds no inputs (the DocFixtures test makes them)"; exit 1; }
+else
+  fixtures="$work/fixtures"
+  plate=0
+  if grep -q -E '(plate|fg)/' "${pages[@]}"; then plate=1; fi
+  make_fixtures "$fixtures" "$plate"
+fi
 
 # --- the blocks: FILE:LINE, its skip reason if marked, its text with the fence's indent removed
 extract() {  # page outdir -> outdir/NNN.sh and outdir/NNN.meta ("LINE<TAB>skip reason")

@@ -10,18 +10,25 @@ allowlist="$1"
 shift
 status=0
 cache="$(ldconfig -p)"
+declare -A package_of path_of
 for file in "$@"; do
   mapfile -t needed < <(readelf -d "$file" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
   [ ${#needed[@]} -gt 0 ] || { echo "licence-check: $file: no NEEDED entries (not a dynamic ELF file?)" >&2; status=1; }
   for soname in "${needed[@]}"; do
-    path="$(awk -v s="$soname" '$1 == s && /x86-64|64bit/ {print $NF; exit}' <<<"$cache")"
-    [ -n "$path" ] || path="$(awk -v s="$soname" '$1 == s {print $NF; exit}' <<<"$cache")"
-    package=""
-    for candidate in "$path" "$(readlink -f "$path")" "${path/#\/usr\/lib/\/lib}" "${path/#\/lib/\/usr\/lib}"; do
-      [ -n "$candidate" ] || continue
-      package="$( (dpkg -S "$candidate" 2>/dev/null || true) | sed -n '1s/:.*//p')"
-      [ -n "$package" ] && break
-    done
+    # Each soname is looked up once (dpkg -S reads the whole package database: 0.6 s a call).
+    if [ -n "${package_of[$soname]+set}" ]; then
+      package="${package_of[$soname]}" path="${path_of[$soname]}"
+    else
+      path="$(awk -v s="$soname" '$1 == s && /x86-64|64bit/ {print $NF; exit}' <<<"$cache")"
+      [ -n "$path" ] || path="$(awk -v s="$soname" '$1 == s {print $NF; exit}' <<<"$cache")"
+      package=""
+      for candidate in "$path" "$(readlink -f "$path")" "${path/#\/usr\/lib/\/lib}" "${path/#\/lib/\/usr\/lib}"; do
+        [ -n "$candidate" ] || continue
+        package="$( (dpkg -S "$candidate" 2>/dev/null || true) | sed -n '1s/:.*//p')"
+        [ -n "$package" ] && break
+      done
+      package_of[$soname]="$package" path_of[$soname]="$path"
+    fi
     if [ -z "$package" ]; then
       echo "licence-check: $file: $soname: no Debian package ships it (${path:-not found by ldconfig})" >&2
       status=1
