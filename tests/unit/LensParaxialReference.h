@@ -98,7 +98,6 @@ bool paraxialCentroid(const Lens& lens, const ParaxialPath& p, double tanX, doub
     return true;
 }
 
-
 //! Every shipped lens at each of `degrees`: the compared ghosts' largest centroid difference as
 //! a share of the diagonal (printed: docs/lens.md's table). At 1 degree every compared ghost is
 //! within 1%, but for one known case of the telephoto zoom under 1.5%.
