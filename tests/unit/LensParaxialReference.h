@@ -31,7 +31,7 @@ struct ParaxialPath {
     Linear sensor;
 };
 
-ParaxialPath paraxialGhost(const Lens& lens, int first, int second) {
+inline ParaxialPath paraxialGhost(const Lens& lens, int first, int second) {
     std::vector<std::pair<int, bool>> steps;  // surface, reflect
     const int n = int(lens.surfaces.size());
     if (first < 0) {
@@ -70,8 +70,8 @@ ParaxialPath paraxialGhost(const Lens& lens, int first, int second) {
 
 //! The paraxial ghost's centroid (x only; the field is along x) over the entrance points that
 //! pass every clear aperture, on a fine grid.
-bool paraxialCentroid(const Lens& lens, const ParaxialPath& p, double tanX, double& cx,
-                      double& share) {
+inline bool paraxialCentroid(const Lens& lens, const ParaxialPath& p, double tanX, double& cx,
+                             double& share) {
     const double sa = lens.surfaces.front().semiAperture;
     constexpr int kGrid = 300;
     double sum = 0;
