@@ -29,8 +29,7 @@ expect_no_leftovers() {
   left="$(find "$1" \( -name '.flarekit-tmp-*' -o -name '*.partial.mp4' \) 2>/dev/null)"
   if [ -n "$left" ]; then fail "$2: left behind: $left"; else pass; fi
 }
-# Every image under $1 decodes completely.
-# Every image decodes completely: one iinfo process computes every image's pixel statistics and
+# Every image under $1 decodes completely: one iinfo process computes every image's pixel statistics and
 # reports a failed read in its output (an oiiotool per image cost half a second each, most of
 # this script's time).
 expect_complete_images() {
