@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(FuzzPreset FuzzPostFxPreset FuzzScene FuzzImageRead FuzzPsp)
+[ ${#targets[@]} -gt 0 ] || targets=(FuzzPreset FuzzPostFxPreset FuzzScene FuzzImageRead FuzzPsp FuzzShotFiles)
 
 if [ "${FLAREKIT_FUZZ_NO_BUILD:-}" != 1 ]; then  # set by callers that run targets in parallel
 # FLAREKIT_LAUNCHER: setup.sh's ccache flags (two words, split on purpose)
@@ -27,8 +27,8 @@ ctest --test-dir build-fuzz -L fuzz --output-on-failure -j"$(nproc)" -R "$(IFS='
 export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-# One target per core at a time (each fuzzer is one process): 5 targets x 60 s take 3 minutes
-# on 2 cores, not 5. Each writes its own log; the results are printed in the targets' order.
+# One target per core at a time (each fuzzer is one process): 6 targets x 60 s take 3 minutes
+# on 2 cores, not 6. Each writes its own log; the results are printed in the targets' order.
 fuzz_one() {
   local t="$1" seeds="tests/fuzz/corpus/$1" scratch="build-fuzz/corpus/$1"
   local rc=0

@@ -41,4 +41,13 @@ inline void truncateFile(const std::string& from, const std::string& to, std::si
     std::ofstream(to, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
 }
 
+//! A file's bytes, and a file of these bytes (a patched copy).
+inline std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+inline void writeFile(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
 }  // namespace flarekit::test

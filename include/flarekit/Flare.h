@@ -232,18 +232,17 @@ inline float whiteShare(const LightCandidate& c) {
     return c.pixels ? float(c.whitePixels) / float(c.pixels) : 0.f;
 }
 
-//! The flare scale of a light whose place is given but which lies outside the frame, where
-//! nothing can be measured: 1, the preset's own look (its elements at kReferenceFlux).
-inline constexpr float kOutOfFrameFlareScale = 1.f;
-
 //! A hand-placed light (`--light X,Y`, a track key without an intensity) measured as `--light
 //! auto` measures the lights it finds: the region grown from the brightest pixel within 2% of
 //! the frame height of `at` (at least 4 px), its flux summed the same way (clipped pixels of
 //! 8/16-bit data at clippedGain, HDR down to a quarter of its peak; the region kept within 10% of
 //! the frame height of `at`, since nothing judges it) and its flareScale from that flux. Nothing
-//! there to measure (a black patch) gives flux 0. Outside the frame: flux 0 and flareScale
-//! kOutOfFrameFlareScale. The candidate's `position` is its measured centroid; it is not judged
-//! (`accepted` is true: the user placed it).
+//! there to measure (a black patch) gives flux 0. Outside the frame it is measured the same way
+//! (the pixels within its reach that are in the frame: a sun straddling the edge) and its
+//! flareScale faded out smoothly over that reach (1 at the edge, 0 one reach out), so a light
+//! walking across the edge never jumps; beyond the reach: flux 0 (`--flux-mode fixed` gives an
+//! off-frame light the preset's own look). The candidate's `position` is its measured centroid;
+//! it is not judged (`accepted` is true: the user placed it).
 LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOptions& options = {});
 
 //! Most lights an 8/16-bit frame's highlights are expanded around (kLightSearchParams' largest

@@ -32,6 +32,9 @@ struct LoadedImage {
     //! A multi-part EXR's parts by name ("0", "1" for unnamed ones), in the file's order; the
     //! ones not read ride in exrExtras to an EXR output unchanged. Empty for any other file.
     std::vector<std::string> exrParts;
+    //! The decoder's warning about a file it still read whole (a corrupt marker JPEG skips), one
+    //! line; empty when it had none. Jobs pass it on as a warning.
+    std::string decoderWarning;
 };
 
 //! How to read a file beyond its memory.
@@ -124,9 +127,13 @@ SampleFormat outputSampleFormat(const std::string& path,
 inline bool isFloatFormat(SampleFormat f) {
     return f == SampleFormat::Half || f == SampleFormat::Float;
 }
-//! Whether `path`'s format holds half/float samples (.exr, .hdr, .tif/.tiff); writeImage
-//! refuses a float SampleFormat for any other, rather than letting the writer downgrade it.
-bool holdsFloatSamples(const std::string& path);
+//! Whether `path`'s format holds `requested` samples: PNG 8 and 16 bits, JPEG 8, TIFF every
+//! depth, EXR half and float, Radiance HDR float (and half, written as its float), the other
+//! formats 8. One line naming the file and the depths it holds otherwise (`option`, as "--depth",
+//! named in it when given); writeImage refuses such a write rather than let the writer change
+//! the depth, and jobs check before any work.
+Status checkSampleFormatFits(const std::string& path, SampleFormat requested,
+                             const std::string& option = "");
 
 //! Writes atomically: to a temporary file beside `path`, renamed over it on success.
 //! Integer formats are sRGB-encoded; float formats are written linear.

@@ -28,4 +28,43 @@ inline std::string excerpt(std::string_view text, std::size_t max) {
     return std::string(text.substr(0, cut)) + "...";
 }
 
+//! The length of the valid UTF-8 sequence at `text[i]` (2 to 4 bytes: no overlong forms, no
+//! surrogates, nothing past U+10FFFF), or 0.
+inline std::size_t utf8SequenceAt(std::string_view text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned lead = byte(i);
+    const std::size_t n = lead >= 0xC2 && lead <= 0xDF   ? 2
+                          : lead >= 0xE0 && lead <= 0xEF ? 3
+                          : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                         : 0;
+    if (n == 0 || i + n > text.size()) return 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    const unsigned second = byte(i + 1);
+    if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second > 0x9F) ||
+        (lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second > 0x8F))
+        return 0;
+    return n;
+}
+
+//! `text` safe to print on a terminal: control bytes (an escape sequence that recolours the
+//! terminal or sets its title, a newline that would cut the line) and bytes that are not valid
+//! UTF-8 written as \xNN; printable ASCII and valid UTF-8 as they are.
+inline std::string printable(std::string_view text) {
+    static const char kHex[] = "0123456789abcdef";
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7F) {
+            out += char(c), ++i;
+        } else if (const std::size_t n = c >= 0x80 ? utf8SequenceAt(text, i) : 0; n > 0) {
+            out.append(text.substr(i, n)), i += n;
+        } else {
+            out.append("\\x").append(1, kHex[c >> 4]).append(1, kHex[c & 15]), ++i;
+        }
+    }
+    return out;
+}
+
 }  // namespace flarekit

@@ -417,6 +417,7 @@ Result<LoadedImage> readImage(const std::string& path, const JobMemory& job,
     out.droppedChannels = raw->header.channels - raw->channels;
     out.wasFloat = raw->header.isFloat;
     out.hasAlpha = raw->channels == 2 || raw->channels == 4;
+    out.decoderWarning = raw->warning;
     if (png.pipeline) {
         png.pipeline->finish();
         out.nonFinite = png.nonFinite;

@@ -8,6 +8,7 @@
 
 #include "core/HalfFloat.h"
 #include "core/ImageIOShared.h"
+#include "core/Interrupt.h"
 #include "core/SafeWrite.h"
 #include "core/codecs/Codecs.h"
 #include "core/codecs/ExrExtras.h"
@@ -136,9 +137,24 @@ SampleFormat outputSampleFormat(const std::string& path, SampleFormat requested)
     return resolveFormat(path, requested);
 }
 
-bool holdsFloatSamples(const std::string& path) {
+Status checkSampleFormatFits(const std::string& path, SampleFormat requested,
+                             const std::string& option) {
+    if (requested == SampleFormat::Auto) return Ok{};
     const std::string ext = lowerExtension(path);
-    return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
+    using F = SampleFormat;
+    std::vector<F> holds{F::U8};
+    if (ext == ".png") holds = {F::U8, F::U16};
+    if (ext == ".tif" || ext == ".tiff") holds = {F::U8, F::U16, F::Half, F::Float};
+    if (ext == ".exr") holds = {F::Half, F::Float};
+    if (ext == ".hdr") holds = {F::Half, F::Float};
+    if (std::find(holds.begin(), holds.end(), requested) != holds.end()) return Ok{};
+    std::string names;
+    for (F f : holds)
+        names.append(names.empty() ? "" : ", ").append(kSampleFormatNames[std::size_t(f)]);
+    const std::string name(kSampleFormatNames[std::size_t(requested)]);
+    const std::string holdsWhat = "a '" + ext + "' file holds " + names + " samples";
+    if (option.empty()) return invalidInput(path + ": " + holdsWhat + ", not " + name);
+    return invalidInput(path + ": " + option + " " + name + ": " + holdsWhat);
 }
 
 //! No format holds an image without pixels, and some encoders fail on one by crashing
@@ -150,6 +166,8 @@ Status checkHasPixels(const std::string& path, int width, int height) {
 }
 
 Status writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
+    // After a signal nothing more is encoded (a 4K encode takes a second): the job stops now.
+    if (interrupted()) return interruptedError(path + " was not written");
     if (Status s = checkHasPixels(path, image.width(), image.height()); !s) return s;
     if (Status s = checkWritablePath(path); !s) return s;
     auto writer = writerFor(path);
@@ -168,11 +186,7 @@ Status writeImage(const std::string& path, const Image& image, const WriteOption
     if (extras && options.format == SampleFormat::Auto)
         format = extras->rgbHalf ? SampleFormat::Half : SampleFormat::Float;
     const bool isFloat = isFloatFormat(format);
-    if (isFloat && !holdsFloatSamples(path)) {
-        return invalidInput(path +
-                            ": half/float samples need a float format (.exr, .tif, .hdr), not '" +
-                            lowerExtension(path) + "'");
-    }
+    if (Status fits = checkSampleFormatFits(path, options.format); !fits) return fits;
     codec::Samples s;
     s.width = image.width();
     s.height = image.height();

@@ -16,6 +16,7 @@
 #include "core/LuminanceSample.h"
 #include "core/Parallel.h"
 #include "core/RadixSort.h"
+#include "core/Smoothstep.h"
 #include "flare/LightRings.h"
 #include "flare/LuminanceMap.h"
 #include "flarekit/Color.h"
@@ -530,16 +531,22 @@ LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOpt
     c.position = at;
     c.accepted = true;
     c.verdict = "placed";
-    const bool inside =
-        at.x >= 0 && at.y >= 0 && at.x < float(image.width()) && at.y < float(image.height());
-    if (image.empty() || !inside) {
-        c.flareScale = kOutOfFrameFlareScale;
-        c.verdict = "placed outside the frame: the preset's own flux";
+    if (image.empty()) return c;
+    // Outside the frame a light is measured as inside (the pixels of its reach that are in the
+    // frame: a sun straddling the edge), its flare then faded out over that reach, so a track
+    // crossing the edge changes by little between neighbouring positions, never from nothing
+    // to the preset's full strength.
+    const float reach = std::max(kMinPlacedReachPx, kPlacedReachOfHeight * float(image.height()));
+    const float outX = std::max({0.f, -at.x, at.x - float(image.width())}),
+                outY = std::max({0.f, -at.y, at.y - float(image.height())});
+    const float outside = std::hypot(outX, outY);
+    if (!(outside < reach)) {
+        c.verdict = "placed outside the frame beyond its measuring reach: no flux";
         return c;
     }
+    const float edgeFade = 1.f - smoothstep01(outside / reach);
     const LuminanceMap m = luminanceMap(image);
     const bool displayReferred = isDisplayReferred(m.brightestChannel);
-    const float reach = std::max(kMinPlacedReachPx, kPlacedReachOfHeight * float(m.h));
     std::size_t seed = 0;
     float peak = -1.f;
     const int x0 = std::max(0, int(std::floor(at.x - reach))),
@@ -560,9 +567,9 @@ LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOpt
     LightCandidate measured =
         growRegion(m, &image, seed, threshold, options.clippedGain, displayReferred, seen, stack,
                    members, std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
-    measured.flareScale = flareScaleForFlux(measured.flux, m.h);
+    measured.flareScale = flareScaleForFlux(measured.flux, m.h) * edgeFade;
     measured.accepted = true;
-    measured.verdict = "placed";
+    measured.verdict = outside > 0 ? "placed outside the frame, measured at its edge" : "placed";
     return measured;
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/SafeWrite.h"
 #include "flarekit/job/ShotTracking.h"
+#include "job/LayerFiles.h"
 #include "job/ShotLight.h"
 
 namespace flarekit {
@@ -23,14 +24,6 @@ std::string format(const char* fmt, auto... values) {
     char line[400];
     std::snprintf(line, sizeof line, fmt, values...);
     return line;
-}
-
-//! Checked before any work: writeImage would refuse at the end (holdsFloatSamples).
-Status checkDepthFits(const std::string& out, SampleFormat requested) {
-    if (!isFloatFormat(requested) || holdsFloatSamples(out)) return Ok{};
-    return invalidInput(out +
-                        ": --depth half/float needs a float format (.exr, .tif, .hdr), not '" +
-                        std::filesystem::path(out).extension().string() + "'");
 }
 
 //! Verbose: every region the light finder considered, most flux first.
@@ -94,19 +87,59 @@ Lights autoLights(const ApplyOptions& a, const std::string& in, const Image& ima
 
 //! Layers: each pass and the whole flare as float EXRs in DIR, named NAME + `suffix` + .exr
 //! (".1001" for a sequence's frame, so each pass is a sequence of its own).
+std::string flareLayerPath(const std::string& dir, const std::string& name,
+                           const std::string& suffix) {
+    return (std::filesystem::path(dir) / (name + suffix + ".exr")).string();
+}
 Status writeFlareLayers(const std::string& dir, const std::string& suffix,
                         const std::vector<FlareLayer>& layers, const Image& flare,
                         const EncodeSettings& encode) {
-    if (Status s = makeOutputDirectory(dir); !s) return s;
     WriteOptions linear;
     linear.format = SampleFormat::Float;
     linear.encode = encode;
-    auto path = [&](const std::string& name) {
-        return (std::filesystem::path(dir) / (name + suffix + ".exr")).string();
-    };
+    std::vector<job_detail::LayerFile> files;
     for (const FlareLayer& layer : layers)
-        if (Status s = writeImage(path(layer.name), layer.image, linear); !s) return s;
-    return writeImage(path("flare"), flare, linear);
+        files.push_back({flareLayerPath(dir, layer.name, suffix), &layer.image});
+    files.push_back({flareLayerPath(dir, "flare", suffix), &flare});
+    return job_detail::writeLayerFiles(dir, files, linear);
+}
+
+//! What the job reads and writes, for checkJobFiles: the preset, track and camera, then per
+//! image or frame the plate, its matte, the output and each layer the preset draws.
+Status checkApplyFiles(const ApplyOptions& a, const ShotPlan* plan,
+                       const std::optional<FramePattern>& matte) {
+    auto preset = loadPreset(a.preset);
+    if (!preset) return preset.error();
+    std::vector<std::string> layerNames;
+    for (int layer = 0; layer < int(std::size(kFlareLayerNames)); ++layer)
+        for (const ElementParams& e : preset->elements)
+            if (flareLayerOf(e.type) == layer) {
+                layerNames.push_back(kFlareLayerNames[layer]);
+                break;
+            }
+    layerNames.push_back("flare");
+    std::vector<JobFile> reads{
+        {a.preset, "--preset"}, {a.lightTrack, "--light-track"}, {a.camera, "--camera"}};
+    std::vector<JobFile> writes;
+    if (!a.writeTrack.empty()) writes.push_back({a.writeTrack, "--write-track"});
+    auto image = [&](const std::string& in, const std::string& matteFile, const std::string& out,
+                     const std::string& suffix) {
+        reads.push_back({in, "the input"});
+        if (!matteFile.empty()) reads.push_back({matteFile, "--matte"});
+        writes.push_back({out, "the output"});
+        if (!a.layersDir.empty())
+            for (const std::string& name : layerNames)
+                writes.push_back(
+                    {flareLayerPath(a.layersDir, name, suffix), "layer " + name + " of --layers"});
+    };
+    if (!plan) {
+        image(a.input, a.occlusion.matte, a.output, "");
+    } else {
+        for (int f : plan->frames)
+            image(plan->in.path(f), matte ? matte->path(f) : "", plan->out.path(f),
+                  frameSuffix(*plan, {f, plan->in.path(f), plan->out.path(f)}));
+    }
+    return checkJobFiles(reads, writes);
 }
 
 //! The flare over black, pass by pass (written as layers when asked), then the output: the
@@ -139,7 +172,6 @@ Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights&
 Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, const std::string& out,
                                const LightsOf& lightsOf, const JobEvents& events,
                                const std::string& layerSuffix = "") {
-    if (Status s = checkDepthFits(out, a.depth); !s) return s.error();
     if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
@@ -197,6 +229,7 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
 
 //! One image: the light given or found, dimmed by the matte's coverage when one is given.
 Status applyToImage(const ApplyOptions& a, const JobEvents& events) {
+    if (Status s = checkApplyFiles(a, nullptr, std::nullopt); !s) return s;
     std::optional<ShotCoverage> coverage;
     if (a.occlusion.enabled())
         coverage.emplace(
@@ -211,6 +244,11 @@ Status applyToImage(const ApplyOptions& a, const JobEvents& events) {
                     const LightCandidate placed =
                         measureLightAt(plate.image, *a.light, a.lightSearch);
                     intensity *= placed.flareScale;
+                    if (placed.flux <= 0)
+                        events.warn(
+                            format("--light %g,%g: nothing to measure there (%s): no "
+                                   "flare; --flux-mode fixed draws the preset's own",
+                                   double(a.light->x), double(a.light->y), placed.verdict.c_str()));
                     if (a.verbose)
                         events.say(format("placed light: flux %.4g, flare scale %.4f", placed.flux,
                                           double(placed.flareScale)));
@@ -240,6 +278,7 @@ struct ShotRecords {
 //! its coverage filtered over the shot and written to coverage.csv.
 Result<ShotSummary> applyToShot(const ApplyOptions& a, const JobEvents& events) {
     std::vector<FramePattern> otherInputs;
+    std::optional<FramePattern> mattePattern;
     if (!a.occlusion.matte.empty()) {
         auto matte = parseFramePattern(a.occlusion.matte);
         if (!matte)
@@ -247,9 +286,11 @@ Result<ShotSummary> applyToShot(const ApplyOptions& a, const JobEvents& events) 
                                 ": the input is a frame pattern, so the matte must be one "
                                 "too (matte.####.exr)");
         otherInputs.push_back(*matte);
+        mattePattern = *matte;
     }
     auto plan = planShot(a.input, a.output, a.shot, otherInputs, events);
     if (!plan) return plan.error();
+    if (Status s = checkApplyFiles(a, &*plan, mattePattern); !s) return s.error();
     auto light = ShotLight::load(a, *plan, events);
     if (!light) return light.error();
     auto parallel = framesInFlight(*plan, kApplyMemory, false);
@@ -305,6 +346,11 @@ Result<ShotSummary> applyToShot(const ApplyOptions& a, const JobEvents& events) 
 
 //! The option combinations, checked before any file is read.
 Status checkApplyOptions(const ApplyOptions& a) {
+    if (a.light) {
+        if (Status s = checkLightCoordinates(*a.light, "--light"); !s) return s;
+    }
+    // Before any work: writeImage would refuse it at the end.
+    if (Status s = checkSampleFormatFits(a.output, a.depth, "--depth"); !s) return s;
     const int sources =
         int(a.light.has_value()) + int(!a.lightTrack.empty()) + int(!a.camera.empty());
     if (sources > 1)

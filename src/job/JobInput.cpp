@@ -2,6 +2,8 @@
 #include <atomic>
 #include <cctype>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iterator>
 
@@ -10,6 +12,7 @@
 #include "core/LibraryNoise.h"
 #include "core/SafeWrite.h"
 #include "core/codecs/ExrExtras.h"
+#include "flarekit/job/ApplyJob.h"
 #include "flarekit/job/Job.h"
 #include "job/ReadClock.h"
 
@@ -43,6 +46,8 @@ Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
             " channels; flarekit reads 1 to 4 (grey, grey+alpha, RGB, RGBA): split the others off "
             "first, e.g. oiiotool IN --ch R,G,B,A -o rgba.exr");
     }
+    if (!loaded->decoderWarning.empty())
+        events.warn(path + ": " + loaded->decoderWarning + " (read on; check the file)");
     if (loaded->nonFinite > 0)
         events.warn(path + ": " + std::to_string(loaded->nonFinite) +
                     " NaN/Inf values: NaN read as 0, infinities clamped to +-65504 (the largest "
@@ -76,6 +81,13 @@ std::shared_ptr<const ExrExtras> withLayerChannels(std::shared_ptr<const ExrExtr
     std::shared_ptr<ExrExtras> out;
     if (extras) {
         out = std::make_shared<ExrExtras>(*extras);
+        // The passes are the same values `--layers DIR` writes losslessly: a lossy compression
+        // of the input (DWAA/DWAB, B44/B44A, PXR24's 24-bit floats) would change them by up to
+        // 2%, so the file is ZIP unless --exr-compression names one (which then wins).
+        const Imf::Compression c = out->header.compression();
+        if (c == Imf::DWAA_COMPRESSION || c == Imf::DWAB_COMPRESSION || c == Imf::B44_COMPRESSION ||
+            c == Imf::B44A_COMPRESSION || c == Imf::PXR24_COMPRESSION)
+            out->header.compression() = Imf::ZIP_COMPRESSION;
     } else {
         // No EXR input: a header of the image's size, with flarekit's own defaults (half
         // colour, PIZ) for the rest of the file.
@@ -100,6 +112,17 @@ Status checkLayersFit(bool layersInOutput, const std::string& out) {
     if (!layersInOutput || imageio::lowerExtension(out) == ".exr") return Ok{};
     return invalidInput("--layers-in-output: the passes become channels of an EXR output, not of " +
                         out + " (write .exr, or --layers DIR for files of their own)");
+}
+
+Status checkLightCoordinates(Point at, const std::string& option) {
+    if (std::abs(double(at.x)) <= kMaxLightCoordinate &&
+        std::abs(double(at.y)) <= kMaxLightCoordinate)
+        return Ok{};
+    char line[200];
+    std::snprintf(line, sizeof line, "%s %g,%g: expected pixel coordinates from -%.0f to %.0f",
+                  option.c_str(), double(at.x), double(at.y), kMaxLightCoordinate,
+                  kMaxLightCoordinate);
+    return invalidInput(line);
 }
 
 Error cancelledError(const std::string& what) {

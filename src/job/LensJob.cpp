@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/SafeWrite.h"
+#include "job/LayerFiles.h"
 
 namespace flarekit {
 
@@ -69,21 +70,47 @@ Result<LensFlareLayers> renderLayers(const LensJobOptions& a, const std::string&
                              events);
 }
 
+//! The layers' names: the render's three parts and their sum.
+constexpr const char* kLensLayerNames[] = {"ghosts", "starburst", "glare", "flare"};
+
+//! A layer's file: DIR/NAME + `suffix` + .exr (".1001" for a sequence's frame).
+std::string lensLayerPath(const std::string& dir, const std::string& name,
+                          const std::string& suffix) {
+    return (std::filesystem::path(dir) / (name + suffix + ".exr")).string();
+}
+
 Status writeLensLayers(const std::string& dir, const std::string& suffix,
                        const LensFlareLayers& layers, const Image& flare,
                        const EncodeSettings& encode) {
-    if (Status s = makeOutputDirectory(dir); !s) return s;
     WriteOptions options;
     options.encode = encode;
-    const auto path = [&](const char* n) {
-        return (std::filesystem::path(dir) / (n + suffix + ".exr")).string();
+    const Image* images[] = {&layers.ghosts, &layers.starburst, &layers.glare, &flare};
+    std::vector<job_detail::LayerFile> files;
+    for (std::size_t i = 0; i < std::size(images); ++i)
+        files.push_back({lensLayerPath(dir, kLensLayerNames[i], suffix), images[i]});
+    return job_detail::writeLayerFiles(dir, files, options);
+}
+
+//! What the job reads and writes, for checkJobFiles: the lens, then per image or frame the
+//! plate, the output and each layer.
+Status checkLensFiles(const LensJobOptions& a, const ShotPlan* plan) {
+    std::vector<JobFile> reads{{a.lens, "the lens"}, {a.dirtFile, "--dirt-file"}}, writes;
+    auto image = [&](const std::string& in, const std::string& out, const std::string& suffix) {
+        reads.push_back({in, "the input"});
+        writes.push_back({out, "the output"});
+        if (a.layersDir.empty()) return;
+        for (const char* name : kLensLayerNames)
+            writes.push_back({lensLayerPath(a.layersDir, name, suffix),
+                              std::string("layer ") + name + " of --layers"});
     };
-    for (const auto& [name, img] :
-         {std::pair{"ghosts", &layers.ghosts}, std::pair{"starburst", &layers.starburst},
-          std::pair{"glare", &layers.glare}, std::pair{"flare", &flare}}) {
-        if (Status s = writeImage(path(name), *img, options); !s) return s;
+    if (!plan) {
+        image(a.input, a.output, "");
+    } else {
+        for (int f : plan->frames)
+            image(plan->in.path(f), plan->out.path(f),
+                  frameSuffix(*plan, {f, plan->in.path(f), plan->out.path(f)}));
     }
-    return Ok{};
+    return checkJobFiles(reads, writes);
 }
 
 //! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
@@ -155,11 +182,22 @@ std::shared_ptr<const LensBackend> cpuLensBackend() {
     return backend;
 }
 
-Result<JobReport> runLensJob(const LensJobOptions& a, const JobEvents& events) {
+Result<JobReport> runLensJob(const LensJobOptions& options, const JobEvents& events) {
+    if (options.lightMode == LensLightMode::At) {
+        if (Status s = checkLightCoordinates(options.light, "--light"); !s) return s.error();
+    }
+    LensJobOptions a = options;
+    if (!a.dirtFile.empty()) {
+        // Read once, for every frame of a sequence.
+        auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
+        if (!mask) return mask.error();
+        a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
+    }
     JobReport report;
     report.sequence = isFramePattern(a.input);
     if (!report.sequence) {
         if (Status s = checkSingleImage(a.input, a.shot); !s) return s.error();
+        if (Status s = checkLensFiles(a, nullptr); !s) return s.error();
         if (Status s =
                 writeImageJob(a.output, [&] { return renderOne(a, a.input, a.output, events); });
             !s)
@@ -168,6 +206,7 @@ Result<JobReport> runLensJob(const LensJobOptions& a, const JobEvents& events) {
     }
     auto plan = planShot(a.input, a.output, a.shot, {}, events);
     if (!plan) return plan.error();
+    if (Status s = checkLensFiles(a, &*plan); !s) return s.error();
     auto parallel = framesInFlight(*plan, kLensRenderMemory, a.backend->usesGl());
     if (!parallel) return parallel.error();
     auto summary = runShot(

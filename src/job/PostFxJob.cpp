@@ -10,6 +10,7 @@
 #include "core/SafeWrite.h"
 #include "flarekit/Flare.h"
 #include "flarekit/ParamText.h"
+#include "job/LayerFiles.h"
 
 namespace flarekit {
 
@@ -55,27 +56,54 @@ struct SizedLayer {
 std::vector<SizedLayer> fullSizeLayers(const PostFxResult& r) {
     const int w = r.final.width(), h = r.final.height();
     std::vector<SizedLayer> layers;
-    for (auto [name, layer] :
-         {std::pair{"bloom", &r.bloom}, std::pair{"ghosts", &r.ghosts}, std::pair{"halo", &r.halo},
-          std::pair{"streaks", &r.streaks}, std::pair{"lens", &r.lens}})
-        layers.push_back({name, resizeBilinear(*layer, w, h)});
+    const Image* images[] = {&r.bloom, &r.ghosts, &r.halo, &r.streaks, &r.lens};
+    for (std::size_t i = 0; i < std::size(images); ++i)
+        layers.push_back({kPostFxLayerNames[i], resizeBilinear(*images[i], w, h)});
     return layers;
+}
+
+//! A layer's file: DIR/NAME.exr (a sequence's frame: DIR/FRAME/NAME.exr).
+std::string postFxLayerPath(const std::string& dir, const std::string& name) {
+    return (std::filesystem::path(dir) / (name + ".exr")).string();
+}
+std::string frameLayersDir(const std::string& dir, int frame) {
+    return dir.empty() ? "" : (std::filesystem::path(dir) / std::to_string(frame)).string();
+}
+
+//! What the job reads and writes, for checkJobFiles: the preset, then per image or frame the
+//! plate, the output and each layer with the final image.
+Status checkPostFxFiles(const PostFxJobOptions& a, const ShotPlan* plan) {
+    std::vector<JobFile> reads{{a.preset, "--preset"}}, writes;
+    auto image = [&](const std::string& in, const std::string& out, const std::string& dir) {
+        reads.push_back({in, "the input"});
+        writes.push_back({out, "the output"});
+        if (dir.empty()) return;
+        for (const char* name : kPostFxLayerNames)
+            writes.push_back(
+                {postFxLayerPath(dir, name), std::string("layer ") + name + " of --save-layers"});
+        writes.push_back({postFxLayerPath(dir, "final"), "layer final of --save-layers"});
+    };
+    if (!plan) {
+        image(a.input, a.output, a.layersDir);
+    } else {
+        for (int f : plan->frames)
+            image(plan->in.path(f), plan->out.path(f), frameLayersDir(a.layersDir, f));
+    }
+    return checkJobFiles(reads, writes);
 }
 
 //! The layers and the final image as EXRs in `dir`, in the input's pixel type: float for a
 //! float input (a half would clip what it holds past 65504), half otherwise.
 Status writeLayers(const std::string& dir, const std::vector<SizedLayer>& layers,
                    const Image& final, const EncodeSettings& encode, bool floatInput) {
-    if (Status s = makeOutputDirectory(dir); !s) return s;
     WriteOptions options;
     options.encode = encode;
     options.format = floatInput ? SampleFormat::Float : SampleFormat::Half;
-    for (const SizedLayer& layer : layers) {
-        const std::string path =
-            (std::filesystem::path(dir) / (std::string(layer.name) + ".exr")).string();
-        if (Status s = writeImage(path, layer.image, options); !s) return s;
-    }
-    return writeImage((std::filesystem::path(dir) / "final.exr").string(), final, options);
+    std::vector<job_detail::LayerFile> files;
+    for (const SizedLayer& layer : layers)
+        files.push_back({postFxLayerPath(dir, layer.name), &layer.image});
+    files.push_back({postFxLayerPath(dir, "final"), &final});
+    return job_detail::writeLayerFiles(dir, files, options);
 }
 
 //! The chain's peak per input pixel. Measured at 12 MP: the CPU chain ~43 bytes per pixel over
@@ -221,6 +249,7 @@ Result<JobReport> runPostFxJob(const PostFxJobOptions& a, const JobEvents& event
     report.sequence = isFramePattern(a.input);
     if (!report.sequence) {
         if (Status s = checkSingleImage(a.input, a.shot); !s) return s.error();
+        if (Status s = checkPostFxFiles(a, nullptr); !s) return s.error();
         if (Status s = writeImageJob(
                 a.output, [&] { return runChain(a, a.input, a.output, a.layersDir, events); });
             !s)
@@ -230,17 +259,14 @@ Result<JobReport> runPostFxJob(const PostFxJobOptions& a, const JobEvents& event
     if (a.repeat > 1) return invalidInput("--repeat: for one image, not a sequence");
     auto plan = planShot(a.input, a.output, a.shot, {}, events);
     if (!plan) return plan.error();
+    if (Status s = checkPostFxFiles(a, &*plan); !s) return s.error();
     auto parallel = framesInFlight(*plan, postFxMemory(a), a.backend->usesGl());
     if (!parallel) return parallel.error();
     auto summary = runShot(
         *plan, *parallel,
         [&](const ShotFrame& f) {
             // A sequence's layers go into a folder per frame: DIR/1001/bloom.exr, ...
-            const std::string layers =
-                a.layersDir.empty()
-                    ? ""
-                    : (std::filesystem::path(a.layersDir) / std::to_string(f.frame)).string();
-            return runChain(a, f.in, f.out, layers, events);
+            return runChain(a, f.in, f.out, frameLayersDir(a.layersDir, f.frame), events);
         },
         events);
     if (!summary) return summary.error();

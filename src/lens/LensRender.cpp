@@ -526,7 +526,8 @@ std::vector<LensLight> brightSources(const Image& image, double threshold, int c
             LensLight& l = grid[k];
             l.x += lum * (x + 0.5), l.y += lum * (y + 0.5);
             weight[k] += lum;
-            for (int c = 0; c < 3; ++c) l.energy[std::size_t(c)] += p[c];
+            // Light is never negative: a resize's ringing in one channel takes none away.
+            for (int c = 0; c < 3; ++c) l.energy[std::size_t(c)] += std::max(p[c], 0.f);
         }
     }
     for (std::size_t k = 0; k < grid.size(); ++k) {
@@ -554,7 +555,8 @@ LensLight sourceAt(const Image& image, double x, double y, double radius, double
             const Rgba& p = image.at(px, py);
             if (luminance(p.r, p.g, p.b) >= threshold &&
                 std::hypot(px + 0.5 - x, py + 0.5 - y) <= radius)
-                l.energy[0] += p.r, l.energy[1] += p.g, l.energy[2] += p.b;
+                l.energy[0] += std::max(p.r, 0.f), l.energy[1] += std::max(p.g, 0.f),
+                    l.energy[2] += std::max(p.b, 0.f);
         }
     }
     return l;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/Interrupt.h"
 #include "flarekit/gl/GpuLens.h"
 #include "flarekit_shaders.h"
 #include "gl/GlObjects.h"
@@ -113,7 +114,18 @@ class GlGhostDrawer final : public lens::GhostDrawer {
                     crossings = gl::uniformLocation(p, "u_crossings");
         glBeginQuery(GL_TIME_ELAPSED, m_timer.get());
         std::vector<float> triangles;
-        for (const lens::Mesh& m : meshes) {
+        for (std::size_t k = 0; k < meshes.size(); ++k) {
+            const lens::Mesh& m = meshes[k];
+            // A signal stops the draw between meshes (their triangles are built here, on the
+            // CPU: seconds for a spectral render); the queued draws are flushed every 64 so
+            // that what is left to wait for at the stop stays small.
+            if (interrupted()) {
+                glEndQuery(GL_TIME_ELAPSED);
+                glDisable(GL_BLEND);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                return interruptedError("lens render: the ghost draw was stopped");
+            }
+            if (k % 64 == 63) glFlush();
             triangles.clear();
             int stopCrossings = 0;
             const auto add = [&](const lens::RayResult& a, const lens::RayResult& b,

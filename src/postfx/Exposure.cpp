@@ -54,7 +54,9 @@ float frameWhite(const Image& image) {
         const float* p = image.data() + 4 * i;
         peak = std::max({peak, p[0], p[1], p[2]});
         const float l = luminance(p[0], p[1], p[2]);
-        sample.push_back(std::isfinite(l) ? l : 0.f);
+        // Light is never negative: a resize's ringing beside a sun (-3,600) would otherwise
+        // pull the metered mean below 0 and every threshold with it.
+        sample.push_back(std::isfinite(l) ? std::max(l, 0.f) : 0.f);
     }
     // The sample settles most HDR frames; only one that shows nothing past white is scanned
     // whole, since a few sun pixels between the samples still make it scene-referred.

@@ -69,14 +69,17 @@ inline F4 pointSample(const Tex& t, Vec2 uv) {
     return fetchClamped(t, floorToInt(uv.x * float(t.width)), floorToInt(uv.y * float(t.height)));
 }
 
-//! postfx_common.glsl fetchFinite: fetchClamped with NaN and Inf read as 0, so one bad input
-//! pixel cannot spread over the whole flare.
-inline F4 fetchFinite(const Tex& t, int x, int y) {
+//! postfx_common.glsl fetchLight: fetchClamped as light, which is never negative: NaN, Inf and
+//! negative values read as 0, so one bad input pixel cannot spread over the whole flare, and
+//! a resize's ringing (a Lanczos filter leaves -3,600 beside a sun of 50,000) does not cancel
+//! the light beside it.
+inline F4 fetchLight(const Tex& t, int x, int y) {
     const F4 v = fetchClamped(t, x, y);
     // Lane-wise: a float is NaN or infinite exactly when its exponent bits are all ones.
     typedef int I4 __attribute__((vector_size(16)));  // NOLINT: GCC/Clang vector extension
     const I4 exponent = I4(v) & 0x7F800000;
-    return exponent != 0x7F800000 ? v : splat(0.f);
+    const F4 finite = exponent != 0x7F800000 ? v : splat(0.f);
+    return finite > splat(0.f) ? finite : splat(0.f);
 }
 
 //! postfx_common.glsl bilinear: linear filtering at normalised (u, v), clamp-to-edge.
@@ -90,9 +93,9 @@ inline F4 bilinear(const Tex& t, Vec2 uv) {
     const F4 top = a + (b - a) * fx, bottom = c + (d - c) * fx;
     return top + (bottom - top) * fy;
 }
-//! postfx_common.glsl bilinearFinite.
-inline F4 bilinearFinite(const Tex& t, Vec2 uv) {
-    return bilinear<fetchFinite>(t, uv);
+//! postfx_common.glsl bilinearLight.
+inline F4 bilinearLight(const Tex& t, Vec2 uv) {
+    return bilinear<fetchLight>(t, uv);
 }
 
 //! The centre of output pixel (x, y) in normalised coordinates, as gl_FragCoord.xy * invSize.

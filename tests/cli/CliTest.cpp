@@ -124,13 +124,28 @@ TEST(CliApply, EveryShippedPresetAndFormatWorks) {
     EXPECT_EQ(tif.exitCode, 0) << tif.err;
 }
 
+// Far outside the frame there is nothing to measure: measured, no flare and a warning saying so;
+// fixed, the preset's own flare. Coordinates past a million pixels are refused.
 TEST(CliApply, ExplicitLightOutsideTheFrame) {
     TempDir dir;
-    const CliResult r = runCli(
-        {"apply", kSunset, "-o", dir.file("o.png"), "--light=-300,-200", "--intensity", "2"});
+    CliResult r = runCli({"apply", kSunset, "-o", dir.file("o.png"), "--light=-300,-200",
+                          "--intensity", "2", "--flux-mode", "fixed"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto in = readImage(kSunset), out = readImage(dir.file("o.png"));
     EXPECT_GT(meanAbsDiff(in->image, out->image), 0.001);
+    r = runCli({"apply", kSunset, "-o", dir.file("m.png"), "--light=-300,-200"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("--light -300,-200: nothing to measure there"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    for (const char* far : {"--light=1e38,5", "--light=5,-2e6"}) {
+        r = runCli({"apply", kSunset, "-o", dir.file("f.png"), far});
+        EXPECT_EQ(r.exitCode, 2) << far;
+        EXPECT_NE(r.err.find("expected pixel coordinates from -1000000 to 1000000"),
+                  std::string::npos)
+            << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.file("f.png")));
 }
 
 TEST(CliApply, NoLightWritesTheImageUnchangedWithAWarning) {
@@ -452,10 +467,29 @@ TEST(CliApply, FloatDepthIntoAnIntegerFormatIsRefused) {
     TempDir dir;
     const CliResult r = runCli({"apply", kSunsetHdr, "-o", dir.file("o.png"), "--depth", "half"});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("--depth half/float needs a float format"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--depth half: a '.png' file holds 8, 16 samples"), std::string::npos)
+        << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
     EXPECT_EQ(runCli({"apply", kSunsetHdr, "-o", dir.file("o.tif"), "--depth", "float"}).exitCode,
               0);
+}
+
+// Every depth a format cannot hold is refused before any work (a 4K job would otherwise run to
+// the end and fail at the write, or write float samples for --depth 8), and nothing is written.
+TEST(CliApply, EveryDepthAFormatCannotHoldIsRefusedBeforeAnyWork) {
+    TempDir dir;
+    for (const auto& [out, depth] :
+         {std::pair{"o.exr", "8"}, std::pair{"o.exr", "16"}, std::pair{"o.jpg", "16"},
+          std::pair{"o.hdr", "8"}, std::pair{"o.hdr", "16"}, std::pair{"o.jpg", "float"}}) {
+        const CliResult r = runCli({"apply", kSunsetHdr, "-o", dir.file(out), "--depth", depth});
+        EXPECT_EQ(r.exitCode, 2) << out << " " << depth << ": " << r.err;
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find(std::string("--depth ") + depth + ": a '"), std::string::npos)
+            << r.err;
+        // Refused before the image is read: no "flarekit: reading" detail, no file.
+        EXPECT_FALSE(std::filesystem::exists(dir.file(out))) << out;
+    }
+    EXPECT_EQ(dir.entries(), 0u);
 }
 
 // Start-up: OpenImageIO and its 263 libraries are loaded only for a format flarekit does not

@@ -167,6 +167,34 @@ TEST(ShotCli, AnExrsExtraChannelsCountInTheMemoryBudget) {
               0);
 }
 
+// A plate compressed lossily (DWAA) gives its compression to the output, but the added passes
+// are the values the layer files hold: the output is written losslessly (ZIP) unless
+// --exr-compression names a compression.
+TEST(ShotCli, LayersInOutputAreLosslessOverALossyPlate) {
+    TempDir in, out;
+    writeShot(in, 1);
+    auto plate = readImage(in.file("in.0001.exr"));
+    ASSERT_TRUE(plate);
+    WriteOptions dwaa;
+    dwaa.encode.exrCompression = "dwaa";
+    ASSERT_TRUE(writeImage(in.file("dwaa.exr"), plate->image, dwaa));
+    const CliResult r =
+        runCli({"apply", in.file("dwaa.exr"), "-o", out.file("comp.exr"), "--light", "100.5,45.5",
+                "--layers", out.file("layers"), "--layers-in-output"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto comp = readImage(out.file("comp.exr"));
+    auto flare = readImage(out.file("layers/flare.exr"));
+    ASSERT_TRUE(comp && flare);
+    for (int c = 0; c < 3; ++c) {
+        auto plane = channelByName(*comp, std::string("flare.") + "RGB"[c], "comp");
+        ASSERT_TRUE(plane) << plane.error().message;
+        for (std::size_t i = 0; i < plane->size(); ++i)
+            ASSERT_EQ((*plane)[i], flare->image.data()[4 * i + std::size_t(c)]) << c << " " << i;
+    }
+    Imf::InputFile file(out.file("comp.exr").c_str());
+    EXPECT_EQ(file.header().compression(), Imf::ZIP_COMPRESSION);
+}
+
 TEST(ShotCli, LayersInOutputAreTheLayerFilesAsChannelsOfEachFrame) {
     TempDir in, out;
     writeShot(in, 2);

@@ -107,10 +107,15 @@ lines="$("$cli" psp burnout --occluders "$mask" --sun 240,100 -o "$work/psp.png"
 [ -L "$stdout_link" ] && pass || fail "the link to stdout is no longer a link"
 cp "$work/in.png" "$work/real.png"
 ln -s real.png "$work/link.png"
-"$cli" apply "$work/real.png" -o "$work/link.png" --light 400,200
+"$cli" apply "$work/in.png" -o "$work/link.png" --light 400,200
 expect_exit 0 $? "apply -o SYMLINK"
 [ -L "$work/link.png" ] && pass || fail "the output symlink was replaced by a file"
 [ "$(md5sum < "$work/real.png")" != "$in_sum" ] && pass || fail "the symlink's target was not written"
+# A link to the input is the input: refused before any work, the input untouched.
+cp "$work/in.png" "$work/real.png"
+"$cli" apply "$work/real.png" -o "$work/link.png" --light 400,200 2>/dev/null
+expect_exit 2 $? "apply IN -o SYMLINK-TO-IN"
+[ "$(md5sum < "$work/real.png")" = "$in_sum" ] && pass || fail "the input behind the link changed"
 ln -s dangling-target.png "$work/dangling.png"
 "$cli" apply "$work/in.png" -o "$work/dangling.png" --light 400,200
 expect_exit 0 $? "apply -o DANGLING-SYMLINK"

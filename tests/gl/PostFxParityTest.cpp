@@ -47,6 +47,21 @@ struct TestImage {
     Image image;
 };
 
+//! A sun of 50,000 on a 0.2 plate with a resize's negative ringing (-3,600) around it and the
+//! largest half beside it: the bright pass reads light, never negative, on both chains.
+Image ringingSun(int w, int h) {
+    Image image = test::brightDot(w, h, 60.5f, 40.5f, 50000.f, 3.f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float d = std::hypot(float(x) + 0.5f - 60.5f, float(y) + 0.5f - 40.5f);
+            Rgba& p = image.at(x, y);
+            if (d >= 3.f && d < 4.5f) p = {-3600.f, -3600.f, -3600.f, 1.f};
+            if (d >= 4.5f) p = {0.2f, 0.2f, 0.2f, 1.f};
+        }
+    image.at(150, 20) = {65504.f, -1000.f, 1e-41f, 1.f};
+    return image;
+}
+
 std::vector<TestImage> testImages() {
     // Odd sizes on purpose: rounding-up of every chain level and an exact-centre pixel.
     return {
@@ -54,6 +69,7 @@ std::vector<TestImage> testImages() {
         {"several lights", test::severalLights(400, 224)},
         {"HDR sky, sun 50", test::hdrSky(384, 216)},
         {"noise", test::noiseImage(203, 117, 9)},
+        {"sun 50000 with negative ringing", ringingSun(197, 111)},
     };
 }
 

@@ -270,7 +270,7 @@ TEST(MeasureLightAt, APlacedLightHasTheFluxTheFinderMeasuresThere) {
     }
 }
 
-TEST(MeasureLightAt, NothingThereIsNoFluxASkyLittleAndOutsideTheFrameThePresetsOwn) {
+TEST(MeasureLightAt, NothingThereIsNoFluxASkyLittleAndFarOutsideTheFrameNone) {
     Image img = background(320, 180, 0.f);
     blob(img, 200.f, 60.f, 4.f, 3000.f);
     // Far from the light (more than 2% of the height): black, so no flux and no flare.
@@ -282,11 +282,35 @@ TEST(MeasureLightAt, NothingThereIsNoFluxASkyLittleAndOutsideTheFrameThePresetsO
     blob(sky, 200.f, 60.f, 4.f, 3000.f);
     EXPECT_LT(measureLightAt(sky, {40.f, 150.f}).flareScale,
               1e-3f * measureLightAt(sky, {200.f, 60.f}).flareScale);
-    for (const Point outside : {Point{-10.f, 50.f}, Point{400.f, 90.f}, Point{100.f, 180.f}}) {
+    // Beyond the reach outside the frame (2% of 180 is 3.6, at least 4 px): nothing.
+    for (const Point outside : {Point{-10.f, 50.f}, Point{400.f, 90.f}, Point{100.f, 184.5f}}) {
         const LightCandidate off = measureLightAt(img, outside);
         EXPECT_EQ(off.flux, 0.0);
-        EXPECT_EQ(off.flareScale, kOutOfFrameFlareScale);
+        EXPECT_EQ(off.flareScale, 0.f);
     }
+}
+
+// A sun straddling the frame's left edge, its placed light walked from inside the frame out
+// past the reach in 0.25 px steps: the flare scale never jumps between neighbouring positions
+// (before, 0.0008 at x = 0 and 1.0 at x = -0.5), and fades to nothing.
+TEST(MeasureLightAt, ALightWalkingAcrossTheEdgeNeverJumps) {
+    Image img = background(320, 180, 0.2f);
+    blob(img, 1.f, 90.f, 3.f, 5000.f);
+    const float inside = measureLightAt(img, {1.f, 90.f}).flareScale;
+    ASSERT_GT(inside, 0.f);
+    float previous = inside, biggestStep = 0.f;
+    for (float x = 1.f; x >= -6.f; x -= 0.25f) {
+        const float scale = measureLightAt(img, {x, 90.f}).flareScale;
+        EXPECT_LE(scale, inside * 1.001f) << x;
+        biggestStep = std::max(biggestStep, std::abs(scale - previous));
+        previous = scale;
+    }
+    // A 4 px fade walked in 0.25 px steps: at most a 16th of the light plus the smoothstep's
+    // steepest slope (1.5x) per step.
+    EXPECT_LE(biggestStep, inside * 1.5f / 16.f + 1e-6f);
+    EXPECT_EQ(previous, 0.f);
+    // Just outside, the light is still the sun's (not the preset's own 1 or nothing).
+    EXPECT_NEAR(measureLightAt(img, {-0.25f, 90.f}).flareScale, inside, 0.05f * inside);
 }
 
 // One flare per physical light: a strip light found as bright spots 6 px apart (each its own

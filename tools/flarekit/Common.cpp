@@ -10,6 +10,7 @@
 #endif
 
 #include <unistd.h>
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -56,12 +57,34 @@ std::string excerptLine(const std::string& text, std::size_t max) {
 
 std::string cappedLine(const std::string& message) {
     // 1,000 characters: the longest real message (a list of every known key) fits; a hostile
-    // input that echoes megabytes of itself does not reach the terminal.
-    return excerptLine(message, 1000);
+    // input that echoes megabytes of itself does not reach the terminal. What is cut is the
+    // values: the longest words (a 4 KB path, a value without spaces) lose their middle down to
+    // 60 characters, first to last, so the reason after them ("File name too long") stays.
+    constexpr std::size_t kMax = 1000, kWord = 60;
+    std::string_view text = message;
+    while (!text.empty() && std::string_view(" \t\r\n").find(text.back()) != std::string_view::npos)
+        text.remove_suffix(1);
+    std::string line = printable(text);
+    while (line.size() > kMax) {
+        std::size_t longest = 0, at = 0;
+        for (std::size_t i = 0; i < line.size();) {
+            const std::size_t end = std::min(line.find(' ', i), line.size());
+            if (end - i > longest) longest = end - i, at = i;
+            i = end + 1;
+        }
+        if (longest <= kWord) break;
+        // The word's start and its end (a path's file name), the cut never inside a UTF-8
+        // sequence.
+        std::size_t head = kWord / 2, tail = at + longest - (kWord - head - 3);
+        while (head > 0 && (static_cast<unsigned char>(line[at + head]) & 0xC0) == 0x80) --head;
+        while ((static_cast<unsigned char>(line[tail]) & 0xC0) == 0x80) ++tail;
+        line.replace(at + head, tail - at - head, "...");
+    }
+    return excerpt(line, kMax);
 }
 
 void warn(const std::string& message) {
-    std::fprintf(stderr, "flarekit: warning: %s\n", message.c_str());
+    std::fprintf(stderr, "flarekit: warning: %s\n", cappedLine(message).c_str());
 }
 
 std::optional<Point> parsePoint(const std::string& text) {

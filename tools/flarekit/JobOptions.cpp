@@ -10,6 +10,7 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
+#include "core/FirstLine.h"
 #include "core/Interrupt.h"
 
 namespace flarekit::cli {
@@ -56,8 +57,8 @@ void addColorOptions(CLI::App* cmd, OcioSettings& settings) {
 void addPartOption(CLI::App* cmd, std::string& part) {
     cmd->add_option("--part", part,
                     "a multi-part EXR input (stereo views, comp layers): the part to flare, by "
-                    "name or index (default: the first); every other part goes to the EXR output "
-                    "unchanged");
+                    "name, or by index when no part has that name (#N: always the index; "
+                    "default: the first); every other part goes to the EXR output unchanged");
 }
 
 void addLensChoiceOptions(CLI::App* cmd, LensJobOptions& target) {
@@ -79,7 +80,7 @@ CliRun::CliRun(std::string label)
     auto stdoutMutex = std::make_shared<std::mutex>();
     m_events.info = [stdoutMutex](const std::string& line) {
         std::lock_guard lock(*stdoutMutex);
-        std::printf("%s\n", line.c_str());
+        std::printf("%s\n", printable(line).c_str());
     };
     m_events.progress = [progress = m_progress](int done, int total) {
         progress->setTotal(total);
@@ -96,8 +97,8 @@ CliRun::CliRun(std::string label)
                          const std::string& image, const std::string& what, int done, int total) {
         std::lock_guard lock(state->mutex);
         if (!tty) {
-            std::fprintf(stderr, "%s: %s: %s %d of %d drawn\n", label.c_str(), image.c_str(),
-                         what.c_str(), done, total);
+            std::fprintf(stderr, "%s: %s: %s %d of %d drawn\n", label.c_str(),
+                         printable(image).c_str(), what.c_str(), done, total);
             return;
         }
         if (!state->bar) state->bar.emplace(label, total);

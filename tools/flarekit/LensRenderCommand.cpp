@@ -16,7 +16,7 @@ namespace flarekit::cli {
 namespace {
 //! The words of `lens render` that the library takes typed.
 struct RenderText {
-    std::string light = "auto", backend = "cpu", tonemap = "auto", dirtFile;
+    std::string light = "auto", backend = "cpu", tonemap = "auto";
 };
 
 Status readRenderText(const RenderText& t, LensJobOptions& o) {
@@ -37,12 +37,6 @@ Status readRenderText(const RenderText& t, LensJobOptions& o) {
 #else
         return builtWithoutGl("lens render --backend gl");
 #endif
-    }
-    if (!t.dirtFile.empty()) {
-        // Read once, for every frame of a sequence.
-        auto mask = readImage(t.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
-        if (!mask) return mask.error();
-        o.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
     }
     return Ok{};
 }
@@ -87,7 +81,7 @@ void addLensRenderCommand(CLI::App* lens, int& exitCode) {
                      "aces, filmic")
         ->check(CLI::IsMember(toneChoices({"auto"})))
         ->capture_default_str();
-    render->add_option("--dirt-file", text->dirtFile,
+    render->add_option("--dirt-file", job->dirtFile,
                        "the iris plane's transmission from an image (your dust, scratches or "
                        "aperture shape): luminance 1 clear, 0 opaque, stretched over the stop; "
                        "it shapes the starburst");

@@ -24,6 +24,13 @@ enum class FluxMode {
 };
 inline constexpr std::string_view kFluxModeNames[] = {"measured", "fixed"};
 
+//! How far outside the frame a placed light may be, in pixels: a million, 250 widths of a 4K
+//! frame; a flare's elements from a light farther off than that never reach it, and a typo (a
+//! coordinate of 1e38) is said, not drawn as nothing.
+inline constexpr double kMaxLightCoordinate = 1e6;
+//! `at` within kMaxLightCoordinate: one line naming `option` otherwise.
+Status checkLightCoordinates(Point at, const std::string& option);
+
 struct ApplyOptions {
     std::string input;   //!< an image, or a frame pattern (shot.####.exr) for a sequence
     std::string output;  //!< an image, or a frame pattern for a sequence

@@ -92,6 +92,18 @@ std::shared_ptr<const ExrExtras> withLayerChannels(std::shared_ptr<const ExrExtr
 //! Layers in the output need an EXR output: one line naming the option otherwise.
 Status checkLayersFit(bool layersInOutput, const std::string& out);
 
+//! A file a job touches, and what it is to the user ("the input", "--matte", "layer glow of
+//! --layers"), as the refusal names it.
+struct JobFile {
+    std::string path;
+    std::string role;
+};
+//! Every file a job will write (its output, each layer, each frame's) against every file it
+//! reads (plate, matte, preset, track) and against the others it writes, by file identity (one
+//! file under another name, through a link or `..`, a hard link): one line naming both, before
+//! any work. A device (/dev/null) is never a clash; a read that does not exist cannot be.
+Status checkJobFiles(const std::vector<JobFile>& reads, const std::vector<JobFile>& writes);
+
 //! The Interrupted error of a job stopped by JobEvents::cancelled, `what` saying what it
 //! finished: "interrupted by SIGTERM: ..." when a signal stopped it, else "cancelled: ...".
 Error cancelledError(const std::string& what);

@@ -57,6 +57,9 @@ struct LensJobOptions {
     //! Also ghosts, starburst, glare and flare (their sum) as linear EXRs here (for a sequence
     //! DIR/ghosts.1001.exr, ...).
     std::string layersDir;
+    //! The iris plane's transmission from an image (luminance 1 clear, 0 opaque), read once into
+    //! render.pupilMask for every frame; empty: the render's own mask.
+    std::string dirtFile;
     //! The layers also as channels of the EXR output (ghosts.R, ..., flare.B; linear float).
     bool layersInOutput = false;
     std::shared_ptr<const LensBackend> backend = cpuLensBackend();

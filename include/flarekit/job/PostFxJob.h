@@ -55,6 +55,9 @@ inline constexpr Param<ExpandHighlights> kExpandHighlightsParams[] = {
 //! "--expand-highlights: expected a gain in [1, 10000], got 'TEXT'" unless `gain` fits.
 Status checkExpandHighlights(double gain, const std::string& text);
 
+//! The chain's layers as files and channels (with "final", the result, in a layers folder).
+inline constexpr const char* kPostFxLayerNames[] = {"bloom", "ghosts", "halo", "streaks", "lens"};
+
 struct PostFxJobOptions {
     std::string input, output;                  //!< images, or frame patterns for a sequence
     std::string preset = kDefaultPostFxPreset;  //!< shipped name or a JSON file

@@ -49,6 +49,7 @@ struct Raw {
     int channels = 0;     //!< kept: min(header.channels, 4)
     int orientation = 1;  //!< EXIF orientation, 1 = as stored
     std::vector<unsigned char> bytes;
+    std::string warning;  //!< the decoder's first warning about a whole image, or empty
 
     std::size_t sampleCount() const {
         return std::size_t(header.width) * std::size_t(header.height) * std::size_t(channels);

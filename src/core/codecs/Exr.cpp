@@ -2,6 +2,7 @@
 // OpenEXR through its own C++ library, on its thread pool: reads land straight in flarekit's
 // float RGBA image (each channel a strided slice of it) and writes take their slices from it.
 #include <ImfChannelList.h>
+#include <ImfCheckFile.h>
 #include <ImfCompression.h>
 #include <ImfDeepScanLineInputPart.h>
 #include <ImfDeepScanLineOutputPart.h>
@@ -21,6 +22,7 @@
 #include <ImfStringAttribute.h>
 #include <ImfThreading.h>
 #include <ImfTiledInputPart.h>
+#include <ImfTiledOutputFile.h>
 #include <ImfTiledOutputPart.h>
 #include <half.h>
 
@@ -39,6 +41,7 @@
 
 #include "core/FirstLine.h"
 #include "core/HalfFloat.h"
+#include "core/Interrupt.h"
 #include "core/Parallel.h"
 #include "core/codecs/Codecs.h"
 #include "core/codecs/ExrExtras.h"
@@ -176,6 +179,25 @@ std::size_t readHalfInBands(File& file, const Imf::FrameBuffer& extras,
     return nonFinite;
 }
 
+//! The prefix of the colour channels: "" for R, G, B; "diffuse." for a part or file whose only
+//! colour is one layer's diffuse.R, diffuse.G, diffuse.B (as Nuke writes a layer to a part).
+//! Several such layers and no plain R, G, B: "" (which one is the image is not for flarekit to
+//! guess; the read refuses).
+std::string colourLayer(const Imf::ChannelList& channels) {
+    if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B"))
+        return "";
+    std::string found;
+    for (auto c = channels.begin(); c != channels.end(); ++c) {
+        const std::string name = c.name();
+        if (name.size() < 3 || name.compare(name.size() - 2, 2, ".R") != 0) continue;
+        const std::string prefix = name.substr(0, name.size() - 1);
+        if (!channels.findChannel(prefix + "G") || !channels.findChannel(prefix + "B")) continue;
+        if (!found.empty()) return "";
+        found = prefix;
+    }
+    return found;
+}
+
 //! The image of `file` (a single-part file, or one part of a multi-part one).
 template <class File>
 Result<ExrRead> readExrImage(File& file, const std::string& path, const HeaderCheck& check) {
@@ -189,13 +211,15 @@ Result<ExrRead> readExrImage(File& file, const std::string& path, const HeaderCh
             ++count;
             subsampled |= c.channel().xSampling != 1 || c.channel().ySampling != 1;
         }
-        const bool rgb =
-            channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+        const std::string layer = colourLayer(channels);
+        const bool rgb = channels.findChannel(layer + "R") && channels.findChannel(layer + "G") &&
+                         channels.findChannel(layer + "B");
         const bool grey = !rgb && channels.findChannel("Y") && !channels.findChannel("RY");
         if ((!rgb && !grey) || subsampled) return invalidInput(kUnsupportedLayout);
         // The channels read into the RGBA image; every other one is kept as an extra.
         const std::vector<std::string> read =
-            rgb ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"Y", "A"};
+            rgb ? std::vector<std::string>{layer + "R", layer + "G", layer + "B", layer + "A"}
+                : std::vector<std::string>{"Y", "A"};
         const auto isRead = [&](const std::string& name) {
             return std::find(read.begin(), read.end(), name) != read.end();
         };
@@ -219,7 +243,7 @@ Result<ExrRead> readExrImage(File& file, const std::string& path, const HeaderCh
         }
         if (Status s = check(out.header); !s) return s.error();
         out.image = Image(out.header.width, out.header.height);
-        out.hasAlpha = channels.findChannel("A") != nullptr;
+        out.hasAlpha = channels.findChannel(read.back()) != nullptr;
         out.allHalf = true;
         for (const std::string& name : read) {
             const Imf::Channel* c = channels.findChannel(name);
@@ -228,7 +252,8 @@ Result<ExrRead> readExrImage(File& file, const std::string& path, const HeaderCh
         // Every other channel is read too, in its own type, for the write to give back.
         auto extras = std::make_shared<ExrExtras>();
         extras->header = header;
-        const Imf::Channel* red = channels.findChannel(rgb ? "R" : "Y");
+        extras->layer = layer;
+        const Imf::Channel* red = channels.findChannel(read.front());
         extras->rgbHalf = red && red->type == Imf::HALF;
         for (auto c = channels.begin(); c != channels.end(); ++c) {
             if (isRead(c.name())) continue;
@@ -254,18 +279,16 @@ Result<ExrRead> readExrImage(File& file, const std::string& path, const HeaderCh
         char* base = reinterpret_cast<char*>(out.image.data());
         const std::size_t xStride = 4 * sizeof(float),
                           yStride = xStride * std::size_t(out.header.width);
-        auto slice = [&](const char* name, int offset, double fill) {
+        auto slice = [&](const std::string& name, int offset, double fill) {
             frame.insert(name, Imf::Slice::Make(Imf::FLOAT, base + offset * sizeof(float), window,
                                                 xStride, yStride, 1, 1, fill));
         };
         if (rgb) {
-            slice("R", 0, 0.0);
-            slice("G", 1, 0.0);
-            slice("B", 2, 0.0);
+            for (int c = 0; c < 3; ++c) slice(read[std::size_t(c)], c, 0.0);
         } else {
             slice("Y", 0, 0.0);
         }
-        slice("A", 3, 1.0);
+        slice(read.back(), 3, 1.0);
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
         out.nonFinite = finishImage(out.image, grey);
@@ -278,17 +301,121 @@ std::string partName(const Imf::Header& header, int index) {
     return header.hasName() ? header.name() : std::to_string(index);
 }
 
-//! The index of the part `wanted` names (a name, or an index), or the error listing the parts.
+//! `wanted` as a part index: "#N" always, plain digits only when no part has that name.
+std::optional<int> partIndexOf(const std::string& wanted) {
+    const std::string digits = wanted.size() > 1 && wanted[0] == '#' ? wanted.substr(1) : wanted;
+    if (digits.empty() || digits.size() > 6 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+    return std::stoi(digits);
+}
+
+//! The index of the part `wanted` names, or the error listing the parts. A name that matches
+//! wins (parts named "1" and "0" are found by name); an index is used only when no part has that
+//! name, and "#N" is always the index.
 Result<int> choosePart(const Imf::MultiPartInputFile& file, const std::string& wanted,
                        const std::string& path) {
     std::string list;
     for (int i = 0; i < file.parts(); ++i) {
         const std::string name = partName(file.header(i), i);
-        if (name == wanted || std::to_string(i) == wanted) return i;
+        if (name == wanted && wanted[0] != '#') return i;
         list += (i ? ", " : "") + std::to_string(i) + " '" + name + "'";
     }
+    if (const auto index = partIndexOf(wanted); index && *index < file.parts()) return *index;
     return invalidInput("--part " + excerpt(wanted, 60) + ": " + path + " has no such part (" +
                         std::to_string(file.parts()) + ": " + excerpt(list, 400) + ")");
+}
+
+//! A slice of `channel` into `scratch` for the rows or tile `box`: each band or tile lands at
+//! the start of the scratch buffer (OpenEXR addresses a slice by absolute pixel coordinates).
+void insertScratch(Imf::FrameBuffer& frame, const char* name, const Imath::Box2i& box,
+                   std::vector<float>& scratch) {
+    const std::size_t width = std::size_t(box.max.x - box.min.x + 1);
+    scratch.resize(width * std::size_t(box.max.y - box.min.y + 1));
+    frame.insert(name, Imf::Slice::Make(Imf::FLOAT, scratch.data(), box, sizeof(float),
+                                        width * sizeof(float)));
+}
+
+//! Decodes every chunk of a flat part once (a band of rows or a tile at a time, into a scratch
+//! buffer), so a chunk that does not decompress is found before a copy carries it out. One
+//! channel is enough: a chunk is decompressed whole whichever channels are asked for.
+void decodeFlatPart(Imf::MultiPartInputFile& file, int index) {
+    const Imf::Header& header = file.header(index);
+    const char* channel = nullptr;
+    for (auto c = header.channels().begin(); c != header.channels().end(); ++c)
+        if (c.channel().xSampling == 1 && c.channel().ySampling == 1) channel = c.name();
+    if (!channel) return;  // only subsampled channels: OpenEXR's file check covers it
+    std::vector<float> scratch;
+    if (header.type() == Imf::TILEDIMAGE) {
+        Imf::TiledInputPart part(file, index);
+        for (int ly = 0; ly < part.numYLevels(); ++ly)
+            for (int lx = 0; lx < part.numXLevels(); ++lx) {
+                if (!part.isValidLevel(lx, ly)) continue;
+                for (int ty = 0; ty < part.numYTiles(ly); ++ty)
+                    for (int tx = 0; tx < part.numXTiles(lx); ++tx) {
+                        Imf::FrameBuffer frame;
+                        insertScratch(frame, channel, part.dataWindowForTile(tx, ty, lx, ly),
+                                      scratch);
+                        part.setFrameBuffer(frame);
+                        part.readTile(tx, ty, lx, ly);
+                    }
+            }
+        return;
+    }
+    Imf::InputPart part(file, index);
+    const Imath::Box2i window = header.dataWindow();
+    const int band = 64;  // rows per read: a whole number of chunks of every compression
+    for (int y0 = window.min.y; y0 <= window.max.y; y0 += band) {
+        const int y1 = std::min(window.max.y, y0 + band - 1);
+        Imf::FrameBuffer frame;
+        insertScratch(frame, channel, Imath::Box2i({window.min.x, y0}, {window.max.x, y1}),
+                      scratch);
+        part.setFrameBuffer(frame);
+        part.readPixels(y0, y1);
+    }
+}
+
+//! Every part that goes to the output chunk for chunk decodes: OpenEXR's own file check over
+//! the whole file (deep parts included), then, only when it fails, each flat part decoded to
+//! name the corrupt one. One line naming the file and the part; never a file that fails to open.
+Status checkCopiedParts(const std::string& path, Imf::MultiPartInputFile& file, int chosen) {
+    if (!Imf::checkOpenEXRFile(path.c_str())) return Ok{};
+    std::string deep;
+    for (int i = 0; i < file.parts(); ++i) {
+        if (i == chosen) continue;
+        const std::string type = file.header(i).type();
+        const std::string name = "'" + excerpt(partName(file.header(i), i), 60) + "'";
+        if (type != Imf::SCANLINEIMAGE && type != Imf::TILEDIMAGE) {
+            deep += (deep.empty() ? "" : ", ") + name;
+            continue;
+        }
+        try {
+            decodeFlatPart(file, i);
+        } catch (const std::exception& e) {
+            return invalidInput(path + ": part " + name + " (copied unchanged to the output) " +
+                                "does not decode: " + excerpt(firstLine(e.what()), 200));
+        }
+    }
+    return invalidInput(
+        path + ": OpenEXR's file check fails on it" +
+        (deep.empty() ? std::string() : " (its deep parts " + deep + " are copied unchanged)") +
+        "; a copy would not open");
+}
+
+//! A part flarekit cannot flare: one line naming the file, the part, its channels and what it
+//! reads (OpenImageIO reads single-part files, not one part of many).
+Error unsupportedPart(const std::string& path, const Imf::Header& header, int index) {
+    std::string list;
+    for (auto c = header.channels().begin(); c != header.channels().end(); ++c)
+        list.append(list.empty() ? "" : ",").append(c.name());
+    // Appended, not "literal" + std::string: GCC 12 warns falsely (-Wrestrict) on the latter.
+    std::string line = path;
+    line.append(": part '")
+        .append(excerpt(partName(header, index), 60))
+        .append("' has channels ")
+        .append(excerpt(list, 200))
+        .append("; flarekit flares R,G,B(,A), one layer's NAME.R,G,B(,A) or Y(,A), unsubsampled");
+    return invalidInput(line);
 }
 
 }  // namespace
@@ -301,8 +428,14 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check, const
         if (partNames)
             for (int i = 0; i < parts.parts(); ++i)
                 partNames->push_back(partName(parts.header(i), i));
+        const Imf::Header& first = parts.header(0);
+        const std::string firstType = first.hasType() ? first.type() : Imf::SCANLINEIMAGE;
+        if (parts.parts() == 1 && firstType != Imf::SCANLINEIMAGE && firstType != Imf::TILEDIMAGE)
+            return invalidInput(path + ": a deep image (" + firstType +
+                                "); flarekit flares flat images: flatten it first (e.g. oiiotool " +
+                                "IN --flatten -o flat.exr)");
         if (parts.parts() == 1 &&
-            (part.empty() || part == "0" || part == partName(parts.header(0), 0))) {
+            (part.empty() || part == partName(parts.header(0), 0) || partIndexOf(part) == 0)) {
             Imf::InputFile file(path.c_str());
             return readExrImage(file, path, check);
         }
@@ -318,7 +451,10 @@ Result<ExrRead> readExr(const std::string& path, const HeaderCheck& check, const
                                 " is deep (" + type + "); flarekit flares a flat image part");
         Imf::InputPart input(parts, chosen);
         auto read = readExrImage(input, path, check);
+        if (!read && read.error().message == kUnsupportedLayout)
+            return unsupportedPart(path, parts.header(chosen), chosen);
         if (!read || parts.parts() == 1) return read;
+        if (Status s = checkCopiedParts(path, parts, chosen); !s) return s.error();
         auto kept = std::make_shared<ExrParts>();
         kept->source = path;
         kept->chosen = chosen;
@@ -415,15 +551,42 @@ void tagColorSpace(Imf::Header& header, const std::string& name) {
 }  // namespace
 
 namespace {
+//! Rows per band of a scanline write: the interrupt is polled between bands, so a signal during
+//! a 4K float encode (about a second on 2 cores) stops it within a few milliseconds.
+constexpr int kWriteBandRows = 128;
+
+//! `file`'s scanlines (an OutputFile or OutputPart with its frame buffer set) in bands, false
+//! when a signal stopped it.
+template <class Output>
+bool writeScanlinesInBands(Output& file, int height) {
+    for (int y = 0; y < height; y += kWriteBandRows) {
+        if (interrupted()) return false;
+        file.writePixels(std::min(kWriteBandRows, height - y));
+    }
+    return true;
+}
+
+//! `file`'s tiles (a TiledOutputFile or TiledOutputPart) a row of tiles at a time, false when a
+//! signal stopped it.
+template <class Output>
+bool writeTilesInRows(Output& file) {
+    for (int ty = 0; ty < file.numYTiles(); ++ty) {
+        if (interrupted()) return false;
+        file.writeTiles(0, file.numXTiles() - 1, ty, ty);
+    }
+    return true;
+}
+
 //! A multi-part file: the flared part written from `frame` in its place among the input's parts,
 //! every other part copied from the input chunk for chunk (no decode, so bit for bit), whatever
 //! its kind (scanline, tiled, deep).
-void writeWithOtherParts(Imf::OStream& memory, Imf::Header flared, const Imf::FrameBuffer& frame,
+bool writeWithOtherParts(Imf::OStream& memory, Imf::Header flared, const Imf::FrameBuffer& frame,
                          int height, const ExrParts& parts) {
     std::vector<Imf::Header> headers = parts.headers;
     const Imf::Header& original = parts.headers[std::size_t(parts.chosen)];
     flared.setName(original.name());  // every part of a multi-part file is named
-    flared.setType(Imf::SCANLINEIMAGE);
+    const bool tiled = flared.hasTileDescription();
+    flared.setType(tiled ? Imf::TILEDIMAGE : Imf::SCANLINEIMAGE);
     headers[std::size_t(parts.chosen)] = flared;
     // Shared attributes (display window, pixel aspect, time code, chromaticities) are the first
     // part's in every part, as the format requires.
@@ -431,10 +594,14 @@ void writeWithOtherParts(Imf::OStream& memory, Imf::Header flared, const Imf::Fr
     Imf::MultiPartInputFile in(parts.source.c_str());
     for (int i = 0; i < int(headers.size()); ++i) {
         const std::string type = headers[std::size_t(i)].type();
-        if (i == parts.chosen) {
+        if (i == parts.chosen && tiled) {
+            Imf::TiledOutputPart part(out, i);
+            part.setFrameBuffer(frame);
+            if (!writeTilesInRows(part)) return false;
+        } else if (i == parts.chosen) {
             Imf::OutputPart part(out, i);
             part.setFrameBuffer(frame);
-            part.writePixels(height);
+            if (!writeScanlinesInBands(part, height)) return false;
         } else if (type == Imf::TILEDIMAGE) {
             Imf::TiledInputPart from(in, i);
             Imf::TiledOutputPart(out, i).copyPixels(from);
@@ -449,6 +616,7 @@ void writeWithOtherParts(Imf::OStream& memory, Imf::Header flared, const Imf::Fr
             Imf::OutputPart(out, i).copyPixels(from);
         }
     }
+    return true;
 }
 }  // namespace
 
@@ -493,6 +661,13 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
                     std::end(kStructural))
                     header.insert(a.name(), a.attribute());
             }
+            // A tiled input stays tiled, in its tile size (one level: the flared image has no
+            // mipmaps of its own).
+            if (in.hasTileDescription()) {
+                Imf::TileDescription tiles = in.tileDescription();
+                tiles.mode = Imf::ONE_LEVEL;
+                header.setTileDescription(tiles);
+            }
         }
         header.insert("software", Imf::StringAttribute("flarekit"));
         if (!s.colorSpace.empty()) tagColorSpace(header, s.colorSpace);
@@ -502,7 +677,9 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
         // (converted by the caller), floats straight from the image with its stride.
         const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
         const std::size_t sample = s.half ? sizeof(half) : sizeof(float);
-        const char* names[] = {"R", "G", "B", "A"};
+        // A layer-named part (diffuse.R, ...) keeps its names.
+        const std::string layer = extras ? extras->layer : "";
+        const std::string names[] = {layer + "R", layer + "G", layer + "B", layer + "A"};
         const std::size_t xStride =
             s.pixelStride ? s.pixelStride : std::size_t(s.channels) * sample;
         const std::size_t yStride = xStride * std::size_t(s.width);
@@ -528,13 +705,19 @@ Result<std::vector<unsigned char>> encodeExr(const Samples& s, const EncodeOptio
         if (extras)
             for (const ExrExtraChannel& e : extras->channels) rawBytes += sampleBytes(e.channel);
         MemoryStream memory(rawBytes * std::size_t(s.width) * std::size_t(s.height) + 65536);
+        bool written = false;
         if (extras && extras->parts) {
-            writeWithOtherParts(memory, header, frame, s.height, *extras->parts);
+            written = writeWithOtherParts(memory, header, frame, s.height, *extras->parts);
+        } else if (header.hasTileDescription()) {
+            Imf::TiledOutputFile file(memory, header);
+            file.setFrameBuffer(frame);
+            written = writeTilesInRows(file);
         } else {
             Imf::OutputFile file(memory, header);
             file.setFrameBuffer(frame);
-            file.writePixels(s.height);
+            written = writeScanlinesInBands(file, s.height);
         }
+        if (!written) return interruptedError("an EXR encode was stopped");
         return std::move(memory.bytes());
     } catch (const std::exception& e) {
         return ioError(std::string("cannot encode EXR: ") + firstLine(e.what()));

@@ -30,7 +30,8 @@ struct ExrParts {
 struct ExrExtras {
     Imf::Header header;  //!< the input's whole header (the chosen part's)
     std::vector<ExrExtraChannel> channels;
-    bool rgbHalf = true;                    //!< the colour channels were half floats
+    bool rgbHalf = true;  //!< the colour channels were half floats
+    std::string layer;    //!< the colour channels' layer ("diffuse." for diffuse.R, ...) or ""
     std::shared_ptr<const ExrParts> parts;  //!< null: a single-part file
 };
 

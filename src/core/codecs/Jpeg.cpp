@@ -8,6 +8,9 @@
 #include <cstring>
 
 #include <jpeglib.h>  // after <cstdio>: it uses FILE and size_t without including them
+// clang-format off
+#include <jerror.h>  // after <jpeglib.h>: the message codes it defines
+// clang-format on
 
 #include "core/FirstLine.h"
 #include "core/codecs/Codecs.h"
@@ -20,6 +23,7 @@ struct JpegErrors {
     jpeg_error_mgr manager{};  // first member: libjpeg passes a pointer to it
     std::jmp_buf jump{};
     char message[JMSG_LENGTH_MAX] = {};
+    char warning[JMSG_LENGTH_MAX] = {};  //!< the first warning, for one line to the user
 };
 
 void onError(j_common_ptr info) {
@@ -27,7 +31,28 @@ void onError(j_common_ptr info) {
     info->err->format_message(info, errors->message);
     std::longjmp(errors->jump, 1);
 }
-void onMessage(j_common_ptr, int) {}  // warnings (a corrupt marker libjpeg skips) are not errors
+//! Every row of the image was decoded (only its end marker may be missing).
+bool allRowsRead(j_common_ptr info) {
+    if (!info->is_decompressor) return false;
+    const auto* d = reinterpret_cast<j_decompress_ptr>(info);
+    return d->output_height > 0 && d->output_scanline >= d->output_height;
+}
+
+//! Level -1 is a warning. Premature end of data before the last row is an error: libjpeg fills
+//! the rows it never got with grey and carries on, so a truncated file (end of file) or a header
+//! claiming 4000x4000 over 5 KB (the end marker where data should be) would be flared as a grey
+//! slab. Other warnings (a corrupt marker libjpeg skips, extraneous bytes, a missing end marker
+//! after the last row) leave a whole image: the first is kept for one warning line.
+void onMessage(j_common_ptr info, int level) {
+    if (level != -1) return;  // trace messages
+    auto* errors = reinterpret_cast<JpegErrors*>(info->err);
+    const int code = info->err->msg_code;
+    if ((code == JWRN_JPEG_EOF || code == JWRN_HIT_MARKER) && !allRowsRead(info)) {
+        info->err->format_message(info, errors->message);
+        std::longjmp(errors->jump, 1);
+    }
+    if (errors->warning[0] == '\0') info->err->format_message(info, errors->warning);
+}
 
 struct ReadState {
     JpegErrors errors;
@@ -91,6 +116,7 @@ Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check) {
     }
     raw.orientation = orientationOf(st.info);
     jpeg_finish_decompress(&st.info);
+    if (st.errors.warning[0] != '\0') raw.warning = excerpt(st.errors.warning, 200);
     return raw;
 }
 

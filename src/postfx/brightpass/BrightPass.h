@@ -4,7 +4,7 @@
 // the one Unity's post-processing stack uses for its bloom prefilter: zero below
 // threshold - knee, a quadratic ease-in up to threshold + knee, then colour x (br - T) / br, so
 // above the knee the output grows linearly with the light's value above the threshold (what
-// the energy test asserts). NaN and Inf input pixels read as 0. The seed's own threshold
+// the energy test asserts). NaN, Inf and negative input pixels read as 0. The seed's own threshold
 // (0.1) is the ghosts' one. Twin: shaders/bright_pass.frag.
 #pragma once
 
@@ -41,7 +41,7 @@ inline F4 compressHighlights(F4 color, float ceiling) {
 
 inline F4 brightPixel(const BrightUniforms& u, const Tex& input, int x, int y) {
     const F4 color =
-        compressHighlights(bilinearFinite(input, pixelUv(x, y, u.invOutSize)), u.ceiling);
+        compressHighlights(bilinearLight(input, pixelUv(x, y, u.invOutSize)), u.ceiling);
     return softThreshold(color, u.threshold, u.knee);
 }
 

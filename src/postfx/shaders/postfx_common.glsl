@@ -12,10 +12,10 @@ vec4 pointSample(sampler2D t, vec2 uv) {
     return fetchClamped(t, ivec2(floor(s)));
 }
 
-vec4 fetchFinite(sampler2D t, ivec2 p) {
+vec4 fetchLight(sampler2D t, ivec2 p) {
     vec4 v = fetchClamped(t, p);
     for (int i = 0; i < 4; ++i) {
-        if (isnan(v[i]) || isinf(v[i])) v[i] = 0.0;
+        if (isnan(v[i]) || isinf(v[i]) || v[i] < 0.0) v[i] = 0.0;
     }
     return v;
 }
@@ -34,7 +34,7 @@ vec4 fetchFinite(sampler2D t, ivec2 p) {
     return result;
 
 vec4 bilinear(sampler2D t, vec2 uv) { BILINEAR_BODY(fetchClamped) }
-vec4 bilinearFinite(sampler2D t, vec2 uv) { BILINEAR_BODY(fetchFinite) }
+vec4 bilinearLight(sampler2D t, vec2 uv) { BILINEAR_BODY(fetchLight) }
 
 vec2 pixelUv(vec2 invSize) { precise vec2 uv = gl_FragCoord.xy * invSize; return uv; }
 vec4 rgbOnly(vec4 v) { return vec4(v.rgb, 0.0); }

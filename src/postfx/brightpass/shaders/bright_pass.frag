@@ -24,6 +24,6 @@ vec4 compressHighlights(vec4 color, float ceiling) {
 }
 
 void main() {
-    vec4 color = compressHighlights(bilinearFinite(inputImage, pixelUv(invOutSize)), ceiling);
+    vec4 color = compressHighlights(bilinearLight(inputImage, pixelUv(invOutSize)), ceiling);
     result = softThreshold(color, threshold, knee);
 }
