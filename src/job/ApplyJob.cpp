@@ -66,10 +66,35 @@ void sayCandidates(const LightSearch& search, const JobEvents& events) {
 using Lights = std::vector<std::pair<Point, float>>;
 using LightsOf = std::function<Result<Lights>(const LoadedImage&)>;
 
+//! The layer files the preset gives (kFlareLayerNames it has elements of) and the whole flare.
+std::vector<std::string> layerNamesOf(const Preset& preset) {
+    std::vector<std::string> names;
+    for (int layer = 0; layer < int(std::size(kFlareLayerNames)); ++layer)
+        for (const ElementParams& e : preset.elements)
+            if (flareLayerOf(e.type) == layer) {
+                names.push_back(kFlareLayerNames[layer]);
+                break;
+            }
+    names.push_back("flare");
+    return names;
+}
+
 //! Measured peak (12 MP, both depths): ~135 MiB of process plus ~43 bytes per pixel: the RGBA
 //! floats, the orientation copy, the encoded samples and the file bytes (plus the decode buffer,
-//! which readImage adds).
-const JobMemory kApplyMemory{40, 160.0 * (1 << 20), "apply: 40 bytes per pixel"};
+//! which readImage adds). Layers add per layer file (each pass and the whole flare): its RGBA
+//! floats and its encode, measured at 4K with tanczos-classic's 5 files as 92 bytes per pixel
+//! for --layers DIR (20 per file) and 160 for --layers-in-output (32 per file: the channels'
+//! copy and the output's larger encode on top).
+JobMemory applyMemory(const ApplyOptions& a, const Preset& preset) {
+    const double files = double(layerNamesOf(preset).size());
+    double perPixel = 40;
+    if (a.layersInOutput)
+        perPixel += 36 * files;
+    else if (!a.layersDir.empty() || a.flareOnly)
+        perPixel += 20 * files;
+    return {perPixel, 160.0 * (1 << 20),
+            "apply: " + std::to_string(int(perPixel)) + " bytes per pixel"};
+}
 
 //! No light given: the lights the finder keeps in the frame, each scaled by its flare scale.
 Lights autoLights(const ApplyOptions& a, const std::string& in, const Image& image,
@@ -110,14 +135,7 @@ Status checkApplyFiles(const ApplyOptions& a, const ShotPlan* plan,
                        const std::optional<FramePattern>& matte) {
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
-    std::vector<std::string> layerNames;
-    for (int layer = 0; layer < int(std::size(kFlareLayerNames)); ++layer)
-        for (const ElementParams& e : preset->elements)
-            if (flareLayerOf(e.type) == layer) {
-                layerNames.push_back(kFlareLayerNames[layer]);
-                break;
-            }
-    layerNames.push_back("flare");
+    const std::vector<std::string> layerNames = layerNamesOf(*preset);
     std::vector<JobFile> reads{
         {a.preset, "--preset"}, {a.lightTrack, "--light-track"}, {a.camera, "--camera"}};
     std::vector<JobFile> writes;
@@ -175,7 +193,7 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
     if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
-    auto loaded = readJobInput(in, kApplyMemory, events, {a.part});
+    auto loaded = readJobInput(in, applyMemory(a, *preset), events, {a.part});
     if (!loaded) return loaded.error();
     // The flare alone is not the plate: its parts are not written with it.
     if (!a.flareOnly) {
@@ -293,7 +311,9 @@ Result<ShotSummary> applyToShot(const ApplyOptions& a, const JobEvents& events) 
     if (Status s = checkApplyFiles(a, &*plan, mattePattern); !s) return s.error();
     auto light = ShotLight::load(a, *plan, events);
     if (!light) return light.error();
-    auto parallel = framesInFlight(*plan, kApplyMemory, false);
+    auto preset = loadPreset(a.preset);
+    if (!preset) return preset.error();
+    auto parallel = framesInFlight(*plan, applyMemory(a, *preset), false);
     if (!parallel) return parallel.error();
     std::optional<ShotCoverage> coverage;
     if (a.occlusion.enabled())

@@ -114,6 +114,9 @@ JobMemory postFxMemory(const PostFxJobOptions& a) {
     double perPixel = gl ? 96 : 48;
     if (!a.layersDir.empty() || a.layersInOutput)
         perPixel += 6 * 16;  // bloom, ghosts, halo, streaks, lens, final
+    // The five layers' channels copied for the output and its larger encode (measured at 4K:
+    // 49 bytes per pixel more than --save-layers; 60 counted).
+    if (a.layersInOutput) perPixel += 60;
     if (a.expandHighlights) perPixel += 16;
     return {perPixel, (gl ? 256.0 : 160.0) * (1 << 20),
             std::string("postfx ") + (gl ? "gl" : "cpu") + ": " + std::to_string(int(perPixel)) +

@@ -40,6 +40,48 @@ lens::RayResult centroid(const lens::RayResult& a, const lens::RayResult& b,
     return m;
 }
 
+//! Meshes drawn between two fences: about 0.1 s each on llvmpipe for a spectral render's
+//! meshes, so a signal waits for at most two batches (under 1 s); microseconds on a GPU.
+constexpr std::size_t kMeshesPerFence = 4;
+
+//! Keeps the GPU at most two fenced batches behind the CPU, waiting in 20 ms slices that poll
+//! the interrupt flag.
+class FenceThrottle {
+  public:
+    FenceThrottle() = default;
+    FenceThrottle(const FenceThrottle&) = delete;
+    FenceThrottle& operator=(const FenceThrottle&) = delete;
+    ~FenceThrottle() {
+        for (GLsync f : {m_older, m_newer})
+            if (f) glDeleteSync(f);
+    }
+    //! A batch was queued: fence it, and wait for the one before it. False: interrupted.
+    bool next() {
+        if (!wait(m_older)) return false;
+        m_older = m_newer;
+        m_newer = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        return true;
+    }
+    //! Every batch done. False: interrupted.
+    bool drain() { return next() && wait(m_older) && wait(m_newer); }
+
+  private:
+    static constexpr GLuint64 kSliceNs = 20'000'000;
+    bool wait(GLsync& fence) {
+        if (!fence) return true;
+        for (;;) {
+            const GLenum r = glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, kSliceNs);
+            if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED || r == GL_WAIT_FAILED)
+                break;
+            if (interrupted()) return false;
+        }
+        glDeleteSync(fence);
+        fence = nullptr;
+        return true;
+    }
+    GLsync m_older = nullptr, m_newer = nullptr;
+};
+
 class GlGhostDrawer final : public lens::GhostDrawer {
   public:
     static Result<std::unique_ptr<GlGhostDrawer>> create(int width, int height) {
@@ -114,18 +156,21 @@ class GlGhostDrawer final : public lens::GhostDrawer {
                     crossings = gl::uniformLocation(p, "u_crossings");
         glBeginQuery(GL_TIME_ELAPSED, m_timer.get());
         std::vector<float> triangles;
+        // A signal stops the draw between meshes. The GPU runs behind the loop (llvmpipe draws
+        // a spectral render's meshes for a minute after the loop has queued them all), so the
+        // loop keeps at most two batches of kMeshesPerFence meshes queued, waiting for the older
+        // batch's fence in short slices that poll the interrupt flag.
+        FenceThrottle throttle;
+        const auto stop = [&] {
+            glEndQuery(GL_TIME_ELAPSED);
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return interruptedError("lens render: the ghost draw was stopped");
+        };
         for (std::size_t k = 0; k < meshes.size(); ++k) {
             const lens::Mesh& m = meshes[k];
-            // A signal stops the draw between meshes (their triangles are built here, on the
-            // CPU: seconds for a spectral render); the queued draws are flushed every 64 so
-            // that what is left to wait for at the stop stays small.
-            if (interrupted()) {
-                glEndQuery(GL_TIME_ELAPSED);
-                glDisable(GL_BLEND);
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                return interruptedError("lens render: the ghost draw was stopped");
-            }
-            if (k % 64 == 63) glFlush();
+            if (interrupted()) return stop();
+            if (k % kMeshesPerFence == 0 && k > 0 && !throttle.next()) return stop();
             triangles.clear();
             int stopCrossings = 0;
             const auto add = [&](const lens::RayResult& a, const lens::RayResult& b,
@@ -161,6 +206,7 @@ class GlGhostDrawer final : public lens::GhostDrawer {
                               triangles.data(), GL_STREAM_DRAW);
             glDrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size() / kFloatsPerVertex));
         }
+        if (!throttle.drain()) return stop();
         glEndQuery(GL_TIME_ELAPSED);
         GLuint64 ns = 0;
         glGetQueryObjectui64v(m_timer.get(), GL_QUERY_RESULT, &ns);

@@ -2,10 +2,18 @@
 // What a hostile user hands the CLI. Nothing the user had is lost: every file a job would write
 // (the output, each layer, each frame's) is checked against every file it reads and against the
 // others, by file identity, before any work; each refusal is one line naming both files, exit
-// 2, and every file stays as it was. And nothing broken is flared silently: a JPEG without all
-// its data is exit 2, not a grey slab under a flare.
+// 2, and every file stays as it was. Nothing broken is flared silently: a JPEG without all its
+// data is exit 2, not a grey slab under a flare. And every job's memory estimate covers what
+// it holds with its layers (its measured peak).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -157,6 +165,81 @@ TEST(BrokenInput, ALongPathIsCutNotTheReason) {
     EXPECT_LE(r.err.size(), 1000u + std::string("flarekit: \n").size());
     EXPECT_NE(r.err.find("File name too long"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("...aaaa"), std::string::npos) << r.err;
+}
+
+//! Runs the CLI with `args` and returns its peak resident memory in bytes (wait4's ru_maxrss),
+//! or -1 when it failed.
+double peakBytes(const std::vector<std::string>& args) {
+    std::vector<char*> argv{const_cast<char*>(FLAREKIT_CLI)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, FLAREKIT_CLI, &quiet, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&quiet);
+    if (spawned != 0) return -1;
+    int status = 0;
+    rusage usage{};
+    if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return -1;
+    return double(usage.ru_maxrss) * 1024.0;
+}
+
+//! The job's own estimate: what it says when refused under a 1 MiB budget.
+double estimatedBytes(const std::vector<std::string>& args) {
+    std::vector<std::string> refused{"--max-memory", "1M"};
+    refused.insert(refused.end(), args.begin(), args.end());
+    const CliResult r = runCli(refused);
+    const std::size_t at = r.err.find("needs an estimated ");
+    if (r.exitCode != 2 || at == std::string::npos) return -1;
+    char unit = 0;
+    double value = 0;
+    if (std::sscanf(r.err.c_str() + at, "needs an estimated %lf %ciB", &value, &unit) != 2)
+        return -1;
+    return value * (unit == 'G' ? 1 << 30 : unit == 'M' ? 1 << 20 : 1 << 10);
+}
+
+// Every job's budget counts what it holds: with its layers as files or as channels of the
+// output, at three sizes, the measured peak stays under the estimate it checks the budget with.
+TEST(MemoryBudget, EveryJobWithLayersPeaksUnderItsEstimate) {
+    TempDir dir;
+    for (const auto& [w, h] : {std::pair{320, 180}, std::pair{960, 540}, std::pair{1920, 1080}}) {
+        const std::string plate = dir.file(std::string("plate").append(std::to_string(w)) + ".exr");
+        Image image(w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const float d = std::hypot(float(x - w / 3), float(y - h / 3));
+                const float v = d < float(h) / 60.f ? 20000.f : 0.1f + 0.2f * float(y) / float(h);
+                image.at(x, y) = {v, v, v, 1.f};
+            }
+        WriteOptions f32;
+        f32.format = SampleFormat::Float;
+        ASSERT_TRUE(writeImage(plate, image, f32));
+        const std::vector<std::vector<std::string>> jobs = {
+            {"apply", plate, "-o", dir.file("a.exr"), "--layers", dir.file("l")},
+            {"apply", plate, "-o", dir.file("a.exr"), "--layers-in-output"},
+            {"postfx", plate, "-o", dir.file("p.exr"), "--save-layers", dir.file("l")},
+            {"postfx", plate, "-o", dir.file("p.exr"), "--layers-in-output"},
+            {"lens", "render", "angenieux-double-gauss", plate, "-o", dir.file("r.exr"), "--layers",
+             dir.file("l"), "--grid", "24"},
+            {"lens", "render", "angenieux-double-gauss", plate, "-o", dir.file("r.exr"),
+             "--layers-in-output", "--grid", "24"},
+        };
+        for (const auto& job : jobs) {
+            // Appended: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+            std::string what = std::to_string(w);
+            what.append("x").append(std::to_string(h));
+            for (const std::string& a : job) what.append(" ").append(a.substr(0, 20));
+            const double estimate = estimatedBytes(job), peak = peakBytes(job);
+            ASSERT_GT(estimate, 0) << what;
+            ASSERT_GT(peak, 0) << what;
+            EXPECT_LE(peak, estimate) << what << ": peak " << peak / (1 << 20) << " MiB, estimate "
+                                      << estimate / (1 << 20) << " MiB";
+        }
+    }
 }
 
 TEST(BrokenInput, AJpegCutShortIsOneLineAndNoFile) {
