@@ -190,6 +190,16 @@ for sig in INT TERM; do
   done
 done
 
+# SIGTERM to the job PID (a child of this shell) and its exit: sets rc and stop_ms.
+terminate_timed() {
+  local start
+  start=$(date +%s%N)
+  kill -s TERM "$1"
+  wait "$1"
+  rc=$?
+  stop_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+}
+
 # lens render with many sources: a line per source on stderr (not a terminal here), and SIGTERM
 # stops it within 2 s wherever it is (Slurm waits 30 s before SIGKILL), with the interrupted line
 # last and nothing written.
@@ -201,11 +211,7 @@ pid=$!
 for _ in $(seq 1 600); do grep -q "source 1 of" "$lens_dir/err" && break; sleep 0.05; done
 grep -q "source 1 of [0-9]* drawn" "$lens_dir/err" && pass || fail "lens render: no per-source progress: $(head -c 300 "$lens_dir/err")"
 sleep 0.3
-start=$(date +%s%N)
-kill -s TERM "$pid"
-wait "$pid"
-rc=$?
-stop_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+terminate_timed "$pid"
 echo "lens render stopped ${stop_ms} ms after SIGTERM (exit $rc)"
 [ "$rc" -eq 143 ] && pass || fail "lens render SIGTERM: exit $rc, expected 143"
 [ "$stop_ms" -lt 2000 ] && pass || fail "lens render took ${stop_ms} ms to stop after SIGTERM"
@@ -222,11 +228,7 @@ if [ "$gl" = gl ]; then
     --backend gl --spectral 16 --grid 64 2>"$lens_dir/gl-err" &
   pid=$!
   sleep 6
-  start=$(date +%s%N)
-  kill -s TERM "$pid"
-  wait "$pid"
-  rc=$?
-  stop_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+  terminate_timed "$pid"
   echo "lens render --backend gl stopped ${stop_ms} ms after SIGTERM (exit $rc)"
   [ "$rc" -eq 143 ] && pass || fail "lens render --backend gl SIGTERM: exit $rc, expected 143: $(head -c 300 "$lens_dir/gl-err")"
   [ "$stop_ms" -lt 2000 ] && pass || fail "lens render --backend gl took ${stop_ms} ms to stop after SIGTERM"
