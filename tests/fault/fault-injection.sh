@@ -140,7 +140,8 @@ interrupt_trial() {  # signal delay_ms kind
   if [ "$kind" = demo ]; then
     "$cli" demo -o "$dir/drive" --frames 24 --size 320x180 >/dev/null 2>"$dir/err" &
   else
-    "$cli" apply "$samples/sunset-hdr.exr" -o "$dir/out.exr" --preset sun-wide 2>"$dir/err" &
+    "$cli" apply "$samples/sunset-hdr.exr" -o "$dir/out.exr" --preset sun-wide \
+      --layers "$dir/layers" 2>"$dir/err" &
   fi
   pid=$!
   sleep "$(awk "BEGIN {print $delay / 1000}")"
@@ -163,6 +164,12 @@ interrupt_trial() {  # signal delay_ms kind
   if pgrep -f "ffmpeg.*$dir" >/dev/null; then fail "$kind SIG$sig: ffmpeg still running"; pkill -f "ffmpeg.*$dir"; else pass; fi
   expect_no_leftovers "$dir" "$kind SIG$sig after ${delay} ms"
   expect_complete_images "$dir" "$kind SIG$sig after ${delay} ms"
+  # apply's layers: complete files, or no folder at all (never an empty one).
+  if [ -d "$dir/layers" ] && [ -z "$(ls -A "$dir/layers")" ]; then
+    fail "$kind SIG$sig after ${delay} ms: an empty layers folder was left"
+  else
+    pass
+  fi
 }
 # Each signal lands at a random point of the job's own run: its length is measured first (the
 # demo takes about a second on 2 cores, apply a fifth of one; fixed delays of up to 4 s mostly
@@ -174,7 +181,8 @@ run_ms() {  # kind -> how long one uninterrupted run takes, in ms
   if [ "$1" = demo ]; then
     "$cli" demo -o "$dir/drive" --frames 24 --size 320x180 >/dev/null 2>&1
   else
-    "$cli" apply "$samples/sunset-hdr.exr" -o "$dir/out.exr" --preset sun-wide 2>/dev/null
+    "$cli" apply "$samples/sunset-hdr.exr" -o "$dir/out.exr" --preset sun-wide \
+      --layers "$dir/layers" 2>/dev/null
   fi
   echo $(( ($(date +%s%N) - start) / 1000000 + 1 ))
 }
