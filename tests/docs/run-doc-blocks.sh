@@ -10,6 +10,8 @@
 #   <!-- docs-test: skip: the reason -->
 #   run-doc-blocks.sh SOURCE_DIR BUILD_DIR CLI [PAGE.md ...]
 set -uo pipefail
+# shellcheck source=tests/support/undecodable-images.sh
+source "$(dirname "$0")/../support/undecodable-images.sh"
 src="$(cd "$1" && pwd)"
 build="$(cd "$2" && pwd)"
 cli="$(readlink -f "$3")"
@@ -131,13 +133,11 @@ for page in "${pages[@]}"; do
       # shellcheck disable=SC2086
       ( cd "$dir" && compgen -G "$pattern" > /dev/null ) || problems+=" no $target;"
     done
-    # Every image it wrote decodes completely: OpenImageIO's iinfo computes each one's pixel
-    # statistics (one process for them all; it reports a failed read in its output).
-    find "$dir" -newer "$work/stamp" -type f \( -name '*.png' -o -name '*.exr' -o -name '*.jpg' \
-      -o -name '*.tif' -o -name '*.ppm' \) -print0 | xargs -0 -r iinfo --stats > "$work/stats" 2>&1
-    if grep -q -E "unable to compute|Error|error" "$work/stats"; then
-      problems+=" an image it wrote does not decode: $(grep -m 3 -E 'Error|error' "$work/stats");"
-    fi
+    # Every image it wrote decodes completely.
+    mapfile -d '' written < <(find "$dir" -newer "$work/stamp" -type f \( -name '*.png' -o \
+      -name '*.exr' -o -name '*.jpg' -o -name '*.tif' -o -name '*.ppm' \) -print0)
+    bad="$(undecodable_images "${written[@]}")"
+    [ -z "$bad" ] || problems+=" an image it wrote does not decode: $bad;"
     if [ -n "$problems" ]; then
       echo "docs: FAIL $where:$problems"
       status=1

@@ -8,6 +8,8 @@
 #   tests/fault/fault-injection.sh FLAREKIT SAMPLES_DIR [gl|nogl]
 # (nogl: a FLAREKIT_GL=OFF build; the demo cases, which need OpenGL, are skipped.)
 set -uo pipefail
+# shellcheck source=tests/support/undecodable-images.sh
+source "$(dirname "$0")/../support/undecodable-images.sh"
 cli="$1"
 samples="$2"
 gl="${3:-gl}"
@@ -36,12 +38,9 @@ expect_complete_images() {
   local files
   mapfile -t files < <(find "$1" \( -name '*.png' -o -name '*.exr' \) 2>/dev/null)
   [ "${#files[@]}" -gt 0 ] || return 0
-  iinfo --stats "${files[@]}" > "$work/stats" 2>&1
-  if grep -q -E "unable to compute|Error|error" "$work/stats"; then
-    fail "$2: an image is not complete: $(grep -m 3 -E 'Error|error' "$work/stats" | tr '\n' ' ')"
-  else
-    pass
-  fi
+  local bad
+  bad="$(undecodable_images "${files[@]}")"
+  if [ -n "$bad" ]; then fail "$2: an image is not complete: $bad"; else pass; fi
 }
 expect_exit() {  # expected actual what
   if [ "$2" -eq "$1" ]; then pass; else fail "$3: exit $2, expected $1"; fi
