@@ -79,6 +79,15 @@ Result<LensFlareLayers> renderLayers(const LensJobOptions& a, const std::string&
 //! The layers' names: the render's three parts and their sum.
 constexpr const char* kLensLayerNames[] = {"ghosts", "starburst", "glare", "flare"};
 
+//! The layers' images by kLensLayerNames, for their files and the output's channels alike.
+std::vector<NamedLayer> namedLensLayers(const LensFlareLayers& layers, const Image& flare) {
+    const Image* images[] = {&layers.ghosts, &layers.starburst, &layers.glare, &flare};
+    std::vector<NamedLayer> named;
+    for (std::size_t i = 0; i < std::size(images); ++i)
+        named.push_back({kLensLayerNames[i], images[i]});
+    return named;
+}
+
 //! A layer's file: DIR/NAME + `suffix` + .exr (".1001" for a sequence's frame).
 std::string lensLayerPath(const std::string& dir, const std::string& name,
                           const std::string& suffix) {
@@ -90,10 +99,9 @@ Status writeLensLayers(const std::string& dir, const std::string& suffix,
                        const EncodeSettings& encode) {
     WriteOptions options;
     options.encode = encode;
-    const Image* images[] = {&layers.ghosts, &layers.starburst, &layers.glare, &flare};
     std::vector<job_detail::LayerFile> files;
-    for (std::size_t i = 0; i < std::size(images); ++i)
-        files.push_back({lensLayerPath(dir, kLensLayerNames[i], suffix), images[i]});
+    for (const auto& [name, image] : namedLensLayers(layers, flare))
+        files.push_back({lensLayerPath(dir, name, suffix), image});
     return job_detail::writeLayerFiles(dir, files, options);
 }
 
@@ -162,10 +170,7 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
     result.options.exrExtras = keptExtras(*loaded, in, out, events);
     if (a.layersInOutput)
         result.options.exrExtras =
-            withLayerChannels(result.options.exrExtras, {{"ghosts", &layers->ghosts},
-                                                         {"starburst", &layers->starburst},
-                                                         {"glare", &layers->glare},
-                                                         {"flare", &flare}});
+            withLayerChannels(result.options.exrExtras, namedLensLayers(*layers, flare));
     result.options.encode = a.encode;
     char line[400];
     std::snprintf(line, sizeof line, "%s: %zu light(s), flare through %s (f = %.1f mm)",
