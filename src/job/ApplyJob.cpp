@@ -131,11 +131,9 @@ Status writeFlareLayers(const std::string& dir, const std::string& suffix,
 
 //! What the job reads and writes, for checkJobFiles: the preset, track and camera, then per
 //! image or frame the plate, its matte, the output and each layer the preset draws.
-Status checkApplyFiles(const ApplyOptions& a, const ShotPlan* plan,
+Status checkApplyFiles(const ApplyOptions& a, const Preset& preset, const ShotPlan* plan,
                        const std::optional<FramePattern>& matte) {
-    auto preset = loadPreset(a.preset);
-    if (!preset) return preset.error();
-    const std::vector<std::string> layerNames = layerNamesOf(*preset);
+    const std::vector<std::string> layerNames = layerNamesOf(preset);
     std::vector<JobFile> reads{
         {a.preset, "--preset"}, {a.lightTrack, "--light-track"}, {a.camera, "--camera"}};
     std::vector<JobFile> writes;
@@ -247,7 +245,9 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
 
 //! One image: the light given or found, dimmed by the matte's coverage when one is given.
 Status applyToImage(const ApplyOptions& a, const JobEvents& events) {
-    if (Status s = checkApplyFiles(a, nullptr, std::nullopt); !s) return s;
+    auto preset = loadPreset(a.preset);
+    if (!preset) return preset.error();
+    if (Status s = checkApplyFiles(a, *preset, nullptr, std::nullopt); !s) return s;
     std::optional<ShotCoverage> coverage;
     if (a.occlusion.enabled())
         coverage.emplace(
@@ -308,11 +308,11 @@ Result<ShotSummary> applyToShot(const ApplyOptions& a, const JobEvents& events) 
     }
     auto plan = planShot(a.input, a.output, a.shot, otherInputs, events);
     if (!plan) return plan.error();
-    if (Status s = checkApplyFiles(a, &*plan, mattePattern); !s) return s.error();
-    auto light = ShotLight::load(a, *plan, events);
-    if (!light) return light.error();
     auto preset = loadPreset(a.preset);
     if (!preset) return preset.error();
+    if (Status s = checkApplyFiles(a, *preset, &*plan, mattePattern); !s) return s.error();
+    auto light = ShotLight::load(a, *plan, events);
+    if (!light) return light.error();
     auto parallel = framesInFlight(*plan, applyMemory(a, *preset), false);
     if (!parallel) return parallel.error();
     std::optional<ShotCoverage> coverage;
