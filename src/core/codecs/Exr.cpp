@@ -314,12 +314,12 @@ void insertScratch(Imf::FrameBuffer& frame, const char* name, const Imath::Box2i
 //! Decodes every chunk of a flat part once (a band of rows or a tile at a time, into a scratch
 //! buffer), so a chunk that does not decompress is found before a copy carries it out. One
 //! channel is enough: a chunk is decompressed whole whichever channels are asked for.
-void decodeFlatPart(Imf::MultiPartInputFile& file, int index) {
+bool decodeFlatPart(Imf::MultiPartInputFile& file, int index) {
     const Imf::Header& header = file.header(index);
     const char* channel = nullptr;
     for (auto c = header.channels().begin(); c != header.channels().end(); ++c)
         if (c.channel().xSampling == 1 && c.channel().ySampling == 1) channel = c.name();
-    if (!channel) return;  // only subsampled channels: OpenEXR's file check covers it
+    if (!channel) return false;  // only subsampled channels: left to OpenEXR's file check
     std::vector<float> scratch;
     if (header.type() == Imf::TILEDIMAGE) {
         Imf::TiledInputPart part(file, index);
@@ -335,7 +335,7 @@ void decodeFlatPart(Imf::MultiPartInputFile& file, int index) {
                         part.readTile(tx, ty, lx, ly);
                     }
             }
-        return;
+        return true;
     }
     Imf::InputPart part(file, index);
     const Imath::Box2i window = header.dataWindow();
@@ -348,35 +348,34 @@ void decodeFlatPart(Imf::MultiPartInputFile& file, int index) {
         part.setFrameBuffer(frame);
         part.readPixels(y0, y1);
     }
+    return true;
 }
 
-//! Every part that goes to the output chunk for chunk decodes: OpenEXR's own file check over
-//! the whole file (deep parts included), then, only when it fails, each flat part decoded to
-//! name the corrupt one. One line naming the file and the part; never a file that fails to open.
+//! Every part that goes to the output chunk for chunk decodes: each flat part decoded once
+//! (naming the corrupt one), deep parts and parts of subsampled channels only by OpenEXR's own
+//! file check (which reads the whole file, so only when there are any). The part flared was decoded
+//! by the read itself. One line naming the file and the part; never a file that fails to open.
 Status checkCopiedParts(const std::string& path, Imf::MultiPartInputFile& file, int chosen) {
-    if (!Imf::checkOpenEXRFile(path.c_str())) return Ok{};
-    std::string deep;
+    std::string others;  // the parts left to the file check
     for (int i = 0; i < file.parts(); ++i) {
         if (i == chosen) continue;
         const std::string type = file.header(i).type();
         // Appended, not "literal" + std::string: GCC 12 warns falsely (-Wrestrict) on the latter.
         std::string name(1, '\'');
         name.append(excerpt(partName(file.header(i), i), 60)).append(1, '\'');
-        if (type != Imf::SCANLINEIMAGE && type != Imf::TILEDIMAGE) {
-            deep += (deep.empty() ? "" : ", ") + name;
-            continue;
-        }
+        bool decoded = false;
         try {
-            decodeFlatPart(file, i);
+            if (type == Imf::SCANLINEIMAGE || type == Imf::TILEDIMAGE)
+                decoded = decodeFlatPart(file, i);
         } catch (const std::exception& e) {
             return invalidInput(path + ": part " + name + " (copied unchanged to the output) " +
                                 "does not decode: " + excerpt(firstLine(e.what()), 200));
         }
+        if (!decoded) others.append(others.empty() ? "" : ", ").append(name);
     }
-    return invalidInput(
-        path + ": OpenEXR's file check fails on it" +
-        (deep.empty() ? std::string() : " (its deep parts " + deep + " are copied unchanged)") +
-        "; a copy would not open");
+    if (others.empty() || !Imf::checkOpenEXRFile(path.c_str())) return Ok{};
+    return invalidInput(path + ": OpenEXR's file check fails on it (its parts " + others +
+                        " are copied unchanged); a copy would not open");
 }
 
 //! A part flarekit cannot flare: one line naming the file, the part, its channels and what it
