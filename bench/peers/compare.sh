@@ -6,23 +6,37 @@
 # run is a whole process (start-up, read, effect, write), as a user or a script meets it.
 # Runs alternate flarekit / peer; the figure is the median of the pairwise time ratios.
 #   bench/peers/compare.sh [FLAREKIT] [OUT_DIR] [PAIRS]
+# With --builds, two flarekit builds instead, the same commands on the same inputs (a change's
+# cost in whole-process time, paired so the VM's drift cancels); the peer is OLD:
+#   bench/peers/compare.sh --builds OLD_FLAREKIT NEW_FLAREKIT [OUT_DIR] [PAIRS]
 # Installs Blender and GIMP with apt-get when they are missing (Debian 12: Blender 3.4, GIMP
 # 2.10). Not part of the test suite. Prints every run and a Markdown table (OUT_DIR/table.md).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
+old=""
+if [ "${1:-}" = "--builds" ]; then
+  old="$(realpath "$2")"
+  shift 2
+fi
 flarekit="$(realpath "${1:-$here/../../build/flarekit}")"
 out="${2:-$(mktemp -d)}"
 pairs="${3:-5}"
 mkdir -p "$out"
 need=()
-command -v blender >/dev/null || need+=(blender)
-command -v gimp-console >/dev/null || need+=(gimp)
+if [ -z "$old" ]; then
+  command -v blender >/dev/null || need+=(blender)
+  command -v gimp-console >/dev/null || need+=(gimp)
+fi
 command -v oiiotool >/dev/null || need+=(openimageio-tools)
 if [ ${#need[@]} -gt 0 ]; then
   apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${need[@]}"
 fi
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
-echo "flarekit: $("$flarekit" --version); $(blender --version 2>/dev/null | head -1); GIMP $(gimp-console --version | awk '{print $NF}')"
+if [ -n "$old" ]; then
+  echo "flarekit: $flarekit ($("$flarekit" --version)); peer: $old ($("$old" --version))"
+else
+  echo "flarekit: $("$flarekit" --version); $(blender --version 2>/dev/null | head -1); GIMP $(gimp-console --version | awk '{print $NF}')"
+fi
 
 seconds() {  # runs "$@" quietly, prints its wall time in seconds
   local t0 t1
@@ -57,6 +71,13 @@ for size in 1920x1080 3840x2160; do
   png="$out/photo-$size.png"
   oiiotool "$here/../../samples/sunset-hdr.exr" --resize "$size" -d half -o "$exr"
   oiiotool "$here/../../samples/sunset.png" --resize "$size" -o "$png"
+  if [ -n "$old" ]; then
+    row "postfx, new vs old build" "$size" "\"$flarekit\" postfx \"$exr\" -o \"$out/fk-$size.exr\"" \
+      "\"$old\" postfx \"$exr\" -o \"$out/old-$size.exr\""
+    row "apply, new vs old build" "$size" "\"$flarekit\" apply \"$png\" -o \"$out/fk-$size.png\"" \
+      "\"$old\" apply \"$png\" -o \"$out/old-$size.png\""
+    continue
+  fi
   # GIMP's flare needs its centre: the light flarekit finds in the same picture.
   centre=$("$flarekit" apply "$png" -o "$out/probe.png" -v | awk '/^flare at/ {split($3, p, ","); printf "%d %d", p[1], p[2]}')
   row "postfx vs Blender Glare (Ghosts)" "$size" \

@@ -38,22 +38,16 @@ Mat lookAt(V3 eye, V3 target) {
     const float sl = std::sqrt(s.x * s.x + s.z * s.z);
     s = {s.x / sl, 0.f, s.z / sl};
     const V3 u{s.y * f.z - s.z * f.y, s.z * f.x - s.x * f.z, s.x * f.y - s.y * f.x};
-    return {s.x,
-            u.x,
-            -f.x,
-            0,
-            s.y,
-            u.y,
-            -f.y,
-            0,
-            s.z,
-            u.z,
-            -f.z,
-            0,
-            -(s.x * eye.x + s.y * eye.y + s.z * eye.z),
-            -(u.x * eye.x + u.y * eye.y + u.z * eye.z),
-            f.x * eye.x + f.y * eye.y + f.z * eye.z,
-            1};
+    const float ts = s.x * eye.x + s.y * eye.y + s.z * eye.z,
+                tu = u.x * eye.x + u.y * eye.y + u.z * eye.z,
+                tf = f.x * eye.x + f.y * eye.y + f.z * eye.z;
+    // A column a line.
+    // clang-format off
+    return {s.x, u.x, -f.x, 0,
+            s.y, u.y, -f.y, 0,
+            s.z, u.z, -f.z, 0,
+            -ts, -tu,  tf,  1};
+    // clang-format on
 }
 
 //! Reversed-Z with an infinite far plane, for glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE):

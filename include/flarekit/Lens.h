@@ -212,6 +212,10 @@ struct GhostReport {
 //! image the lens vignettes away still has its ghosts).
 Result<GhostReport> analyseGhosts(const Lens& lens, const GhostQuery& query);
 
+//! The report as `lens ghosts --json` prints it (the contract of docs/lens.md): the lens, the
+//! focal length, what each field means, the direct image and every ghost.
+std::string ghostReportJson(const std::string& lensName, const GhostReport& report);
+
 //! A point source on the image: pixel position (top-left origin, centres at +0.5) and energy per
 //! channel (the sum of the linear pixel values it stands for).
 struct LensLight {

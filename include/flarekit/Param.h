@@ -204,6 +204,24 @@ constexpr Param<Owner> aboveMin(Param<Owner> p) {
     return p;
 }
 
+//! A text member (a file, a file pattern, a channel or colour-space name), described once as a
+//! numeric parameter is: its key and help feed the CLI's flag, the studio's field and the docs.
+//! What the text must be is checked by the job that reads it (the file, the channel it names).
+template <class Owner>
+struct TextParam {
+    std::string_view key;
+    std::string Owner::*member = nullptr;
+    std::string_view help;
+};
+
+//! `text<&OcclusionOptions::matte>("matte", "holdout matte ...")`.
+template <auto Member>
+constexpr TextParam<param_detail::OwnerOf<Member>> text(std::string_view key,
+                                                        std::string_view help) {
+    static_assert(std::is_same_v<param_detail::FieldOf<Member>, std::string>, "a text member");
+    return {key, Member, help};
+}
+
 template <class Owner>
 const Param<Owner>* findParam(std::span<const Param<Owner>> table, std::string_view key) {
     for (const Param<Owner>& p : table) {

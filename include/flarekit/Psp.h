@@ -70,6 +70,19 @@ Result<PspFrameInput> pspInputFromScene(const Scene& scene);
 //! A 480x272 mask image (any channels; non-zero in the first channel = occluder) as occluders.
 Result<std::vector<std::uint8_t>> occludersFromMask(const Image8& mask, const std::string& name);
 
+//! `flarekit psp burnout|ridge-racer`: one frame of a trick from files, its outputs written.
+struct PspFrameJobOptions {
+    std::string occluders;   //!< 480x272 mask image (occludersFromMask)
+    int sunX = 0, sunY = 0;  //!< the sun's centre in screen pixels (outside: no mask, no flare)
+    bool naive = false;      //!< PspFrameInput::naive
+    std::string output;      //!< the final frame (PNG)
+    std::string dumpDir;     //!< every step as NAME.png here, made when missing (empty: none)
+    std::string traceFile;   //!< one line per executed GE command (empty: none)
+    EncodeSettings encode;   //!< of the images written
+};
+//! Reads the mask, runs the frame (runPspFrame) and writes the frame, the steps and the trace.
+Result<PspFrameResult> runPspFrameJob(PspTrick trick, const PspFrameJobOptions& options);
+
 //! `flarekit psp demo`: the demo drive through the emulator.
 struct PspDemoOptions {
     std::string outDir;  //!< made when missing

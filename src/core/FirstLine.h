@@ -3,6 +3,7 @@
 // message, trimmed (OpenImageIO, GL info logs), and excerpts of input text cut to a length.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -65,6 +66,36 @@ inline std::string printable(std::string_view text) {
         }
     }
     return out;
+}
+
+//! A message as one line for a terminal or a log: trailing blanks dropped, printable(), and no
+//! more than 1,000 characters.
+inline std::string cappedLine(std::string_view message) {
+    // 1,000 characters: the longest real message (a list of every known key) fits; a hostile
+    // input that echoes megabytes of itself does not reach the terminal. What is cut is the
+    // values: the longest words (a 4 KB path, a value without spaces) lose their middle down to
+    // 60 characters, first to last, so the reason after them ("File name too long") stays.
+    constexpr std::size_t kMax = 1000, kWord = 60;
+    std::string_view text = message;
+    while (!text.empty() && std::string_view(" \t\r\n").find(text.back()) != std::string_view::npos)
+        text.remove_suffix(1);
+    std::string line = printable(text);
+    while (line.size() > kMax) {
+        std::size_t longest = 0, at = 0;
+        for (std::size_t i = 0; i < line.size();) {
+            const std::size_t end = std::min(line.find(' ', i), line.size());
+            if (end - i > longest) longest = end - i, at = i;
+            i = end + 1;
+        }
+        if (longest <= kWord) break;
+        // The word's start and its end (a path's file name), the cut never inside a UTF-8
+        // sequence.
+        std::size_t head = kWord / 2, tail = at + longest - (kWord - head - 3);
+        while (head > 0 && (static_cast<unsigned char>(line[at + head]) & 0xC0) == 0x80) --head;
+        while ((static_cast<unsigned char>(line[tail]) & 0xC0) == 0x80) ++tail;
+        line.replace(at + head, tail - at - head, "...");
+    }
+    return excerpt(line, kMax);
 }
 
 }  // namespace flarekit

@@ -15,30 +15,26 @@ CameraBasis cameraBasis(const SceneCamera& c) {
 Mat4 lookAtMatrix(const SceneCamera& c) {
     const CameraBasis b = cameraBasis(c);
     const Vec3 s = b.right, u = b.up, f = b.forward;
-    return {s.x,
-            u.x,
-            -f.x,
-            0,
-            s.y,
-            u.y,
-            -f.y,
-            0,
-            s.z,
-            u.z,
-            -f.z,
-            0,
-            -dot(s, c.position),
-            -dot(u, c.position),
-            dot(f, c.position),
-            1};
+    const Vec3 p = c.position;
+    // A column a line.
+    // clang-format off
+    return {s.x,        u.x,        -f.x,      0,
+            s.y,        u.y,        -f.y,      0,
+            s.z,        u.z,        -f.z,      0,
+            -dot(s, p), -dot(u, p), dot(f, p), 1};
+    // clang-format on
 }
 
 Mat4 perspectiveMatrix(const SceneCamera& c, double aspect) {
     const double f = 1.0 / std::tan(c.fovYDeg * std::numbers::pi / 360.0);
     const double n = c.nearPlane, fa = c.farPlane;
-    return {
-        f / aspect, 0, 0, 0, 0, f, 0, 0, 0, 0, (fa + n) / (n - fa), -1, 0, 0, 2 * fa * n / (n - fa),
-        0};
+    // A column a line.
+    // clang-format off
+    return {f / aspect, 0, 0,                     0,
+            0,          f, 0,                     0,
+            0,          0, (fa + n) / (n - fa),   -1,
+            0,          0, 2 * fa * n / (n - fa), 0};
+    // clang-format on
 }
 
 Mat4 orthographicMatrix(double halfWidth, double halfHeight, double nearPlane, double farPlane) {

@@ -15,14 +15,18 @@ Preset classic() {
     EXPECT_TRUE(p.ok());
     return *p;
 }
+
+//! The default drive at a small size and frame count.
+DemoSettings sized(int width, int height, int frames) {
+    DemoSettings settings;
+    settings.width = width, settings.height = height, settings.frames = frames;
+    return settings;
+}
 }  // namespace
 
 TEST(Demo, RendersEveryFrameInOrderThenStops) {
     test::glContext();
-    DemoSettings settings;
-    settings.width = 160;
-    settings.height = 90;
-    settings.frames = 8;
+    DemoSettings settings = sized(160, 90, 8);
     settings.fps = 1;  // the first 8 s: the whole drive, a frame a second
     settings.temporal.attackSeconds = settings.temporal.releaseSeconds = 0;  // smoothed == raw
     auto demo = DemoAnimation::create(settings, classic());
@@ -65,10 +69,7 @@ TEST(Demo, BadSettingsAreRejected) {
 // 30 fps are the first 0.4 s, at the speed of the full drive.
 TEST(Demo, FewerFramesAreAShorterDriveAtTheSameFrameRate) {
     test::glContext();
-    DemoSettings settings;
-    settings.width = 64;
-    settings.height = 36;
-    settings.frames = 12;
+    const DemoSettings settings = sized(64, 36, 12);
     auto demo = DemoAnimation::create(settings, classic());
     ASSERT_TRUE(demo.ok()) << demo.error().message;
     double last = -1;

@@ -24,7 +24,7 @@ TEST(LensGhostAccuracy, CentresAndSharesAgreeWithAnIndependentTracer) {
     // backward-leg rays, grazing ghosts) and the Petzval. LensGhostSweep (label slow) runs
     // every shipped lens at 1, 6 and 12 degrees.
     for (const char* name : {"asahi-takumar-50", "kodak-petzval"}) {
-        const Agreement a = compare(shipped(name), 6, -3);
+        const Agreement a = compare(shippedLens(name), 6, -3);
         std::printf(
             "independent tracer %-24s 6,-3 deg: %3d ghosts, largest centre difference "
             "%.5f of the diagonal, share %.5f\n",
@@ -37,7 +37,7 @@ TEST(LensGhostAccuracy, AFlatPlatesGhostIsOffsetBySnellsLaw) {
     // A stop in front of a plane-parallel plate: every ghost ray leaves parallel to its direct
     // ray, displaced by the two extra crossings of the plate, 2 t tan(theta') along the field
     // with sin(theta') = sin(theta) / n. The beam past the stop is the same for both.
-    const Lens lens = parsed(R"({"surfaces": [
+    const Lens lens = parsedLens(R"({"surfaces": [
       {"stop": true, "thickness": 5, "semi_aperture": 4},
       {"radius": 0, "thickness": 6, "n_d": 1.6, "semi_aperture": 30},
       {"radius": 0, "thickness": 40, "semi_aperture": 30}],
@@ -74,7 +74,7 @@ TEST(LensGhostAccuracy, AThinSinglesGhostsSitWhereParaxialOpticsPutsThem) {
     // with 2 x 2 ray-transfer matrices (refraction -(n' - n) c / n', reflection 2 n c in the
     // medium n, signed by the leg).
     const double r1 = 51.68, t = 3, n = 1.5168, stopToLens = 0.5;
-    const Lens lens = parsed(R"({"surfaces": [
+    const Lens lens = parsedLens(R"({"surfaces": [
       {"stop": true, "thickness": 0.5, "semi_aperture": 1},
       {"radius": 51.68, "thickness": 3, "n_d": 1.5168, "semi_aperture": 12},
       {"radius": 0, "thickness": 98.0, "semi_aperture": 12}],
@@ -116,7 +116,7 @@ TEST(LensGhostAccuracy, BackwardLegRaysMovingTowardTheSensorStillCrossFromTheBac
     // it. Every such ray the second tracer finds in flarekit's own beam lands where flarekit's
     // tracer puts it, to 1e-9 mm (a tracer taking the medium from the sign of d.z left these
     // rays unrefracted).
-    const Lens lens = shipped("asahi-takumar-50");
+    const Lens lens = shippedLens("asahi-takumar-50");
     const lens::TraceLens t = lens::prepareTrace(lens, kLineD);
     const reference::Tracer byReference(lens);
     const int n = int(lens.surfaces.size());
@@ -149,7 +149,7 @@ TEST(LensGhostAccuracy, AGhostCarriedBySteepBackwardLegRaysSitsWhereTheSecondTra
     // on the way back to surface 0, from behind while moving toward the sensor. Every ray of
     // that ghost that lands is such a ray (found by a search over random four-surface lenses,
     // then refined), so the whole ghost moves if that crossing is taken as air to air.
-    const Lens lens = parsed(R"({"surfaces": [
+    const Lens lens = parsedLens(R"({"surfaces": [
       {"radius": -34.65, "thickness": 6.6, "n_d": 1.8, "semi_aperture": 30.3},
       {"radius": -36.87, "thickness": 6.25, "semi_aperture": 36.3},
       {"radius": -40.96, "thickness": 7.7, "n_d": 1.6, "semi_aperture": 38},
@@ -190,7 +190,7 @@ TEST(LensGhostAccuracy, TheBeamHoldsAllTheLightEnteringACurvedFirstSurface) {
     // plane, fill a disc of the aperture's radius (the rim circle, moved by sag tan(angle)):
     // the grid's entering cells times a cell's area is pi sa^2 at any angle. A grid that ends at
     // +-sa lost the crescent past it.
-    const Lens lens = shipped("asahi-takumar-50");
+    const Lens lens = shippedLens("asahi-takumar-50");
     const lens::TraceLens t = lens::prepareTrace(lens, kLineD);
     const double sa = lens.surfaces.front().semiAperture;
     for (const double angle : {0.0, 6.0, 12.0, 20.0}) {
@@ -199,7 +199,7 @@ TEST(LensGhostAccuracy, TheBeamHoldsAllTheLightEnteringACurvedFirstSurface) {
         EXPECT_NEAR(area / (M_PI * sa * sa), 1.0, 0.002) << angle;
     }
     // A flat first surface: its vertex plane is the surface, the margin is none.
-    const Lens flat = parsed(R"({"surfaces": [
+    const Lens flat = parsedLens(R"({"surfaces": [
       {"radius": 0, "thickness": 4, "n_d": 1.5, "semi_aperture": 10},
       {"radius": -40, "thickness": 5, "semi_aperture": 10},
       {"stop": true, "thickness": 60, "semi_aperture": 8}]})");

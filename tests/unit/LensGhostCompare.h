@@ -11,23 +11,15 @@
 #include <vector>
 
 #include "LensReferenceTracer.h"
+#include "ShippedLens.h"
 #include "flarekit/Lens.h"
 
 namespace lensghosts {
 
 using namespace flarekit;
 
-inline Lens shipped(const std::string& name) {
-    auto lens = loadLens(name);
-    EXPECT_TRUE(lens.ok()) << (lens.ok() ? "" : lens.error().message);
-    return lens.ok() ? *lens : Lens{};
-}
-
-inline Lens parsed(const char* text) {
-    auto lens = parseLens(text, "lens.json");
-    EXPECT_TRUE(lens.ok()) << (lens.ok() ? "" : lens.error().message);
-    return lens.ok() ? *lens : Lens{};
-}
+using test::parsedLens;
+using test::shippedLens;
 
 inline double diagonal(const Lens& lens) {
     return std::hypot(lens.sensor.width, lens.sensor.height);

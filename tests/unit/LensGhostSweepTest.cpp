@@ -18,7 +18,7 @@ using namespace lensghosts;
 
 TEST(LensGhostSweep, EveryShippedLensAt1To12Degrees) {
     for (const std::string& name : lensNames()) {
-        const Lens lens = shipped(name);
+        const Lens lens = shippedLens(name);
         for (const double angle : {1.0, 6.0, 12.0}) {
             const Agreement a = compare(lens, angle, -angle / 2);
             std::printf(
@@ -87,7 +87,7 @@ TEST(LensGhostSweep, CentresConvergeAtTheDefaultRays) {
     // A grazing ghost of the Takumar (rays near total internal reflection, a third of them off
     // the sensor) and compact ones: each centre moves by under 0.1% of the diagonal between the
     // default and four times the rays.
-    const Lens lens = shipped("asahi-takumar-50");
+    const Lens lens = shippedLens("asahi-takumar-50");
     GhostQuery q;
     q.angleXDeg = 6, q.angleYDeg = -3;
     auto base = analyseGhosts(lens, q);

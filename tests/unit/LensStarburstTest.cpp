@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ShippedLens.h"
 #include "flarekit/Lens.h"
 
 using namespace flarekit;
@@ -16,11 +17,7 @@ using namespace flarekit;
 
 namespace {
 
-Lens shipped(const std::string& name) {
-    auto lens = loadLens(name);
-    EXPECT_TRUE(lens.ok()) << (lens.ok() ? "" : lens.error().message);
-    return lens.ok() ? *lens : Lens{};
-}
+using test::shippedLens;
 
 }  // namespace
 
@@ -82,7 +79,7 @@ TEST(Lens, StarburstSpikesEndInsideTheGridWithoutWrappedTips) {
 }
 
 TEST(Lens, StarburstCarriesItsShareAndDirtChangesOnlyItsPattern) {
-    const Lens lens = shipped("angenieux-double-gauss");
+    const Lens lens = shippedLens("angenieux-double-gauss");
     LensLight light;
     light.x = 200, light.y = 200;
     light.energy = {1000, 2000, 3000};
@@ -127,7 +124,7 @@ TEST(Lens, APupilMaskFromAnImageShapesTheStarburstAndKeepsItsShare) {
     // a horizontal slit, narrow in y, spreads the diffraction pattern in y (Fraunhofer: a
     // pattern's extent goes inversely with the aperture's), and the layer still carries its
     // share of the light.
-    const Lens lens = shipped("angenieux-double-gauss");
+    const Lens lens = shippedLens("angenieux-double-gauss");
     LensLight light;
     light.x = 200, light.y = 200;
     light.energy = {1000, 1000, 1000};

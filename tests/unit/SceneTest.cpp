@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "flarekit/Scene.h"
 
 using namespace flarekit;
@@ -51,24 +53,37 @@ TEST(Scene, ErrorsNameTheField) {
 }
 
 TEST(Scene, CameraAndSunAreChecked) {
-    auto bad = [](const std::string& text) {
+    // A valid scene; each case breaks one field of it (no value: the field is removed).
+    const nlohmann::json valid = nlohmann::json::parse(
+        R"({"image": {"width": 10, "height": 10},
+            "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1]},
+            "sun": {"direction": [0, 0, -1]}})");
+    const struct {
+        const char* field;
+        const char* value;
+        const char* error;
+    } cases[] = {
+        {"/image", nullptr, "s.json: image: missing; expected an object"},
+        {"/image/width", "0", "s.json: image.width: expected an integer in [1, 32768], got 0"},
+        {"/camera/look_at", "[0, 0, 0]",
+         "s.json: camera.look_at: expected a point different from camera.position"},
+        {"/sun/direction", "[0, 0, 0]", "s.json: sun.direction: expected a non-zero direction"},
+        {"/camera/look_at", "[0, 1, 0]",
+         "s.json: camera.up: expected a direction not parallel to the view direction"},
+    };
+    const auto errorIn = [](const std::string& text) {
         auto r = parseScene(text, "s.json");
         return r.ok() ? "(ok)" : r.error().message;
     };
-    EXPECT_EQ(
-        bad(R"({"camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}})"),
-        "s.json: image: missing; expected an object");
-    EXPECT_EQ(
-        bad(R"({"image": {"width": 0, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,-1]}})"),
-        "s.json: image.width: expected an integer in [1, 32768], got 0");
-    EXPECT_EQ(
-        bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,0]}, "sun": {"direction": [0,0,-1]}})"),
-        "s.json: camera.look_at: expected a point different from camera.position");
-    EXPECT_EQ(
-        bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,0,-1]}, "sun": {"direction": [0,0,0]}})"),
-        "s.json: sun.direction: expected a non-zero direction");
-    EXPECT_EQ(
-        bad(R"({"image": {"width": 10, "height": 10}, "camera": {"position": [0,0,0], "look_at": [0,1,0]}, "sun": {"direction": [0,0,-1]}})"),
-        "s.json: camera.up: expected a direction not parallel to the view direction");
-    EXPECT_EQ(bad("{").rfind("s.json: invalid JSON: parse error", 0), 0u);
+    EXPECT_EQ(errorIn(valid.dump()), "(ok)");
+    for (const auto& c : cases) {
+        nlohmann::json scene = valid;
+        const nlohmann::json::json_pointer field(c.field);
+        if (c.value)
+            scene[field] = nlohmann::json::parse(c.value);
+        else
+            scene[field.parent_pointer()].erase(field.back());
+        EXPECT_EQ(errorIn(scene.dump()), c.error) << c.field;
+    }
+    EXPECT_EQ(errorIn("{").rfind("s.json: invalid JSON: parse error", 0), 0u);
 }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Common.h"
 
-#include "core/FirstLine.h"
 #include "core/Interrupt.h"
 #include "core/SafeWrite.h"
 #include "flarekit/Limits.h"
@@ -55,34 +54,6 @@ std::string excerptLine(const std::string& text, std::size_t max) {
     return excerpt(std::string_view(text).substr(0, text.find('\n')), max);
 }
 
-std::string cappedLine(const std::string& message) {
-    // 1,000 characters: the longest real message (a list of every known key) fits; a hostile
-    // input that echoes megabytes of itself does not reach the terminal. What is cut is the
-    // values: the longest words (a 4 KB path, a value without spaces) lose their middle down to
-    // 60 characters, first to last, so the reason after them ("File name too long") stays.
-    constexpr std::size_t kMax = 1000, kWord = 60;
-    std::string_view text = message;
-    while (!text.empty() && std::string_view(" \t\r\n").find(text.back()) != std::string_view::npos)
-        text.remove_suffix(1);
-    std::string line = printable(text);
-    while (line.size() > kMax) {
-        std::size_t longest = 0, at = 0;
-        for (std::size_t i = 0; i < line.size();) {
-            const std::size_t end = std::min(line.find(' ', i), line.size());
-            if (end - i > longest) longest = end - i, at = i;
-            i = end + 1;
-        }
-        if (longest <= kWord) break;
-        // The word's start and its end (a path's file name), the cut never inside a UTF-8
-        // sequence.
-        std::size_t head = kWord / 2, tail = at + longest - (kWord - head - 3);
-        while (head > 0 && (static_cast<unsigned char>(line[at + head]) & 0xC0) == 0x80) --head;
-        while ((static_cast<unsigned char>(line[tail]) & 0xC0) == 0x80) ++tail;
-        line.replace(at + head, tail - at - head, "...");
-    }
-    return excerpt(line, kMax);
-}
-
 void warn(const std::string& message) {
     std::fprintf(stderr, "flarekit: warning: %s\n", cappedLine(message).c_str());
 }
@@ -117,18 +88,6 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text) {
     return std::pair{*w, *h};
 }
 
-namespace {
-template <class T, class Write>
-int runWriteJob(const std::string& out, const std::function<Result<T>()>& work,
-                const Write& write) {
-    if (Status s = checkOutputPath(out); !s) return report(s.error());
-    auto result = work();
-    if (!result) return report(result.error());
-    if (Status s = write(*result); !s) return report(s.error());
-    return kExitOk;
-}
-}  // namespace
-
 EncodeSettings& encodeSettings() {
     static EncodeSettings settings;
     return settings;
@@ -145,18 +104,17 @@ int runImageJob(const std::string& out, const std::function<Result<ImageOutput>(
 }
 
 int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work) {
-    return runWriteJob(
-        out, work, [&](const Image8& image) { return writeImage8(out, image, encodeSettings()); });
+    if (Status s = checkOutputPath(out); !s) return report(s.error());
+    auto image = work();
+    if (!image) return report(image.error());
+    if (Status s = writeImage8(out, *image, encodeSettings()); !s) return report(s.error());
+    return kExitOk;
 }
 
 Error builtWithoutGl(const std::string& what) {
     return invalidInput(what +
                         ": this flarekit was built without OpenGL (FLAREKIT_GL=OFF); rebuild with "
                         "-DFLAREKIT_GL=ON for the GPU paths");
-}
-
-Status writeText(const std::string& path, const std::string& text) {
-    return writeFileSafely(path, text);
 }
 
 ToneOperator renderedFrameCurve(const std::string& out, const std::string& tonemap) {

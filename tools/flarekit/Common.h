@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/FirstLine.h"  // cappedLine, printable: every printed line
 #include "core/LibraryNoise.h"
 #include "core/SafeWrite.h"  // makeOutputDirectory, shared by every subcommand
 #include "flarekit/Flare.h"
@@ -40,8 +41,6 @@ int report(const Error& error);
 //! (even after the work was done) gives 128 + signal and one line saying so; a write error on
 //! standard output turns success into exit 2.
 int finishProcess(int exitCode);
-//! The first line of `message`, cut to 1,000 characters.
-std::string cappedLine(const std::string& message);
 //! The first line of `text`, cut to `max` characters.
 std::string excerptLine(const std::string& text, std::size_t max);
 void warn(const std::string& message);
@@ -77,19 +76,8 @@ EncodeSettings& encodeSettings();
 int runImageJob(const std::string& out, const std::function<Result<ImageOutput>()>& work);
 int runImage8Job(const std::string& out, const std::function<Result<Image8>()>& work);
 
-#if FLAREKIT_HAS_GL
-//! The headless GL context, Mesa's loader noise held back (flarekit/gl/HeadlessGl.h).
-inline Result<std::unique_ptr<gl::HeadlessGl>> createHeadlessGl() {
-    return gl::createQuietHeadlessGl();
-}
-using gl::checkGlFrame;
-#endif
-
 //! The one-line error of an OpenGL feature in a build without OpenGL (FLAREKIT_GL=OFF).
 Error builtWithoutGl(const std::string& what);
-
-//! Writes a text file atomically (temporary file, then rename).
-Status writeText(const std::string& path, const std::string& text);
 
 //! Each subcommand adds itself to the app; its callback stores the exit code.
 void addBlendCommand(CLI::App& app, int& exitCode);

@@ -8,7 +8,6 @@
 #include "JobOptions.h"
 #include "ParamOptions.h"
 #include "flarekit/Demo.h"
-#include "flarekit/Video.h"
 #include "flarekit/gl/GpuVisibility.h"
 #if FLAREKIT_HAS_GL
 #include "flarekit/gl/DemoJob.h"
@@ -26,27 +25,6 @@ struct DemoArgs {
 };
 
 #if FLAREKIT_HAS_GL
-//! The frames as an MP4 beside them, when ffmpeg is installed.
-int encodeDemoVideo(const gl::DemoJobOptions& o, const gl::DemoReport& r) {
-    const std::string ffmpeg = findFfmpeg();
-    if (ffmpeg.empty()) {
-        warn("ffmpeg is not installed: no MP4 (the PNG frames are written)");
-        return kExitOk;
-    }
-    const std::string dir = std::filesystem::path(o.outDir).string() + "/";
-    char pattern[64];
-    std::snprintf(pattern, sizeof pattern, "frame_%%0%dd.png", r.digits);
-    if (Status s = encodeVideo(ffmpeg, dir + pattern, o.settings.fps, dir + "demo.mp4",
-                               dir + "ffmpeg.log");
-        !s) {
-        return report(s.error());
-    }
-    std::error_code ec;
-    std::filesystem::remove(dir + "ffmpeg.log", ec);  // empty on success; kept only on failure
-    std::printf("demo: video %sdemo.mp4 (%.3g fps)\n", dir.c_str(), o.settings.fps);
-    return kExitOk;
-}
-
 int runDemo(const DemoArgs& a) {
     const auto size = parseSize(a.size);
     if (!size)
@@ -74,7 +52,12 @@ int runDemo(const DemoArgs& a) {
     std::printf("demo: frames %s .. %s, log %scoverage.csv, strip %sstrip.png\n",
                 r->framePath(o, 0).c_str(), r->framePath(o, r->frames - 1).c_str(), dir.c_str(),
                 dir.c_str());
-    return a.noVideo ? kExitOk : encodeDemoVideo(o, *r);
+    if (a.noVideo) return kExitOk;
+    auto video = gl::encodeDemoVideo(o, *r);
+    if (!video) return report(video.error());
+    if (!*video) warn("ffmpeg is not installed: no MP4 (the PNG frames are written)");
+    if (*video) std::printf("demo: video %sdemo.mp4 (%.3g fps)\n", dir.c_str(), o.settings.fps);
+    return kExitOk;
 }
 #else
 int runDemo(const DemoArgs&) {

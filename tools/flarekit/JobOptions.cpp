@@ -10,16 +10,12 @@
 
 #include "Common.h"
 #include "ParamOptions.h"
-#include "core/FirstLine.h"
 #include "core/Interrupt.h"
 
 namespace flarekit::cli {
 
 void addShotOptions(CLI::App* cmd, ShotOptions& options) {
-    cmd->add_option("--frames", options.frames,
-                    "with a frame pattern (shot.####.exr or shot.%04d.exr) in and out: the frames "
-                    "A-B[:step] to render (default: every frame found); a farm chunk renders "
-                    "exactly these, each output bit-identical however the shot is chunked");
+    addTextOptions<ShotOptions>(cmd, kShotTextParams, options);
     cmd->add_flag("--skip-missing", options.skipMissing,
                   "render the frames that exist and list the gaps, instead of stopping at the "
                   "first missing frame");
@@ -27,16 +23,7 @@ void addShotOptions(CLI::App* cmd, ShotOptions& options) {
 }
 
 void addOcclusionOptions(CLI::App* cmd, OcclusionOptions& options) {
-    cmd->add_option("--matte", options.matte,
-                    "holdout matte (a frame pattern for a sequence): 1 = foreground hiding the "
-                    "light; its alpha, or its red channel when it has none (--matte-channel "
-                    "picks); with --depth-channel, the depth pass");
-    cmd->add_option("--matte-channel", options.matteChannel,
-                    "the matte's channel by name: R, G, B, A or any channel of an EXR (fg.A), of "
-                    "--matte's file, else of the input itself");
-    cmd->add_option("--depth-channel", options.depthChannel,
-                    "the depth pass's channel by name (Z, depth.Z, R, ...) of --matte's file, "
-                    "else of the input: a pixel nearer than --light-depth hides the light");
+    addTextOptions<OcclusionOptions>(cmd, kOcclusionTextParams, options);
     cmd->add_option("--light-depth", options.lightDepth,
                     "the light's distance, in the depth pass's units");
     addParamOptions<OcclusionOptions>(cmd, kOcclusionParams, options);
@@ -44,14 +31,7 @@ void addOcclusionOptions(CLI::App* cmd, OcclusionOptions& options) {
 }
 
 void addColorOptions(CLI::App* cmd, OcioSettings& settings) {
-    cmd->add_option("--colorspace-in", settings.in,
-                    "the input's colour space in the OCIO config (default: sRGB for 8/16-bit "
-                    "files, scene-linear Rec.709 for float files)");
-    cmd->add_option("--colorspace-out", settings.out,
-                    "the output's colour space in the OCIO config (default: as the input's kind)");
-    cmd->add_option("--ocio-config", settings.config,
-                    "OpenColorIO config file (default: $OCIO, else the shipped "
-                    "presets/ocio/flarekit.ocio; an ACES config works too)");
+    addTextOptions<OcioSettings>(cmd, kOcioTextParams, settings);
 }
 
 void addPartOption(CLI::App* cmd, std::string& part) {

@@ -2,13 +2,9 @@
 // flarekit lens: flares from real lens prescriptions (presets/lenses). `ghosts` reports every
 // two-reflection ghost of a distant point source, `render` puts the traced flare on an image,
 // `list` names the shipped lenses with their paraxial figures.
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
-#include <sstream>
 
 #include "Common.h"
 #include "JobOptions.h"
@@ -43,33 +39,6 @@ Result<std::array<double, 2>> parseAngle(const std::string& text) {
     return std::array<double, 2>{p->x, p->y};
 }
 
-nlohmann::json figureJson(const GhostFigure& g) {
-    nlohmann::json j;
-    if (g.first >= 0) j["surfaces"] = {g.first, g.second};
-    j["center"] = {g.centerX, g.centerY};
-    j["radius_mm"] = g.radius;
-    j["radius50_mm"] = g.radius50;
-    j["radius90_mm"] = g.radius90;
-    j["on_sensor"] = g.onSensor;
-    j["beam_share"] = g.beamShare;
-    j["intensity"] = {g.intensity[0], g.intensity[1], g.intensity[2]};
-    return j;
-}
-
-//! What each figure's field means, written into the JSON beside them.
-nlohmann::json figureFields() {
-    return {{"surfaces", "reflects at the first surface, then at the second (0 = front)"},
-            {"center",
-             "mm on the sensor plane: centroid of the rays landing on the sensor (d line); the "
-             "median of the arriving rays when none lands"},
-            {"radius_mm", "centre to the farthest ray reaching the sensor plane"},
-            {"radius50_mm", "radius around the landing rays' median holding 50% of them"},
-            {"radius90_mm", "radius around the landing rays' median holding 90% of them"},
-            {"on_sensor", "share of the rays reaching the sensor plane that land on the sensor"},
-            {"beam_share", "share of the rays entering the lens that reach the sensor plane"},
-            {"intensity", "share of the light entering the first surface, R G B"}};
-}
-
 int runGhosts(const LensArgs& a) {
     auto lens = openLens(a);
     if (!lens) return report(lens.error());
@@ -81,14 +50,7 @@ int runGhosts(const LensArgs& a) {
     auto r = analyseGhosts(*lens, q);
     if (!r) return report(r.error());
     if (a.json) {
-        nlohmann::json j;
-        j["lens"] = lens->name;
-        j["focal_length_mm"] = r->focalLength;
-        j["fields"] = figureFields();
-        j["direct"] = figureJson(r->direct);
-        j["ghosts"] = nlohmann::json::array();
-        for (const GhostFigure& g : r->ghosts) j["ghosts"].push_back(figureJson(g));
-        std::printf("%s\n", j.dump(1).c_str());
+        std::printf("%s\n", ghostReportJson(lens->name, *r).c_str());
         return kExitOk;
     }
     std::printf("%s: f = %.3f mm, %zu ghosts at %g,%g degrees\n", lens->name.c_str(),
@@ -128,7 +90,7 @@ int runBake(const LensArgs& a) {
     // What is written must load as any preset does.
     if (auto check = parsePreset(text, a.out); !check)
         return report(internalError("baked preset does not read back: " + check.error().message));
-    if (Status s = writeText(a.out, text); !s) return report(s.error());
+    if (Status s = writeFileSafely(a.out, text); !s) return report(s.error());
     std::printf("%s: %zu elements baked from %s\n", a.out.c_str(), preset->elements.size(),
                 lens->name.c_str());
     return kExitOk;

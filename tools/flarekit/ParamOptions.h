@@ -109,6 +109,13 @@ void addParamOptions(CLI::App* cmd, std::span<const Param<Owner>> table, Owner& 
     }
 }
 
+//! Every text parameter of a table as --key TEXT.
+template <class Owner>
+void addTextOptions(CLI::App* cmd, std::span<const TextParam<Owner>> table, Owner& target) {
+    for (const TextParam<Owner>& p : table)
+        cmd->add_option(flagName(p.key), target.*(p.member), std::string(p.help));
+}
+
 //! An override flag: `flag` (e.g. "--threshold") checked against `p`, stored in `out` only when
 //! given; the help says the default comes from elsewhere (a preset).
 template <class Owner, class T>

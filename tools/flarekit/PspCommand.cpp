@@ -37,39 +37,21 @@ int runPsp(psp::PspTrick trick, const PspArgs& a) {
     if (!sun)
         return report(invalidInput("--sun: expected X,Y in screen pixels, e.g. 240,100, got '" +
                                    a.sun + "'"));
-    auto mask = readImage8Quietly(a.occluders);
-    if (!mask) return report(mask.error());
-    auto occluders = psp::occludersFromMask(*mask, a.occluders);
-    if (!occluders) return report(occluders.error());
-    if (!a.dumpDir.empty())
-        if (Status s = makeOutputDirectory(a.dumpDir); !s) return report(s.error());
-    psp::PspFrameInput in;
-    in.occluders = std::move(*occluders);
+    psp::PspFrameJobOptions o;
+    o.occluders = a.occluders;
     // Clamped before the conversion to int; the library rejects anything past +-8192.
     auto pixel = [](float v) { return int(std::floor(std::clamp(double(v), -1e6, 1e6))); };
-    in.sunX = pixel(sun->x), in.sunY = pixel(sun->y);
-    in.naive = a.naive;
-    in.keepSteps = !a.dumpDir.empty();
-    in.trace = !a.traceFile.empty();
-    auto r = psp::runPspFrame(trick, in);
+    o.sunX = pixel(sun->x), o.sunY = pixel(sun->y);
+    o.naive = a.naive;
+    o.output = a.out, o.dumpDir = a.dumpDir, o.traceFile = a.traceFile;
+    o.encode = encodeSettings();
+    auto r = psp::runPspFrameJob(trick, o);
     if (!r) return report(r.error());
-    if (Status s = writeImage8(a.out, r->frame, encodeSettings()); !s) return report(s.error());
-    for (const psp::PspStep& step : r->steps)
-        if (Status s =
-                writeImage8((std::filesystem::path(a.dumpDir) / (step.name + ".png")).string(),
-                            step.image, encodeSettings());
-            !s)
-            return report(s.error());
-    if (!a.traceFile.empty()) {
-        std::string text;
-        for (const std::string& line : r->trace) text += line + "\n";
-        if (Status s = writeText(a.traceFile, text); !s) return report(s.error());
-    }
     if (a.json) {
         std::printf("%s\n", jsonLine(trick, a.naive, *r).c_str());
     } else if (!r->sunInFrame) {
         std::printf("psp: the sun (%d, %d) is outside the 480x272 screen: no mask, no flare\n",
-                    in.sunX, in.sunY);
+                    o.sunX, o.sunY);
     } else {
         std::printf("psp %s (%s): %d of %d mask pixels visible, coverage byte %d",
                     trick == psp::PspTrick::Burnout ? "burnout" : "ridge-racer",

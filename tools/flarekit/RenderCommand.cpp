@@ -10,10 +10,9 @@
 #include "flarekit/ImageIO.h"
 #include "flarekit/PostFxParams.h"
 #include "flarekit/Tonemap.h"
-#include "flarekit/gl/FramePipeline.h"
 #include "flarekit/gl/Render.h"
 #if FLAREKIT_HAS_GL
-#include "flarekit/gl/HeadlessGl.h"
+#include "flarekit/gl/SceneStill.h"
 #endif
 
 namespace flarekit::cli {
@@ -28,53 +27,25 @@ struct RenderArgs {
 };
 
 #if FLAREKIT_HAS_GL
-Result<ImageOutput> renderStill(const RenderArgs& a) {
-    if (a.method != "raycast" && !isGpuVisibilityMethod(a.method)) {
-        return invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" +
-                            a.method + "'");
-    }
-    auto scene = loadScene(a.scene);
-    if (!scene) return scene.error();
-    auto preset = loadPreset(a.preset);
-    if (!preset) return preset.error();
-    if (Status s = checkFlareWork(*preset, scene->width, scene->height, 1, a.preset); !s)
-        return s.error();
-    auto gl = createHeadlessGl();
-    if (!gl) return gl.error();
-    if (Status s =
-            checkGlFrame(scene->width, scene->height, a.render.msaaSamples, a.scene + ": image");
-        !s)
-        return s.error();
-    // A still through the frame pipeline: no temporal filter, linear HDR out (tone-mapped
-    // below for 8/16-bit files), raycast at its ground-truth sample count.
-    FramePipelineSettings settings;
-    settings.method = a.method;
-    settings.raycastSamplesPerSide = RaycastOptions{}.samplesPerSide;
-    settings.render = a.render;
-    settings.render.shadows = !a.noShadows;
-    settings.methodOptions.textureMaskVariant = a.variant;
-    settings.temporal = false;
-    settings.flare = !a.noFlare;
-    settings.toneMap = false;
-    auto pipeline = FramePipeline::create(*scene, *preset, settings);
-    if (!pipeline) return pipeline.error();
-    auto frame = pipeline->run(*scene, 0.0);
-    if (!frame) return frame.error();
-    if (a.verbose) {
-        std::printf(
-            "%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare intensity "
-            "%.3f\n",
-            (*gl)->renderer().c_str(), (*gl)->platform().c_str(), frame->rawCoverage,
-            a.method.c_str(), frame->inFrame, double(frame->sunPixel.x), double(frame->sunPixel.y),
-            frame->sunInFront ? "" : " (behind the camera)", double(frame->flareIntensity));
-    }
-    // The display curve for 8/16-bit files; float outputs stay linear (exposure applied).
-    toneMapImage(frame->image, renderedFrameCurve(a.out, a.tonemap), a.tone.exposure);
-    return ImageOutput{std::move(frame->image), {}};
-}
-
 int runRender(const RenderArgs& a) {
-    return runImageJob(a.out, [&] { return renderStill(a); });
+    return runImageJob(a.out, [&]() -> Result<ImageOutput> {
+        gl::SceneStillOptions o{a.scene, a.preset, a.method, a.variant, a.render, !a.noFlare};
+        o.render.shadows = !a.noShadows;
+        auto still = gl::renderSceneStill(o);
+        if (!still) return still.error();
+        const PipelineFrame& f = still->frame;
+        if (a.verbose) {
+            std::printf(
+                "%s via %s; coverage %.4f (%s), in frame %.3f; sun at %.1f,%.1f%s; flare "
+                "intensity %.3f\n",
+                still->renderer.c_str(), still->platform.c_str(), f.rawCoverage, a.method.c_str(),
+                f.inFrame, double(f.sunPixel.x), double(f.sunPixel.y),
+                f.sunInFront ? "" : " (behind the camera)", double(f.flareIntensity));
+        }
+        // The display curve for 8/16-bit files; float outputs stay linear (exposure applied).
+        toneMapImage(still->frame.image, renderedFrameCurve(a.out, a.tonemap), a.tone.exposure);
+        return ImageOutput{std::move(still->frame.image), {}};
+    });
 }
 #else
 int runRender(const RenderArgs&) {

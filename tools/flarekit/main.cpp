@@ -95,10 +95,12 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-        std::fprintf(stderr, "flarekit: %s (see flarekit --help)\n", cappedLine(e.what()).c_str());
+        std::fprintf(stderr, "flarekit: %s (see flarekit --help)\n",
+                     flarekit::cappedLine(e.what()).c_str());
         return kExitBadInput;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "flarekit: internal error: %s\n", cappedLine(e.what()).c_str());
+        std::fprintf(stderr, "flarekit: internal error: %s\n",
+                     flarekit::cappedLine(e.what()).c_str());
         return kExitInternal;
     }
     return finishProcess(exitCode);

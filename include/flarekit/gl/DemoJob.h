@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The demo job (`flarekit demo`): the built-in drive rendered to numbered PNG frames, a coverage
 // log and a strip of six frames, in a headless context. Frames are encoded on a writer thread
-// so the next frame's GL, raycast and flare work overlaps them. The MP4 is the front end's.
+// so the next frame's GL, raycast and flare work overlaps them; encodeDemoVideo makes the MP4.
 #pragma once
 
 #include <string>
@@ -37,5 +37,9 @@ struct DemoReport {
 //! size and the disk the frames need. Progress per frame and cancellation through `events`; a
 //! cancel leaves the complete frames, in order, and nothing else.
 Result<DemoReport> runDemoJob(const DemoJobOptions& options, const JobEvents& events = {});
+
+//! The frames as OUT/demo.mp4 (encodeVideo at the drive's frame rate); ffmpeg's log is kept as
+//! OUT/ffmpeg.log only when it fails. False, and nothing written, when ffmpeg is not installed.
+Result<bool> encodeDemoVideo(const DemoJobOptions& options, const DemoReport& report);
 
 }  // namespace flarekit::gl

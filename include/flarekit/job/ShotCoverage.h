@@ -39,6 +39,21 @@ inline constexpr Param<OcclusionOptions> kOcclusionParams[] = {
         "light_radius", 0, 10000, "px",
         "the light's disc in pixels: coverage is the mean visibility over it"),
 };
+inline constexpr TextParam<OcclusionOptions> kOcclusionTextParams[] = {
+    text<&OcclusionOptions::matte>(
+        "matte",
+        "holdout matte (a frame pattern for a sequence): 1 = foreground hiding the light; its "
+        "alpha, or its red channel when it has none (--matte-channel picks); with --depth-channel, "
+        "the depth pass"),
+    text<&OcclusionOptions::matteChannel>(
+        "matte_channel",
+        "the matte's channel by name: R, G, B, A or any channel of an EXR (fg.A), of --matte's "
+        "file, else of the input itself"),
+    text<&OcclusionOptions::depthChannel>(
+        "depth_channel",
+        "the depth pass's channel by name (Z, depth.Z, R, ...) of --matte's file, else of the "
+        "input: a pixel nearer than --light-depth hides the light"),
+};
 //! The option combinations, checked before any work (a depth channel needs --light-depth, ...).
 Status checkOcclusionOptions(const OcclusionOptions& options);
 

@@ -26,6 +26,14 @@ inline constexpr Param<ShotOptions> kShotParams[] = {
                              "the shot's frame rate (the temporal filter's time between frames)"),
 };
 
+inline constexpr TextParam<ShotOptions> kShotTextParams[] = {
+    text<&ShotOptions::frames>(
+        "frames",
+        "with a frame pattern (shot.####.exr or shot.%04d.exr) in and out: the frames A-B[:step] "
+        "to render (default: every frame found); a farm chunk renders exactly these, each output "
+        "bit-identical however the shot is chunked"),
+};
+
 //! A single image given with frames or skipMissing: an error saying the input is no pattern.
 Status checkSingleImage(const std::string& in, const ShotOptions& options);
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "flarekit/Param.h"
 #include "flarekit/Result.h"
 #include "flarekit/job/Job.h"
 
@@ -17,6 +18,17 @@ struct OcioSettings {
     std::string in, out;  //!< the input's and the output's colour space; empty: flarekit's default
     std::string config;   //!< the config file; empty: $OCIO, else the shipped flarekit.ocio
     bool enabled() const { return !in.empty() || !out.empty(); }
+};
+inline constexpr TextParam<OcioSettings> kOcioTextParams[] = {
+    text<&OcioSettings::in>("colorspace_in",
+                            "the input's colour space in the OCIO config (default: sRGB for "
+                            "8/16-bit files, scene-linear Rec.709 for float files)"),
+    text<&OcioSettings::out>(
+        "colorspace_out",
+        "the output's colour space in the OCIO config (default: as the input's kind)"),
+    text<&OcioSettings::config>("ocio_config",
+                                "OpenColorIO config file (default: $OCIO, else the shipped "
+                                "presets/ocio/flarekit.ocio; an ACES config works too)"),
 };
 
 //! The config and both colour spaces checked: an unknown name is one line listing the config's
