@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include "LensParaxialReference.h"
+
 #include "ShippedLens.h"
 #include "flarekit/Lens.h"
 #include "lens/LensTrace.h"
@@ -372,4 +374,30 @@ TEST(Lens, IrisConvexityIsWhatTheRendererAssumes) {
     // A 3-bladed iris barely rounded bows inward between its corners: flagged non-convex.
     const lens::Iris bowed = lens::makeIris({3, 0.0, 0.03});
     EXPECT_FALSE(bowed.convex);
+}
+
+// `lens ghosts --json` as the library writes it: every figure of the report under its documented
+// name, the direct image without surfaces, each field explained.
+TEST(Lens, GhostReportJsonCarriesEveryFigure) {
+    auto lens = parseLens(kSlow, "slow.json");
+    ASSERT_TRUE(lens.ok()) << lens.error().message;
+    GhostQuery q;
+    q.angleXDeg = 1.0, q.ghostRays = 0;
+    auto r = analyseGhosts(*lens, q);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const auto j = nlohmann::json::parse(ghostReportJson("slow", *r));
+    EXPECT_EQ(j["lens"], "slow");
+    EXPECT_EQ(j["focal_length_mm"].get<double>(), r->focalLength);
+    EXPECT_FALSE(j["direct"].contains("surfaces"));
+    ASSERT_EQ(j["ghosts"].size(), r->ghosts.size());
+    for (std::size_t i = 0; i < r->ghosts.size(); ++i) {
+        const GhostFigure& g = r->ghosts[i];
+        const auto& row = j["ghosts"][i];
+        EXPECT_EQ(row["surfaces"], nlohmann::json({g.first, g.second}));
+        EXPECT_EQ(row["center"], nlohmann::json({g.centerX, g.centerY}));
+        EXPECT_EQ(row["radius90_mm"].get<double>(), g.radius90);
+        EXPECT_EQ(row["intensity"][1].get<double>(), g.intensity[1]);
+        for (const auto& [key, value] : row.items())
+            EXPECT_TRUE(j["fields"].contains(key)) << key << " is not explained";
+    }
 }

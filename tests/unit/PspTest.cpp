@@ -4,8 +4,12 @@
 // by a separate model of the chain, not by the emulator's code.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <functional>
 
+#include "flarekit/ImageIO.h"
 #include "flarekit/Psp.h"
 #include "psp/DisplayList.h"
 #include "psp/Ge.h"
@@ -235,4 +239,41 @@ TEST(PspGe, UnsupportedCommandIsAnErrorNotACrash) {
     ASSERT_FALSE(s.ok());
     EXPECT_NE(s.error().message.find("outside the emulated subset"), std::string::npos);
     EXPECT_FALSE(ge.run(kRamBase + kRamSize - 2).ok());  // a list running off the end of RAM
+}
+
+// `flarekit psp burnout` through the library alone: the mask read from a file gives the frame
+// the in-memory run gives, byte for byte, and the steps and the trace are written beside it.
+TEST(PspFrameJob, FromFilesWritesTheFrameTheStepsAndTheTrace) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("flarekit-psp-job-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const PspFrameInput in = input([](int i, int j) { return i < 5 && j < 9; });
+    Image8 mask{kScreenWidth, kScreenHeight, 1, {}};
+    for (std::uint8_t o : in.occluders) mask.pixels.push_back(o ? 255 : 0);
+    ASSERT_TRUE(writeImage8((dir / "mask.png").string(), mask).ok());
+
+    PspFrameJobOptions o;
+    o.occluders = (dir / "mask.png").string();
+    o.sunX = kSunX, o.sunY = kSunY;
+    o.output = (dir / "frame.png").string();
+    o.dumpDir = (dir / "steps").string();
+    o.traceFile = (dir / "trace.txt").string();
+    auto job = runPspFrameJob(PspTrick::Burnout, o);
+    ASSERT_TRUE(job.ok()) << job.error().message;
+    auto direct = runPspFrame(PspTrick::Burnout, in);
+    ASSERT_TRUE(direct.ok());
+    EXPECT_EQ(job->coverageByte, direct->coverageByte);
+    auto written = readImage8(o.output);
+    ASSERT_TRUE(written.ok());
+    EXPECT_EQ(written->pixels, direct->frame.pixels);
+    for (const PspStep& step : direct->steps)
+        EXPECT_TRUE(std::filesystem::exists(dir / "steps" / (step.name + ".png"))) << step.name;
+    EXPECT_GT(std::filesystem::file_size(o.traceFile), 1000u);
+
+    o.occluders = (dir / "missing.png").string();
+    auto missing = runPspFrameJob(PspTrick::Burnout, o);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("missing.png"), std::string::npos);
+    std::filesystem::remove_all(dir);
 }
