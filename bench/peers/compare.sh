@@ -61,7 +61,10 @@ row() {
     pe="$pe$b"$'\n'
     ratios="$ratios$(awk -v a="$a" -v b="$b" 'BEGIN {printf "%.3f", b / a}')"$'\n'
   done
-  printf '| %s | %s | %.3f | %.3f | %.1fx |\n' "$job" "$size" \
+  # Between two builds the ratio is near 1, so it gets three decimals.
+  local places=1
+  [ -n "$old" ] && places=3
+  printf "| %s | %s | %.3f | %.3f | %.${places}fx |\n" "$job" "$size" \
     "$(printf '%s' "$fk" | median)" "$(printf '%s' "$pe" | median)" \
     "$(printf '%s' "$ratios" | median)" >> "$table"
 }

@@ -19,43 +19,38 @@ namespace {
 //! highlight's brightest level is held by a handful of pixels.
 constexpr std::size_t kWhitePlateauPixels = 16;
 
-//! The pixels of a display-referred frame whose three channels reach its white: the top code,
+//! The level at which a display-referred frame's three channels are at its white: the top code,
 //! or the brightest neutral level of the file if it stops between kLowestWhiteCode and the top
-//! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes.
-//! `brightestNeutral`: the frame's largest min(R, G, B), from the luminance pass.
-void markWhite(const Image& image, float brightestNeutral, LuminanceMap& m) {
-    auto minChannel = [](const Rgba& p) { return std::min({p.r, p.g, p.b}); };
+//! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes. Infinite
+//! when the file has no white. `brightestNeutral`: the frame's largest min(R, G, B).
+float whiteLevelOf(const Image& image, float brightestNeutral) {
+    constexpr float kNone = std::numeric_limits<float>::infinity();
     const float white = std::min(1.f, brightestNeutral);
     const float whiteCode = linearToSrgb(white) * 255.f;
-    m.atWhite.assign(m.lum.size(), 0);
-    if (whiteCode < kLowestWhiteCode - 0.5f) return;  // nothing in the file reaches a white
-    auto countAtLeast = [&](float level, bool mark) {
+    if (whiteCode < kLowestWhiteCode - 0.5f) return kNone;  // nothing in the file reaches a white
+    if (whiteCode < 254.5f) {
+        // Short of the top code: a white point only where pixels pile up at it.
+        const float level = srgbToLinear((whiteCode - 0.5f) / 255.f);
         std::atomic<std::size_t> count{0};
-        parallelFor(0, m.h, 32, [&](int y0, int y1) {
+        parallelFor(0, image.height(), 32, [&](int y0, int y1) {
             std::size_t n = 0;
             for (int y = y0; y < y1; ++y) {
                 const Rgba* row = &image.at(0, y);
-                std::uint8_t* out = &m.atWhite[std::size_t(y) * std::size_t(m.w)];
-                for (int x = 0; x < m.w; ++x) {
-                    const bool at = minChannel(row[x]) >= level;
-                    n += at;
-                    if (mark) out[x] = at ? 1 : 0;
-                }
+                for (int x = 0; x < image.width(); ++x)
+                    n += std::min({row[x].r, row[x].g, row[x].b}) >= level;
             }
             count += n;
         });
-        return count.load();
-    };
-    if (whiteCode < 254.5f &&
-        countAtLeast(srgbToLinear((whiteCode - 0.5f) / 255.f), false) < kWhitePlateauPixels)
-        return;  // a natural highlight, not a white point
-    countAtLeast(srgbToLinear((std::round(whiteCode) - kWhiteToleranceCodes) / 255.f), true);
+        if (count.load() < kWhitePlateauPixels) return kNone;  // a natural highlight
+    }
+    return srgbToLinear((std::round(whiteCode) - kWhiteToleranceCodes) / 255.f);
 }
 
 }  // namespace
 
 LuminanceMap luminanceMap(const Image& image) {
-    LuminanceMap m{image.width(), image.height(), {}, {}, {}, {}};
+    LuminanceMap m;
+    m.w = image.width(), m.h = image.height(), m.image = &image;
     m.lum.resize(image.pixelCount());
     std::vector<float> rowBrightest(std::size_t(m.h), 0.f), rowWhite(std::size_t(m.h), 0.f);
     std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
@@ -82,7 +77,7 @@ LuminanceMap luminanceMap(const Image& image) {
     for (const std::size_t peak : rowPeak)
         if (m.lum[peak] > m.lum[m.peakIndex]) m.peakIndex = peak;
     if (isDisplayReferred(m.brightestChannel))
-        markWhite(image, *std::max_element(rowWhite.begin(), rowWhite.end()), m);
+        m.whiteLevel = whiteLevelOf(image, *std::max_element(rowWhite.begin(), rowWhite.end()));
     return m;
 }
 

@@ -3,8 +3,10 @@
 // channel and peak, and (8/16-bit frames) which pixels sit at the file's white.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "flarekit/Image.h"
@@ -28,11 +30,17 @@ struct LuminanceMap {
     std::vector<float, PixelAllocator<float>> lum;
     float brightestChannel = 0.f;  //!< of the whole frame: decides display- or scene-referred
     std::size_t peakIndex = 0;     //!< the first pixel (raster order) of the largest luminance
-    //! Display-referred frames: 1 where every channel is at the file's white (kLowestWhiteCode).
-    std::vector<std::uint8_t> atWhite;
+    //! Display-referred frames: the level every channel of a pixel at the file's white reaches
+    //! (kLowestWhiteCode); infinite where the file has no white. Asked of a region's pixels
+    //! only, so no pass marks the whole frame.
+    float whiteLevel = std::numeric_limits<float>::infinity();
+    const Image* image = nullptr;  //!< the frame measured (outlives the map)
     float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
     bool clipped(std::size_t i) const { return lum[i] >= kClipLevel; }
-    bool whiteCore(std::size_t i) const { return !atWhite.empty() && atWhite[i] != 0; }
+    bool whiteCore(std::size_t i) const {
+        const Rgba& p = reinterpret_cast<const Rgba*>(image->data())[i];  // rows are contiguous
+        return std::min({p.r, p.g, p.b}) >= whiteLevel;
+    }
 };
 
 //! The luminance pass over `image` (the white core marked where it is display-referred).
