@@ -228,6 +228,21 @@ LightCandidate growRegion(const LuminanceMap& m, const Image* image, std::size_t
     return c;
 }
 
+//! Scene-referred (HDR) data: a candidate's flux gains its aureole, and a plateau between a
+//! clip's contrast and a light's is a capture clip whose pixels stand for clippedGain x the
+//! plateau (as a clipped 8-bit pixel stands for clippedGain x white). A plateau at a light's
+//! contrast (a rendered emitter of constant radiance) is recorded whole, and one under a clip's
+//! (an even sky a light was placed on) is no clip. Found and placed lights alike.
+void addSceneReferredFlux(LightCandidate& c, const LuminanceMap& m, float frameKey,
+                          float clippedGain) {
+    const Aureole a = measureAureole(m, c.position, c.radius);
+    c.aureoleFlux = a.flux, c.aureoleRings = a.rings;
+    c.flux += a.flux;
+    if (c.flatTopPixels >= kFlatTopPixels && c.peak < kMinKeyContrast * frameKey &&
+        c.peak >= kMinClippedContrast * frameKey)
+        c.flux += double(c.flatTopPixels) * double(clippedGain - 1.f) * double(c.peak);
+}
+
 //! A hazy sun: haze spreads most of its light into a wide aureole and leaves a dim core (a
 //! peak of 44 at 76x the frame's median). Its aureole keeps falling over at least
 //! kHazyAureoleRings rings (out to about 30 core radii) and carries at least
@@ -424,17 +439,8 @@ struct CandidateSearch {
         c.prominence = ring > 0.f ? c.meanLuminance / ring : 1e6f;
         const float rim = ringMean(m, c.position, c.radius + 1.f, 1.5f * c.radius + 2.f);
         c.halo = rim >= 0.f ? rim / c.meanLuminance : 0.f;
-        if (!result.displayReferred) {
-            const Aureole a = measureAureole(m, c.position, c.radius);
-            c.aureoleFlux = a.flux, c.aureoleRings = a.rings;
-            c.flux += a.flux;
-            // A plateau short of a light's contrast is a capture clip: its pixels stand for
-            // clippedGain x the plateau. One at a light's contrast (a rendered emitter of
-            // constant radiance) is recorded whole.
-            if (c.flatTopPixels >= kFlatTopPixels && c.peak < kMinKeyContrast * result.frameKey)
-                c.flux +=
-                    double(c.flatTopPixels) * double(options.clippedGain - 1.f) * double(c.peak);
-        }
+        if (!result.displayReferred)
+            addSceneReferredFlux(c, m, result.frameKey, options.clippedGain);
         judge(c, options, m, result.displayReferred, result.frameKey);
         // Small regions keep their halo (the disc of twice their radius) out of the search; a
         // huge one already holds it.
@@ -567,6 +573,8 @@ LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOpt
     LightCandidate measured =
         growRegion(m, &image, seed, threshold, options.clippedGain, displayReferred, seen, stack,
                    members, std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
+    if (!displayReferred)
+        addSceneReferredFlux(measured, m, medianLuminance(m), options.clippedGain);
     measured.flareScale = flareScaleForFlux(measured.flux, m.h) * edgeFade;
     measured.accepted = true;
     measured.verdict = outside > 0 ? "placed outside the frame, measured at its edge" : "placed";

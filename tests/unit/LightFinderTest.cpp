@@ -270,6 +270,34 @@ TEST(MeasureLightAt, APlacedLightHasTheFluxTheFinderMeasuresThere) {
     }
 }
 
+// In HDR data the finder counts a sun's aureole and a capture clip's plateau at the gain; a
+// light placed on the same sun counts them too (before, a placed hazy or clipped sun had only
+// its core: 59% and less of the found flux).
+TEST(MeasureLightAt, APlacedHdrSunCountsItsAureoleAndItsClipAsTheFinderDoes) {
+    const auto sunOn = [](float coreRadius, float core, float glow) {
+        Image img = background(640, 360, 0.3f);
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x) {
+                const float d = std::hypot(float(x) + 0.5f - 400.f, float(y) + 0.5f - 120.f);
+                const float v = d < coreRadius ? core : 0.3f + glow / (1.f + 0.05f * d * d);
+                img.at(x, y) = {v, v, v, 1.f};
+            }
+        return img;
+    };
+    // A capture clip (a plateau of 60, 200x the median) and a one-pixel sun of 5,000 in a glow.
+    for (const Image& img : {sunOn(5.f, 60.f, 30.f), sunOn(0.8f, 5000.f, 40.f)}) {
+        const LightSearch search = findLights(img);
+        ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+        const LightCandidate& found = search.lights[0];
+        ASSERT_GT(found.aureoleFlux, 0.0);
+        const LightCandidate placed =
+            measureLightAt(img, {found.position.x + 2.f, found.position.y});
+        EXPECT_EQ(placed.flux, found.flux);
+        EXPECT_EQ(placed.flareScale, found.flareScale);
+        EXPECT_EQ(placed.flatTopPixels, found.flatTopPixels);
+    }
+}
+
 TEST(MeasureLightAt, NothingThereIsNoFluxASkyLittleAndFarOutsideTheFrameNone) {
     Image img = background(320, 180, 0.f);
     blob(img, 200.f, 60.f, 4.f, 3000.f);
