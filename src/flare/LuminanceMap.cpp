@@ -22,8 +22,8 @@ constexpr std::size_t kWhitePlateauPixels = 16;
 //! The level at which a display-referred frame's three channels are at its white: the top code,
 //! or the brightest neutral level of the file if it stops between kLowestWhiteCode and the top
 //! and holds a plateau there (the file's own white point), less kWhiteToleranceCodes. Infinite
-//! when the file has no white. `brightestNeutral`: the frame's largest min(R, G, B).
-float whiteLevelOf(const Image& image, float brightestNeutral) {
+//! when the file has no white. `brightestNeutral`: the frame's largest shownNeutral.
+float whiteLevelOf(const Image& image, float brightestNeutral, bool straight) {
     constexpr float kNone = std::numeric_limits<float>::infinity();
     const float white = std::min(1.f, brightestNeutral);
     const float whiteCode = linearToSrgb(white) * 255.f;
@@ -37,7 +37,7 @@ float whiteLevelOf(const Image& image, float brightestNeutral) {
             for (int y = y0; y < y1; ++y) {
                 const Rgba* row = &image.at(0, y);
                 for (int x = 0; x < image.width(); ++x)
-                    n += std::min({row[x].r, row[x].g, row[x].b}) >= level;
+                    n += LuminanceMap::shownNeutral(row[x], straight) >= level;
             }
             count += n;
         });
@@ -48,36 +48,61 @@ float whiteLevelOf(const Image& image, float brightestNeutral) {
 
 }  // namespace
 
-LuminanceMap luminanceMap(const Image& image) {
-    LuminanceMap m;
-    m.w = image.width(), m.h = image.height(), m.image = &image;
-    m.lum.resize(image.pixelCount());
-    std::vector<float> rowBrightest(std::size_t(m.h), 0.f), rowWhite(std::size_t(m.h), 0.f);
+namespace {
+
+//! One pass of the luminance map: each pixel's luminance (times its alpha for straight
+//! colour), the rows' peaks, brightest channels and brightest neutrals; the frame's lowest alpha.
+void luminancePass(const Image& image, LuminanceMap& m, std::vector<float>& rowWhite,
+                   float& lowestAlpha) {
+    std::vector<float> rowBrightest(std::size_t(m.h), 0.f), rowAlpha(std::size_t(m.h), 1.f);
     std::vector<std::size_t> rowPeak(std::size_t(m.h), 0);
+    const bool straight = m.straightAlpha;
     parallelFor(0, m.h, 32, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const Rgba* row = &image.at(0, y);
             const std::size_t first = std::size_t(y) * std::size_t(m.w);
-            float brightest = 0.f, white = 0.f;
+            float brightest = 0.f, white = 0.f, alpha = 1.f;
             std::size_t peak = first;
             for (int x = 0; x < m.w; ++x) {
                 const std::size_t i = first + std::size_t(x);
-                const float l = luminance(row[x].r, row[x].g, row[x].b);
+                float l = luminance(row[x].r, row[x].g, row[x].b);
+                if (straight) l *= std::clamp(row[x].a, 0.f, 1.f);
                 m.lum[i] = std::isfinite(l) ? std::max(l, 0.f) : 0.f;
                 if (m.lum[i] > m.lum[peak]) peak = i;
                 brightest = std::max({brightest, row[x].r, row[x].g, row[x].b});
-                white = std::max(white, std::min({row[x].r, row[x].g, row[x].b}));
+                white = std::max(white, LuminanceMap::shownNeutral(row[x], straight));
+                alpha = std::min(alpha, row[x].a);
             }
             rowBrightest[std::size_t(y)] = brightest;
             rowWhite[std::size_t(y)] = white;
+            rowAlpha[std::size_t(y)] = alpha;
             rowPeak[std::size_t(y)] = peak;
         }
     });
     m.brightestChannel = *std::max_element(rowBrightest.begin(), rowBrightest.end());
+    m.peakIndex = 0;
     for (const std::size_t peak : rowPeak)
         if (m.lum[peak] > m.lum[m.peakIndex]) m.peakIndex = peak;
-    if (isDisplayReferred(m.brightestChannel))
-        m.whiteLevel = whiteLevelOf(image, *std::max_element(rowWhite.begin(), rowWhite.end()));
+    lowestAlpha = *std::min_element(rowAlpha.begin(), rowAlpha.end());
+}
+
+}  // namespace
+
+LuminanceMap luminanceMap(const Image& image) {
+    LuminanceMap m;
+    m.w = image.width(), m.h = image.height(), m.image = &image;
+    m.lum.resize(image.pixelCount());
+    std::vector<float> rowWhite(std::size_t(m.h), 0.f);
+    float lowestAlpha = 1.f;
+    luminancePass(image, m, rowWhite, lowestAlpha);
+    if (!isDisplayReferred(m.brightestChannel)) return m;
+    if (lowestAlpha < 1.f) {
+        // Straight colour with see-through pixels: measured again as it shows.
+        m.straightAlpha = true;
+        luminancePass(image, m, rowWhite, lowestAlpha);
+    }
+    m.whiteLevel =
+        whiteLevelOf(image, *std::max_element(rowWhite.begin(), rowWhite.end()), m.straightAlpha);
     return m;
 }
 

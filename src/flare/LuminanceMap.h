@@ -35,11 +35,22 @@ struct LuminanceMap {
     //! only, so no pass marks the whole frame.
     float whiteLevel = std::numeric_limits<float>::infinity();
     const Image* image = nullptr;  //!< the frame measured (outlives the map)
+    //! A display-referred frame with transparent pixels: its colour is straight (PNG, TIFF), so
+    //! a pixel shows colour x alpha; white at alpha 0.3 is no light (a logo's see-through
+    //! part). Float frames hold premultiplied colour (EXR) and are measured as stored, so
+    //! emission at alpha 0 (a rendered glow) stays light.
+    bool straightAlpha = false;
     float at(int x, int y) const { return lum[std::size_t(y) * std::size_t(w) + std::size_t(x)]; }
     bool clipped(std::size_t i) const { return lum[i] >= kClipLevel; }
     bool whiteCore(std::size_t i) const {
         const Rgba& p = reinterpret_cast<const Rgba*>(image->data())[i];  // rows are contiguous
-        return std::min({p.r, p.g, p.b}) >= whiteLevel;
+        return shownNeutral(p, straightAlpha) >= whiteLevel;
+    }
+    //! The pixel's largest level in all three channels as it shows: min(R, G, B), times its
+    //! alpha when the colour is straight.
+    static float shownNeutral(const Rgba& p, bool straight) {
+        const float neutral = std::min({p.r, p.g, p.b});
+        return straight ? neutral * std::clamp(p.a, 0.f, 1.f) : neutral;
     }
 };
 

@@ -572,3 +572,33 @@ TEST(LightFinder, AHazySunIsFoundByItsAureole) {
               std::string::npos)
         << core->verdict;
 }
+
+// An 8/16-bit file holds straight colour: a pixel shows colour x alpha. A clipped sun (white,
+// opaque) is a light; the same white drawn see-through (a logo or a graphic's glassy part at
+// alpha 0.35) shows a grey of 0.35 and is none. A float frame holds premultiplied colour, so a
+// rendered glow at alpha 0 (emission) is still a light.
+TEST(LightFinder, SeeThroughWhiteIsNoLightButEmissionIs) {
+    const auto withAlpha = [](Image img, float alpha, bool discOnly) {
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x)
+                if (!discOnly ||
+                    std::hypot(float(x) + 0.5f - 400.f, float(y) + 0.5f - 100.f) < 40.f)
+                    img.at(x, y).a = alpha;
+        return img;
+    };
+    Image photo = background(640, 360, 0.02f);
+    blob(photo, 400.f, 100.f, 24.f, 1.f, 0.6f);
+    ASSERT_EQ(findLights(photo).lights.size(), 1u) << findLights(photo).whyNone;
+    for (const bool discOnly : {false, true}) {
+        const LightSearch glassy = findLights(withAlpha(photo, 0.35f, discOnly));
+        EXPECT_TRUE(glassy.lights.empty()) << discOnly;
+        EXPECT_EQ(measureLightAt(withAlpha(photo, 0.35f, discOnly), {400.f, 100.f}).flux <
+                      0.5 * measureLightAt(photo, {400.f, 100.f}).flux,
+                  true);
+    }
+    Image render = background(640, 360, 0.1f);
+    blob(render, 250.5f, 80.25f, 3.f, 5000.f);
+    const LightSearch emission = findLights(withAlpha(render, 0.f, false));
+    ASSERT_EQ(emission.lights.size(), 1u) << emission.whyNone;
+    EXPECT_EQ(emission.lights[0].flux, findLights(render).lights[0].flux);
+}
