@@ -45,10 +45,12 @@ case "$job" in
     # shellcheck disable=SC2086
     cmake -S . -B build-nogl -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLAREKIT_GL=OFF -DFLAREKIT_BUILD_BENCH=OFF \
       -DFLAREKIT_WERROR="$werror" $FLAREKIT_LAUNCHER
-    cmake --build build-nogl -j"$(nproc)"
     # What differs without GL: the CLI (its GL paths refuse with "built without OpenGL", the
     # rest must work) and the job layer against it. The unit and golden tests run the same core
-    # objects as the main build's; the Slurm test checks the farm, not the CLI.
+    # objects as the main build's, so only the programs run here are built; the Slurm test
+    # checks the farm, not the CLI.
+    cmake --build build-nogl -j"$(nproc)" --target flarekit_cli flarekit_cli_tests \
+      flarekit_cli_oiio_tests flarekit_job_tests
     ctest --test-dir build-nogl -j"$(nproc)" --output-on-failure -L 'cli|job' -LE 'slow|slurm'
     # AddressSanitizer + UndefinedBehaviorSanitizer, every error fatal: the core, codecs, jobs,
     # CLI (fault injection included), the C API and the GL plumbing and GPU paths (labels unit,
