@@ -46,10 +46,6 @@ float whiteLevelOf(const Image& image, float brightestNeutral, bool straight) {
     return srgbToLinear((std::round(whiteCode) - kWhiteToleranceCodes) / 255.f);
 }
 
-}  // namespace
-
-namespace {
-
 //! One pass of the luminance map: each pixel's luminance (times its alpha for straight
 //! colour), the rows' peaks, brightest channels and brightest neutrals; the frame's lowest alpha.
 void luminancePass(const Image& image, LuminanceMap& m, std::vector<float>& rowWhite,

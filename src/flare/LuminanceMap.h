@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The light finder's luminance pass: each pixel's linear luminance once, the frame's brightest
-// channel and peak, and (8/16-bit frames) which pixels sit at the file's white.
+// channel and peak, and (8/16-bit frames) the level of the file's white, as each pixel shows.
 #pragma once
 
 #include <algorithm>
@@ -54,7 +54,8 @@ struct LuminanceMap {
     }
 };
 
-//! The luminance pass over `image` (the white core marked where it is display-referred).
+//! The luminance pass over `image` (twice for a display-referred frame with see-through
+//! pixels, the second as it shows), and its white level where it is display-referred.
 LuminanceMap luminanceMap(const Image& image);
 
 }  // namespace flarekit::lightfinder

@@ -55,8 +55,10 @@ int runDemo(const DemoArgs& a) {
     if (a.noVideo) return kExitOk;
     auto video = gl::encodeDemoVideo(o, *r);
     if (!video) return report(video.error());
-    if (!*video) warn("ffmpeg is not installed: no MP4 (the PNG frames are written)");
-    if (*video) std::printf("demo: video %sdemo.mp4 (%.3g fps)\n", dir.c_str(), o.settings.fps);
+    if (*video)
+        std::printf("demo: video %sdemo.mp4 (%.3g fps)\n", dir.c_str(), o.settings.fps);
+    else
+        warn("ffmpeg is not installed: no MP4 (the PNG frames are written)");
     return kExitOk;
 }
 #else
