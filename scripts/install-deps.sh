@@ -42,6 +42,11 @@ packages=(
   slurmctld slurmd slurm-client munge
   # shots: colour spaces through OpenColorIO
   libopencolorio-dev
+  # the Python module (`import flarekit`): pybind11 and numpy for Debian's python3, pytest for
+  # its tests
+  pybind11-dev python3-dev python3-numpy python3-pytest
+  # the flare-data generator's PyTorch dataset and its Dask cluster runs (and their tests)
+  python3-torch python3-dask python3-distributed
   # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
   clang libclang-rt-14-dev
 )

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -57,8 +58,7 @@ struct BuildTree {
 //! When the executable runs from flarekit's own build tree (the CLI, the tests, the benches),
 //! that tree's CMakeCache.txt, found at most three folders up, names the source and build
 //! folders. An installed executable has no such file above it.
-std::optional<BuildTree> buildTree() {
-    fs::path dir = runningExecutable().parent_path();
+std::optional<BuildTree> buildTreeAbove(fs::path dir) {
     for (int up = 0; up < 4 && !dir.empty(); ++up, dir = dir.parent_path()) {
         std::ifstream cache(dir / "CMakeCache.txt");
         if (!cache) continue;
@@ -75,6 +75,13 @@ std::optional<BuildTree> buildTree() {
     }
     return std::nullopt;
 }
+//! The build tree above the executable, else above the shared library this code is in (the
+//! Python module in build/python/flarekit/ run by the system's python3).
+std::optional<BuildTree> buildTree(const fs::path& library) {
+    if (auto tree = buildTreeAbove(runningExecutable().parent_path())) return tree;
+    if (!library.empty()) return buildTreeAbove(library.parent_path());
+    return std::nullopt;
+}
 
 //! Where this process runs from: fixed for its life, so found once (the build tree's lookup
 //! reads CMakeCache.txt) rather than on every preset, lens or module lookup.
@@ -83,8 +90,21 @@ struct Locations {
     std::optional<BuildTree> tree;
 };
 const Locations& locations() {
-    static const Locations found{runningExecutable(), containingSharedLibrary(), buildTree()};
+    static const Locations found = [] {
+        const fs::path library = containingSharedLibrary();
+        return Locations{runningExecutable(), library, buildTree(library)};
+    }();
     return found;
+}
+
+//! Roots a front end added (addShippedRoots), searched after the executable's and library's.
+struct AddedRoots {
+    std::mutex mutex;
+    std::vector<fs::path> presets, modules;
+};
+AddedRoots& addedRoots() {
+    static AddedRoots roots;
+    return roots;
 }
 
 void addFolder(std::vector<fs::path>& out, const fs::path& dir) {
@@ -102,6 +122,10 @@ std::vector<fs::path> shippedPresetRoots() {
     const Locations& at = locations();
     if (!at.exe.empty()) addFolder(roots, at.exe.parent_path() / FLAREKIT_BIN_TO_PRESETS);
     if (!at.library.empty()) addFolder(roots, at.library.parent_path() / FLAREKIT_LIB_TO_PRESETS);
+    {
+        std::lock_guard lock(addedRoots().mutex);
+        for (const fs::path& dir : addedRoots().presets) addFolder(roots, dir);
+    }
     if (at.tree) addFolder(roots, at.tree->source / "presets");
     return roots;
 }
@@ -122,8 +146,18 @@ std::vector<fs::path> oiioModuleCandidates() {
     if (!at.exe.empty()) out.push_back(at.exe.parent_path() / FLAREKIT_BIN_TO_MODULES / kModule);
     if (!at.library.empty())
         out.push_back(at.library.parent_path() / FLAREKIT_LIB_TO_MODULES / kModule);
+    {
+        std::lock_guard lock(addedRoots().mutex);
+        for (const fs::path& dir : addedRoots().modules) out.push_back(dir / kModule);
+    }
     if (at.tree) out.push_back(at.tree->binary / "src" / kModule);
     return out;
+}
+
+void addShippedRoots(const fs::path& presets, const fs::path& modules) {
+    std::lock_guard lock(addedRoots().mutex);
+    addedRoots().presets.push_back(presets);
+    addedRoots().modules.push_back(modules);
 }
 
 }  // namespace flarekit

@@ -24,4 +24,9 @@ std::filesystem::path shippedOcioConfig();
 //! the shared library's, then the build tree's src/.
 std::vector<std::filesystem::path> oiioModuleCandidates();
 
+//! A front end whose code is installed elsewhere (the Python module under dist-packages) adds
+//! where its install keeps the presets' root and libflarekit_oiio.so's folder; both are
+//! searched after the executable's and the library's own.
+void addShippedRoots(const std::filesystem::path& presets, const std::filesystem::path& modules);
+
 }  // namespace flarekit

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "flarekit/job/ApplyJob.h"
+#include "flarekit/job/PixelJob.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "core/SafeWrite.h"
 #include "flarekit/job/ShotTracking.h"
 #include "job/LayerFiles.h"
+#include "job/PixelLoad.h"
 #include "job/ShotLight.h"
 
 namespace flarekit {
@@ -160,10 +162,10 @@ Status checkApplyFiles(const ApplyOptions& a, const Preset& preset, const ShotPl
 
 //! The flare over black, pass by pass (written as layers when asked), then the output: the
 //! flare alone, or the input plus exactly that flare. `passes` keeps the passes and the flare
-//! for the output's channels (--layers-in-output).
+//! when `keepPasses` (the output's channels, an in-memory caller's layers).
 Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights& lights,
                       const std::string& layerSuffix, LoadedImage& loaded,
-                      std::vector<FlareLayer>& passes) {
+                      std::vector<FlareLayer>& passes, bool keepPasses) {
     Image& image = loaded.image;
     Image flare;
     passes = renderFlareLayers(image.width(), image.height(), preset, lights, flare);
@@ -173,7 +175,7 @@ Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights&
     }
     if (a.flareOnly) {
         loaded.hasAlpha = false;
-        if (a.layersInOutput) passes.push_back({"flare", flare});
+        if (keepPasses) passes.push_back({"flare", flare});
         image = std::move(flare);
         return Ok{};
     }
@@ -181,8 +183,62 @@ Status renderByLayers(const ApplyOptions& a, const Preset& preset, const Lights&
     const float* add = flare.data();
     for (std::size_t i = 0; i < image.pixelCount() * 4; ++i)
         if (i % 4 != 3) dst[i] += add[i];
-    if (a.layersInOutput) passes.push_back({"flare", std::move(flare)});
+    if (keepPasses) passes.push_back({"flare", std::move(flare)});
     return Ok{};
+}
+
+//! An image already read (from `in`, for `out`; both only name it): its lights, their flares,
+//! the display curve and the output's options. `passes`: each pass and the whole flare, kept
+//! when `keepPasses` or the output carries them.
+Result<ImageOutput> flareLoaded(const ApplyOptions& a, const Preset& preset, LoadedImage& loaded,
+                                const std::string& in, const std::string& out,
+                                const LightsOf& lightsOf, const JobEvents& events,
+                                const std::string& layerSuffix, bool keepPasses,
+                                std::vector<FlareLayer>& passes) {
+    Image& image = loaded.image;
+    auto flares = lightsOf(loaded);
+    if (!flares) return flares.error();
+    if (Status s =
+            checkFlareWork(preset, image.width(), image.height(), int(flares->size()), a.preset);
+        !s) {
+        return s.error();
+    }
+    keepPasses = keepPasses || a.layersInOutput;
+    if (!a.layersDir.empty() || a.flareOnly || keepPasses) {
+        if (Status s = renderByLayers(a, preset, *flares, layerSuffix, loaded, passes, keepPasses);
+            !s)
+            return s.error();
+    } else {
+        for (const auto& [light, intensity] : *flares) {
+            if (!(intensity > 0.f)) continue;
+            const FlareStats stats = renderFlare(image, preset, light, intensity);
+            if (a.verbose)
+                events.say(
+                    format("flare at %.1f,%.1f, intensity %.4f: %zu elements, %zu pixels "
+                           "shaded",
+                           double(light.x), double(light.y), double(intensity), stats.elementsDrawn,
+                           stats.pixelsShaded));
+        }
+    }
+    // No curve named: defaultDisplayCurve (filmic for HDR input to an 8/16-bit file). The flare
+    // alone stays linear (it is added in the compositing package) unless a curve is named.
+    const ToneOperator curve = a.tonemap.value_or(
+        a.flareOnly ? ToneOperator::None : defaultDisplayCurve(loaded.wasFloat, out, a.depth));
+    toneMapImage(image, curve, a.exposure);
+    ImageOutput result{std::move(image), {}};
+    result.options.alpha = loaded.hasAlpha;
+    result.options.format = a.depth;
+    result.options.encode = a.encode;
+    // An EXR plate's other channels, attributes and windows go on to an EXR output (not to the
+    // flare alone, which is not the plate).
+    if (!a.flareOnly) result.options.exrExtras = keptExtras(loaded, in, out, events);
+    if (a.layersInOutput) {
+        std::vector<NamedLayer> named;
+        for (const FlareLayer& pass : passes) named.push_back({pass.name, &pass.image});
+        result.options.exrExtras = withLayerChannels(result.options.exrExtras, named);
+    }
+    if (a.color) a.color->toOutput(result.image, result.options);
+    return result;
 }
 
 Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, const std::string& out,
@@ -198,49 +254,35 @@ Result<ImageOutput> applyFlare(const ApplyOptions& a, const std::string& in, con
         if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
     }
     if (a.color) a.color->toWorking(*loaded);
-    Image& image = loaded->image;
-    auto flares = lightsOf(*loaded);
-    if (!flares) return flares.error();
-    if (Status s =
-            checkFlareWork(*preset, image.width(), image.height(), int(flares->size()), a.preset);
-        !s) {
-        return s.error();
-    }
     std::vector<FlareLayer> passes;
-    if (!a.layersDir.empty() || a.flareOnly || a.layersInOutput) {
-        if (Status s = renderByLayers(a, *preset, *flares, layerSuffix, *loaded, passes); !s)
-            return s.error();
-    } else {
-        for (const auto& [light, intensity] : *flares) {
-            if (!(intensity > 0.f)) continue;
-            const FlareStats stats = renderFlare(image, *preset, light, intensity);
-            if (a.verbose)
-                events.say(
-                    format("flare at %.1f,%.1f, intensity %.4f: %zu elements, %zu pixels "
-                           "shaded",
-                           double(light.x), double(light.y), double(intensity), stats.elementsDrawn,
-                           stats.pixelsShaded));
-        }
+    return flareLoaded(a, *preset, *loaded, in, out, lightsOf, events, layerSuffix, false, passes);
+}
+
+//! One image's light: placed (measured there unless --flux-mode fixed) and dimmed by the
+//! matte's coverage, or found.
+Result<Lights> imageLights(const ApplyOptions& a, const std::string& in, const LoadedImage& plate,
+                           std::optional<ShotCoverage>& coverage, const JobEvents& events) {
+    if (!a.light) return autoLights(a, in, plate.image, events);
+    float intensity = a.intensity;
+    if (a.fluxMode == FluxMode::Measured) {
+        const LightCandidate placed = measureLightAt(plate.image, *a.light, a.lightSearch);
+        intensity *= placed.flareScale;
+        if (placed.flux <= 0)
+            events.warn(format(
+                "--light %g,%g: nothing to measure there (%s): no flare; --flux-mode fixed draws "
+                "the preset's own",
+                double(a.light->x), double(a.light->y), placed.verdict.c_str()));
+        if (a.verbose)
+            events.say(format("placed light: flux %.4g, flare scale %.4f", placed.flux,
+                              double(placed.flareScale)));
     }
-    // No curve named: defaultDisplayCurve (filmic for HDR input to an 8/16-bit file). The flare
-    // alone stays linear (it is added in the compositing package) unless a curve is named.
-    const ToneOperator curve = a.tonemap.value_or(
-        a.flareOnly ? ToneOperator::None : defaultDisplayCurve(loaded->wasFloat, out, a.depth));
-    toneMapImage(image, curve, a.exposure);
-    ImageOutput result{std::move(image), {}};
-    result.options.alpha = loaded->hasAlpha;
-    result.options.format = a.depth;
-    result.options.encode = a.encode;
-    // An EXR plate's other channels, attributes and windows go on to an EXR output (not to the
-    // flare alone, which is not the plate).
-    if (!a.flareOnly) result.options.exrExtras = keptExtras(*loaded, in, out, events);
-    if (a.layersInOutput) {
-        std::vector<NamedLayer> named;
-        for (const FlareLayer& pass : passes) named.push_back({pass.name, &pass.image});
-        result.options.exrExtras = withLayerChannels(result.options.exrExtras, named);
+    if (coverage) {
+        auto row = coverage->at(0, plate);
+        if (!row) return row.error();
+        intensity *= float(row->raw);
+        if (a.verbose) events.say(format("coverage %.4f", row->raw));
     }
-    if (a.color) a.color->toOutput(result.image, result.options);
-    return result;
+    return Lights{{*a.light, intensity}};
 }
 
 //! One image: the light given or found, dimmed by the matte's coverage when one is given.
@@ -255,29 +297,8 @@ Status applyToImage(const ApplyOptions& a, const JobEvents& events) {
     return writeImageJob(a.output, [&] {
         return applyFlare(
             a, a.input, a.output,
-            [&](const LoadedImage& plate) -> Result<Lights> {
-                if (!a.light) return autoLights(a, a.input, plate.image, events);
-                float intensity = a.intensity;
-                if (a.fluxMode == FluxMode::Measured) {
-                    const LightCandidate placed =
-                        measureLightAt(plate.image, *a.light, a.lightSearch);
-                    intensity *= placed.flareScale;
-                    if (placed.flux <= 0)
-                        events.warn(
-                            format("--light %g,%g: nothing to measure there (%s): no "
-                                   "flare; --flux-mode fixed draws the preset's own",
-                                   double(a.light->x), double(a.light->y), placed.verdict.c_str()));
-                    if (a.verbose)
-                        events.say(format("placed light: flux %.4g, flare scale %.4f", placed.flux,
-                                          double(placed.flareScale)));
-                }
-                if (coverage) {
-                    auto row = coverage->at(0, plate);
-                    if (!row) return row.error();
-                    intensity *= float(row->raw);
-                    if (a.verbose) events.say(format("coverage %.4f", row->raw));
-                }
-                return Lights{{*a.light, intensity}};
+            [&](const LoadedImage& plate) {
+                return imageLights(a, a.input, plate, coverage, events);
             },
             events);
     });
@@ -416,6 +437,35 @@ Result<JobReport> runApplyJob(const ApplyOptions& options, const JobEvents& even
     if (!summary) return summary.error();
     report.shot = *summary;
     return report;
+}
+
+Result<PixelOutput> applyPixels(const ApplyOptions& options, PixelInput input,
+                                const JobEvents& events, bool keepLayers) {
+    ApplyOptions a = options;
+    a.layersDir.clear(), a.layersInOutput = false, a.color = nullptr;
+    a.depth = SampleFormat::Float;
+    if (a.light) {
+        if (Status s = checkLightCoordinates(*a.light, "--light"); !s) return s.error();
+    }
+    if (!a.lightTrack.empty() || !a.camera.empty() || a.occlusion.enabled())
+        return invalidInput(
+            "--light-track, --camera and --matte key files to a sequence's frames: run the "
+            "file job for them");
+    auto preset = loadPreset(a.preset);
+    if (!preset) return preset.error();
+    const std::string name = input.name;
+    auto loaded = job_detail::loadedFromPixels(std::move(input), applyMemory(a, *preset), events);
+    if (!loaded) return loaded.error();
+    std::optional<ShotCoverage> noCoverage;
+    std::vector<FlareLayer> passes;
+    auto out = flareLoaded(
+        a, *preset, *loaded, name, "",
+        [&](const LoadedImage& plate) { return imageLights(a, name, plate, noCoverage, events); },
+        events, "", keepLayers, passes);
+    if (!out) return out.error();
+    PixelOutput result{std::move(out->image), {}};
+    for (FlareLayer& pass : passes) result.layers.push_back({pass.name, std::move(pass.image)});
+    return result;
 }
 
 }  // namespace flarekit

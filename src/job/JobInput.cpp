@@ -6,14 +6,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <span>
 
 #include "core/ImageIOShared.h"
 #include "core/Interrupt.h"
 #include "core/LibraryNoise.h"
 #include "core/SafeWrite.h"
 #include "core/codecs/ExrExtras.h"
+#include "flarekit/Limits.h"
 #include "flarekit/job/ApplyJob.h"
 #include "flarekit/job/Job.h"
+#include "job/PixelLoad.h"
 #include "job/ReadClock.h"
 
 namespace flarekit {
@@ -28,6 +31,32 @@ void addReadSeconds(double seconds) {
 double takeReadSeconds() {
     return g_readSeconds.exchange(0);
 }
+
+Result<LoadedImage> loadedFromPixels(PixelInput&& input, const JobMemory& job,
+                                     const JobEvents& events) {
+    const double pixels = double(input.image.pixelCount());
+    if (pixels == 0) return invalidInput(input.name + ": an image without pixels (0 x 0)");
+    if (Status s = checkMemory(input.name, job.bytesPerPixel * pixels + job.fixedBytes, job.detail);
+        !s)
+        return s.error();
+    LoadedImage loaded;
+    // As the file readers do: NaN as 0, infinities as the largest half float.
+    for (float& v : std::span(input.image.data(), input.image.pixelCount() * 4)) {
+        if (std::isfinite(v)) continue;
+        v = std::isnan(v) ? 0.f : std::copysign(65504.f, v);
+        ++loaded.nonFinite;
+    }
+    if (loaded.nonFinite > 0)
+        events.warn(input.name + ": " + std::to_string(loaded.nonFinite) +
+                    " NaN/Inf values: NaN read as 0, infinities clamped to +-65504 (the largest "
+                    "half float)");
+    loaded.image = std::move(input.image);
+    loaded.fileChannels = input.hasAlpha ? 4 : 3;
+    loaded.hasAlpha = input.hasAlpha;
+    loaded.wasFloat = !input.displayReferred;
+    return loaded;
+}
+
 }  // namespace job_detail
 
 Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
@@ -145,6 +174,8 @@ std::optional<ToneOperator> toneOperatorNamed(const std::string& name) {
 }
 
 ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out, SampleFormat requested) {
+    // No file (an in-memory job's result) is float, as an EXR is.
+    if (out.empty()) return ToneOperator::None;
     return hdrInput && !isFloatFormat(outputSampleFormat(out, requested)) ? ToneOperator::Filmic
                                                                           : ToneOperator::None;
 }

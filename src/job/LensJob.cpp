@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "flarekit/job/LensJob.h"
+#include "flarekit/job/PixelJob.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "core/SafeWrite.h"
 #include "job/LayerFiles.h"
+#include "job/PixelLoad.h"
 
 namespace flarekit {
 
@@ -127,27 +129,23 @@ Status checkLensFiles(const LensJobOptions& a, const ShotPlan* plan) {
     return checkJobFiles(reads, writes);
 }
 
-//! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
-Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
-                              const std::string& out, const JobEvents& events,
-                              const std::string& layerSuffix = "") {
-    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
-    auto lens = openJobLens(a);
-    if (!lens) return lens.error();
-    auto loaded = readJobInput(in, lensRenderMemory(a), events, {a.part});
-    if (!loaded) return loaded.error();
-    if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
-    Image& image = loaded->image;
+//! An image already read (from `in`, for `out`; both only name it) with its lens flare; the
+//! layers as DIR/NAME + `layerSuffix` + .exr and into `keptLayers` when it is given.
+Result<ImageOutput> lensLoaded(const LensJobOptions& a, const Lens& lens, LoadedImage& loaded,
+                               const std::string& in, const std::string& out,
+                               const JobEvents& events, const std::string& layerSuffix,
+                               std::vector<std::pair<std::string, Image>>* keptLayers) {
+    Image& image = loaded.image;
     // 8/16-bit photographs clip their lights at 1: expand them back (postfx's inverse curve) so
     // a clipped sun carries the energy a flare needs; the output keeps the original pixels.
-    const bool expand = !loaded->wasFloat && a.expandGain > 1.0;
+    const bool expand = !loaded.wasFloat && a.expandGain > 1.0;
     Image expanded;
     if (expand) {
         expanded = image;
         expandHighlights(expanded, float(a.expandGain));
     }
     const auto lights = lensLights(a, in, expand ? expanded : image, events);
-    auto layers = renderLayers(a, in, *lens, image, lights, events);
+    auto layers = renderLayers(a, in, lens, image, lights, events);
     if (!layers) return layers.error();
     // The flare layer: the three parts' colour, opaque like each of them.
     Image flare(image.width(), image.height());
@@ -163,20 +161,37 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
     for (std::size_t i = 0; i < composite.pixelCount(); ++i) {
         for (int c = 0; c < 3; ++c) composite.data()[4 * i + c] += flare.data()[4 * i + c];
     }
-    toneMapImage(composite, a.tonemap.value_or(defaultDisplayCurve(loaded->wasFloat, out)), 1.f);
+    toneMapImage(composite, a.tonemap.value_or(defaultDisplayCurve(loaded.wasFloat, out)), 1.f);
     ImageOutput result{std::move(composite), {}};
-    result.options.alpha = loaded->hasAlpha;
+    result.options.alpha = loaded.hasAlpha;
     // An EXR plate's other channels, attributes and parts go on to an EXR output.
-    result.options.exrExtras = keptExtras(*loaded, in, out, events);
+    result.options.exrExtras = keptExtras(loaded, in, out, events);
     if (a.layersInOutput)
         result.options.exrExtras =
             withLayerChannels(result.options.exrExtras, namedLensLayers(*layers, flare));
     result.options.encode = a.encode;
+    if (keptLayers)
+        for (const auto& [name, layer] : namedLensLayers(*layers, flare))
+            keptLayers->push_back({name, *layer});
     char line[400];
     std::snprintf(line, sizeof line, "%s: %zu light(s), flare through %s (f = %.1f mm)",
-                  out.c_str(), lights.size(), lens->name.c_str(), paraxial(*lens).focalLength);
+                  (out.empty() ? in : out).c_str(), lights.size(), lens.name.c_str(),
+                  paraxial(lens).focalLength);
     events.say(line);
     return result;
+}
+
+//! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
+Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
+                              const std::string& out, const JobEvents& events,
+                              const std::string& layerSuffix = "") {
+    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
+    auto lens = openJobLens(a);
+    if (!lens) return lens.error();
+    auto loaded = readJobInput(in, lensRenderMemory(a), events, {a.part});
+    if (!loaded) return loaded.error();
+    if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
+    return lensLoaded(a, *lens, *loaded, in, out, events, layerSuffix, nullptr);
 }
 
 }  // namespace
@@ -229,6 +244,31 @@ Result<JobReport> runLensJob(const LensJobOptions& options, const JobEvents& eve
     if (!summary) return summary.error();
     report.shot = *summary;
     return report;
+}
+
+Result<PixelOutput> lensPixels(const LensJobOptions& options, PixelInput input,
+                               const JobEvents& events, bool keepLayers) {
+    LensJobOptions a = options;
+    a.layersDir.clear(), a.layersInOutput = false;
+    if (a.lightMode == LensLightMode::At) {
+        if (Status s = checkLightCoordinates(a.light, "--light"); !s) return s.error();
+    }
+    if (!a.dirtFile.empty()) {
+        auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
+        if (!mask) return mask.error();
+        a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
+    }
+    auto lens = openJobLens(a);
+    if (!lens) return lens.error();
+    const std::string name = input.name;
+    auto loaded = job_detail::loadedFromPixels(std::move(input), lensRenderMemory(a), events);
+    if (!loaded) return loaded.error();
+    PixelOutput result;
+    auto out =
+        lensLoaded(a, *lens, *loaded, name, "", events, "", keepLayers ? &result.layers : nullptr);
+    if (!out) return out.error();
+    result.image = std::move(out->image);
+    return result;
 }
 
 }  // namespace flarekit

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "flarekit/job/PostFxJob.h"
+#include "flarekit/job/PixelJob.h"
+#include "job/PixelLoad.h"
 
 #include <algorithm>
 #include <chrono>
@@ -151,36 +153,34 @@ void sayPassTimes(const std::vector<PassTime>& times, bool gl, const JobEvents& 
 
 //! One image (a sequence's frame): `in` through the chain to the image for `out`; the layers
 //! into `layersDir` when it is not empty.
-Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
-                             const std::string& out, const std::string& layersDir,
-                             const JobEvents& events) {
-    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
+//! An image already read (from `in`, for `out`; both only name it) through the chain; the
+//! layers into `layersDir` when it is not empty, and into `keptLayers` when it is given.
+Result<ImageOutput> chainLoaded(const PostFxJobOptions& a, LoadedImage& loaded,
+                                const std::string& in, const std::string& out,
+                                const std::string& layersDir, const JobEvents& events,
+                                std::vector<SizedLayer>* keptLayers) {
     auto params = jobParams(a);
     if (!params) return params.error();
-    auto loaded = readJobInput(in, postFxMemory(a), events, {a.part});
-    if (!loaded) return loaded.error();
-    if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
-    if (a.color) a.color->toWorking(*loaded);
     // No curve named, and the preset has none: the default display curve, as apply's.
     if (!a.tonemap && params->tone.op == ToneOperator::None)
-        params->tone.op = defaultDisplayCurve(loaded->wasFloat, out);
+        params->tone.op = defaultDisplayCurve(loaded.wasFloat, out);
     std::vector<PassTime> times;
     PostFxOptions options;
-    options.keepLayers = !layersDir.empty() || a.layersInOutput;
+    options.keepLayers = !layersDir.empty() || a.layersInOutput || keptLayers;
     options.times = a.verbose ? &times : nullptr;
     // Expanded highlights: the chain sees the expanded image, the output keeps the original
     // pixels (the expansion is taken back off the additive composite).
-    const bool expand = a.expandHighlights && !loaded->wasFloat;
+    const bool expand = a.expandHighlights && !loaded.wasFloat;
     // The GL chain moves halves where they lose nothing: an input read from a half EXR, a
     // result only kept as a half EXR (the layers and expanded highlights use the floats).
-    options.halfInput = loaded->halfExact;
+    options.halfInput = loaded.halfExact;
     options.halfReadback =
         outputSampleFormat(out) == SampleFormat::Half && !options.keepLayers && !expand;
-    if (a.expandHighlights && loaded->wasFloat)
+    if (a.expandHighlights && loaded.wasFloat)
         events.warn(in + ": --expand-highlights is for 8/16-bit input; HDR input is used as it is");
     Image expanded;
     if (expand) {
-        expanded = loaded->image;
+        expanded = loaded.image;
         // Only around the frame's lights: a bright sky or snow expanded would flare as a slab.
         const LightSearch lights = expandHighlightsAtLights(expanded, *a.expandHighlights);
         if (lights.lights.empty())
@@ -188,7 +188,7 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
         params->bright.knownWhite = 1.f;  // still display-referred: its white is the display's
     }
     // The image as read is needed afterwards only to take an expansion back off.
-    Image& chainInput = expand ? expanded : loaded->image;
+    Image& chainInput = expand ? expanded : loaded.image;
     double warmSeconds = 0;
     auto result =
         a.backend->run(chainInput, !expand, *params, options, a.repeat, warmSeconds, in, events);
@@ -203,30 +203,42 @@ Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
     }
     if (expand && params->tone.op == ToneOperator::None) {
         float* f = result->final.data();
-        const float *e = expanded.data(), *o = loaded->image.data();
+        const float *e = expanded.data(), *o = loaded.image.data();
         for (std::size_t i = 0; i < result->final.pixelCount() * 4; ++i)
             if (i % 4 != 3) f[i] = std::max(0.f, f[i] - (e[i] - o[i]));
     }
     if (a.verbose) sayPassTimes(times, a.backend->usesGl(), events);
     // Resized once for the layer files and the output's channels alike.
-    const std::vector<SizedLayer> layers =
+    std::vector<SizedLayer> layers =
         options.keepLayers ? fullSizeLayers(*result) : std::vector<SizedLayer>{};
     if (!layersDir.empty()) {
-        const bool floatInput = loaded->wasFloat && !loaded->halfExact;
+        const bool floatInput = loaded.wasFloat && !loaded.halfExact;
         if (Status s = writeLayers(layersDir, layers, result->final, a.encode, floatInput); !s)
             return s.error();
     }
     ImageOutput output{std::move(result->final), {}};
-    output.options.alpha = loaded->hasAlpha;
+    output.options.alpha = loaded.hasAlpha;
     output.options.encode = a.encode;
-    output.options.exrExtras = keptExtras(*loaded, in, out, events);
+    output.options.exrExtras = keptExtras(loaded, in, out, events);
     if (a.layersInOutput) {
         std::vector<NamedLayer> named;
         for (const SizedLayer& layer : layers) named.push_back({layer.name, &layer.image});
         output.options.exrExtras = withLayerChannels(output.options.exrExtras, named);
     }
     if (a.color) a.color->toOutput(output.image, output.options);
+    if (keptLayers) *keptLayers = std::move(layers);
     return output;
+}
+
+Result<ImageOutput> runChain(const PostFxJobOptions& a, const std::string& in,
+                             const std::string& out, const std::string& layersDir,
+                             const JobEvents& events) {
+    if (Status s = checkLayersFit(a.layersInOutput, out); !s) return s.error();
+    auto loaded = readJobInput(in, postFxMemory(a), events, {a.part});
+    if (!loaded) return loaded.error();
+    if (Status s = checkPartsFit(*loaded, in, out); !s) return s.error();
+    if (a.color) a.color->toWorking(*loaded);
+    return chainLoaded(a, *loaded, in, out, layersDir, events, nullptr);
 }
 
 }  // namespace
@@ -275,6 +287,25 @@ Result<JobReport> runPostFxJob(const PostFxJobOptions& a, const JobEvents& event
     if (!summary) return summary.error();
     report.shot = *summary;
     return report;
+}
+
+Result<PixelOutput> postFxPixels(const PostFxJobOptions& options, PixelInput input,
+                                 const JobEvents& events, bool keepLayers) {
+    PostFxJobOptions a = options;
+    a.layersDir.clear(), a.layersInOutput = false, a.color = nullptr;
+    if (a.expandHighlights) {
+        const double gain = *a.expandHighlights;
+        if (Status s = checkExpandHighlights(gain, formatParamNumber(gain)); !s) return s.error();
+    }
+    const std::string name = input.name;
+    auto loaded = job_detail::loadedFromPixels(std::move(input), postFxMemory(a), events);
+    if (!loaded) return loaded.error();
+    std::vector<SizedLayer> layers;
+    auto out = chainLoaded(a, *loaded, name, "", "", events, keepLayers ? &layers : nullptr);
+    if (!out) return out.error();
+    PixelOutput result{std::move(out->image), {}};
+    for (SizedLayer& layer : layers) result.layers.push_back({layer.name, std::move(layer.image)});
+    return result;
 }
 
 }  // namespace flarekit

@@ -208,6 +208,11 @@ TEST(CliPresets, ListsChecksAndDocuments) {
         << "docs/postfx.md is out of date: scripts/update-docs.sh";
     r = runCli({"presets", "--check", "subtle"});
     EXPECT_EQ(r.exitCode, 0);
+    r = runCli({"synth", "--params"});
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("| `lights_max` | 4 | [1, 64] |"), std::string::npos) << r.out;
+    EXPECT_NE(slurp(std::string(FLAREKIT_DOCS) + "/synth.md").find(r.out), std::string::npos)
+        << "docs/synth.md is out of date: scripts/update-docs.sh";
 }
 
 TEST(CliParams, NumericFlagsTakeRangeAndHelpFromTheParameterTables) {

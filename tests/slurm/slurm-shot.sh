@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # A 40-frame shot rendered by a one-node Slurm cluster as a job array of 4 chunks, every frame
-# (and coverage.csv) compared bit for bit with a single-process render of the whole range.
+# (and coverage.csv) compared bit for bit with a single-process render of the whole range; then
+# a flare-data set generated as a job array of 3 shards, compared with a one-process set.
 # The test starts its own munged (own key and socket) and slurmctld + slurmd (own config, state
 # and ports, bound to 127.0.0.1) in a temporary folder, and stops them when it ends. Exit 77
 # (skipped) only when the daemons cannot start here, with the reason.
-#   slurm-shot.sh FLAREKIT SAMPLES_DIR SBATCH_SCRIPT
+#   slurm-shot.sh FLAREKIT SAMPLES_DIR SBATCH_SCRIPT SYNTH_SBATCH_SCRIPT
 set -euo pipefail
 flarekit="$(realpath "$1")"
 samples="$(realpath "$2")"
 script="$(realpath "$3")"
+synth_script="$(realpath "$4")"
 work="$(mktemp -d /tmp/flarekit-slurm.XXXXXX)"
 chmod 755 "$work"
 
@@ -128,4 +130,21 @@ done
 cmp -s "$work/ref/coverage.csv" "$work/farm/coverage.csv" || { echo "coverage.csv differs" >&2; bad=1; }
 [ "$(ls "$work"/flare-shot-*.log | wc -l)" -eq 4 ] || { echo "expected 4 task logs" >&2; bad=1; }
 [ "$bad" -eq 0 ] && echo "40 frames from 4 Slurm tasks, bit-identical to one process"
+
+# The flare-data generator as a job array of 3 shards (examples/slurm/synth-array.sbatch):
+# the same files as one process makes.
+synth=(synth --count 24 --size 64x48 --seed 5)
+"$flarekit" "${synth[@]}" --out "$work/synth-ref" 2>>"$work/ref.log"
+(cd "$work" && sbatch --wait --array=0-2 --cpus-per-task=1 "$synth_script" -- \
+  "$flarekit" "${synth[@]}" --out "$work/synth-farm") || {
+  echo "sbatch (synth) failed; task logs:" >&2
+  cat "$work"/flare-synth-*.log >&2 || true
+  exit 1
+}
+if diff -r "$work/synth-ref" "$work/synth-farm" >&2; then
+  echo "24 samples from 3 Slurm tasks, bit-identical to one process"
+else
+  echo "the Slurm shards' samples differ from the one-process set" >&2
+  bad=1
+fi
 exit "$bad"

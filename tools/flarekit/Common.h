@@ -91,6 +91,7 @@ void addDemoCommand(CLI::App& app, int& exitCode);
 void addPspCommand(CLI::App& app, int& exitCode);
 void addPostFxCommand(CLI::App& app, int& exitCode);
 void addLensCommand(CLI::App& app, int& exitCode);
+void addSynthCommand(CLI::App& app, int& exitCode);
 //! `lens render`, under the `lens` command.
 void addLensRenderCommand(CLI::App* lens, int& exitCode);
 

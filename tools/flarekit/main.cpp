@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
     addPspCommand(app, exitCode);
     addPostFxCommand(app, exitCode);
     addLensCommand(app, exitCode);
+    addSynthCommand(app, exitCode);
     // The limits are in place before any subcommand's callback runs.
     app.parse_complete_callback([&] {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)

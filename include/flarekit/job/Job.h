@@ -119,7 +119,7 @@ std::optional<ToneOperator> toneOperatorNamed(const std::string& name);
 //! through Hable's filmic curve, which rolls a sun of 30,000 and its flare off into white over
 //! several stops instead of clipping everything above 1 to a flat disc; its toe keeps the
 //! shadows of the photograph. Float outputs stay linear and unclamped, and 8-bit input is
-//! already display-referred: none.
+//! already display-referred: none. An empty `out` (an in-memory result, float): none.
 ToneOperator defaultDisplayCurve(bool hdrInput, const std::string& out,
                                  SampleFormat requested = SampleFormat::Auto);
 
