@@ -9,6 +9,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 
+#include "core/Parallel.h"
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Lens.h"
@@ -349,26 +350,35 @@ Camera drawCamera(const SynthConfig& cfg, SampleRandom& r, const Image& backgrou
 
 void applyCamera(Image& image, const SynthConfig& cfg, const Camera& c) {
     toneMapImage(image, cfg.tone, float(c.gain));
-    const double levels = cfg.bits ? std::exp2(cfg.bits) - 1 : 0;
-    float* px = image.data();
-    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-        SampleRandom noise(c.noiseSeed, i, kNoise);
-        for (int k = 0; k < 3; ++k) {
-            double v = std::max(0.0, double(px[4 * i + k]));
-            const double sigma =
-                std::sqrt(cfg.shotNoise * std::min(v, 1.0) + cfg.readNoise * cfg.readNoise);
-            if (sigma > 0) v += sigma * noise.normal();
-            v = std::pow(std::clamp(v, 0.0, 1.0), 1.0 / c.gamma);
-            if (levels > 0) v = std::round(v * levels) / levels;
-            px[4 * i + k] = float(v);
+    const float levels = cfg.bits ? float(std::exp2(cfg.bits) - 1) : 0.f;
+    const float inverseGamma = float(1.0 / c.gamma);
+    const float shot = float(cfg.shotNoise), read = float(cfg.readNoise * cfg.readNoise);
+    // Rows in parallel, each with its own noise stream: the same noise on any thread count.
+    parallelFor(0, image.height(), 8, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            SampleRandom noise(c.noiseSeed, std::uint64_t(y), kNoise);
+            float* px = image.row(y);
+            for (int x = 0; x < image.width(); ++x, px += 4) {
+                for (int k = 0; k < 3; ++k) {
+                    float v = std::max(0.f, px[k]);
+                    const float sigma = std::sqrt(shot * std::min(v, 1.f) + read);
+                    if (sigma > 0) v += sigma * float(noise.normal());
+                    v = std::pow(std::clamp(v, 0.f, 1.f), inverseGamma);
+                    if (levels > 0) v = std::round(v * levels) / levels;
+                    px[k] = v;
+                }
+            }
         }
-    }
+    });
 }
 
+//! a + b in colour; alpha 1 (every layer is opaque).
 Image sum(const Image& a, const Image& b) {
     Image out = a;
-    for (std::size_t i = 0; i < out.pixelCount() * 4; ++i)
-        if (i % 4 != 3) out.data()[i] += b.data()[i];
+    float* o = out.data();
+    const float* add = b.data();
+    for (std::size_t i = 0; i < out.pixelCount() * 4; ++i) o[i] += add[i];
+    for (std::size_t i = 0; i < out.pixelCount(); ++i) o[4 * i + 3] = 1.f;
     return out;
 }
 
