@@ -46,7 +46,8 @@ struct SynthConfig {
     ToneOperator tone = ToneOperator::None;
     double gammaMin = 1.8, gammaMax = 2.2;
     double shotNoise = 0.01, readNoise = 0.002;  //!< noise variance per unit signal, read sigma
-    int bits = 8;  //!< quantisation of the camera model's output: 0 none, 8 or 16
+    int bits = 8;         //!< quantisation of the camera model's output: 0 none, 8 or 16
+    int jpegQuality = 0;  //!< > 0: the 8-bit output also through JPEG at this quality
     //! Backgrounds: images in this folder (8/16-bit decoded to linear; a random crop each);
     //! empty: a procedural sky and ground.
     std::string backgrounds;
@@ -95,6 +96,10 @@ inline constexpr Param<SynthConfig> kSynthParams[] = {
     param<&SynthConfig::readNoise>("read_noise", 0, 1, "", "camera: read noise sigma"),
     oneOf<&SynthConfig::bits>("bits", std::span<const int>(kSynthBits), "bits",
                               "camera: quantisation, 0 (none), 8 or 16"),
+    // libjpeg's quality scale; 0 leaves JPEG out (the Wu et al. pipeline compresses its pairs).
+    param<&SynthConfig::jpegQuality>("jpeg_quality", 0, 100, "",
+                                     "camera: 1-100 compresses the 8-bit output as JPEG at this "
+                                     "quality (needs bits 8); 0: no JPEG"),
 };
 
 //! One sample: its layers (linear, unclamped, RGBA with alpha 1) and its label.

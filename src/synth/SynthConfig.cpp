@@ -41,6 +41,9 @@ Status checkSynthConfig(const SynthConfig& c) {
         if (p.lo > p.hi)
             return invalidInput(std::string(p.high) + ": expected at least " + p.low + " (" +
                                 formatParamNumber(p.lo) + "), got " + formatParamNumber(p.hi));
+    if (c.jpegQuality > 0 && c.bits != 8)
+        return invalidInput("jpeg_quality: JPEG holds 8-bit samples: give bits 8, got bits " +
+                            std::to_string(c.bits));
     if (!(c.spriteWeight + c.postfxWeight + c.lensWeight > 0))
         return invalidInput("sprite, postfx, lens: expected a weight above 0 for one of them");
     if (!c.backgrounds.empty()) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Parallel.h"
+#include "core/codecs/Codecs.h"
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Lens.h"
@@ -373,6 +374,33 @@ void applyCamera(Image& image, const SynthConfig& cfg, const Camera& c) {
 }
 
 //! a + b in colour; alpha 1 (every layer is opaque).
+//! The camera's 8-bit output through JPEG at `quality` and back (libjpeg-turbo, in memory).
+Status jpegRoundTrip(Image& image, int quality) {
+    const int w = image.width(), h = image.height();
+    std::vector<unsigned char> codes(std::size_t(w) * std::size_t(h) * 3);
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+        for (int k = 0; k < 3; ++k)
+            codes[3 * i + std::size_t(k)] = static_cast<unsigned char>(
+                std::lround(image.data()[4 * i + std::size_t(k)] * 255.f));
+    codec::Samples samples;
+    samples.width = w, samples.height = h, samples.channels = 3;
+    samples.type = codec::SampleType::U8, samples.data = codes.data();
+    codec::EncodeOptions options;
+    options.jpegQuality = quality;
+    auto bytes = codec::encodeJpeg(samples, options);
+    if (!bytes) return bytes.error();
+    auto raw = codec::decodeJpegBytes(*bytes, "the camera model's JPEG",
+                                      [](const codec::Header&) { return Status(Ok{}); });
+    if (!raw) return raw.error();
+    if (raw->channels != 3 || raw->header.width != w || raw->header.height != h)
+        return internalError("the camera model's JPEG came back another shape");
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+        for (int k = 0; k < 3; ++k)
+            image.data()[4 * i + std::size_t(k)] =
+                float(raw->bytes[3 * i + std::size_t(k)]) / 255.f;
+    return Ok{};
+}
+
 Image sum(const Image& a, const Image& b) {
     Image out = a;
     float* o = out.data();
@@ -450,13 +478,18 @@ Result<SynthSample> synthSample(std::uint64_t index, std::uint64_t seed, int wid
         const Camera c = drawCamera(cfg, cameraRandom, background);
         applyCamera(composite, cfg, c);
         applyCamera(gt, cfg, c);
+        if (cfg.jpegQuality > 0) {
+            for (Image* image : {&composite, &gt})
+                if (Status s = jpegRoundTrip(*image, cfg.jpegQuality); !s) return s.error();
+        }
         sample.gamma = c.gamma;
         camera = {{"gain", c.gain},
                   {"gamma", c.gamma},
                   {"tone", std::string(kToneOperatorNames[int(cfg.tone)])},
                   {"shot_noise", cfg.shotNoise},
                   {"read_noise", cfg.readNoise},
-                  {"bits", cfg.bits}};
+                  {"bits", cfg.bits},
+                  {"jpeg_quality", cfg.jpegQuality}};
     }
 
     json label = {{"index", index}, {"seed", seed}, {"width", w}, {"height", h}};

@@ -123,6 +123,16 @@ def test_camera_model():
     assert camera["gamma"] == 2.0 and s["label"]["gamma"] == 2.0
     codes = s["composite"] * 255
     assert np.all(np.abs(codes - np.rint(codes)) < 1e-3) and s["composite"].max() <= 1
+    # JPEG at quality 30: the same 8-bit image, blocky; still 8-bit codes.
+    jpeg = synth.sample(4, 1, 128, 96, dict(config, jpeg_quality=30))
+    assert jpeg["label"]["camera"]["jpeg_quality"] == 30
+    difference = np.abs(jpeg["composite"] - s["composite"])
+    assert 0.002 < difference.mean() < 0.1
+    codes = jpeg["composite"] * 255
+    assert np.all(np.abs(codes - np.rint(codes)) < 1e-3)
+    assert np.array_equal(jpeg["background"], s["background"])  # linear layers untouched
+    with pytest.raises(ValueError, match="jpeg_quality: JPEG holds 8-bit samples"):
+        synth.sample(4, 1, 128, 96, dict(config, bits=16, jpeg_quality=30))
 
 
 def run_cli(cli, *args, ok=True):

@@ -34,6 +34,9 @@ struct PngRowTarget {
 Result<Raw> readPng(const std::string& path, const HeaderCheck& check,
                     const PngRowTarget* target = nullptr);
 Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check);
+//! A JPEG held in memory (what encodeJpeg made); `name` names it in errors.
+Result<Raw> decodeJpegBytes(const std::vector<unsigned char>& bytes, const std::string& name,
+                            const HeaderCheck& check);
 //! TIFF files libtiff can hand over as plain interleaved samples (grey or RGB, with or without
 //! alpha, 8 or 16-bit integer or 32-bit float, strips or tiles); Unsupported for the rest
 //! (palette, CMYK, planar, YCbCr, bit depths below 8), which ImageIO sends to OpenImageIO.

@@ -78,12 +78,13 @@ int orientationOf(const jpeg_decompress_struct& info) {
 
 }  // namespace
 
-Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check) {
-    ReadState st;
+namespace {
+
+//! Decodes from `st.file`, or from `bytes` when given; `path` names the image in errors.
+Result<Raw> decode(ReadState& st, const std::string& path, const HeaderCheck& check,
+                   const std::vector<unsigned char>* bytes) {
     Raw raw;
     Status checked = Ok{};
-    st.file = std::fopen(path.c_str(), "rb");
-    if (!st.file) return ioError(path + ": cannot read: " + std::strerror(errno));
     st.info.err = jpeg_std_error(&st.errors.manager);
     st.errors.manager.error_exit = onError;
     st.errors.manager.emit_message = onMessage;
@@ -92,7 +93,10 @@ Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check) {
     }
     jpeg_create_decompress(&st.info);
     st.created = true;
-    jpeg_stdio_src(&st.info, st.file);
+    if (bytes)
+        jpeg_mem_src(&st.info, bytes->data(), static_cast<unsigned long>(bytes->size()));
+    else
+        jpeg_stdio_src(&st.info, st.file);
     jpeg_save_markers(&st.info, JPEG_APP0 + 1, 0xFFFF);
     jpeg_read_header(&st.info, TRUE);
     // CMYK and YCCK (Adobe's inverted inks) need OpenImageIO's conversion; grey stays grey and
@@ -118,6 +122,21 @@ Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check) {
     jpeg_finish_decompress(&st.info);
     if (st.errors.warning[0] != '\0') raw.warning = excerpt(st.errors.warning, 200);
     return raw;
+}
+
+}  // namespace
+
+Result<Raw> readJpeg(const std::string& path, const HeaderCheck& check) {
+    ReadState st;
+    st.file = std::fopen(path.c_str(), "rb");
+    if (!st.file) return ioError(path + ": cannot read: " + std::strerror(errno));
+    return decode(st, path, check, nullptr);
+}
+
+Result<Raw> decodeJpegBytes(const std::vector<unsigned char>& bytes, const std::string& name,
+                            const HeaderCheck& check) {
+    ReadState st;
+    return decode(st, name, check, &bytes);
 }
 
 namespace {
