@@ -62,6 +62,14 @@ py::object runPixels(const py::handle& array, bool displayReferred, bool layers,
     return jobResult(unwrap(std::move(out)), channels, layers);
 }
 
+//! expand_highlights: a gain through its table, or nothing.
+std::optional<float> expandKeyword(const py::object& expand) {
+    if (expand.is_none()) return std::nullopt;
+    ExpandHighlights gain;
+    setKeyword(kExpandHighlightsParams[0], expand, gain);
+    return gain.gain;
+}
+
 std::shared_ptr<const PostFxBackend> postFxBackend(const std::string& name) {
     if (name == "cpu") return cpuPostFxBackend();
 #if FLAREKIT_HAS_GL
@@ -205,11 +213,7 @@ void addJobs(py::module_& m) {
             o.tonemap = toneKeyword(tonemap);
             o.backend = postFxBackend(backend);
             o.exposure = exposure, o.threshold = threshold, o.knee = knee;
-            if (!expand.is_none()) {
-                ExpandHighlights gain;
-                setKeyword(kExpandHighlightsParams[0], expand, gain);
-                o.expandHighlights = gain.gain;
-            }
+            o.expandHighlights = expandKeyword(expand);
             return runPixels(image, displayReferred, layers,
                              [&](PixelInput in, const JobEvents& e) {
                                  return postFxPixels(o, std::move(in), e, layers);
@@ -268,18 +272,25 @@ void addJobs(py::module_& m) {
     m.def(
         "postfx_file",
         [](const std::string& input, const std::string& output, const std::string& preset,
-           const std::string& layersDir, const py::object& tonemap, const std::string& backend) {
+           const std::string& layersDir, const py::object& tonemap, const std::string& backend,
+           std::optional<float> exposure, std::optional<float> threshold, std::optional<float> knee,
+           const py::object& expand) {
             PostFxJobOptions o;
             o.input = input, o.output = output, o.preset = preset, o.layersDir = layersDir;
             o.tonemap = toneKeyword(tonemap);
             o.backend = postFxBackend(backend);
+            o.exposure = exposure, o.threshold = threshold, o.knee = knee;
+            o.expandHighlights = expandKeyword(expand);
             return runFileJob([&](const JobEvents& e) { return runPostFxJob(o, e); });
         },
         py::arg("input"), py::arg("output"), py::arg("preset") = kDefaultPostFxPreset,
         py::kw_only(), py::arg("layers_dir") = "", py::arg("tonemap") = py::none(),
-        py::arg("backend") = "cpu",
+        py::arg("backend") = "cpu", py::arg("exposure") = py::none(),
+        py::arg("threshold") = py::none(), py::arg("knee") = py::none(),
+        py::arg("expand_highlights") = py::none(),
         "postfx_file(input, output, preset='photo', *, layers_dir='', tonemap=None, "
-        "backend='cpu')\n\n`flarekit postfx` on files: an image or a frame pattern.");
+        "backend='cpu', exposure=None, threshold=None, knee=None, expand_highlights=None)\n\n"
+        "`flarekit postfx` on files: an image or a frame pattern; keywords as flarekit.postfx's.");
     m.def(
         "lens_render_file",
         [](const std::string& input, const std::string& output, const std::string& lens,

@@ -82,6 +82,12 @@ def test_postfx_file_and_lens_file(cli, tmp_path):
     flarekit.postfx_file(str(path), str(tmp_path / "py.exr"), "modern")
     cli("postfx", path, "-o", tmp_path / "cli.exr", "--preset", "modern")
     assert np.array_equal(read(tmp_path / "py.exr"), read(tmp_path / "cli.exr"))
+    flarekit.postfx_file(str(path), str(tmp_path / "py2.exr"), "modern", exposure=0.5,
+                         threshold=2.0, knee=0.25)
+    cli("postfx", path, "-o", tmp_path / "cli2.exr", "--preset", "modern", "--exposure", "0.5",
+        "--threshold", "2", "--knee", "0.25")
+    assert np.array_equal(read(tmp_path / "py2.exr"), read(tmp_path / "cli2.exr"))
+    assert not np.array_equal(read(tmp_path / "py2.exr"), read(tmp_path / "py.exr"))
     flarekit.lens_render_file(str(path), str(tmp_path / "lpy.exr"), "angenieux-double-gauss",
                               ghosts=4)
     cli("lens", "render", "angenieux-double-gauss", path, "-o", tmp_path / "lcli.exr",
