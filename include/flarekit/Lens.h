@@ -339,6 +339,9 @@ struct LensFlareLayers {
     Image ghosts, starburst, glare;
 };
 
+//! The whole flare: the three parts' colour, opaque like each of them.
+Image lensFlareSum(const LensFlareLayers& layers);
+
 //! Renders the ghosts, starburst and glare of `lights` (on a `width` x `height` image) through
 //! the lens. The pixel-to-field-angle mapping is the sensor's (the image fitted inside it).
 Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,

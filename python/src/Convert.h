@@ -46,6 +46,11 @@ Image imageFromArray(const py::handle& array, const std::string& what, bool& has
 //! same RGBA memory when `channels` is 3. The array owns the image.
 py::array arrayFromImage(Image&& image, int channels);
 
+//! A dict (a preset, a scene, a generator config) as JSON text, through Python's json.dumps.
+inline std::string jsonText(const py::handle& value) {
+    return py::str(py::module_::import("json").attr("dumps")(value));
+}
+
 //! A job's events for a call made without the GIL: warnings and detail lines are kept and
 //! given to Python's `warnings` (and the `info` list) once the call is back under the GIL.
 class CollectedEvents {

@@ -53,11 +53,6 @@ py::object jsonLoads(const std::string& text) {
     return py::module_::import("json").attr("loads")(text);
 }
 
-//! A preset given as a dict: its JSON text (json.dumps), named "<dict>" in messages.
-std::string jsonText(const py::handle& value) {
-    return py::str(py::module_::import("json").attr("dumps")(value));
-}
-
 py::dict visibilityDict(const VisibilityResult& r, int latency) {
     py::dict d;
     d["method"] = r.method;

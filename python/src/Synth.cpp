@@ -14,8 +14,7 @@ SynthConfig configFrom(const py::object& config) {
     if (!py::isinstance<py::dict>(config))
         throw py::value_error("config: expected a dict (synth.json's keys), got " +
                               std::string(py::repr(config)));
-    const std::string text = py::str(py::module_::import("json").attr("dumps")(config));
-    return unwrap(parseSynthConfig(text, "config"));
+    return unwrap(parseSynthConfig(jsonText(config), "config"));
 }
 
 std::uint64_t whole(const py::handle& value, const char* key) {

@@ -443,7 +443,6 @@ Result<PixelOutput> applyPixels(const ApplyOptions& options, PixelInput input,
                                 const JobEvents& events, bool keepLayers) {
     ApplyOptions a = options;
     a.layersDir.clear(), a.layersInOutput = false, a.color = nullptr;
-    a.depth = SampleFormat::Float;
     if (a.light) {
         if (Status s = checkLightCoordinates(*a.light, "--light"); !s) return s.error();
     }

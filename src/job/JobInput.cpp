@@ -8,6 +8,7 @@
 #include <iterator>
 #include <span>
 
+#include "core/HalfFloat.h"
 #include "core/ImageIOShared.h"
 #include "core/Interrupt.h"
 #include "core/LibraryNoise.h"
@@ -20,6 +21,16 @@
 #include "job/ReadClock.h"
 
 namespace flarekit {
+
+namespace {
+//! The warning of an image whose non-finite samples were replaced (none: silent).
+void warnNonFinite(const std::string& name, std::size_t count, const JobEvents& events) {
+    if (count == 0) return;
+    events.warn(name + ": " + std::to_string(count) +
+                " NaN/Inf values: NaN read as 0, infinities clamped to +-65504 (the largest half "
+                "float)");
+}
+}  // namespace
 
 namespace job_detail {
 namespace {
@@ -40,16 +51,13 @@ Result<LoadedImage> loadedFromPixels(PixelInput&& input, const JobMemory& job,
         !s)
         return s.error();
     LoadedImage loaded;
-    // As the file readers do: NaN as 0, infinities as the largest half float.
+    // As the file readers do (sanitisedSample): NaN as 0, infinities as the largest half.
     for (float& v : std::span(input.image.data(), input.image.pixelCount() * 4)) {
         if (std::isfinite(v)) continue;
-        v = std::isnan(v) ? 0.f : std::copysign(65504.f, v);
+        v = sanitisedSample(v);
         ++loaded.nonFinite;
     }
-    if (loaded.nonFinite > 0)
-        events.warn(input.name + ": " + std::to_string(loaded.nonFinite) +
-                    " NaN/Inf values: NaN read as 0, infinities clamped to +-65504 (the largest "
-                    "half float)");
+    warnNonFinite(input.name, loaded.nonFinite, events);
     loaded.image = std::move(input.image);
     loaded.fileChannels = input.hasAlpha ? 4 : 3;
     loaded.hasAlpha = input.hasAlpha;
@@ -77,10 +85,7 @@ Result<LoadedImage> readJobInput(const std::string& path, const JobMemory& job,
     }
     if (!loaded->decoderWarning.empty())
         events.warn(path + ": " + loaded->decoderWarning + " (read on; check the file)");
-    if (loaded->nonFinite > 0)
-        events.warn(path + ": " + std::to_string(loaded->nonFinite) +
-                    " NaN/Inf values: NaN read as 0, infinities clamped to +-65504 (the largest "
-                    "half float)");
+    warnNonFinite(path, loaded->nonFinite, events);
     return loaded;
 }
 

@@ -147,12 +147,7 @@ Result<ImageOutput> lensLoaded(const LensJobOptions& a, const Lens& lens, Loaded
     const auto lights = lensLights(a, in, expand ? expanded : image, events);
     auto layers = renderLayers(a, in, lens, image, lights, events);
     if (!layers) return layers.error();
-    // The flare layer: the three parts' colour, opaque like each of them.
-    Image flare(image.width(), image.height());
-    for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
-        flare.data()[i] = i % 4 == 3 ? 1.f
-                                     : layers->ghosts.data()[i] + layers->starburst.data()[i] +
-                                           layers->glare.data()[i];
+    const Image flare = lensFlareSum(*layers);
     if (!a.layersDir.empty()) {
         if (Status s = writeLensLayers(a.layersDir, layerSuffix, *layers, flare, a.encode); !s)
             return s.error();
@@ -179,6 +174,15 @@ Result<ImageOutput> lensLoaded(const LensJobOptions& a, const Lens& lens, Loaded
                   paraxial(lens).focalLength);
     events.say(line);
     return result;
+}
+
+//! --dirt-file read into the render's pupil mask, once for every frame of a sequence.
+Status readDirtMask(LensJobOptions& a) {
+    if (a.dirtFile.empty()) return Ok{};
+    auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
+    if (!mask) return mask.error();
+    a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
+    return Ok{};
 }
 
 //! One image (a sequence's frame) `in` for `out`; the layers as DIR/NAME + `layerSuffix` + .exr.
@@ -213,12 +217,7 @@ Result<JobReport> runLensJob(const LensJobOptions& options, const JobEvents& eve
         if (Status s = checkLightCoordinates(options.light, "--light"); !s) return s.error();
     }
     LensJobOptions a = options;
-    if (!a.dirtFile.empty()) {
-        // Read once, for every frame of a sequence.
-        auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
-        if (!mask) return mask.error();
-        a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
-    }
+    if (Status s = readDirtMask(a); !s) return s.error();
     JobReport report;
     report.sequence = isFramePattern(a.input);
     if (!report.sequence) {
@@ -253,11 +252,7 @@ Result<PixelOutput> lensPixels(const LensJobOptions& options, PixelInput input,
     if (a.lightMode == LensLightMode::At) {
         if (Status s = checkLightCoordinates(a.light, "--light"); !s) return s.error();
     }
-    if (!a.dirtFile.empty()) {
-        auto mask = readImage(a.dirtFile, {16.0, 0.0, "--dirt-file: 16 bytes per pixel"});
-        if (!mask) return mask.error();
-        a.render.pupilMask = std::make_shared<const Image>(std::move(mask->image));
-    }
+    if (Status s = readDirtMask(a); !s) return s.error();
     auto lens = openJobLens(a);
     if (!lens) return lens.error();
     const std::string name = input.name;

@@ -412,6 +412,15 @@ void setOpaque(Image& image) {
 
 }  // namespace
 
+Image lensFlareSum(const LensFlareLayers& layers) {
+    Image flare(layers.ghosts.width(), layers.ghosts.height());
+    for (std::size_t i = 0; i < flare.pixelCount() * 4; ++i)
+        flare.data()[i] = i % 4 == 3 ? 1.f
+                                     : layers.ghosts.data()[i] + layers.starburst.data()[i] +
+                                           layers.glare.data()[i];
+    return flare;
+}
+
 Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
                                         const std::vector<LensLight>& lights,
                                         const LensRenderOptions& options) {

@@ -16,6 +16,7 @@
 
 #include "core/JsonText.h"
 #include "core/SafeWrite.h"
+#include "flarekit/Color.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Limits.h"
 #include "flarekit/Synth.h"
@@ -110,8 +111,7 @@ Status writePairs(const SynthRunOptions& o, const SynthSample& s, std::uint64_t 
     Image mask(sources.width(), sources.height());
     for (std::size_t i = 0; i < mask.pixelCount(); ++i) {
         const float* p = sources.data() + 4 * i;
-        const float y = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
-        const float v = y >= 1.f ? 1.f : 0.f;
+        const float v = luminance(p[0], p[1], p[2]) >= 1.f ? 1.f : 0.f;
         mask.data()[4 * i] = mask.data()[4 * i + 1] = mask.data()[4 * i + 2] = v;
         mask.data()[4 * i + 3] = 1;
     }

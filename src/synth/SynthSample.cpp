@@ -11,6 +11,7 @@
 
 #include "core/Parallel.h"
 #include "core/codecs/Codecs.h"
+#include "flarekit/Color.h"
 #include "flarekit/Flare.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Lens.h"
@@ -43,10 +44,6 @@ struct SynthLight {
     bool inFrame = true;
 };
 
-double luminance(const Rgb& c) {
-    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
-}
-
 //! A light's colour between tungsten, daylight and a cool sky, luminance 1.
 Rgb lightColour(SampleRandom& r) {
     const Rgb warm{1.0f, 0.72f, 0.45f}, white{1, 1, 1}, cool{0.82f, 0.9f, 1.0f};
@@ -55,7 +52,7 @@ Rgb lightColour(SampleRandom& r) {
     for (int k = 0; k < 3; ++k)
         c[k] = t < 0.5 ? float(warm[k] + (white[k] - warm[k]) * t * 2)
                        : float(white[k] + (cool[k] - white[k]) * (t - 0.5) * 2);
-    const double y = luminance(c);
+    const double y = luminance(c[0], c[1], c[2]);
     for (float& v : c) v = float(v / y);
     return c;
 }
@@ -315,11 +312,7 @@ Result<DrawnFlare> lensFlare(SampleRandom& r, const SynthConfig& cfg, int w, int
     options.ghosts = cfg.lensGhosts;
     auto layers = renderLensFlare(*lens, w, h, sources, options);
     if (!layers) return layers.error();
-    d.flare = Image(w, h);
-    for (std::size_t i = 0; i < d.flare.pixelCount() * 4; ++i)
-        d.flare.data()[i] = i % 4 == 3 ? 1.f
-                                       : layers->ghosts.data()[i] + layers->starburst.data()[i] +
-                                             layers->glare.data()[i];
+    d.flare = lensFlareSum(*layers);
     d.components = {{"ghosts", std::move(layers->ghosts)},
                     {"starburst", std::move(layers->starburst)},
                     {"glare", std::move(layers->glare)}};
@@ -338,8 +331,8 @@ Camera drawCamera(const SynthConfig& cfg, SampleRandom& r, const Image& backgrou
     if (cfg.autoExposure) {
         double sum = 0;
         for (std::size_t i = 0; i < background.pixelCount(); ++i)
-            sum += luminance({background.data()[4 * i], background.data()[4 * i + 1],
-                              background.data()[4 * i + 2]});
+            sum += luminance(background.data()[4 * i], background.data()[4 * i + 1],
+                             background.data()[4 * i + 2]);
         const double mean = sum / double(background.pixelCount());
         if (mean > 0) c.gain = 0.18 / mean;
     }
