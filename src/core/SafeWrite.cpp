@@ -99,8 +99,12 @@ Status checkWritablePath(const std::string& path) {
     // A missing output folder is made when the file is written (makeOutputDirectory), the same
     // for every output; what must hold now is that it can be: its nearest existing ancestor is
     // a folder, not a file.
-    for (fs::path up = dir; !fs::is_directory(up, ec); up = up.parent_path()) {
-        if (fs::exists(up, ec))
+    // One stat per folder: another writer (a parallel sample, a second job) may make the folder
+    // between two separate tests, which would read as "exists but is not a directory".
+    for (fs::path up = dir;; up = up.parent_path()) {
+        const fs::file_status st = fs::status(up, ec);
+        if (fs::is_directory(st)) break;
+        if (fs::exists(st))
             return invalidInput(path + ": output directory '" + dir.string() +
                                 "' cannot be made: '" + up.string() + "' is not a directory");
         if (up.parent_path().empty() || up == up.parent_path()) break;

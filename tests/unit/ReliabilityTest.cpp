@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "TempDir.h"
 #include "core/JsonText.h"
@@ -87,6 +89,23 @@ TEST(SafeWrite, AMissingDirectoryIsMadeAndAFileInItsWayIsBadInputAndWritesNothin
               std::string::npos)
         << r.error().message;
     EXPECT_EQ(dir.entries(), 1u);
+}
+
+TEST(SafeWrite, WritersRacingToMakeTheSameFolderAllSucceed) {
+    // The generator's parallel samples make their layout's folders as they write: a folder that
+    // another thread makes between two checks must not read as "not a directory".
+    TempDir dir;
+    for (int round = 0; round < 200; ++round) {
+        const std::string folder = dir.file("r" + std::to_string(round) + "/a/b/c");
+        std::vector<Status> results(4, Ok{});
+        std::vector<std::thread> writers;
+        for (int t = 0; t < 4; ++t)
+            writers.emplace_back([&, t] {
+                results[t] = writeFileSafely(folder + "/" + std::to_string(t) + ".txt", "x");
+            });
+        for (auto& w : writers) w.join();
+        for (const Status& s : results) ASSERT_TRUE(s.ok()) << s.error().message;
+    }
 }
 
 TEST(SafeWrite, ImageFormatsWithoutAnInMemoryWriterAreRefusedUpFront) {
