@@ -36,8 +36,11 @@ packages=(
   ffmpeg
   # the embedding example opens a window with GLFW when there is a display
   libglfw3-dev
-  # the embedding example's window test runs it on a private X server (Xvfb, local socket only)
-  xvfb
+  # the embedding example's window test and the studio's tests run on a private X server (Xvfb,
+  # local socket only; xauth for xvfb-run in the docs)
+  xvfb xauth
+  # flarekit studio, the live designer: Dear ImGui 1.86 panels in a GLFW window
+  libimgui-dev
   # shots on a farm: the Slurm test runs a one-node cluster (its own munged, slurmctld, slurmd)
   slurmctld slurmd slurm-client munge
   # shots: colour spaces through OpenColorIO

@@ -54,6 +54,9 @@ struct ElementParams {
     std::uint32_t seed = 1;  //!< rays: random seed (same seed, same rays, on every platform)
     BlendMode blend = BlendMode::Add;  //!< how the element composites onto the image
     float reach = 0.25f;  //!< edge streak: fades out this far from the edge, image heights
+    //! False: kept in the preset but not drawn (an element switched off while designing, as
+    //! Unity's lens-flare elements have a Visible box).
+    bool visible = true;
 };
 
 //! Bit of an element type in Param::appliesTo.
@@ -116,6 +119,8 @@ inline constexpr Param<ElementParams> kElementParams[] = {
                                  "edge streak: distance from the frame edge (inside or outside) at "
                                  "which it has faded out",
                                  element_bits::kEdgeStreak),
+    param<&ElementParams::visible>("visible", 0, 1, "",
+                                   "false: kept in the preset but not drawn (switched off)"),
     choice<&ElementParams::blend>("blend", kBlendModeNames,
                                   "`add` (light adds, HDR-correct), `screen` (soft add for display "
                                   "images), `over` (alpha over)"),

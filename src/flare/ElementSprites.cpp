@@ -17,7 +17,7 @@ Result<std::vector<ElementSprite>> buildElementSprites(const Preset& preset, int
     for (const ElementParams& e : preset.elements) {
         const float radius = e.size * float(height);
         const float k = e.intensity * preset.intensity;
-        if (radius < kMinSpriteRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
+        if (!e.visible || radius < kMinSpriteRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
         ElementParams scaled = e;
         scaled.intensity = k;
         // Texels per frame pixel: 1 unless the element would exceed the texture limit.

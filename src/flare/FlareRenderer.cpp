@@ -39,7 +39,7 @@ std::vector<PlacedElement> placeElements(const Image& image, const Preset& prese
             edge ? edgeStreakPlacement(light, image.width(), image.height(), e.reach)
                  : EdgePlacement{};
         const float k = e.intensity * preset.intensity * intensity * (edge ? edgeAt.weight : 1.f);
-        if (radius < kMinRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
+        if (!e.visible || radius < kMinRadiusPx || k <= 0.f || !std::isfinite(k)) continue;
         ElementParams scaled = e;
         scaled.intensity = k;
         if (edge) scaled.rotationDeg += edgeAt.rotationDeg;
@@ -91,7 +91,7 @@ EdgePlacement edgeStreakPlacement(Point light, int width, int height, float reac
 namespace {
 //! One element's spike evaluations, and 0 for other element types.
 double spikeWork(const ElementParams& e, int width, int height) {
-    if (e.type != ElementType::Streaks && e.type != ElementType::Rays) return 0;
+    if (!e.visible || (e.type != ElementType::Streaks && e.type != ElementType::Rays)) return 0;
     const double radius = double(e.size) * height;
     if (radius < kMinRadiusPx) return 0;
     const SpikeProfile profile = makeSpikeProfile(e.thickness, float(1.0 / radius));

@@ -441,6 +441,15 @@ Result<JobReport> runApplyJob(const ApplyOptions& options, const JobEvents& even
 
 Result<PixelOutput> applyPixels(const ApplyOptions& options, PixelInput input,
                                 const JobEvents& events, bool keepLayers) {
+    auto preset = loadPreset(options.preset);
+    if (!preset) return preset.error();
+    return applyPixels(options, *preset, std::move(input), events, keepLayers);
+}
+
+Result<PixelOutput> applyPixels(const ApplyOptions& options, const Preset& preset, PixelInput input,
+                                const JobEvents& events, bool keepLayers) {
+    if (Status s = validatePreset(preset); !s)
+        return invalidInput(options.preset + ": " + s.error().message);
     ApplyOptions a = options;
     a.layersDir.clear(), a.layersInOutput = false, a.color = nullptr;
     if (a.light) {
@@ -450,15 +459,13 @@ Result<PixelOutput> applyPixels(const ApplyOptions& options, PixelInput input,
         return invalidInput(
             "--light-track, --camera and --matte key files to a sequence's frames: run the "
             "file job for them");
-    auto preset = loadPreset(a.preset);
-    if (!preset) return preset.error();
     const std::string name = input.name;
-    auto loaded = job_detail::loadedFromPixels(std::move(input), applyMemory(a, *preset), events);
+    auto loaded = job_detail::loadedFromPixels(std::move(input), applyMemory(a, preset), events);
     if (!loaded) return loaded.error();
     std::optional<ShotCoverage> noCoverage;
     std::vector<FlareLayer> passes;
     auto out = flareLoaded(
-        a, *preset, *loaded, name, "",
+        a, preset, *loaded, name, "",
         [&](const LoadedImage& plate) { return imageLights(a, name, plate, noCoverage, events); },
         events, "", keepLayers, passes);
     if (!out) return out.error();

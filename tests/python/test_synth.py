@@ -230,12 +230,17 @@ def test_interrupted_run_resumes_to_the_same_set(cli, tmp_path):
                                stderr=subprocess.PIPE, text=True)
     labels = tmp_path / "cut" / "labels"
     deadline = time.time() + 60
-    while time.time() < deadline and (not labels.exists() or len(os.listdir(labels)) < 3):
+    # Complete labels only: a label being written is a hidden temporary file until its rename.
+    def complete():
+        return [f for f in os.listdir(labels) if not f.startswith(".")] if labels.exists() else []
+
+    while time.time() < deadline and len(complete()) < 3:
         time.sleep(0.01)
     process.send_signal(signal.SIGTERM)
     _, err = process.communicate(timeout=60)
     finished = sorted(os.listdir(labels))
     assert 3 <= len(finished) < 40, err
+    assert not [f for f in finished if f.startswith(".")]
     assert process.returncode != 0 and "interrupted" in err
     # Every sample with a label is complete; no temporary file is left.
     for name in finished:

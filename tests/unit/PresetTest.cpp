@@ -122,3 +122,35 @@ TEST(Preset, ParameterReferenceCoversEveryKey) {
         EXPECT_NE(ref.find(key), std::string::npos) << key;
     }
 }
+
+TEST(Preset, AHiddenElementIsKeptAndSavedButNotDrawn) {
+    // `visible: false` keeps the element (a designer's switched-off layer) and draws exactly
+    // what the preset without it draws, on the CPU and in the spike-work estimate.
+    const auto hidden = parsePreset(
+        R"({"name": "h", "elements": [{"type": "glow", "size": 0.2},
+            {"type": "streaks", "size": 0.5, "count": 64, "visible": false},
+            {"type": "disc", "t": -0.5, "size": 0.05}]})",
+        "h.json");
+    ASSERT_TRUE(hidden.ok()) << hidden.error().message;
+    EXPECT_FALSE(hidden->elements[1].visible);
+    Preset without = *hidden;
+    without.elements.erase(without.elements.begin() + 1);
+    Image a(160, 90), b(160, 90);
+    const FlareStats drawn = renderFlare(a, *hidden, {120.f, 30.f}, 1.f);
+    renderFlare(b, without, {120.f, 30.f}, 1.f);
+    EXPECT_EQ(drawn.elementsDrawn, 2u);
+    for (int y = 0; y < 90; ++y)
+        for (int x = 0; x < 160 * 4; ++x) ASSERT_EQ(a.row(y)[x], b.row(y)[x]) << x << "," << y;
+    EXPECT_EQ(flareSpikeWork(*hidden, 1920, 1080), flareSpikeWork(without, 1920, 1080));
+    // Saved only when false, and read back the same.
+    const std::string json = presetToJson(*hidden);
+    EXPECT_EQ(json.find("\"visible\":true"), std::string::npos);
+    EXPECT_NE(json.find("\"visible\":false"), std::string::npos);
+    EXPECT_FALSE(parsePreset(json, "again.json")->elements[1].visible);
+    const auto bad =
+        parsePreset(R"({"name": "h", "elements": [{"type": "glow", "visible": 1}]})", "bad.json");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("element[0].visible: expected true or false, got 1"),
+              std::string::npos)
+        << bad.error().message;
+}

@@ -92,6 +92,10 @@ void addPspCommand(CLI::App& app, int& exitCode);
 void addPostFxCommand(CLI::App& app, int& exitCode);
 void addLensCommand(CLI::App& app, int& exitCode);
 void addSynthCommand(CLI::App& app, int& exitCode);
+void addStudioCommand(CLI::App& app);
+//! `flarekit studio ...`: runs flarekit-studio with the rest of the command line; the exit code
+//! when it cannot.
+int runStudioCommand(int argc, char** argv);
 //! `lens render`, under the `lens` command.
 void addLensRenderCommand(CLI::App* lens, int& exitCode);
 

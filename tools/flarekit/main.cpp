@@ -41,6 +41,7 @@ flarekit::Status applyLimits(const std::string& maxMemory, double maxPixelsPerBy
 
 int main(int argc, char** argv) {
     using namespace flarekit::cli;
+    if (argc > 1 && std::string_view(argv[1]) == "studio") return runStudioCommand(argc, argv);
     CLI::App app{"flarekit: lens flares for images and scenes (sprite flares after Tanczos 1999)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "flarekit " FLAREKIT_VERSION_STRING);
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
     addPostFxCommand(app, exitCode);
     addLensCommand(app, exitCode);
     addSynthCommand(app, exitCode);
+    addStudioCommand(app);
     // The limits are in place before any subcommand's callback runs.
     app.parse_complete_callback([&] {
         if (flarekit::Status s = applyLimits(maxMemory, maxPixelsPerByte); !s)

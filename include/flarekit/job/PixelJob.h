@@ -39,6 +39,10 @@ struct PixelOutput {
 //! `keepLayers`: each pass of the preset and the whole flare.
 Result<PixelOutput> applyPixels(const ApplyOptions& options, PixelInput input,
                                 const JobEvents& events = {}, bool keepLayers = false);
+//! The same with a preset held in memory (an editor's, checked with validatePreset); the
+//! options' `preset` only names it in messages.
+Result<PixelOutput> applyPixels(const ApplyOptions& options, const Preset& preset, PixelInput input,
+                                const JobEvents& events = {}, bool keepLayers = false);
 //! `flarekit postfx` on pixels; `keepLayers`: bloom, ghosts, halo, streaks, lens.
 Result<PixelOutput> postFxPixels(const PostFxJobOptions& options, PixelInput input,
                                  const JobEvents& events = {}, bool keepLayers = false);

@@ -1,0 +1,249 @@
+# SPDX-License-Identifier: Apache-2.0
+"""flarekit studio under a private X server (Xvfb, started and stopped here, local socket only):
+scripted actions through the window's own panels and pointer, checked against the CLI, the
+shipped presets and the studio's own pictures."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import flarekit
+from conftest import SOURCE, read
+
+pytestmark = pytest.mark.skipif(
+    os.environ.get("FLAREKIT_STUDIO") != "1", reason="built without the studio (FLAREKIT_STUDIO)")
+
+SUNSET = SOURCE / "samples" / "sunset.png"          # 1280x720, 8-bit
+SUNSET_HDR = SOURCE / "samples" / "sunset-hdr.exr"  # linear float
+
+
+@pytest.fixture(scope="module")
+def display():
+    read_end, write_end = os.pipe()
+    server = subprocess.Popen(
+        ["Xvfb", "-displayfd", str(write_end), "-nolisten", "tcp", "-screen", "0", "1920x1080x24"],
+        pass_fds=(write_end,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    number = b""
+    with os.fdopen(read_end, "rb") as pipe:
+        while not number.endswith(b"\n"):
+            chunk = pipe.read(1)
+            assert chunk, "Xvfb did not start"
+            number += chunk
+    yield ":" + number.decode().strip()
+    server.terminate()
+    server.wait(timeout=30)
+
+
+@pytest.fixture
+def studio(cli, display, tmp_path):
+    """Runs `flarekit studio` with a script of actions; paths in the script are under tmp_path."""
+
+    def run(actions, *args, ok=True):
+        script = tmp_path / "actions.json"
+        script.write_text(json.dumps({"actions": actions}))
+        env = dict(os.environ, DISPLAY=display)
+        done = subprocess.run([os.environ["FLAREKIT_CLI"], "studio", "--script", str(script),
+                               "--stats", *map(str, args)], capture_output=True, text=True,
+                              env=env, cwd=tmp_path, timeout=300)
+        if ok:
+            assert done.returncode == 0, done.stderr
+        return done
+
+    return run
+
+
+def srgb8(image):
+    return np.round(np.clip(flarekit.linear_to_srgb(image[..., :3]), 0, 1) * 255)
+
+
+def levels(a, b):
+    return np.abs(srgb8(a) - srgb8(b)).max()
+
+
+def canonical(studio, tmp_path, preset):
+    """A preset (a name, or a dict written to a file) as presetToJson writes it: loaded and saved
+    untouched, so that keys equal to their type's defaults are left out as the save leaves them."""
+    if isinstance(preset, dict):
+        (tmp_path / "expected-in.json").write_text(json.dumps(preset))
+        preset = str(tmp_path / "expected-in.json")
+    studio([{"action": "load", "preset": preset},
+            {"action": "save", "path": "canonical.json"}])
+    return (tmp_path / "canonical.json").read_text()
+
+
+def centroid_of_flare(path, source):
+    """Where the flare alone (the export minus the plate) is brightest on average."""
+    flare = (read(path)[..., :3] - read(source)[..., :3]).sum(axis=-1)
+    weight = np.where(flare > 0.05 * flare.max(), flare, 0)
+    y, x = np.mgrid[0:weight.shape[0], 0:weight.shape[1]]
+    return np.array([(x * weight).sum() / weight.sum(), (y * weight).sum() / weight.sum()]) + 0.5
+
+
+def test_without_a_display_it_says_how_to_run_it(cli):
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    done = subprocess.run([os.environ["FLAREKIT_CLI"], "studio", str(SUNSET)], env=env,
+                          capture_output=True, text=True)
+    assert done.returncode == 2
+    assert len(done.stderr.strip().splitlines()) == 1
+    assert "display" in done.stderr and "Xvfb" in done.stderr
+
+
+def test_screenshot_of_a_file_writes_the_window_and_exits(cli, display, tmp_path):
+    shot = tmp_path / "window.png"
+    done = subprocess.run([os.environ["FLAREKIT_CLI"], "studio", str(SUNSET), "--screenshot",
+                           str(shot), "--size", "1280x800"], env=dict(os.environ, DISPLAY=display),
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    image, info = flarekit.read_image(str(shot))
+    assert image.shape == (800, 1280, 3)
+    # The photograph with its flare fills the middle of the view: bright, warm, not the UI grey.
+    view = srgb8(image[200:500, 500:1100])
+    assert view.mean() > 80 and view[..., 0].mean() > view[..., 2].mean()
+
+
+def test_the_flare_follows_the_pointer(studio, tmp_path):
+    # The glow alone (solo), so that the flare's centre is the light.
+    studio([{"action": "open", "path": str(SUNSET)},
+            {"action": "solo", "element": 0},
+            {"action": "light", "at": [400, 300]},
+            {"action": "export", "path": "before.exr"},
+            {"action": "drag", "from": [400, 300], "to": [820, 420], "frames": 10},
+            {"action": "export", "path": "after.exr"}])
+    start = centroid_of_flare(tmp_path / "before.exr", SUNSET)
+    end = centroid_of_flare(tmp_path / "after.exr", SUNSET)
+    assert np.abs(start - [400, 300]).max() < 0.6
+    # The pointer lands on whole screen pixels: 1280 image pixels over ~830 on screen.
+    assert np.abs(end - [820, 420]).max() < 2.0, end
+
+
+def test_hide_undo_redo_on_screen(studio, tmp_path):
+    studio([{"action": "open", "path": str(SUNSET)},
+            {"action": "screenshot", "path": "shown.png"},
+            {"action": "hide", "element": 2},
+            {"action": "screenshot", "path": "hidden.png"},
+            {"action": "undo"},
+            {"action": "screenshot", "path": "undone.png"},
+            {"action": "redo"},
+            {"action": "screenshot", "path": "redone.png"}])
+    shown, hidden = read(tmp_path / "shown.png"), read(tmp_path / "hidden.png")
+    undone, redone = read(tmp_path / "undone.png"), read(tmp_path / "redone.png")
+    # Undo restores every pixel of the window but the status line (which names the action).
+    window = slice(0, shown.shape[0] - 60)
+    assert np.array_equal(shown[window], undone[window])
+    assert np.array_equal(hidden[window], redone[window])
+    assert levels(shown, hidden) > 30     # the streaks went (and the list's box unticked)
+
+
+def test_a_hidden_element_is_saved_and_the_cli_draws_without_it(studio, cli, tmp_path):
+    studio([{"action": "open", "path": str(SUNSET)},
+            {"action": "light", "at": [900.5, 250.25]},
+            {"action": "hide", "element": 2},
+            {"action": "save", "path": "hidden.json"},
+            {"action": "export", "path": "hidden.png"}])
+    saved = json.loads((tmp_path / "hidden.json").read_text())
+    assert saved["elements"][2]["visible"] is False
+    # Reference: the same preset with that element deleted, drawn by the CLI.
+    del saved["elements"][2]
+    (tmp_path / "removed.json").write_text(json.dumps(saved))
+    cli("apply", SUNSET, "-o", tmp_path / "cli.png", "--preset", tmp_path / "removed.json",
+        "--light", "900.5,250.25", "--flux-mode", "fixed")
+    assert levels(read(tmp_path / "hidden.png"), read(tmp_path / "cli.png")) <= 1
+
+
+def test_saved_preset_is_the_expected_json_and_the_cli_renders_it_alike(studio, cli, tmp_path):
+    studio([{"action": "open", "path": str(SUNSET)},
+            {"action": "light", "at": [700, 200]},
+            {"action": "set", "element": 0, "key": "size", "value": 0.35},
+            {"action": "set", "element": 4, "key": "color", "value": [0.2, 0.9, 0.4]},
+            {"action": "set", "key": "intensity", "value": 1.5},
+            {"action": "set", "element": 1, "key": "width", "value": 0.2},
+            {"action": "undo"},
+            {"action": "save", "path": "mine.json"},
+            {"action": "export", "path": "mine.png"},
+            {"action": "export", "path": "mine.exr"}])
+    saved = (tmp_path / "mine.json").read_text()
+    expected = json.loads((SOURCE / "presets" / "tanczos-classic.json").read_text())
+    expected["intensity"] = 1.5
+    expected["elements"][0]["size"] = 0.35
+    expected["elements"][4]["color"] = [0.2, 0.9, 0.4]
+    assert saved == canonical(studio, tmp_path, expected)  # byte for byte
+    cli("apply", SUNSET, "-o", tmp_path / "cli.png", "--preset", tmp_path / "mine.json",
+        "--light", "700,200", "--flux-mode", "fixed")
+    cli("apply", SUNSET, "-o", tmp_path / "cli.exr", "--preset", tmp_path / "mine.json",
+        "--light", "700,200", "--flux-mode", "fixed", "--depth", "float")
+    assert levels(read(tmp_path / "mine.png"), read(tmp_path / "cli.png")) <= 1
+    np.testing.assert_allclose(read(tmp_path / "mine.exr")[..., :3],
+                               read(tmp_path / "cli.exr")[..., :3], rtol=1e-3, atol=1e-4)
+
+
+def test_hdr_exports_match_the_cli_linear_and_through_its_curve(studio, cli, tmp_path):
+    studio([{"action": "open", "path": str(SUNSET_HDR)},
+            {"action": "load", "preset": "sun-wide"},
+            {"action": "export", "path": "hdr.exr"},
+            {"action": "export", "path": "hdr.png"}], "--stats")
+    done = studio([{"action": "open", "path": str(SUNSET_HDR)}])
+    light = done.stderr.split("light at ")[1].split()[0].rstrip(";")
+    for out in ("cli.exr", "cli.png"):
+        cli("apply", SUNSET_HDR, "-o", tmp_path / out, "--preset", "sun-wide", "--light", light,
+            "--flux-mode", "fixed", *(["--depth", "float"] if out.endswith(".exr") else []))
+    np.testing.assert_allclose(read(tmp_path / "hdr.exr")[..., :3],
+                               read(tmp_path / "cli.exr")[..., :3], rtol=1e-3, atol=1e-4)
+    assert levels(read(tmp_path / "hdr.png"), read(tmp_path / "cli.png")) <= 1
+
+
+def test_choosing_a_preset_with_unsaved_edits_asks_first(studio, tmp_path):
+    studio([{"action": "set", "element": 0, "key": "size", "value": 0.5},
+            {"action": "choose", "preset": "anamorphic"},
+            {"action": "screenshot", "path": "question.png"},
+            {"action": "answer", "choice": "cancel"},
+            {"action": "save", "path": "kept.json"},
+            {"action": "set", "element": 0, "key": "size", "value": 0.6},
+            {"action": "choose", "preset": "anamorphic"},
+            {"action": "answer", "choice": "discard"},
+            {"action": "save", "path": "chosen.json"}])
+    kept = json.loads((tmp_path / "kept.json").read_text())
+    assert kept["name"] == "tanczos-classic" and kept["elements"][0]["size"] == 0.5
+    chosen = (tmp_path / "chosen.json").read_text()
+    assert chosen == canonical(studio, tmp_path, "anamorphic")
+
+
+def test_element_list_edits(studio, tmp_path):
+    studio([{"action": "duplicate", "element": 1},   # selects the copy (2)
+            {"action": "move", "element": 0, "to": 3},
+            {"action": "remove", "element": 5},
+            {"action": "add", "type": "polygon"},     # after the selection: at 3
+            {"action": "set", "element": 3, "key": "blades", "value": 7},
+            {"action": "save", "path": "edited.json"}])
+    expected = json.loads((SOURCE / "presets" / "tanczos-classic.json").read_text())["elements"]
+    expected.insert(2, expected[1])
+    expected.insert(3, expected.pop(0))
+    del expected[5]
+    expected.insert(3, {"type": "polygon", "blades": 7})
+    shipped = json.loads((SOURCE / "presets" / "tanczos-classic.json").read_text())
+    assert (tmp_path / "edited.json").read_text() == canonical(
+        studio, tmp_path, dict(shipped, elements=expected))
+
+
+def test_script_errors_are_one_line_and_stop_before_any_later_action(studio, tmp_path):
+    done = studio([{"action": "set", "element": 0, "key": "size", "value": 9},
+                   {"action": "save", "path": "never.json"}], ok=False)
+    assert done.returncode == 2
+    assert done.stderr.strip().splitlines()[-1].endswith(
+        "actions[0]: size: expected a number in [0, 4], got 9")
+    assert not (tmp_path / "never.json").exists()
+    done = studio([{"action": "jump"}], ok=False)
+    assert done.returncode == 2 and "unknown action \"jump\"" in done.stderr
+    done = studio([{"action": "open", "path": "missing.png"}], ok=False)
+    assert done.returncode == 2 and "missing.png" in done.stderr
+
+
+def test_the_docs_list_every_script_action(cli):
+    done = subprocess.run([os.environ["FLAREKIT_CLI"], "studio", "--help-script"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert "| `drag` | `from`, `to`, `frames` (optional) |" in done.stdout
+    assert done.stdout in (SOURCE / "docs" / "studio.md").read_text(), \
+        "docs/studio.md is out of date: scripts/update-docs.sh"

@@ -1,0 +1,379 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "App.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "flarekit/ImageIO.h"
+
+namespace flarekit::studio {
+
+namespace {
+
+//! Frames drawn before a plain --screenshot or a script's first action: Dear ImGui knows the
+//! main menu's height (and so the panels' places) from the frame after it first sees it, so
+//! the second frame is the settled layout; the third also has the preview of that view size.
+constexpr int kSettleFrames = 3;
+//! A drag's frames when the script gives none: enough to see the flare follow the pointer.
+constexpr int kDefaultDragFrames = 8;
+
+std::string g_glfwError;
+
+void onGlfwError(int, const char* description) {
+    g_glfwError = description ? description : "unknown error";
+}
+
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    for (int i = 0; i < count; ++i) app->openAny(paths[i]);
+}
+
+//! A font with the characters the panels use, when the system has one; else ImGui's own.
+void loadFont() {
+    // DejaVu Sans ships in Debian's fonts-dejavu-core, which most desktops have.
+    const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec)) ImGui::GetIO().Fonts->AddFontFromFileTTF(path, 15.f);
+}
+
+}  // namespace
+
+int runStudio(const StudioOptions& options) {
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!display || !*display) && (!wayland || !*wayland)) {
+        std::fprintf(stderr,
+                     "flarekit studio: needs a display (DISPLAY is not set); without one run it "
+                     "under Xvfb: xvfb-run -a flarekit studio ...\n");
+        return 2;
+    }
+    std::vector<Action> script;
+    if (!options.script.empty()) {
+        auto loaded = loadScript(options.script);
+        if (!loaded) {
+            std::fprintf(stderr, "flarekit studio: %s\n", loaded.error().message.c_str());
+            return 2;
+        }
+        script = std::move(*loaded);
+    }
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        std::fprintf(stderr,
+                     "flarekit studio: needs a display (%s: %s); without one run it under Xvfb: "
+                     "xvfb-run -a flarekit studio ...\n",
+                     display ? display : "", g_glfwError.c_str());
+        return 2;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window =
+        glfwCreateWindow(options.width, options.height, "flarekit studio", nullptr, nullptr);
+    if (!window) {
+        std::fprintf(stderr, "flarekit studio: no OpenGL 3.3 window on this display: %s\n",
+                     g_glfwError.c_str());
+        glfwTerminate();
+        return 2;
+    }
+    glfwMakeContextCurrent(window);
+    // Script and screenshot runs draw as fast as they can; a person's session follows the display.
+    glfwSwapInterval(options.script.empty() && options.screenshot.empty() ? 1 : 0);
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
+    ImGui::StyleColorsDark();
+    loadFont();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    int code = 0;
+    {
+        App app(window, options);
+        glfwSetWindowUserPointer(window, &app);
+        glfwSetDropCallback(window, onDrop);
+        code = app.run();
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return code;
+}
+
+App::App(GLFWwindow* window, const StudioOptions& options)
+    : m_window(window), m_options(options), m_shipped(shippedPresetNames()) {
+    if (!options.script.empty()) m_script = loadScript(options.script).value();
+}
+
+void App::openAny(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext == ".json") {
+        choosePreset(path);
+        return;
+    }
+    if (Status s = m_doc.openImage(path); !s) return say(s.error().message, true);
+    say(std::string("opened ") + path);
+}
+
+void App::say(const std::string& line, bool error) {
+    m_status = line, m_statusError = error;
+    if (error && !m_script.empty()) std::fprintf(stderr, "flarekit studio: %s\n", line.c_str());
+}
+
+int App::run() {
+    if (!m_options.preset.empty()) {
+        if (Status s = m_doc.loadPreset(m_options.preset); !s) {
+            std::fprintf(stderr, "flarekit studio: %s\n", s.error().message.c_str());
+            return 2;
+        }
+    }
+    if (!m_options.file.empty()) {
+        const bool preset = std::filesystem::path(m_options.file).extension() == ".json";
+        Status s = preset ? m_doc.loadPreset(m_options.file) : m_doc.openImage(m_options.file);
+        if (!s) {
+            std::fprintf(stderr, "flarekit studio: %s\n", s.error().message.c_str());
+            return 2;
+        }
+    }
+    while (m_exitCode < 0 && !glfwWindowShouldClose(m_window)) {
+        if (!frame()) break;
+    }
+    if (m_options.stats && m_exitCode <= 0)
+        std::fprintf(stderr,
+                     "studio: %ld frames, %ld previews, %.1f ms each on average; drags %ld "
+                     "frames at %.1f frames/s; light at %.3f,%.3f\n",
+                     m_frames, m_renders, m_renders ? m_renderMsTotal / double(m_renders) : 0.0,
+                     m_dragFrames, m_dragSeconds > 0 ? double(m_dragFrames) / m_dragSeconds : 0.0,
+                     double(m_doc.light.x), double(m_doc.light.y));
+    return std::max(m_exitCode, 0);
+}
+
+bool App::frame() {
+    // A frame's whole time while something is dragged, from one frame's start to the next's.
+    const double now = glfwGetTime();
+    if (m_dragging && m_frameStart > 0) m_dragSeconds += now - m_frameStart, ++m_dragFrames;
+    m_frameStart = now;
+    glfwPollEvents();
+    if (Status s = stepScript(); !s) {
+        std::fprintf(stderr, "flarekit studio: %s\n", s.error().message.c_str());
+        m_exitCode = 2;
+        return false;
+    }
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    if (m_pointerScripted) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(m_pointerX, m_pointerY);
+        io.MouseDown[0] = m_pointerDown;
+    }
+    ImGui::NewFrame();
+    // One thumbnail per distinct element look: a slider's drag makes one per value, so they
+    // are dropped now and then, between frames (a frame's draw lists name them).
+    if (m_thumbs.size() > 256) m_thumbs.clear();
+    drawPanels();
+    handleShortcuts();
+    if (!ImGui::IsAnyItemActive()) m_doc.commit();
+    updatePreview();
+    ImGui::Render();
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(m_window, &fbw, &fbh);
+    glViewport(0, 0, fbw, fbh);
+    glClearColor(0.08f, 0.08f, 0.09f, 1.f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    ++m_frames;
+    std::string shot = std::exchange(m_pendingShot, "");
+    if (shot.empty() && m_script.empty() && !m_options.screenshot.empty() &&
+        m_frames == kSettleFrames)
+        shot = m_options.screenshot;
+    if (!shot.empty()) {
+        if (Status s = writeScreenshot(shot); !s) {
+            std::fprintf(stderr, "flarekit studio: %s\n", s.error().message.c_str());
+            m_exitCode = 2;
+            return false;
+        }
+        if (m_script.empty()) m_exitCode = 0;  // a plain --screenshot: one picture, then exit
+    }
+    glfwSwapBuffers(m_window);
+    return true;
+}
+
+Status App::stepScript() {
+    // The layout settles first (the main menu's height is known from the second frame on).
+    if (m_script.empty() || m_frames < kSettleFrames) return Ok{};
+    if (m_dragFrame >= 0) {  // a drag in progress: the pointer's next position
+        const Action& a = m_script[m_next - 1];
+        const int frames = a.args.value("frames", kDefaultDragFrames);
+        // Pressed from frame 0 to `frames` (k = 0 to 1), released on the frame after.
+        const float k = std::min(1.f, float(m_dragFrame) / float(std::max(1, frames)));
+        const auto& from = a.args["from"];
+        const auto& to = a.args["to"];
+        const Point p{from[0].get<float>() + k * (to[0].get<float>() - from[0].get<float>()),
+                      from[1].get<float>() + k * (to[1].get<float>() - from[1].get<float>())};
+        m_view.toWindow(p, m_pointerX, m_pointerY);
+        m_pointerDown = m_dragFrame <= frames;
+        if (m_dragFrame++ > frames) m_dragFrame = -1, m_pointerScripted = false;
+        return Ok{};
+    }
+    if (m_waitFrames > 0) {
+        --m_waitFrames;
+        return Ok{};
+    }
+    // Pictures wait for the preview of the frame before them to be the refined one.
+    if (m_next > 0 && !m_layersFresh && m_doc.hasImage()) return Ok{};
+    if (m_next >= m_script.size()) {
+        // The last screenshot has been drawn and written; leave after it.
+        if (m_pendingShot.empty()) m_exitCode = 0;
+        return Ok{};
+    }
+    const Action& a = m_script[m_next++];
+    if (!isWindowAction(a.kind)) {
+        Status s = runDocumentAction(m_doc, a);
+        if (s) say(a.kind + " done");
+        return s;
+    }
+    if (a.kind == "drag") {
+        for (const char* f : {"from", "to"}) {
+            const auto& v = a.args[f];
+            if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+                return invalidInput(a.where + ": " + f + ": expected [x, y] in image pixels");
+        }
+        if (!m_doc.hasImage()) return invalidInput(a.where + ": drag: no image is open");
+        m_dragFrame = 0, m_pointerScripted = true;
+        return stepScript();
+    }
+    if (a.kind == "wait") {
+        m_waitFrames = std::max(0, a.args.value("frames", 1) - 1);
+        return Ok{};
+    }
+    if (a.kind == "split") {
+        if (!a.args["at"].is_number() || !(a.args["at"].get<double>() >= 0) ||
+            a.args["at"].get<double>() > 1)
+            return invalidInput(a.where + ": at: expected a number in [0, 1]");
+        m_split = a.args["at"].get<float>();
+        return Ok{};
+    }
+    if (a.kind == "choose") {
+        if (!a.args["preset"].is_string())
+            return invalidInput(a.where + ": preset: expected a preset name or file");
+        choosePreset(a.args["preset"].get<std::string>());
+        return Ok{};
+    }
+    if (a.kind == "answer") {
+        const std::string choice =
+            a.args["choice"].is_string() ? a.args["choice"].get<std::string>() : "";
+        if (!m_pendingPreset) return invalidInput(a.where + ": answer: no question is open");
+        if (choice == "discard") {
+            const std::string name = *std::exchange(m_pendingPreset, std::nullopt);
+            if (Status s = m_doc.loadPreset(name); !s)
+                return invalidInput(a.where + ": " + s.error().message);
+        } else if (choice == "cancel") {
+            m_pendingPreset.reset();
+        } else {
+            return invalidInput(a.where + ": choice: expected \"discard\" or \"cancel\", got \"" +
+                                choice + "\"");
+        }
+        return Ok{};
+    }
+    if (a.kind == "screenshot") {
+        if (!a.args["path"].is_string())
+            return invalidInput(a.where + ": path: expected a file name");
+        m_pendingShot = a.args["path"].get<std::string>();
+        if (Status s = checkOutputPath(m_pendingShot); !s)
+            return invalidInput(a.where + ": " + s.error().message);
+        return Ok{};
+    }
+    return Ok{};
+}
+
+void App::choosePreset(const std::string& name) {
+    if (m_doc.isDirty()) {
+        m_pendingPreset = name;  // drawQuestion asks before the edits are lost
+        return;
+    }
+    if (Status s = m_doc.loadPreset(name); !s) return say(s.error().message, true);
+    say(std::string("preset ") + name);
+}
+
+void App::updatePreview() {
+    if (!m_doc.hasImage() || m_viewMaxW <= 0 || m_viewMaxH <= 0) return;
+    // While something is dragged, a preview slower than 30 frames/s is made at half the size,
+    // and refined when the drag stops (full size, then the component passes).
+    const bool coarse = m_dragging && m_lastRenderMs > 1000.0 / 30;
+    m_preview.fit(m_doc, m_viewMaxW, m_viewMaxH, coarse ? 2 : 1);
+    char view[160];
+    std::snprintf(view, sizeof view, "|%.3f,%.3f|%u|%d|%g|%d|%d|%g", double(m_doc.light.x),
+                  double(m_doc.light.y), m_doc.imageVersion(), m_preview.width(),
+                  double(m_doc.view.exposure), int(m_doc.view.curve), int(m_doc.view.fluxMode),
+                  double(m_doc.view.intensity));
+    const std::string key = presetToJson(m_doc.renderedPreset()) + view;
+    if (key != m_renderedKey) {
+        auto frame = m_preview.render(m_doc);
+        if (!frame) return say(frame.error().message, true);
+        m_after.upload(frame->after);
+        m_before.upload(m_preview.before(m_doc));
+        m_renderedKey = key;
+        m_lastRenderMs = frame->renderMs;
+        ++m_renders;
+        m_renderMsTotal += frame->renderMs;
+    }
+    // The passes, once the drag stops (and only at full size: a coarse view is not final).
+    const bool final = !m_dragging && !coarse;
+    if (final && m_componentsKey != key) {
+        auto parts = m_preview.renderComponents(m_doc);
+        if (!parts) return say(parts.error().message, true);
+        // Uploaded into the textures this frame's panels already name (deleting them now would
+        // leave the frame's draw lists pointing at freed names).
+        m_layers.resize(std::max(m_layers.size(), parts->layers.size()));
+        for (std::size_t i = 0; i < parts->layers.size(); ++i) {
+            m_layers[i].first = parts->layers[i].first;
+            m_layers[i].second.upload(parts->layers[i].second);
+        }
+        m_layerCount = parts->layers.size();
+        m_componentsKey = key;
+    }
+    m_layersFresh = final && m_componentsKey == m_renderedKey;
+}
+
+Status App::writeScreenshot(const std::string& path) {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(m_window, &w, &h);
+    Image8 shot{w, h, 3, std::vector<std::uint8_t>(std::size_t(w) * std::size_t(h) * 3)};
+    std::vector<std::uint8_t> rows(shot.pixels.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+    const std::size_t stride = std::size_t(w) * 3;
+    for (int y = 0; y < h; ++y)  // GL's rows run bottom up
+        std::copy_n(rows.data() + std::size_t(h - 1 - y) * stride, stride,
+                    shot.pixels.data() + std::size_t(y) * stride);
+    return writeImage8(path, shot);
+}
+
+ImTextureID App::thumbnail(const ElementParams& e) {
+    ElementParams key = e;
+    key.visible = true, key.intensity = 1.f;
+    Preset one;
+    one.elements = {key};
+    const std::string id = presetToJson(one);
+    auto it = m_thumbs.find(id);
+    if (it == m_thumbs.end()) {
+        it = m_thumbs.emplace(id, GlTexture{}).first;
+        it->second.upload(elementThumbnail(e, 48));
+    }
+    return it->second.id();
+}
+
+}  // namespace flarekit::studio

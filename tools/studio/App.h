@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: Apache-2.0
+// The studio's window: GLFW 3.3 with an OpenGL 3.3 core context and Dear ImGui 1.86 panels
+// over the Document, the CPU Preview uploaded to textures, and a script player that drives the
+// same panels through the pointer.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "Document.h"
+#include "FileDialog.h"
+#include "GlTexture.h"
+#include "Preview.h"
+#include "Script.h"
+
+struct GLFWwindow;
+
+namespace flarekit::studio {
+
+struct StudioOptions {
+    std::string file;        //!< an image or a preset JSON to open
+    std::string preset;      //!< a preset to start with (name or file)
+    std::string script;      //!< actions to play, then exit
+    std::string screenshot;  //!< the whole window after the first frames (or the script)
+    int width = 1600, height = 900;
+    bool stats = false;  //!< frames and preview times on stderr at exit
+};
+
+//! Runs the studio; the process's exit code (0, or 2 for bad input or no display).
+int runStudio(const StudioOptions& options);
+
+//! Where the image sits in the view and how pointer positions map to image pixels.
+struct ViewRect {
+    float x = 0, y = 0, w = 0, h = 0;  //!< the image's rectangle in window pixels
+    float imageW = 1, imageH = 1;      //!< the image's size in its own pixels
+    Point toImage(float wx, float wy) const {
+        return {(wx - x) / w * imageW, (wy - y) / h * imageH};
+    }
+    void toWindow(Point p, float& wx, float& wy) const {
+        wx = x + p.x / imageW * w, wy = y + p.y / imageH * h;
+    }
+};
+
+class App {
+  public:
+    App(GLFWwindow* window, const StudioOptions& options);
+    //! The frame loop; the exit code.
+    int run();
+    //! A file dropped on the window or named on the command line: an image, or a preset.
+    void openAny(const std::string& path);
+
+  private:
+    // One frame: script step, panels, preview, draw, screenshot.
+    bool frame();
+    Status stepScript();
+    void drawPanels();
+    void drawMenu();
+    void drawPresetPanel(float x, float y, float w, float h);
+    void drawElementList();
+    void drawViewPanel(float x, float y, float w, float h);
+    void drawComponents(float x, float y, float w, float h);
+    void drawQuestion();
+    void drawFileDialog();
+    void handleShortcuts();
+    void choosePreset(const std::string& name);
+    void updatePreview();
+    Status writeScreenshot(const std::string& path);
+    void say(const std::string& line, bool error = false);
+    ImTextureID thumbnail(const ElementParams& e);
+
+    GLFWwindow* m_window;
+    StudioOptions m_options;
+    Document m_doc;
+    Preview m_preview;
+    GlTexture m_after, m_before;
+    std::vector<std::pair<std::string, GlTexture>> m_layers;
+    std::size_t m_layerCount = 0;  //!< the passes of the latest preview (m_layers may hold more)
+    std::map<std::string, GlTexture> m_thumbs;
+    std::vector<std::string> m_shipped;
+
+    // What the shown preview was made from: a new render when any of it changes.
+    std::string m_renderedKey, m_componentsKey;
+    bool m_layersFresh = false;  //!< the view and the passes show the document as it is
+    bool m_dragging = false;     //!< the light or a widget is being dragged this frame
+    ViewRect m_view;
+    int m_viewMaxW = 0, m_viewMaxH = 0;
+    float m_split = 0.f;  //!< the before half's share of the view
+    double m_lastRenderMs = 0;
+
+    // A question that waits for an answer: the preset chosen while edits are unsaved.
+    std::optional<std::string> m_pendingPreset;
+    FileDialog m_dialog;
+
+    // The script: its actions, where it is, a drag in progress, the exit code so far.
+    std::vector<Action> m_script;
+    std::size_t m_next = 0;
+    int m_dragFrame = -1, m_waitFrames = 0;
+    bool m_pointerScripted = false;
+    float m_pointerX = 0, m_pointerY = 0;
+    bool m_pointerDown = false;
+    std::string m_pendingShot;
+    int m_exitCode = -1;  //!< set: leave the loop with it
+
+    std::string m_status;
+    bool m_statusError = false;
+    long m_frames = 0, m_renders = 0, m_dragFrames = 0;
+    double m_frameStart = 0, m_dragSeconds = 0;
+    double m_renderMsTotal = 0;
+};
+
+}  // namespace flarekit::studio

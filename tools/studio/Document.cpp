@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "Document.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/SafeWrite.h"
+#include "flarekit/ImageIO.h"
+#include "flarekit/Tonemap.h"
+#include "flarekit/job/Job.h"
+
+namespace flarekit::studio {
+
+namespace {
+
+//! Where the light goes when the image has none the finder accepts: up and to the right of the
+//! centre, so that the flare's elements spread across the frame as a sun's would.
+constexpr double kFallbackLightX = 2.0 / 3.0, kFallbackLightY = 0.25;
+
+template <class Owner>
+Status setByKey(std::span<const Param<Owner>> table, Owner& owner, const std::string& key,
+                const ParamValue& value, std::uint32_t applies, const std::string& where) {
+    const Param<Owner>* p = findParam(table, key);
+    if (!p || !(p->appliesTo & applies)) return invalidInput(where + key + ": unknown parameter");
+    p->set(owner, value);
+    return Ok{};
+}
+
+}  // namespace
+
+Document::Document() {
+    auto preset = flarekit::loadPreset(kDefaultSpritePreset);
+    if (preset) {
+        m_preset = *preset;
+    } else {  // no shipped presets found: one glow, so that there is something to edit
+        m_preset.name = "untitled";
+        m_preset.elements.push_back(defaultElement(ElementType::Glow));
+    }
+    m_committed = m_preset;
+    m_savedJson = presetToJson(m_preset);
+    m_presetPath = preset ? kDefaultSpritePreset : "";
+}
+
+Status Document::openImage(const std::string& path) {
+    auto loaded = readImage(path);
+    if (!loaded) return loaded.error();
+    m_source = PixelInput{std::move(loaded->image), !loaded->wasFloat, loaded->hasAlpha, path};
+    m_imagePath = path;
+    ++m_imageVersion;
+    // As the CLI writes this image to an 8/16-bit file: filmic for HDR data, none for 8-bit.
+    view.curve = defaultDisplayCurve(loaded->wasFloat, "view.png");
+    view.exposure = 1.f;
+    const LightSearch found = findLights(m_source.image);
+    if (!found.lights.empty()) {
+        light = found.lights.front().position;
+    } else {
+        light = {float(kFallbackLightX * m_source.image.width()),
+                 float(kFallbackLightY * m_source.image.height())};
+    }
+    return Ok{};
+}
+
+Status Document::loadPreset(const std::string& nameOrPath) {
+    auto preset = flarekit::loadPreset(nameOrPath);
+    if (!preset) return preset.error();
+    commit();
+    m_undo.push_back(m_preset);
+    m_redo.clear();
+    m_preset = *preset;
+    m_committed = m_preset;
+    m_savedJson = presetToJson(m_preset);
+    m_presetPath = nameOrPath;
+    solo = -1;
+    clampSelection();
+    return Ok{};
+}
+
+Status Document::savePreset(const std::string& path) {
+    commit();
+    const std::string text = presetToJson(m_preset);
+    if (Status s = writeFileSafely(path, text); !s) return s;
+    m_savedJson = text;
+    m_presetPath = path;
+    return Ok{};
+}
+
+ApplyOptions Document::applyOptions(double scale, const std::string& output) const {
+    ApplyOptions o;
+    o.preset = m_presetPath.empty() ? "preset" : m_presetPath;
+    o.output = output;
+    o.light = Point{float(light.x * scale), float(light.y * scale)};
+    o.fluxMode = view.fluxMode;
+    o.intensity = view.intensity;
+    o.exposure = view.exposure;
+    o.tonemap = view.curve;
+    return o;
+}
+
+Status Document::exportRender(const std::string& path, SampleFormat depth) const {
+    if (!hasImage()) return invalidInput(path + ": no image is open to render");
+    // An EXR export is the render at full float precision unless a depth is asked for.
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (depth == SampleFormat::Auto && ext == ".exr") depth = SampleFormat::Float;
+    if (Status s = checkSampleFormatFits(path, depth); !s) return s;
+    const SampleFormat format = outputSampleFormat(path, depth);
+    ApplyOptions o = applyOptions(1.0, path);
+    if (isFloatFormat(format)) o.exposure = 1.f, o.tonemap = ToneOperator::None;
+    if (Status s = checkOutputPath(path); !s) return s;
+    auto out = applyPixels(o, renderedPreset(), m_source);
+    if (!out) return out.error();
+    WriteOptions w;
+    w.alpha = m_source.hasAlpha;
+    w.format = depth;
+    return writeImage(path, out->image, w);
+}
+
+Status Document::setElementParam(int element, const std::string& key, const ParamValue& value) {
+    if (element < 0 || element >= int(m_preset.elements.size()))
+        return invalidInput(std::string("element ") + std::to_string(element) +
+                            ": the preset has " + std::to_string(m_preset.elements.size()) +
+                            " elements");
+    ElementParams& e = m_preset.elements[std::size_t(element)];
+    return setByKey<ElementParams>(kElementParams, e, key, value, typeBit(e.type),
+                                   "elements[" + std::to_string(element) + "].");
+}
+
+Status Document::setPresetParam(const std::string& key, const ParamValue& value) {
+    return setByKey<Preset>(kPresetParams, m_preset, key, value, ~0u, "");
+}
+
+void Document::addElement(ElementType type) {
+    const auto at =
+        m_preset.elements.begin() +
+        std::clamp<std::ptrdiff_t>(selected + 1, 0, std::ptrdiff_t(m_preset.elements.size()));
+    selected = int(at - m_preset.elements.begin());
+    m_preset.elements.insert(at, defaultElement(type));
+    commit();
+}
+
+void Document::duplicateElement(int element) {
+    if (element < 0 || element >= int(m_preset.elements.size())) return;
+    const ElementParams copy = m_preset.elements[std::size_t(element)];
+    m_preset.elements.insert(m_preset.elements.begin() + element + 1, copy);
+    selected = element + 1;
+    commit();
+}
+
+void Document::removeElement(int element) {
+    if (m_preset.elements.size() <= 1 || element < 0 || element >= int(m_preset.elements.size()))
+        return;
+    m_preset.elements.erase(m_preset.elements.begin() + element);
+    if (solo == element) solo = -1;
+    if (solo > element) --solo;
+    clampSelection();
+    commit();
+}
+
+void Document::moveElement(int element, int to) {
+    const int n = int(m_preset.elements.size());
+    if (element < 0 || element >= n) return;
+    to = std::clamp(to, 0, n - 1);
+    if (to == element) return;
+    const ElementParams moved = m_preset.elements[std::size_t(element)];
+    m_preset.elements.erase(m_preset.elements.begin() + element);
+    m_preset.elements.insert(m_preset.elements.begin() + to, moved);
+    if (selected == element) selected = to;
+    if (solo == element) solo = to;
+    commit();
+}
+
+void Document::setVisible(int element, bool visible) {
+    if (element < 0 || element >= int(m_preset.elements.size())) return;
+    m_preset.elements[std::size_t(element)].visible = visible;
+    commit();
+}
+
+bool Document::changedSinceCommit() const {
+    return presetToJson(m_preset) != presetToJson(m_committed);
+}
+
+void Document::commit() {
+    if (!changedSinceCommit()) return;
+    m_undo.push_back(m_committed);
+    m_redo.clear();
+    m_committed = m_preset;
+}
+
+bool Document::undo() {
+    commit();
+    if (m_undo.empty()) return false;
+    m_redo.push_back(m_preset);
+    m_preset = m_undo.back();
+    m_undo.pop_back();
+    m_committed = m_preset;
+    clampSelection();
+    return true;
+}
+
+bool Document::redo() {
+    if (m_redo.empty()) return false;
+    m_undo.push_back(m_preset);
+    m_preset = m_redo.back();
+    m_redo.pop_back();
+    m_committed = m_preset;
+    clampSelection();
+    return true;
+}
+
+bool Document::isDirty() const {
+    return presetToJson(m_preset) != m_savedJson;
+}
+
+Preset Document::renderedPreset() const {
+    Preset p = m_preset;
+    if (solo >= 0 && solo < int(p.elements.size()))
+        for (int i = 0; i < int(p.elements.size()); ++i)
+            p.elements[std::size_t(i)].visible = i == solo;
+    return p;
+}
+
+void Document::clampSelection() {
+    const int n = int(m_preset.elements.size());
+    selected = std::clamp(selected, 0, std::max(0, n - 1));
+    if (solo >= n) solo = -1;
+}
+
+}  // namespace flarekit::studio

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: Apache-2.0
+// What the studio edits: an image, a sprite preset and where the light is, with undo and redo
+// for every change to the preset and a record of what was last saved. No GL and no UI here, so
+// the script, the benchmark and the tests drive the same model the panels do.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flarekit/Flare.h"
+#include "flarekit/PostFxParams.h"
+#include "flarekit/Result.h"
+#include "flarekit/job/ApplyJob.h"
+#include "flarekit/job/PixelJob.h"
+
+namespace flarekit::studio {
+
+//! How the image is shown (and how 8/16-bit exports are encoded); not part of the preset.
+struct ViewSettings {
+    float exposure = 1.f;                     //!< multiplies the image before the curve
+    ToneOperator curve = ToneOperator::None;  //!< set from the image on open
+    FluxMode fluxMode = FluxMode::Fixed;      //!< the preset's own look while designing
+    float intensity = 1.f;                    //!< the job's flare brightness multiplier
+};
+inline constexpr Param<ViewSettings> kViewParams[] = {
+    param<&ViewSettings::exposure>("exposure", 0, 1000, "",
+                                   "multiplies the image before the display curve"),
+    choice<&ViewSettings::curve>("tonemap", kToneOperatorNames,
+                                 "display curve: none, aces or filmic (HDR images open with "
+                                 "filmic, as the CLI writes them to 8/16-bit files)"),
+    choice<&ViewSettings::fluxMode>("flux_mode", kFluxModeNames,
+                                    "fixed: the preset's own strength wherever the light is; "
+                                    "measured: as bright as the image is at the light"),
+    param<&ViewSettings::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
+};
+
+class Document {
+  public:
+    Document();
+
+    //! Reads an image as `flarekit apply` does and places the light on the brightest light
+    //! the finder accepts (else two thirds across, a quarter down). The preset is kept.
+    Status openImage(const std::string& path);
+    //! A shipped preset by name or a JSON file, replacing the preset (undoable). Callers ask
+    //! first when isDirty().
+    Status loadPreset(const std::string& nameOrPath);
+    //! The preset as the CLI reads it (presetToJson), written atomically; clears isDirty().
+    Status savePreset(const std::string& path);
+    //! The flare at the image's full size, in `depth` (Auto: float for EXR, the extension's
+    //! default otherwise). Float and half files get linear values (no exposure or curve), 8/16-bit
+    //! files the view's exposure and curve, as the CLI writes them.
+    Status exportRender(const std::string& path, SampleFormat depth = SampleFormat::Auto) const;
+
+    // Edits of the preset. Each is one undo step; a slider's drag is one step however many
+    // values it passes (commit() closes it).
+    Preset& preset() { return m_preset; }
+    const Preset& preset() const { return m_preset; }
+    Status setElementParam(int element, const std::string& key, const ParamValue& value);
+    Status setPresetParam(const std::string& key, const ParamValue& value);
+    void addElement(ElementType type);  //!< after the selection, selected
+    void duplicateElement(int element);
+    void removeElement(int element);  //!< the last element cannot go (a preset needs one)
+    void moveElement(int element, int to);
+    void setVisible(int element, bool visible);
+    //! Records the edits made since the last commit as one undo step (nothing when the preset
+    //! is as it was). The UI calls it when no widget is being dragged.
+    void commit();
+    bool undo();
+    bool redo();
+    bool canUndo() const { return !m_undo.empty() || changedSinceCommit(); }
+    bool canRedo() const { return !m_redo.empty(); }
+    //! The preset differs from the last one saved or loaded.
+    bool isDirty() const;
+
+    //! What is drawn: the preset with the soloed element alone, when one is.
+    Preset renderedPreset() const;
+    int solo = -1;     //!< an element shown alone (a view state: not saved, not undone)
+    int selected = 0;  //!< the element the parameter panel edits
+
+    // The image and the light.
+    bool hasImage() const { return !m_source.image.empty(); }
+    const PixelInput& source() const { return m_source; }
+    const std::string& imagePath() const { return m_imagePath; }
+    //! Changes each time an image is opened (previews made from the old one are stale).
+    unsigned imageVersion() const { return m_imageVersion; }
+    const std::string& presetPath() const { return m_presetPath; }
+    Point light{0, 0};
+    ViewSettings view;
+    //! The apply job's options for this document (light, flux, view) at `scale` x the image.
+    ApplyOptions applyOptions(double scale, const std::string& output = "") const;
+
+  private:
+    bool changedSinceCommit() const;
+    void clampSelection();
+    PixelInput m_source;
+    unsigned m_imageVersion = 0;
+    std::string m_imagePath, m_presetPath;
+    Preset m_preset, m_committed;
+    std::string m_savedJson;
+    std::vector<Preset> m_undo, m_redo;
+};
+
+}  // namespace flarekit::studio

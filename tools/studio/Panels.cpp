@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: Apache-2.0
+// The studio's panels: the menu, the preset (browser, element list, parameters), the view (the
+// image, the light, the before/after split, the view settings) and the component previews.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "App.h"
+#include "ParamWidgets.h"
+
+namespace flarekit::studio {
+
+namespace {
+
+constexpr float kPresetPanelWidth = 420.f;  //!< room for a slider, its value and its key
+constexpr float kComponentsHeight = 200.f;  //!< a 16:9 preview 150 px tall and its label
+constexpr float kThumbSize = 40.f;          //!< an element's thumbnail in the list
+//! The view's margin around the image, a share of the view: the light can be dragged there,
+//! outside the frame, as a sun just out of shot still throws its ghosts in.
+constexpr float kViewMargin = 0.12f;
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                    ImGuiWindowFlags_NoCollapse |
+                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+const std::vector<std::string> kImageExtensions = {".exr", ".hdr",  ".png",  ".jpg", ".jpeg",
+                                                   ".tif", ".tiff", ".webp", ".bmp", ".tga"};
+
+std::string elementLabel(const ElementParams& e, int i) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%d  %s  t %.2f  size %.3f", i,
+                  std::string(elementTypeName(e.type)).c_str(), double(e.t), double(e.size));
+    return text;
+}
+
+}  // namespace
+
+void App::drawPanels() {
+    m_dragging = false;
+    drawMenu();
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    const float top = vp->WorkPos.y, width = vp->WorkSize.x, height = vp->WorkSize.y;
+    drawPresetPanel(0, top, kPresetPanelWidth, height);
+    drawViewPanel(kPresetPanelWidth, top, width - kPresetPanelWidth, height - kComponentsHeight);
+    drawComponents(kPresetPanelWidth, top + height - kComponentsHeight, width - kPresetPanelWidth,
+                   kComponentsHeight);
+    drawQuestion();
+    m_dialog.draw();
+    m_dragging = m_dragging || ImGui::IsAnyItemActive();
+}
+
+void App::drawMenu() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open image...", "Ctrl+O"))
+            m_dialog.open("Open image", kImageExtensions, false,
+                          [this](const std::string& p) { openAny(p); });
+        if (ImGui::MenuItem("Open preset..."))
+            m_dialog.open("Open preset", {".json"}, false,
+                          [this](const std::string& p) { choosePreset(p); });
+        if (ImGui::MenuItem("Save preset as...", "Ctrl+S"))
+            m_dialog.open("Save preset", {".json"}, true, [this](const std::string& p) {
+                if (Status s = m_doc.savePreset(p); !s) return say(s.error().message, true);
+                say(std::string("saved ") + p);
+            });
+        if (ImGui::MenuItem("Export render...", nullptr, false, m_doc.hasImage()))
+            m_dialog.open("Export render (.exr float, .png 8-bit, .tif 16-bit)", kImageExtensions,
+                          true, [this](const std::string& p) {
+                              if (Status s = m_doc.exportRender(p); !s)
+                                  return say(s.error().message, true);
+                              say(std::string("exported ") + p);
+                          });
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) glfwSetWindowShouldClose(m_window, GLFW_TRUE);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, m_doc.canUndo())) m_doc.undo();
+        if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, m_doc.canRedo())) m_doc.redo();
+        ImGui::EndMenu();
+    }
+    const std::string title =
+        m_doc.preset().name + (m_doc.isDirty() ? " *" : "") + "   " + m_doc.imagePath();
+    ImGui::TextDisabled("%s", title.c_str());
+    ImGui::EndMainMenuBar();
+}
+
+void App::handleShortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!io.KeyCtrl || io.WantTextInput) return;
+    if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? m_doc.redo() : m_doc.undo();
+    if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) m_doc.redo();
+    if (ImGui::IsKeyPressed(GLFW_KEY_O, false))
+        m_dialog.open("Open image", kImageExtensions, false,
+                      [this](const std::string& p) { openAny(p); });
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false))
+        m_dialog.open("Save preset", {".json"}, true, [this](const std::string& p) {
+            if (Status s = m_doc.savePreset(p); !s) return say(s.error().message, true);
+            say(std::string("saved ") + p);
+        });
+}
+
+void App::drawPresetPanel(float x, float y, float w, float h) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::Begin("Preset", nullptr, kFixed);
+    if (ImGui::BeginCombo("preset", m_doc.preset().name.c_str())) {
+        for (const std::string& name : m_shipped)
+            if (ImGui::Selectable(name.c_str())) choosePreset(name);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the shipped presets; unsaved edits are never dropped without asking");
+    paramTable<Preset>(kPresetParams, m_doc.preset(), Preset{});
+    ImGui::Separator();
+    drawElementList();
+    ImGui::Separator();
+    const int sel = m_doc.selected;
+    if (sel >= 0 && sel < int(m_doc.preset().elements.size())) {
+        ElementParams& e = m_doc.preset().elements[std::size_t(sel)];
+        ImGui::Text("element %d: %s", sel, std::string(elementTypeName(e.type)).c_str());
+        ImGui::PushItemWidth(-110);
+        paramTable<ElementParams>(kElementParams, e, defaultElement(e.type), typeBit(e.type));
+        ImGui::PopItemWidth();
+    }
+    ImGui::End();
+}
+
+void App::drawElementList() {
+    Preset& preset = m_doc.preset();
+    const int n = int(preset.elements.size());
+    ImGui::BeginChild("elements", ImVec2(0, std::min(360.f, 8.f + float(n) * (kThumbSize + 6.f))),
+                      true);
+    int moveFrom = -1, moveTo = -1;
+    for (int i = 0; i < n; ++i) {
+        ElementParams& e = preset.elements[std::size_t(i)];
+        ImGui::PushID(i);
+        ImGui::Image(thumbnail(e), ImVec2(kThumbSize, kThumbSize));
+        ImGui::SameLine();
+        bool visible = e.visible;
+        if (ImGui::Checkbox("##visible", &visible)) m_doc.setVisible(i, visible);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("visible (saved in the preset)");
+        ImGui::SameLine();
+        const bool soloed = m_doc.solo == i;
+        if (soloed) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.8f, 0.5f, 0.1f, 1.f));
+        if (ImGui::SmallButton("S")) m_doc.solo = soloed ? -1 : i;
+        if (soloed) ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("solo: this element alone (not saved)");
+        ImGui::SameLine();
+        if (ImGui::Selectable(elementLabel(e, i).c_str(), m_doc.selected == i, 0,
+                              ImVec2(0, kThumbSize)))
+            m_doc.selected = i;
+        if (ImGui::BeginDragDropSource()) {  // drag a row onto another to reorder
+            ImGui::SetDragDropPayload("element", &i, sizeof i);
+            ImGui::Text("move %s", std::string(elementTypeName(e.type)).c_str());
+            ImGui::EndDragDropSource();
+        }
+        if (ImGui::BeginDragDropTarget()) {
+            if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload("element"))
+                moveFrom = *static_cast<const int*>(p->Data), moveTo = i;
+            ImGui::EndDragDropTarget();
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndChild();
+    if (moveFrom >= 0) m_doc.moveElement(moveFrom, moveTo);
+    const int sel = m_doc.selected;
+    if (ImGui::Button("Up")) m_doc.moveElement(sel, sel - 1);
+    ImGui::SameLine();
+    if (ImGui::Button("Down")) m_doc.moveElement(sel, sel + 1);
+    ImGui::SameLine();
+    if (ImGui::Button("Duplicate")) m_doc.duplicateElement(sel);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove") && n > 1) m_doc.removeElement(sel);
+    ImGui::SameLine();
+    if (ImGui::BeginCombo("##add", "Add", ImGuiComboFlags_NoArrowButton)) {
+        for (int t = 0; t < kElementTypeCount; ++t)
+            if (ImGui::Selectable(std::string(elementTypeName(ElementType(t))).c_str()))
+                m_doc.addElement(ElementType(t));
+        ImGui::EndCombo();
+    }
+}
+
+void App::drawViewPanel(float x, float y, float w, float h) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    // No scroll bar: the canvas fills the panel exactly, and a bar appearing on the second frame
+    // would change the preview's size under the user.
+    ImGui::Begin("View", nullptr,
+                 kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PushItemWidth(120);
+    for (const Param<ViewSettings>& p : kViewParams) {
+        ImGui::PushID(p.key.data());
+        paramWidget(p, m_doc.view, ViewSettings{});
+        ImGui::PopID();
+        ImGui::SameLine();
+    }
+    ImGui::SliderFloat("before | after", &m_split, 0.f, 1.f, "%.2f");
+    ImGui::PopItemWidth();
+    // The light typed in exactly (the pointer places it to the nearest screen pixel).
+    float light[2] = {m_doc.light.x, m_doc.light.y};
+    ImGui::SetNextItemWidth(200);
+    if (ImGui::DragFloat2("light (image pixels)", light, 1.f, -1e5f, 1e5f, "%.1f"))
+        m_doc.light = {light[0], light[1]};
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y),
+                        IM_COL32(30, 30, 34, 255));
+    ImGui::InvisibleButton("canvas", ImVec2(std::max(avail.x, 1.f), std::max(avail.y, 1.f)));
+    if (m_doc.hasImage()) {
+        const Image& img = m_doc.source().image;
+        const float margin = kViewMargin * std::min(avail.x, avail.y);
+        const float fitW = avail.x - 2 * margin, fitH = avail.y - 2 * margin;
+        const float k = std::min(fitW / float(img.width()), fitH / float(img.height()));
+        m_view = {origin.x + 0.5f * (avail.x - k * float(img.width())),
+                  origin.y + 0.5f * (avail.y - k * float(img.height())),
+                  k * float(img.width()),
+                  k * float(img.height()),
+                  float(img.width()),
+                  float(img.height())};
+        m_viewMaxW = int(m_view.w), m_viewMaxH = int(m_view.h);
+        if (ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
+            const ImVec2 m = ImGui::GetIO().MousePos;
+            m_doc.light = m_view.toImage(m.x, m.y);
+            m_dragging = true;
+        }
+        const ImVec2 p0(m_view.x, m_view.y), p1(m_view.x + m_view.w, m_view.y + m_view.h);
+        const float splitX = m_view.x + m_split * m_view.w;
+        if (m_after.valid()) {
+            if (m_split > 0 && m_before.valid())
+                draw->AddImage(m_before.id(), p0, ImVec2(splitX, p1.y), ImVec2(0, 0),
+                               ImVec2(m_split, 1));
+            draw->AddImage(m_after.id(), ImVec2(splitX, p0.y), p1, ImVec2(m_split, 0),
+                           ImVec2(1, 1));
+            if (m_split > 0)
+                draw->AddLine(ImVec2(splitX, p0.y), ImVec2(splitX, p1.y),
+                              IM_COL32(255, 255, 255, 160));
+        }
+        draw->AddRect(p0, p1, IM_COL32(90, 90, 96, 255));
+        float lx = 0, ly = 0;
+        m_view.toWindow(m_doc.light, lx, ly);
+        draw->AddCircle(ImVec2(lx, ly), 9.f, IM_COL32(255, 220, 80, 230), 24, 1.5f);
+        draw->AddLine(ImVec2(lx - 14, ly), ImVec2(lx + 14, ly), IM_COL32(255, 220, 80, 230));
+        draw->AddLine(ImVec2(lx, ly - 14), ImVec2(lx, ly + 14), IM_COL32(255, 220, 80, 230));
+    } else {
+        draw->AddText(ImVec2(origin.x + 20, origin.y + 20), IM_COL32(200, 200, 200, 255),
+                      "File > Open image (or drop an image here) to design a flare on it");
+    }
+    ImGui::End();
+}
+
+void App::drawComponents(float x, float y, float w, float h) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::Begin("Components", nullptr, kFixed | ImGuiWindowFlags_HorizontalScrollbar);
+    // Room below the previews for their names, the status line and the scroll bar.
+    const float tall =
+        h - 5.f * ImGui::GetTextLineHeightWithSpacing() - ImGui::GetStyle().ScrollbarSize;
+    for (std::size_t i = 0; i < m_layerCount; ++i) {
+        const auto& [name, texture] = m_layers[i];
+        const float wide = tall * float(texture.width()) / float(std::max(1, texture.height()));
+        ImGui::BeginGroup();
+        ImGui::Image(texture.id(), ImVec2(wide, tall));
+        ImGui::TextUnformatted(name.c_str());
+        ImGui::EndGroup();
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    if (m_statusError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+    ImGui::Text("preview %dx%d, %.1f ms   %s", m_preview.width(), m_preview.height(),
+                m_lastRenderMs, m_status.c_str());
+    if (m_statusError) ImGui::PopStyleColor();
+    ImGui::End();
+}
+
+void App::drawQuestion() {
+    if (m_pendingPreset && !ImGui::IsPopupOpen("Unsaved edits")) ImGui::OpenPopup("Unsaved edits");
+    if (!ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
+    if (!m_pendingPreset) {  // answered elsewhere (a script)
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    ImGui::Text("The preset \"%s\" has unsaved edits.", m_doc.preset().name.c_str());
+    ImGui::Text("Load %s and lose them?", m_pendingPreset->c_str());
+    if (ImGui::Button("Save first...")) {
+        const std::string next = *m_pendingPreset;
+        m_pendingPreset.reset();
+        ImGui::CloseCurrentPopup();
+        m_dialog.open("Save preset", {".json"}, true, [this, next](const std::string& p) {
+            if (Status s = m_doc.savePreset(p); !s) return say(s.error().message, true);
+            choosePreset(next);
+        });
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard edits")) {
+        const std::string next = *std::exchange(m_pendingPreset, std::nullopt);
+        ImGui::CloseCurrentPopup();
+        if (Status s = m_doc.loadPreset(next); !s) say(s.error().message, true);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+        m_pendingPreset.reset();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace flarekit::studio

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "Script.h"
+
+#include <array>
+#include <cmath>
+
+#include "core/JsonText.h"
+#include "core/ParamJson.h"
+#include "flarekit/ImageIO.h"
+
+namespace flarekit::studio {
+
+namespace {
+
+using nlohmann::json;
+
+//! An action's kind, its fields (required first, `?` marks an optional one) and what it does.
+struct ActionSpec {
+    std::string_view kind;
+    std::array<std::string_view, 4> fields;
+    std::string_view help;
+};
+
+constexpr ActionSpec kActions[] = {
+    {"open", {"path"}, "opens an image (any format the CLI reads); the light goes to its light"},
+    {"load", {"preset"}, "loads a shipped preset by name or a JSON file (no question asked)"},
+    {"choose",
+     {"preset"},
+     "picks a preset in the browser, as a click does: with unsaved edits the studio asks first"},
+    {"answer", {"choice"}, "answers the open question: \"discard\" (the edits) or \"cancel\""},
+    {"light", {"at"}, "puts the light at [x, y] image pixels (outside the frame is allowed)"},
+    {"drag",
+     {"from", "to", "?frames"},
+     "drags the light with the pointer from [x, y] to [x, y] (image pixels) over `frames` "
+     "frames (default 8), drawing each"},
+    {"set",
+     {"key", "value", "?element"},
+     "sets a parameter of element `element` (docs/presets.md), or of the preset without it"},
+    {"view", {"key", "value"}, "sets a view setting: exposure, tonemap, flux_mode, intensity"},
+    {"select", {"element"}, "selects an element for the parameter panel"},
+    {"hide", {"element"}, "switches an element off (its `visible` becomes false)"},
+    {"show", {"element"}, "switches an element on"},
+    {"solo", {"?element"}, "shows one element alone; without `element`, all again"},
+    {"add", {"type"}, "adds an element of a type (glow, ring, ...) after the selection"},
+    {"duplicate", {"element"}, "duplicates an element"},
+    {"remove", {"element"}, "removes an element"},
+    {"move", {"element", "to"}, "moves an element to another place in the list"},
+    {"undo", {}, "undoes the last edit"},
+    {"redo", {}, "redoes it"},
+    {"split", {"at"}, "before/after split: the before half's share of the view, 0 to 1"},
+    {"save", {"path"}, "saves the preset as JSON the CLI reads"},
+    {"export",
+     {"path", "?depth"},
+     "renders at full size: EXR linear (float), PNG (8-bit) and TIFF (16-bit) through the view's "
+     "exposure and curve; `depth` (8, 16, half, float) overrides the extension's"},
+    {"screenshot", {"path"}, "writes the whole window as an 8-bit PNG"},
+    {"wait", {"?frames"}, "draws `frames` frames (default 1) doing nothing"},
+};
+
+const ActionSpec* specOf(const std::string& kind) {
+    for (const ActionSpec& s : kActions)
+        if (s.kind == kind) return &s;
+    return nullptr;
+}
+
+std::string knownKinds() {
+    std::string list;
+    for (const ActionSpec& s : kActions) {
+        if (!list.empty()) list += ", ";
+        list += s.kind;
+    }
+    return list;
+}
+
+Error failAt(const Action& a, const std::string& what) {
+    return invalidInput(a.where + ": " + what);
+}
+
+Result<int> elementOf(const Document& doc, const Action& a, const char* field = "element") {
+    const json& v = a.args[field];
+    const int n = int(doc.preset().elements.size());
+    if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= n)
+        return failAt(a, std::string(field) + ": expected an element index in [0, " +
+                             std::to_string(n - 1) + "], got " + jsonExcerpt(v));
+    return int(v.get<long long>());
+}
+
+template <class Owner>
+Result<ParamValue> valueOf(std::span<const Param<Owner>> table, const Action& a,
+                           std::uint32_t applies, const std::string& owner) {
+    const std::string key = a.args["key"].is_string() ? a.args["key"].get<std::string>() : "";
+    const Param<Owner>* p = findParam(table, key);
+    if (!p || !(p->appliesTo & applies)) {
+        std::string known;
+        for (const Param<Owner>& q : table)
+            if (q.appliesTo & applies) {
+                if (!known.empty()) known += ", ";
+                known += q.key;
+            }
+        return failAt(a, std::string("key: ") + jsonExcerpt(a.args["key"]) +
+                             " is not a parameter of " + owner + " (expected one of: " + known +
+                             ")");
+    }
+    return readParamValue(*p, a.args["value"], JsonPlace(a.where, key));
+}
+
+}  // namespace
+
+Result<std::vector<Action>> loadScript(const std::string& path) {
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    JsonLimits limits;
+    limits.what = "a script";
+    auto doc = parseJsonText(*text, path, limits);
+    if (!doc) return doc.error();
+    if (!doc->is_object() || !doc->contains("actions") || !(*doc)["actions"].is_array())
+        return invalidInput(path + ": expected an object {\"actions\": [...]}");
+    std::vector<Action> actions;
+    const json& list = (*doc)["actions"];
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        Action a{"", list[i], path + ": actions[" + std::to_string(i) + "]"};
+        if (!a.args.is_object() || !a.args.contains("action") || !a.args["action"].is_string())
+            return failAt(
+                a, std::string("expected an object with \"action\": one of ") + knownKinds());
+        a.kind = a.args["action"].get<std::string>();
+        const ActionSpec* spec = specOf(a.kind);
+        if (!spec)
+            return failAt(a, std::string("action: unknown action ") +
+                                 jsonExcerpt(a.args["action"]) +
+                                 " (expected one of: " + knownKinds() + ")");
+        for (const auto& [key, value] : a.args.items()) {
+            bool known = key == "action";
+            for (std::string_view f : spec->fields)
+                known = known || (!f.empty() && (f == key || (f[0] == '?' && f.substr(1) == key)));
+            if (!known) return failAt(a, key + ": not a field of \"" + a.kind + "\"");
+        }
+        for (std::string_view f : spec->fields)
+            if (!f.empty() && f[0] != '?' && !a.args.contains(std::string(f)))
+                return failAt(a, std::string(f) + ": missing (\"" + a.kind + "\" needs it)");
+        actions.push_back(std::move(a));
+    }
+    return actions;
+}
+
+bool isWindowAction(const std::string& kind) {
+    return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
+           kind == "wait" || kind == "split";
+}
+
+Status runDocumentAction(Document& doc, const Action& a) {
+    const auto withWhere = [&](Status s) -> Status {
+        if (s) return s;
+        return invalidInput(a.where + ": " + s.error().message);
+    };
+    const auto pathOf = [&]() -> Result<std::string> {
+        const json& v = a.args.contains("path") ? a.args["path"] : a.args["preset"];
+        if (!v.is_string() || v.get<std::string>().empty())
+            return failAt(a, std::string("expected a file name, got ") + jsonExcerpt(v));
+        return v.get<std::string>();
+    };
+    const std::string& k = a.kind;
+    if (k == "open" || k == "load" || k == "save" || k == "export") {
+        auto path = pathOf();
+        if (!path) return path.error();
+        if (k == "open") return withWhere(doc.openImage(*path));
+        if (k == "load") return withWhere(doc.loadPreset(*path));
+        if (k == "save") return withWhere(doc.savePreset(*path));
+        SampleFormat depth = SampleFormat::Auto;
+        if (a.args.contains("depth")) {
+            const json& d = a.args["depth"];
+            const std::string text = d.is_number_integer() ? std::to_string(d.get<int>())
+                                     : d.is_string()       ? d.get<std::string>()
+                                                           : "";
+            bool found = false;
+            for (std::size_t i = 1; i < std::size(kSampleFormatNames); ++i)
+                if (kSampleFormatNames[i] == text) depth = SampleFormat(i), found = true;
+            if (!found)
+                return failAt(
+                    a, "depth: expected 8, 16, \"half\" or \"float\", got " + jsonExcerpt(d));
+        }
+        return withWhere(doc.exportRender(*path, depth));
+    }
+    if (k == "light") {
+        const json& at = a.args["at"];
+        if (!at.is_array() || at.size() != 2 || !at[0].is_number() || !at[1].is_number())
+            return failAt(
+                a, std::string("at: expected [x, y] in image pixels, got ") + jsonExcerpt(at));
+        doc.light = {at[0].get<float>(), at[1].get<float>()};
+        return Ok{};
+    }
+    if (k == "set") {
+        if (!a.args.contains("element")) {
+            auto v = valueOf<Preset>(kPresetParams, a, ~0u, "the preset");
+            if (!v) return v.error();
+            return withWhere(doc.setPresetParam(a.args["key"].get<std::string>(), *v));
+        }
+        auto i = elementOf(doc, a);
+        if (!i) return i.error();
+        const ElementType type = doc.preset().elements[std::size_t(*i)].type;
+        auto v = valueOf<ElementParams>(kElementParams, a, typeBit(type),
+                                        "a " + std::string(elementTypeName(type)) + " element");
+        if (!v) return v.error();
+        Status s = doc.setElementParam(*i, a.args["key"].get<std::string>(), *v);
+        doc.commit();
+        return withWhere(s);
+    }
+    if (k == "view") {
+        auto v = valueOf<ViewSettings>(kViewParams, a, ~0u, "the view");
+        if (!v) return v.error();
+        findParam<ViewSettings>(kViewParams, a.args["key"].get<std::string>())->set(doc.view, *v);
+        return Ok{};
+    }
+    if (k == "undo") return doc.undo(), Status(Ok{});
+    if (k == "redo") return doc.redo(), Status(Ok{});
+    if (k == "add") {
+        const auto type = a.args["type"].is_string()
+                              ? parseElementType(a.args["type"].get<std::string>())
+                              : std::nullopt;
+        if (!type)
+            return failAt(a, "type: expected an element type, got " + jsonExcerpt(a.args["type"]));
+        doc.addElement(*type);
+        return Ok{};
+    }
+    if (k == "solo" && !a.args.contains("element")) {
+        doc.solo = -1;
+        return Ok{};
+    }
+    auto i = elementOf(doc, a);
+    if (!i) return i.error();
+    if (k == "select") doc.selected = *i;
+    if (k == "hide" || k == "show") doc.setVisible(*i, k == "show");
+    if (k == "solo") doc.solo = *i;
+    if (k == "duplicate") doc.duplicateElement(*i);
+    if (k == "remove") doc.removeElement(*i);
+    if (k == "move") {
+        auto to = elementOf(doc, a, "to");
+        if (!to) return to.error();
+        doc.moveElement(*i, *to);
+    }
+    return Ok{};
+}
+
+std::string scriptReference() {
+    std::string out = "| action | fields | what it does |\n|---|---|---|\n";
+    for (const ActionSpec& s : kActions) {
+        std::string fields;
+        for (std::string_view f : s.fields) {
+            if (f.empty()) continue;
+            fields += (fields.empty() ? std::string() : std::string(", ")) +
+                      (f[0] == '?' ? std::string("`") + std::string(f.substr(1)) + "` (optional)"
+                                   : std::string("`") + std::string(f) + "`");
+        }
+        out += std::string("| `") + std::string(s.kind) + "` | " + fields + " | " +
+               std::string(s.help) + " |\n";
+    }
+    return out;
+}
+
+}  // namespace flarekit::studio
