@@ -131,7 +131,7 @@ def test_hide_undo_redo_on_screen(studio, tmp_path):
     shown, hidden = read(tmp_path / "shown.png"), read(tmp_path / "hidden.png")
     undone, redone = read(tmp_path / "undone.png"), read(tmp_path / "redone.png")
     # Undo restores every pixel of the window but the status line (which names the action).
-    window = slice(0, shown.shape[0] - 60)
+    window = slice(0, shown.shape[0] - 80)
     assert np.array_equal(shown[window], undone[window])
     assert np.array_equal(hidden[window], redone[window])
     assert levels(shown, hidden) > 30     # the streaks went (and the list's box unticked)
@@ -247,3 +247,16 @@ def test_the_docs_list_every_script_action(cli):
     assert "| `drag` | `from`, `to`, `frames` (optional) |" in done.stdout
     assert done.stdout in (SOURCE / "docs" / "studio.md").read_text(), \
         "docs/studio.md is out of date: scripts/update-docs.sh"
+
+
+def test_the_browser_shows_every_preset_on_the_image(studio, tmp_path):
+    studio([{"action": "open", "path": str(SUNSET)},
+            {"action": "screenshot", "path": "components.png"},
+            {"action": "panel", "name": "presets"},
+            {"action": "screenshot", "path": "presets.png"}], "--size", "1600x900")
+    components, presets = read(tmp_path / "components.png"), read(tmp_path / "presets.png")
+    strip = (slice(720, 820), slice(430, 1600))  # the bottom strip right of the preset panel
+    assert levels(components[strip], presets[strip]) > 50
+    # Six shipped presets, each a small copy of the sunset: warm (red over blue) in the strip.
+    shown = srgb8(presets[strip])
+    assert shown[..., 0].mean() > shown[..., 2].mean() + 10

@@ -186,6 +186,7 @@ bool App::frame() {
     handleShortcuts();
     if (!ImGui::IsAnyItemActive()) m_doc.commit();
     updatePreview();
+    updateThumbnails();
     ImGui::Render();
     int fbw = 0, fbh = 0;
     glfwGetFramebufferSize(m_window, &fbw, &fbh);
@@ -231,8 +232,11 @@ Status App::stepScript() {
         --m_waitFrames;
         return Ok{};
     }
-    // Pictures wait for the preview of the frame before them to be the refined one.
-    if (m_next > 0 && !m_layersFresh && m_doc.hasImage()) return Ok{};
+    // Each action waits for the view, its passes and the browser's thumbnails to show what the
+    // actions before it made (a screenshot is then of a settled window).
+    if (m_next > 0 && m_doc.hasImage() &&
+        (!m_layersFresh || m_browser.busy() || m_browserKey.empty()))
+        return Ok{};
     if (m_next >= m_script.size()) {
         // The last screenshot has been drawn and written; leave after it.
         if (m_pendingShot.empty()) m_exitCode = 0;
@@ -253,6 +257,14 @@ Status App::stepScript() {
         if (!m_doc.hasImage()) return invalidInput(a.where + ": drag: no image is open");
         m_dragFrame = 0, m_pointerScripted = true;
         return stepScript();
+    }
+    if (a.kind == "panel") {
+        const std::string name =
+            a.args["name"].is_string() ? a.args["name"].get<std::string>() : "";
+        if (name != "components" && name != "presets")
+            return invalidInput(a.where + ": name: expected \"components\" or \"presets\"");
+        m_panel = name, m_panelChanged = true;
+        return Ok{};
     }
     if (a.kind == "wait") {
         m_waitFrames = std::max(0, a.args.value("frames", 1) - 1);
@@ -345,6 +357,28 @@ void App::updatePreview() {
         m_componentsKey = key;
     }
     m_layersFresh = final && m_componentsKey == m_renderedKey;
+}
+
+void App::updateThumbnails() {
+    for (Thumbnail& t : m_browser.take()) {
+        if (t.image.pixels.empty()) {
+            m_presetErrors[t.preset] = t.error;
+            continue;
+        }
+        m_presetErrors.erase(t.preset);
+        m_presetThumbs[t.preset].upload(t.image);
+    }
+    if (!m_doc.hasImage() || m_dragging || m_preview.small().image.empty()) return;
+    // Made again when the image, the light or the view changes, once it stops changing.
+    char key[160];
+    std::snprintf(key, sizeof key, "%u|%.2f,%.2f|%g|%d|%d|%g", m_doc.imageVersion(),
+                  double(m_doc.light.x), double(m_doc.light.y), double(m_doc.view.exposure),
+                  int(m_doc.view.curve), int(m_doc.view.fluxMode), double(m_doc.view.intensity));
+    if (key == m_browserKey) return;
+    m_browserKey = key;
+    const double s = m_preview.smallScale();
+    m_browser.request(m_preview.small(), {float(m_doc.light.x * s), float(m_doc.light.y * s)},
+                      m_doc.view, m_shipped);
 }
 
 Status App::writeScreenshot(const std::string& path) {

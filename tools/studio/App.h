@@ -14,6 +14,7 @@
 #include "GlTexture.h"
 #include "Preview.h"
 #include "Script.h"
+#include "Thumbnails.h"
 
 struct GLFWwindow;
 
@@ -61,6 +62,10 @@ class App {
     void drawElementList();
     void drawViewPanel(float x, float y, float w, float h);
     void drawComponents(float x, float y, float w, float h);
+    void drawBrowser(float h);
+    void drawComponentStrip(float h);
+    float stripPictureHeight(float h) const;
+    void updateThumbnails();
     void drawQuestion();
     void drawFileDialog();
     void handleShortcuts();
@@ -78,6 +83,13 @@ class App {
     std::vector<std::pair<std::string, GlTexture>> m_layers;
     std::size_t m_layerCount = 0;  //!< the passes of the latest preview (m_layers may hold more)
     std::map<std::string, GlTexture> m_thumbs;
+    // The preset browser: a thumbnail per shipped preset on this image, made in the background.
+    ThumbnailRenderer m_browser;
+    std::map<std::string, GlTexture> m_presetThumbs;
+    std::map<std::string, std::string> m_presetErrors;
+    std::string m_browserKey;
+    std::string m_panel = "components";  //!< the bottom strip's tab: components or presets
+    bool m_panelChanged = false;
     std::vector<std::string> m_shipped;
 
     // What the shown preview was made from: a new render when any of it changes.

@@ -256,10 +256,39 @@ void App::drawViewPanel(float x, float y, float w, float h) {
 void App::drawComponents(float x, float y, float w, float h) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(w, h));
-    ImGui::Begin("Components", nullptr, kFixed | ImGuiWindowFlags_HorizontalScrollbar);
-    // Room below the previews for their names, the status line and the scroll bar.
-    const float tall =
-        h - 5.f * ImGui::GetTextLineHeightWithSpacing() - ImGui::GetStyle().ScrollbarSize;
+    ImGui::Begin("Components", nullptr,
+                 kFixed | ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_NoTitleBar);
+    // The tab a script asked for is selected once; after that the user's click decides.
+    const auto tab = [&](const char* label, const char* name) {
+        const bool asked = m_panelChanged && m_panel == name;
+        if (!ImGui::BeginTabItem(label, nullptr, asked ? ImGuiTabItemFlags_SetSelected : 0)) return;
+        if (!m_panelChanged) m_panel = name;
+        ImGui::EndTabItem();
+    };
+    if (ImGui::BeginTabBar("strip")) {
+        tab("Components", "components");
+        tab("Presets", "presets");
+        ImGui::EndTabBar();
+    }
+    m_panelChanged = false;
+    if (m_panel == "presets")
+        drawBrowser(h);
+    else
+        drawComponentStrip(h);
+    if (m_statusError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+    ImGui::Text("preview %dx%d, %.1f ms   %s", m_preview.width(), m_preview.height(),
+                m_lastRenderMs, m_status.c_str());
+    if (m_statusError) ImGui::PopStyleColor();
+    ImGui::End();
+}
+
+float App::stripPictureHeight(float h) const {
+    // Room below the pictures for the tabs, their names, the status line and the scroll bar.
+    return h - 5.5f * ImGui::GetTextLineHeightWithSpacing() - ImGui::GetStyle().ScrollbarSize;
+}
+
+void App::drawComponentStrip(float h) {
+    const float tall = stripPictureHeight(h);
     for (std::size_t i = 0; i < m_layerCount; ++i) {
         const auto& [name, texture] = m_layers[i];
         const float wide = tall * float(texture.width()) / float(std::max(1, texture.height()));
@@ -270,11 +299,39 @@ void App::drawComponents(float x, float y, float w, float h) {
         ImGui::SameLine();
     }
     ImGui::NewLine();
-    if (m_statusError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
-    ImGui::Text("preview %dx%d, %.1f ms   %s", m_preview.width(), m_preview.height(),
-                m_lastRenderMs, m_status.c_str());
-    if (m_statusError) ImGui::PopStyleColor();
-    ImGui::End();
+}
+
+void App::drawBrowser(float h) {
+    const float tall = stripPictureHeight(h) - 6.f;  // the buttons' frame
+    for (const std::string& name : m_shipped) {
+        ImGui::BeginGroup();
+        ImGui::PushID(name.c_str());
+        const auto it = m_presetThumbs.find(name);
+        const bool ready = it != m_presetThumbs.end();
+        const float wide =
+            ready ? tall * float(it->second.width()) / float(std::max(1, it->second.height()))
+                  : tall * 16.f / 9.f;
+        const auto error = m_presetErrors.find(name);
+        const bool clicked =
+            ready ? ImGui::ImageButton(it->second.id(), ImVec2(wide, tall), ImVec2(0, 0),
+                                       ImVec2(1, 1), 2)
+                  : ImGui::Button(error != m_presetErrors.end() ? "cannot render" : "...",
+                                  ImVec2(wide + 4, tall + 4));
+        if (ImGui::IsItemHovered()) {
+            const std::string tip = error != m_presetErrors.end()
+                                        ? error->second
+                                        : "load " + name + " (asks first when edits are unsaved)";
+            ImGui::SetTooltip("%s", tip.c_str());
+        }
+        if (clicked) choosePreset(name);
+        const bool current = name == m_doc.preset().name;
+        ImGui::TextColored(current ? ImVec4(1.f, 0.8f, 0.3f, 1.f) : ImVec4(0.9f, 0.9f, 0.9f, 1.f),
+                           "%s", name.c_str());
+        ImGui::PopID();
+        ImGui::EndGroup();
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
 }
 
 void App::drawQuestion() {

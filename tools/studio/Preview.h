@@ -38,6 +38,9 @@ class Preview {
     Result<PreviewFrame> renderComponents(const Document& doc) const;
     //! The image at the fitted size through the view's exposure and curve, without a flare.
     Image8 before(const Document& doc) const;
+    //! The image at kComponentWidth and its scale (pixels per image pixel): the thumbnails'.
+    const PixelInput& small() const { return m_small; }
+    double smallScale() const { return m_smallScale; }
     int width() const { return m_scaled.image.width(); }
     int height() const { return m_scaled.image.height(); }
 

@@ -54,6 +54,10 @@ constexpr ActionSpec kActions[] = {
      "renders at full size: EXR linear (float), PNG (8-bit) and TIFF (16-bit) through the view's "
      "exposure and curve; `depth` (8, 16, half, float) overrides the extension's"},
     {"screenshot", {"path"}, "writes the whole window as an 8-bit PNG"},
+    {"panel",
+     {"name"},
+     "shows a tab of the bottom strip: \"components\" (the passes) or \"presets\" (the "
+     "browser)"},
     {"wait", {"?frames"}, "draws `frames` frames (default 1) doing nothing"},
 };
 
@@ -144,7 +148,7 @@ Result<std::vector<Action>> loadScript(const std::string& path) {
 
 bool isWindowAction(const std::string& kind) {
     return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
-           kind == "wait" || kind == "split";
+           kind == "wait" || kind == "split" || kind == "panel";
 }
 
 Status runDocumentAction(Document& doc, const Action& a) {

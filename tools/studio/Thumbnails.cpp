@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "Thumbnails.h"
+
+#include "Preview.h"
+#include "core/Parallel.h"
+#include "flarekit/job/PixelJob.h"
+
+namespace flarekit::studio {
+
+ThumbnailRenderer::ThumbnailRenderer() : m_thread([this] { work(); }) {}
+
+ThumbnailRenderer::~ThumbnailRenderer() {
+    {
+        std::lock_guard lock(m_mutex);
+        m_stop = true;
+    }
+    m_wake.notify_all();
+    m_thread.join();
+}
+
+void ThumbnailRenderer::request(PixelInput image, Point light, ViewSettings view,
+                                std::vector<std::string> presets) {
+    {
+        std::lock_guard lock(m_mutex);
+        ++m_generation;
+        m_image = std::move(image);
+        m_light = light;
+        m_view = view;
+        m_queue.assign(presets.begin(), presets.end());
+        m_done.clear();
+    }
+    m_wake.notify_all();
+}
+
+std::vector<Thumbnail> ThumbnailRenderer::take() {
+    std::lock_guard lock(m_mutex);
+    return std::exchange(m_done, {});
+}
+
+bool ThumbnailRenderer::busy() const {
+    std::lock_guard lock(m_mutex);
+    return m_working || !m_queue.empty();
+}
+
+unsigned ThumbnailRenderer::generation() const {
+    std::lock_guard lock(m_mutex);
+    return m_generation;
+}
+
+void ThumbnailRenderer::work() {
+    std::unique_lock lock(m_mutex);
+    for (;;) {
+        m_wake.wait(lock, [&] { return m_stop || !m_queue.empty(); });
+        if (m_stop) return;
+        const std::string preset = m_queue.front();
+        m_queue.pop_front();
+        const unsigned generation = m_generation;
+        const PixelInput image = m_image;  // copies: the next request may replace them
+        const Point light = m_light;
+        const ViewSettings view = m_view;
+        m_working = true;
+        lock.unlock();
+        Thumbnail t{preset, {}, {}, generation};
+        runOnThisThread([&] {
+            ApplyOptions o;
+            o.preset = preset, o.light = light, o.fluxMode = view.fluxMode;
+            o.intensity = view.intensity;
+            auto out = applyPixels(o, image);
+            if (out)
+                t.image = toDisplay(std::move(out->image), view.curve, view.exposure);
+            else
+                t.error = out.error().message;
+        });
+        lock.lock();
+        m_working = false;
+        if (generation == m_generation) m_done.push_back(std::move(t));
+    }
+}
+
+}  // namespace flarekit::studio
