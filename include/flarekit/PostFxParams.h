@@ -290,6 +290,20 @@ inline constexpr Param<PostFxParams> kPostFxTopParams[] = {
                                          "multiplies ghosts, halo and streaks"),
 };
 
+//! Calls f(key, table, section) for each section of a preset with one struct, in the order the
+//! docs list them: the JSON reader and writer, and the studio's panel, walk the same list.
+template <class P, class F>
+void forEachPostFxSection(P& p, F&& f) {
+    f("bright", std::span<const Param<BrightParams>>(kBrightParams), p.bright);
+    f("bloom", std::span<const Param<BloomParams>>(kBloomParams), p.bloom);
+    f("halo", std::span<const Param<HaloParams>>(kHaloParams), p.halo);
+    f("streaks", std::span<const Param<StreakParams>>(kStreakParams), p.streaks);
+    f("chromatic", std::span<const Param<ChromaticParams>>(kChromaticParams), p.chromatic);
+    f("starburst", std::span<const Param<StarburstParams>>(kStarburstParams), p.starburst);
+    f("dirt", std::span<const Param<DirtParams>>(kDirtParams), p.dirt);
+    f("tonemap", std::span<const Param<ToneParams>>(kToneParams), p.tone);
+}
+
 //! Every field against the tables above, plus at most kMaxGhosts ghosts of |scale| >= 0.05:
 //! the one check of JSON presets and of params built in code ("bloom.levels: expected ...").
 Status validatePostFxParams(const PostFxParams& params);
@@ -307,6 +321,9 @@ PostFxParams fitToFrame(const PostFxParams& params, const Image& input);
 
 //! Parses and validates a preset; messages read "source: field: expected ..., got ...".
 Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::string& source);
+//! The preset as JSON that parsePostFxPreset reads back to the same params: each section's keys
+//! that differ from their defaults, and every ghost (a ghost_series is written as its ghosts).
+std::string postFxPresetToJson(const PostFxParams& params);
 //! A shipped name (presets/postfx/NAME.json) or a path to a .json file.
 Result<PostFxParams> loadPostFxPreset(const std::string& nameOrPath);
 std::vector<std::string> shippedPostFxPresetNames();

@@ -127,7 +127,12 @@ JobMemory postFxMemory(const PostFxJobOptions& a) {
 
 //! The preset with the job's overrides.
 Result<PostFxParams> jobParams(const PostFxJobOptions& a) {
-    auto params = loadPostFxPreset(a.preset);
+    if (a.presetParams) {
+        if (Status s = validatePostFxParams(*a.presetParams); !s)
+            return invalidInput(a.preset + ": " + s.error().message);
+    }
+    auto params =
+        a.presetParams ? Result<PostFxParams>(*a.presetParams) : loadPostFxPreset(a.preset);
     if (!params) return params;
     if (a.tonemap) params->tone.op = *a.tonemap;
     if (a.exposure) params->tone.exposure = *a.exposure;

@@ -17,19 +17,6 @@ using json = nlohmann::json;
 
 namespace {
 
-//! The sections of a preset with one struct each, in the order the docs list them.
-template <class P, class F>
-void forEachSection(P& p, F&& f) {
-    f("bright", std::span<const Param<BrightParams>>(kBrightParams), p.bright);
-    f("bloom", std::span<const Param<BloomParams>>(kBloomParams), p.bloom);
-    f("halo", std::span<const Param<HaloParams>>(kHaloParams), p.halo);
-    f("streaks", std::span<const Param<StreakParams>>(kStreakParams), p.streaks);
-    f("chromatic", std::span<const Param<ChromaticParams>>(kChromaticParams), p.chromatic);
-    f("starburst", std::span<const Param<StarburstParams>>(kStarburstParams), p.starburst);
-    f("dirt", std::span<const Param<DirtParams>>(kDirtParams), p.dirt);
-    f("tonemap", std::span<const Param<ToneParams>>(kToneParams), p.tone);
-}
-
 Status checkGhost(const GhostParams& g, const std::string& at) {
     if (Status s = validateParams<GhostParams>(g, kGhostParams, at + "."); !s) return s;
     if (std::abs(g.scale) < kMinGhostScale) {
@@ -98,7 +85,7 @@ Status validatePostFxParams(const PostFxParams& params) {
     }
     if (Status s = validateParams<PostFxParams>(params, kPostFxTopParams, ""); !s) return s;
     Status status = Ok{};
-    forEachSection(params, [&](std::string_view section, auto table, auto& owner) {
+    forEachPostFxSection(params, [&](std::string_view section, auto table, auto& owner) {
         if (status) status = validateParams(owner, table, std::string(section) + ".");
     });
     return status;
@@ -119,7 +106,7 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
         const json& value = item.value();
         bool section = false;
         std::optional<Error> error;
-        forEachSection(p, [&](std::string_view name, auto table, auto& owner) {
+        forEachPostFxSection(p, [&](std::string_view name, auto table, auto& owner) {
             if (name != key) return;
             section = true;
             error = readParams(value, table, owner, top / key);
@@ -159,6 +146,28 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
     return p;
 }
 
+std::string postFxPresetToJson(const PostFxParams& params) {
+    // Keys in the order the reader documents them; sections without a changed key left out.
+    const PostFxParams defaults;
+    std::string text = "{\n  \"name\": " + json(params.name).dump() + ",\n";
+    if (!params.description.empty())
+        text += "  \"description\": " + json(params.description).dump() + ",\n";
+    const json top = writeParams<PostFxParams>(params, kPostFxTopParams, defaults);
+    for (const auto& [key, value] : top.items())
+        text += "  \"" + key + "\": " + value.dump() + ",\n";
+    forEachPostFxSection(params, [&](std::string_view section, auto table, const auto& owner) {
+        using Owner = std::decay_t<decltype(owner)>;
+        const json keys = writeParams<Owner>(owner, table, Owner{});
+        if (!keys.empty()) text += "  \"" + std::string(section) + "\": " + keys.dump() + ",\n";
+    });
+    text += "  \"ghosts\": [";
+    for (std::size_t i = 0; i < params.ghosts.size(); ++i)
+        text += std::string(i ? ",\n    " : "\n    ") +
+                writeParams<GhostParams>(params.ghosts[i], kGhostParams, GhostParams{}).dump();
+    text += params.ghosts.empty() ? "]\n}\n" : "\n  ]\n}\n";
+    return text;
+}
+
 std::vector<std::string> shippedPostFxPresetNames() {
     return presetNamesIn("postfx");
 }
@@ -178,7 +187,7 @@ std::string postFxParameterReference() {
     std::string out =
         "| section | key | default | range | unit | meaning |\n|---|---|---|---|---|---|\n";
     out += markdownRows<PostFxParams>(kPostFxTopParams, &defaults, lead("(top)"), none);
-    forEachSection(defaults, [&](std::string_view section, auto table, auto& owner) {
+    forEachPostFxSection(defaults, [&](std::string_view section, auto table, auto& owner) {
         out += markdownRows(table, &owner, lead(section), none);
         if (section == "bloom")
             out += markdownRows<GhostParams>(kGhostParams, &ghost, lead("ghosts[i], ghost_series"),

@@ -260,3 +260,40 @@ def test_the_browser_shows_every_preset_on_the_image(studio, tmp_path):
     # Six shipped presets, each a small copy of the sunset: warm (red over blue) in the strip.
     shown = srgb8(presets[strip])
     assert shown[..., 0].mean() > shown[..., 2].mean() + 10
+
+
+def test_post_process_presets_are_edited_saved_and_rendered_as_the_cli_does(studio, cli, tmp_path):
+    studio([{"action": "open", "path": str(SUNSET_HDR)},
+            {"action": "mode", "kind": "postfx"},
+            {"action": "load", "preset": "killzone2"},
+            {"action": "set", "section": "bloom", "key": "intensity", "value": 0.3},
+            {"action": "set", "ghost": 0, "key": "tint", "value": [1.0, 0.3, 0.2]},
+            {"action": "add_ghost"},
+            {"action": "set", "ghost": 2, "key": "scale", "value": -0.75},
+            {"action": "remove_ghost", "ghost": 1},
+            {"action": "set", "key": "flare_intensity", "value": 2},
+            {"action": "set", "section": "halo", "key": "intensity", "value": 0.2},
+            {"action": "undo"},
+            {"action": "save", "path": "post.json"},
+            {"action": "export", "path": "post.png"},
+            {"action": "export", "path": "post.exr"}])
+    saved = json.loads((tmp_path / "post.json").read_text())
+    assert saved["flare_intensity"] == 2 and saved["bloom"]["intensity"] == 0.3
+    assert "halo" not in saved  # undone
+    assert [g["scale"] for g in saved["ghosts"]] == [2.0, -0.75]
+    assert saved["ghosts"][0]["tint"] == [1.0, 0.3, 0.2]
+    cli("postfx", SUNSET_HDR, "-o", tmp_path / "cli.png", "--preset", tmp_path / "post.json")
+    cli("postfx", SUNSET_HDR, "-o", tmp_path / "cli.exr", "--preset", tmp_path / "post.json")
+    assert levels(read(tmp_path / "post.png"), read(tmp_path / "cli.png")) <= 1
+    # The CLI's EXR is half, the studio's float: equal to half precision.
+    np.testing.assert_allclose(read(tmp_path / "post.exr")[..., :3],
+                               read(tmp_path / "cli.exr")[..., :3], rtol=1e-3, atol=1e-3)
+
+
+def test_an_invalid_post_process_edit_is_not_saved(studio, tmp_path):
+    done = studio([{"action": "mode", "kind": "postfx"},
+                   {"action": "set", "ghost": 0, "key": "scale", "value": 0.01},
+                   {"action": "save", "path": "bad.json"}], ok=False)
+    assert done.returncode == 2
+    assert "not saved: ghosts[0].scale: expected |scale| >= 0.05" in done.stderr
+    assert not (tmp_path / "bad.json").exists()

@@ -105,8 +105,10 @@ TEST(StudioThumbnails, EachIsThePresetOnTheImageAndStaleOnesAreDropped) {
     const Point light{200.f, 60.f};
     ThumbnailRenderer browser;
     // The first request is replaced at once: nothing of it may arrive after the second.
-    browser.request(preview.small(), {10.f, 10.f}, doc.view, {"sun-wide", "starburst"});
-    browser.request(preview.small(), light, doc.view, {"subtle", "hexagon-ghosts"});
+    browser.request(FlareKind::Sprite, preview.small(), {10.f, 10.f}, doc.view,
+                    {"sun-wide", "starburst"});
+    browser.request(FlareKind::Sprite, preview.small(), light, doc.view,
+                    {"subtle", "hexagon-ghosts"});
     const unsigned generation = browser.generation();
     std::vector<Thumbnail> got;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);

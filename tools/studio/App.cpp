@@ -112,7 +112,9 @@ int runStudio(const StudioOptions& options) {
 }
 
 App::App(GLFWwindow* window, const StudioOptions& options)
-    : m_window(window), m_options(options), m_shipped(shippedPresetNames()) {
+    : m_window(window),
+      m_options(options),
+      m_shipped{shippedPresetNames(), shippedPostFxPresetNames()} {
     if (!options.script.empty()) m_script = loadScript(options.script).value();
 }
 
@@ -330,7 +332,9 @@ void App::updatePreview() {
                   double(m_doc.light.y), m_doc.imageVersion(), m_preview.width(),
                   double(m_doc.view.exposure), int(m_doc.view.curve), int(m_doc.view.fluxMode),
                   double(m_doc.view.intensity));
-    const std::string key = presetToJson(m_doc.renderedPreset()) + view;
+    const std::string key = (m_doc.kind == FlareKind::Sprite ? presetToJson(m_doc.renderedPreset())
+                                                             : postFxPresetToJson(m_doc.postFx())) +
+                            view;
     if (key != m_renderedKey) {
         auto frame = m_preview.render(m_doc);
         if (!frame) return say(frame.error().message, true);
@@ -361,24 +365,27 @@ void App::updatePreview() {
 
 void App::updateThumbnails() {
     for (Thumbnail& t : m_browser.take()) {
+        const std::string id = thumbId(m_browserKind, t.preset);
         if (t.image.pixels.empty()) {
-            m_presetErrors[t.preset] = t.error;
+            m_presetErrors[id] = t.error;
             continue;
         }
-        m_presetErrors.erase(t.preset);
-        m_presetThumbs[t.preset].upload(t.image);
+        m_presetErrors.erase(id);
+        m_presetThumbs[id].upload(t.image);
     }
     if (!m_doc.hasImage() || m_dragging || m_preview.small().image.empty()) return;
     // Made again when the image, the light or the view changes, once it stops changing.
     char key[160];
-    std::snprintf(key, sizeof key, "%u|%.2f,%.2f|%g|%d|%d|%g", m_doc.imageVersion(),
-                  double(m_doc.light.x), double(m_doc.light.y), double(m_doc.view.exposure),
-                  int(m_doc.view.curve), int(m_doc.view.fluxMode), double(m_doc.view.intensity));
+    std::snprintf(key, sizeof key, "%d|%u|%.2f,%.2f|%g|%d|%d|%g", int(m_doc.kind),
+                  m_doc.imageVersion(), double(m_doc.light.x), double(m_doc.light.y),
+                  double(m_doc.view.exposure), int(m_doc.view.curve), int(m_doc.view.fluxMode),
+                  double(m_doc.view.intensity));
     if (key == m_browserKey) return;
     m_browserKey = key;
     const double s = m_preview.smallScale();
-    m_browser.request(m_preview.small(), {float(m_doc.light.x * s), float(m_doc.light.y * s)},
-                      m_doc.view, m_shipped);
+    m_browserKind = m_doc.kind;
+    m_browser.request(m_doc.kind, m_preview.small(),
+                      {float(m_doc.light.x * s), float(m_doc.light.y * s)}, m_doc.view, shipped());
 }
 
 Status App::writeScreenshot(const std::string& path) {

@@ -60,6 +60,7 @@ class App {
     void drawMenu();
     void drawPresetPanel(float x, float y, float w, float h);
     void drawElementList();
+    void drawPostFxPanel();
     void drawViewPanel(float x, float y, float w, float h);
     void drawComponents(float x, float y, float w, float h);
     void drawBrowser(float h);
@@ -90,7 +91,12 @@ class App {
     std::string m_browserKey;
     std::string m_panel = "components";  //!< the bottom strip's tab: components or presets
     bool m_panelChanged = false;
-    std::vector<std::string> m_shipped;
+    std::vector<std::string> m_shipped[2];  //!< the shipped presets of each FlareKind
+    const std::vector<std::string>& shipped() const { return m_shipped[int(m_doc.kind)]; }
+    static std::string thumbId(FlareKind kind, const std::string& name) {
+        return std::string(kFlareKindNames[int(kind)]) + "/" + name;
+    }
+    FlareKind m_browserKind = FlareKind::Sprite;  //!< of the thumbnails being made
 
     // What the shown preview was made from: a new render when any of it changes.
     std::string m_renderedKey, m_componentsKey;

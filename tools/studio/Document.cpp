@@ -9,6 +9,7 @@
 #include "flarekit/ImageIO.h"
 #include "flarekit/Tonemap.h"
 #include "flarekit/job/Job.h"
+#include "flarekit/job/PixelJob.h"
 
 namespace flarekit::studio {
 
@@ -33,13 +34,42 @@ Document::Document() {
     auto preset = flarekit::loadPreset(kDefaultSpritePreset);
     if (preset) {
         m_preset = *preset;
+        m_presetPath[0] = kDefaultSpritePreset;
     } else {  // no shipped presets found: one glow, so that there is something to edit
         m_preset.name = "untitled";
         m_preset.elements.push_back(defaultElement(ElementType::Glow));
     }
-    m_committed = m_preset;
-    m_savedJson = presetToJson(m_preset);
-    m_presetPath = preset ? kDefaultSpritePreset : "";
+    auto post = loadPostFxPreset(kDefaultPostFxPreset);
+    if (post) {
+        m_post = *post;
+        m_presetPath[1] = kDefaultPostFxPreset;
+    }
+    m_committed = design();
+    m_savedJson[0] = presetToJson(m_preset);
+    m_savedJson[1] = postFxPresetToJson(m_post);
+}
+
+std::string Document::designText(const Design& d) const {
+    return presetToJson(d.sprite) + postFxPresetToJson(d.post);
+}
+
+std::string Document::currentJson() const {
+    return kind == FlareKind::Sprite ? presetToJson(m_preset) : postFxPresetToJson(m_post);
+}
+
+void Document::restore(const Design& d) {
+    m_preset = d.sprite;
+    m_post = d.post;
+    m_committed = d;
+    clampSelection();
+}
+
+std::string Document::presetName() const {
+    return kind == FlareKind::Sprite ? m_preset.name : m_post.name;
+}
+
+std::vector<std::string> Document::shippedNames() const {
+    return kind == FlareKind::Sprite ? shippedPresetNames() : shippedPostFxPresetNames();
 }
 
 Status Document::openImage(const std::string& path) {
@@ -62,38 +92,68 @@ Status Document::openImage(const std::string& path) {
 }
 
 Status Document::loadPreset(const std::string& nameOrPath) {
-    auto preset = flarekit::loadPreset(nameOrPath);
-    if (!preset) return preset.error();
     commit();
-    m_undo.push_back(m_preset);
+    const Design before = design();
+    if (kind == FlareKind::Sprite) {
+        auto preset = flarekit::loadPreset(nameOrPath);
+        if (!preset) return preset.error();
+        m_preset = *preset;
+        solo = -1;
+    } else {
+        auto post = loadPostFxPreset(nameOrPath);
+        if (!post) return post.error();
+        m_post = *post;
+    }
+    m_undo.push_back(before);
     m_redo.clear();
-    m_preset = *preset;
-    m_committed = m_preset;
-    m_savedJson = presetToJson(m_preset);
-    m_presetPath = nameOrPath;
-    solo = -1;
+    m_committed = design();
+    m_savedJson[int(kind)] = currentJson();
+    m_presetPath[int(kind)] = nameOrPath;
     clampSelection();
     return Ok{};
 }
 
 Status Document::savePreset(const std::string& path) {
     commit();
-    const std::string text = presetToJson(m_preset);
+    // Never a file the CLI would refuse: the edits are checked as the reader checks them.
+    const Status valid =
+        kind == FlareKind::Sprite ? validatePreset(m_preset) : validatePostFxParams(m_post);
+    if (!valid) return invalidInput(path + ": not saved: " + valid.error().message);
+    const std::string text = currentJson();
     if (Status s = writeFileSafely(path, text); !s) return s;
-    m_savedJson = text;
-    m_presetPath = path;
+    m_savedJson[int(kind)] = text;
+    m_presetPath[int(kind)] = path;
     return Ok{};
 }
 
 ApplyOptions Document::applyOptions(double scale, const std::string& output) const {
     ApplyOptions o;
-    o.preset = m_presetPath.empty() ? "preset" : m_presetPath;
+    o.preset = m_presetPath[0].empty() ? "preset" : m_presetPath[0];
     o.output = output;
     o.light = Point{float(light.x * scale), float(light.y * scale)};
     o.fluxMode = view.fluxMode;
     o.intensity = view.intensity;
     o.exposure = view.exposure;
     o.tonemap = view.curve;
+    return o;
+}
+
+PostFxJobOptions postFxDisplayOptions(const PostFxParams& preset, const ViewSettings& view,
+                                      const std::string& name) {
+    PostFxJobOptions o;
+    o.preset = name;
+    o.presetParams = std::make_shared<const PostFxParams>(preset);
+    o.tonemap = preset.tone.op != ToneOperator::None ? preset.tone.op : view.curve;
+    o.exposure = preset.tone.exposure * view.exposure;
+    return o;
+}
+
+PostFxJobOptions Document::postFxOptions(bool display) const {
+    const std::string name = m_presetPath[1].empty() ? "postfx preset" : m_presetPath[1];
+    if (display) return postFxDisplayOptions(m_post, view, name);
+    PostFxJobOptions o;
+    o.preset = name;
+    o.presetParams = std::make_shared<const PostFxParams>(m_post);
     return o;
 }
 
@@ -104,11 +164,16 @@ Status Document::exportRender(const std::string& path, SampleFormat depth) const
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (depth == SampleFormat::Auto && ext == ".exr") depth = SampleFormat::Float;
     if (Status s = checkSampleFormatFits(path, depth); !s) return s;
-    const SampleFormat format = outputSampleFormat(path, depth);
-    ApplyOptions o = applyOptions(1.0, path);
-    if (isFloatFormat(format)) o.exposure = 1.f, o.tonemap = ToneOperator::None;
+    const bool display = !isFloatFormat(outputSampleFormat(path, depth));
     if (Status s = checkOutputPath(path); !s) return s;
-    auto out = applyPixels(o, renderedPreset(), m_source);
+    Result<PixelOutput> out = invalidInput("");
+    if (kind == FlareKind::Sprite) {
+        ApplyOptions o = applyOptions(1.0, path);
+        if (!display) o.exposure = 1.f, o.tonemap = ToneOperator::None;
+        out = applyPixels(o, renderedPreset(), m_source);
+    } else {
+        out = postFxPixels(postFxOptions(display), m_source);
+    }
     if (!out) return out.error();
     WriteOptions w;
     w.alpha = m_source.hasAlpha;
@@ -128,6 +193,40 @@ Status Document::setElementParam(int element, const std::string& key, const Para
 
 Status Document::setPresetParam(const std::string& key, const ParamValue& value) {
     return setByKey<Preset>(kPresetParams, m_preset, key, value, ~0u, "");
+}
+
+Status Document::setPostFxParam(const std::string& section, const std::string& key,
+                                const ParamValue& value) {
+    if (section.empty())
+        return setByKey<PostFxParams>(kPostFxTopParams, m_post, key, value, ~0u, "");
+    Status status = invalidInput(section +
+                                 ": unknown section (expected one of: bright, bloom, "
+                                 "halo, streaks, chromatic, starburst, dirt, tonemap)");
+    forEachPostFxSection(m_post, [&](std::string_view name, auto table, auto& owner) {
+        using Owner = std::decay_t<decltype(owner)>;
+        if (name == section) status = setByKey<Owner>(table, owner, key, value, ~0u, section + ".");
+    });
+    return status;
+}
+
+Status Document::setGhostParam(int ghost, const std::string& key, const ParamValue& value) {
+    if (ghost < 0 || ghost >= int(m_post.ghosts.size()))
+        return invalidInput("ghost " + std::to_string(ghost) + ": the preset has " +
+                            std::to_string(m_post.ghosts.size()) + " ghosts");
+    return setByKey<GhostParams>(kGhostParams, m_post.ghosts[std::size_t(ghost)], key, value, ~0u,
+                                 "ghosts[" + std::to_string(ghost) + "].");
+}
+
+void Document::addGhost() {
+    if (m_post.ghosts.size() >= std::size_t(kMaxGhosts)) return;
+    m_post.ghosts.push_back(m_post.ghosts.empty() ? GhostParams{} : m_post.ghosts.back());
+    commit();
+}
+
+void Document::removeGhost(int ghost) {
+    if (ghost < 0 || ghost >= int(m_post.ghosts.size())) return;
+    m_post.ghosts.erase(m_post.ghosts.begin() + ghost);
+    commit();
 }
 
 void Document::addElement(ElementType type) {
@@ -177,39 +276,35 @@ void Document::setVisible(int element, bool visible) {
 }
 
 bool Document::changedSinceCommit() const {
-    return presetToJson(m_preset) != presetToJson(m_committed);
+    return designText(design()) != designText(m_committed);
 }
 
 void Document::commit() {
     if (!changedSinceCommit()) return;
     m_undo.push_back(m_committed);
     m_redo.clear();
-    m_committed = m_preset;
+    m_committed = design();
 }
 
 bool Document::undo() {
     commit();
     if (m_undo.empty()) return false;
-    m_redo.push_back(m_preset);
-    m_preset = m_undo.back();
+    m_redo.push_back(design());
+    restore(m_undo.back());
     m_undo.pop_back();
-    m_committed = m_preset;
-    clampSelection();
     return true;
 }
 
 bool Document::redo() {
     if (m_redo.empty()) return false;
-    m_undo.push_back(m_preset);
-    m_preset = m_redo.back();
+    m_undo.push_back(design());
+    restore(m_redo.back());
     m_redo.pop_back();
-    m_committed = m_preset;
-    clampSelection();
     return true;
 }
 
 bool Document::isDirty() const {
-    return presetToJson(m_preset) != m_savedJson;
+    return currentJson() != m_savedJson[int(kind)];
 }
 
 Preset Document::renderedPreset() const {

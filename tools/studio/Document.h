@@ -13,8 +13,14 @@
 #include "flarekit/Result.h"
 #include "flarekit/job/ApplyJob.h"
 #include "flarekit/job/PixelJob.h"
+#include "flarekit/job/PostFxJob.h"
 
 namespace flarekit::studio {
+
+//! Which flare the studio shows and edits: a sprite preset (`flarekit apply`) or a post-process
+//! preset (`flarekit postfx`). Both are kept; switching is not an edit.
+enum class FlareKind { Sprite, PostFx };
+inline constexpr std::string_view kFlareKindNames[] = {"sprite", "postfx"};
 
 //! How the image is shown (and how 8/16-bit exports are encoded); not part of the preset.
 struct ViewSettings {
@@ -35,6 +41,12 @@ inline constexpr Param<ViewSettings> kViewParams[] = {
     param<&ViewSettings::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
 };
 
+//! The postfx job's options for `preset` on a display (the view, a thumbnail, an 8/16-bit file):
+//! the preset's curve, else the view's (filmic for HDR by default, as the CLI writes an 8-bit
+//! file), and the view's exposure on top of the preset's.
+PostFxJobOptions postFxDisplayOptions(const PostFxParams& preset, const ViewSettings& view,
+                                      const std::string& name);
+
 class Document {
   public:
     Document();
@@ -42,11 +54,16 @@ class Document {
     //! Reads an image as `flarekit apply` does and places the light on the brightest light
     //! the finder accepts (else two thirds across, a quarter down). The preset is kept.
     Status openImage(const std::string& path);
-    //! A shipped preset by name or a JSON file, replacing the preset (undoable). Callers ask
-    //! first when isDirty().
+    //! A shipped preset of the current kind by name or a JSON file, replacing that preset
+    //! (undoable). Callers ask first when isDirty().
     Status loadPreset(const std::string& nameOrPath);
-    //! The preset as the CLI reads it (presetToJson), written atomically; clears isDirty().
+    //! The current kind's preset as the CLI reads it (presetToJson, postFxPresetToJson), written
+    //! atomically; clears isDirty().
     Status savePreset(const std::string& path);
+    FlareKind kind = FlareKind::Sprite;
+    //! The current kind's preset name, and the shipped presets of that kind.
+    std::string presetName() const;
+    std::vector<std::string> shippedNames() const;
     //! The flare at the image's full size, in `depth` (Auto: float for EXR, the extension's
     //! default otherwise). Float and half files get linear values (no exposure or curve), 8/16-bit
     //! files the view's exposure and curve, as the CLI writes them.
@@ -58,6 +75,14 @@ class Document {
     const Preset& preset() const { return m_preset; }
     Status setElementParam(int element, const std::string& key, const ParamValue& value);
     Status setPresetParam(const std::string& key, const ParamValue& value);
+    // The post-process preset's edits: a section's key (bloom.levels), a ghost's, a top key.
+    PostFxParams& postFx() { return m_post; }
+    const PostFxParams& postFx() const { return m_post; }
+    Status setPostFxParam(const std::string& section, const std::string& key,
+                          const ParamValue& value);
+    Status setGhostParam(int ghost, const std::string& key, const ParamValue& value);
+    void addGhost();  //!< a copy of the last ghost (or a default one), at the end
+    void removeGhost(int ghost);
     void addElement(ElementType type);  //!< after the selection, selected
     void duplicateElement(int element);
     void removeElement(int element);  //!< the last element cannot go (a preset needs one)
@@ -70,7 +95,7 @@ class Document {
     bool redo();
     bool canUndo() const { return !m_undo.empty() || changedSinceCommit(); }
     bool canRedo() const { return !m_redo.empty(); }
-    //! The preset differs from the last one saved or loaded.
+    //! The current kind's preset differs from the last one saved or loaded.
     bool isDirty() const;
 
     //! What is drawn: the preset with the soloed element alone, when one is.
@@ -84,21 +109,35 @@ class Document {
     const std::string& imagePath() const { return m_imagePath; }
     //! Changes each time an image is opened (previews made from the old one are stale).
     unsigned imageVersion() const { return m_imageVersion; }
-    const std::string& presetPath() const { return m_presetPath; }
+    const std::string& presetPath() const { return m_presetPath[int(kind)]; }
     Point light{0, 0};
     ViewSettings view;
     //! The apply job's options for this document (light, flux, view) at `scale` x the image.
     ApplyOptions applyOptions(double scale, const std::string& output = "") const;
+    //! The postfx job's options: the preset in memory, and for a display (an 8/16-bit file or
+    //! the view) the view's curve when the preset has none and its exposure on the preset's.
+    PostFxJobOptions postFxOptions(bool display) const;
 
   private:
+    //! Both presets: what an undo step restores.
+    struct Design {
+        Preset sprite;
+        PostFxParams post;
+    };
+    Design design() const { return {m_preset, m_post}; }
+    void restore(const Design& d);
+    std::string designText(const Design& d) const;
+    std::string currentJson() const;
     bool changedSinceCommit() const;
     void clampSelection();
     PixelInput m_source;
     unsigned m_imageVersion = 0;
-    std::string m_imagePath, m_presetPath;
-    Preset m_preset, m_committed;
-    std::string m_savedJson;
-    std::vector<Preset> m_undo, m_redo;
+    std::string m_imagePath;
+    Preset m_preset;
+    PostFxParams m_post;
+    Design m_committed;
+    std::string m_presetPath[2], m_savedJson[2];  //!< per FlareKind
+    std::vector<Design> m_undo, m_redo;
 };
 
 }  // namespace flarekit::studio

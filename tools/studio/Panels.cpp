@@ -83,7 +83,7 @@ void App::drawMenu() {
         ImGui::EndMenu();
     }
     const std::string title =
-        m_doc.preset().name + (m_doc.isDirty() ? " *" : "") + "   " + m_doc.imagePath();
+        m_doc.presetName() + (m_doc.isDirty() ? " *" : "") + "   " + m_doc.imagePath();
     ImGui::TextDisabled("%s", title.c_str());
     ImGui::EndMainMenuBar();
 }
@@ -107,13 +107,23 @@ void App::drawPresetPanel(float x, float y, float w, float h) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(w, h));
     ImGui::Begin("Preset", nullptr, kFixed);
-    if (ImGui::BeginCombo("preset", m_doc.preset().name.c_str())) {
-        for (const std::string& name : m_shipped)
+    int kind = int(m_doc.kind);
+    ImGui::RadioButton("sprite (apply)", &kind, int(FlareKind::Sprite));
+    ImGui::SameLine();
+    ImGui::RadioButton("post-process (postfx)", &kind, int(FlareKind::PostFx));
+    m_doc.kind = FlareKind(kind);
+    if (ImGui::BeginCombo("preset", m_doc.presetName().c_str())) {
+        for (const std::string& name : shipped())
             if (ImGui::Selectable(name.c_str())) choosePreset(name);
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the shipped presets; unsaved edits are never dropped without asking");
+    if (m_doc.kind == FlareKind::PostFx) {
+        drawPostFxPanel();
+        ImGui::End();
+        return;
+    }
     paramTable<Preset>(kPresetParams, m_doc.preset(), Preset{});
     ImGui::Separator();
     drawElementList();
@@ -127,6 +137,47 @@ void App::drawPresetPanel(float x, float y, float w, float h) {
         ImGui::PopItemWidth();
     }
     ImGui::End();
+}
+
+void App::drawPostFxPanel() {
+    PostFxParams& post = m_doc.postFx();
+    ImGui::PushItemWidth(-130);
+    paramTable<PostFxParams>(kPostFxTopParams, post, PostFxParams{});
+    ImGui::BeginChild("sections");
+    // One header per section of the preset, its keys from the section's table.
+    forEachPostFxSection(post, [&](std::string_view name, auto table, auto& owner) {
+        using Owner = std::decay_t<decltype(owner)>;
+        const std::string label(name);
+        if (!ImGui::CollapsingHeader(label.c_str(), name == "bright" || name == "bloom"
+                                                        ? ImGuiTreeNodeFlags_DefaultOpen
+                                                        : 0))
+            return;
+        ImGui::PushID(label.c_str());
+        paramTable<Owner>(table, owner, Owner{});
+        ImGui::PopID();
+    });
+    const std::string ghosts = "ghosts (" + std::to_string(post.ghosts.size()) + ")";
+    if (ImGui::CollapsingHeader(ghosts.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+        int remove = -1;
+        for (std::size_t i = 0; i < post.ghosts.size(); ++i) {
+            GhostParams& g = post.ghosts[i];
+            ImGui::PushID(int(i));
+            char title[64];
+            std::snprintf(title, sizeof title, "ghost %zu: scale %.3g", i, double(g.scale));
+            const bool open = ImGui::TreeNode("ghost", "%s", title);
+            ImGui::SameLine();
+            if (ImGui::SmallButton("Remove")) remove = int(i);
+            if (open) {
+                paramTable<GhostParams>(kGhostParams, g, GhostParams{});
+                ImGui::TreePop();
+            }
+            ImGui::PopID();
+        }
+        if (remove >= 0) m_doc.removeGhost(remove);
+        if (ImGui::Button("Add ghost")) m_doc.addGhost();
+    }
+    ImGui::EndChild();
+    ImGui::PopItemWidth();
 }
 
 void App::drawElementList() {
@@ -192,9 +243,15 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     ImGui::Begin("View", nullptr,
                  kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PushItemWidth(120);
+    // A post-process flare comes from the image's own highlights: the light and its flux do
+    // not apply (shown disabled, so that the view keeps its place).
+    const bool postFx = m_doc.kind == FlareKind::PostFx;
     for (const Param<ViewSettings>& p : kViewParams) {
+        const bool lightOnly = p.key == "flux_mode" || p.key == "intensity";
         ImGui::PushID(p.key.data());
+        ImGui::BeginDisabled(postFx && lightOnly);
         paramWidget(p, m_doc.view, ViewSettings{});
+        ImGui::EndDisabled();
         ImGui::PopID();
         ImGui::SameLine();
     }
@@ -203,8 +260,10 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     // The light typed in exactly (the pointer places it to the nearest screen pixel).
     float light[2] = {m_doc.light.x, m_doc.light.y};
     ImGui::SetNextItemWidth(200);
+    ImGui::BeginDisabled(postFx);
     if (ImGui::DragFloat2("light (image pixels)", light, 1.f, -1e5f, 1e5f, "%.1f"))
         m_doc.light = {light[0], light[1]};
+    ImGui::EndDisabled();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -223,7 +282,7 @@ void App::drawViewPanel(float x, float y, float w, float h) {
                   float(img.width()),
                   float(img.height())};
         m_viewMaxW = int(m_view.w), m_viewMaxH = int(m_view.h);
-        if (ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
+        if (!postFx && ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
             const ImVec2 m = ImGui::GetIO().MousePos;
             m_doc.light = m_view.toImage(m.x, m.y);
             m_dragging = true;
@@ -243,9 +302,11 @@ void App::drawViewPanel(float x, float y, float w, float h) {
         draw->AddRect(p0, p1, IM_COL32(90, 90, 96, 255));
         float lx = 0, ly = 0;
         m_view.toWindow(m_doc.light, lx, ly);
-        draw->AddCircle(ImVec2(lx, ly), 9.f, IM_COL32(255, 220, 80, 230), 24, 1.5f);
-        draw->AddLine(ImVec2(lx - 14, ly), ImVec2(lx + 14, ly), IM_COL32(255, 220, 80, 230));
-        draw->AddLine(ImVec2(lx, ly - 14), ImVec2(lx, ly + 14), IM_COL32(255, 220, 80, 230));
+        if (!postFx) {
+            draw->AddCircle(ImVec2(lx, ly), 9.f, IM_COL32(255, 220, 80, 230), 24, 1.5f);
+            draw->AddLine(ImVec2(lx - 14, ly), ImVec2(lx + 14, ly), IM_COL32(255, 220, 80, 230));
+            draw->AddLine(ImVec2(lx, ly - 14), ImVec2(lx, ly + 14), IM_COL32(255, 220, 80, 230));
+        }
     } else {
         draw->AddText(ImVec2(origin.x + 20, origin.y + 20), IM_COL32(200, 200, 200, 255),
                       "File > Open image (or drop an image here) to design a flare on it");
@@ -303,15 +364,15 @@ void App::drawComponentStrip(float h) {
 
 void App::drawBrowser(float h) {
     const float tall = stripPictureHeight(h) - 6.f;  // the buttons' frame
-    for (const std::string& name : m_shipped) {
+    for (const std::string& name : shipped()) {
         ImGui::BeginGroup();
         ImGui::PushID(name.c_str());
-        const auto it = m_presetThumbs.find(name);
+        const auto it = m_presetThumbs.find(thumbId(m_doc.kind, name));
         const bool ready = it != m_presetThumbs.end();
         const float wide =
             ready ? tall * float(it->second.width()) / float(std::max(1, it->second.height()))
                   : tall * 16.f / 9.f;
-        const auto error = m_presetErrors.find(name);
+        const auto error = m_presetErrors.find(thumbId(m_doc.kind, name));
         const bool clicked =
             ready ? ImGui::ImageButton(it->second.id(), ImVec2(wide, tall), ImVec2(0, 0),
                                        ImVec2(1, 1), 2)
@@ -324,7 +385,7 @@ void App::drawBrowser(float h) {
             ImGui::SetTooltip("%s", tip.c_str());
         }
         if (clicked) choosePreset(name);
-        const bool current = name == m_doc.preset().name;
+        const bool current = name == m_doc.presetName();
         ImGui::TextColored(current ? ImVec4(1.f, 0.8f, 0.3f, 1.f) : ImVec4(0.9f, 0.9f, 0.9f, 1.f),
                            "%s", name.c_str());
         ImGui::PopID();
@@ -343,7 +404,7 @@ void App::drawQuestion() {
         ImGui::EndPopup();
         return;
     }
-    ImGui::Text("The preset \"%s\" has unsaved edits.", m_doc.preset().name.c_str());
+    ImGui::Text("The preset \"%s\" has unsaved edits.", m_doc.presetName().c_str());
     ImGui::Text("Load %s and lose them?", m_pendingPreset->c_str());
     if (ImGui::Button("Save first...")) {
         const std::string next = *m_pendingPreset;

@@ -85,16 +85,28 @@ Result<PreviewFrame> Preview::renderAt(const Document& doc, const PixelInput& im
                                        bool layers) const {
     if (image.image.empty()) return invalidInput("no image is open");
     const auto start = std::chrono::steady_clock::now();
-    // The view's curve is applied here, so that the passes are shown through it too.
-    ApplyOptions o = doc.applyOptions(scale);
-    o.exposure = 1.f, o.tonemap = ToneOperator::None;
-    auto out = applyPixels(o, doc.renderedPreset(), image, {}, layers);
-    if (!out) return out.error();
     PreviewFrame frame;
-    if (!layers) frame.after = toDisplay(std::move(out->image), doc.view.curve, doc.view.exposure);
-    for (auto& [name, pass] : out->layers)
-        frame.layers.emplace_back(name,
-                                  toDisplay(std::move(pass), doc.view.curve, doc.view.exposure));
+    if (doc.kind == FlareKind::PostFx) {
+        // The chain applies the display curve itself (the preset's, else the view's); its
+        // passes are linear and shown through the same curve.
+        const PostFxJobOptions o = doc.postFxOptions(true);
+        auto out = postFxPixels(o, image, {}, layers);
+        if (!out) return out.error();
+        if (!layers) frame.after = toDisplay(std::move(out->image), ToneOperator::None, 1.f);
+        for (auto& [name, pass] : out->layers)
+            frame.layers.emplace_back(name, toDisplay(std::move(pass), *o.tonemap, *o.exposure));
+    } else {
+        // The view's curve is applied here, so that the passes are shown through it too.
+        ApplyOptions o = doc.applyOptions(scale);
+        o.exposure = 1.f, o.tonemap = ToneOperator::None;
+        auto out = applyPixels(o, doc.renderedPreset(), image, {}, layers);
+        if (!out) return out.error();
+        if (!layers)
+            frame.after = toDisplay(std::move(out->image), doc.view.curve, doc.view.exposure);
+        for (auto& [name, pass] : out->layers)
+            frame.layers.emplace_back(
+                name, toDisplay(std::move(pass), doc.view.curve, doc.view.exposure));
+    }
     frame.renderMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return frame;

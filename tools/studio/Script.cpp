@@ -7,6 +7,7 @@
 #include "core/JsonText.h"
 #include "core/ParamJson.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/PostFxParams.h"
 
 namespace flarekit::studio {
 
@@ -17,7 +18,7 @@ using nlohmann::json;
 //! An action's kind, its fields (required first, `?` marks an optional one) and what it does.
 struct ActionSpec {
     std::string_view kind;
-    std::array<std::string_view, 4> fields;
+    std::array<std::string_view, 5> fields;
     std::string_view help;
 };
 
@@ -33,9 +34,16 @@ constexpr ActionSpec kActions[] = {
      {"from", "to", "?frames"},
      "drags the light with the pointer from [x, y] to [x, y] (image pixels) over `frames` "
      "frames (default 8), drawing each"},
+    {"mode",
+     {"kind"},
+     "edits and shows the sprite preset (\"sprite\", `flarekit apply`) or the post-process "
+     "preset (\"postfx\", `flarekit postfx`)"},
     {"set",
-     {"key", "value", "?element"},
-     "sets a parameter of element `element` (docs/presets.md), or of the preset without it"},
+     {"key", "value", "?element", "?section", "?ghost"},
+     "sets a parameter: of element `element` (sprite, docs/presets.md), of a post-process "
+     "`section` (bloom, ...) or `ghost` (docs/postfx.md), or of the preset without them"},
+    {"add_ghost", {}, "post-process: adds a copy of the last ghost"},
+    {"remove_ghost", {"ghost"}, "post-process: removes a ghost"},
     {"view", {"key", "value"}, "sets a view setting: exposure, tonemap, flux_mode, intensity"},
     {"select", {"element"}, "selects an element for the parameter panel"},
     {"hide", {"element"}, "switches an element off (its `visible` becomes false)"},
@@ -192,6 +200,66 @@ Status runDocumentAction(Document& doc, const Action& a) {
         doc.light = {at[0].get<float>(), at[1].get<float>()};
         return Ok{};
     }
+    if (k == "mode") {
+        const json& v = a.args["kind"];
+        for (std::size_t i = 0; i < std::size(kFlareKindNames); ++i)
+            if (v.is_string() && v.get<std::string>() == kFlareKindNames[i]) {
+                doc.kind = FlareKind(i);
+                return Ok{};
+            }
+        return failAt(a, "kind: expected \"sprite\" or \"postfx\", got " + jsonExcerpt(v));
+    }
+    if (k == "add_ghost") {
+        if (doc.postFx().ghosts.size() >= std::size_t(kMaxGhosts))
+            return failAt(
+                a, "the preset has the most ghosts it may (" + std::to_string(kMaxGhosts) + ")");
+        doc.addGhost();
+        return Ok{};
+    }
+    if (k == "remove_ghost" || (k == "set" && a.args.contains("ghost"))) {
+        const json& v = a.args["ghost"];
+        const int n = int(doc.postFx().ghosts.size());
+        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= n)
+            return failAt(a, "ghost: expected a ghost index in [0, " + std::to_string(n - 1) +
+                                 "], got " + jsonExcerpt(v));
+        const int g = int(v.get<long long>());
+        if (k == "remove_ghost") {
+            doc.removeGhost(g);
+            return Ok{};
+        }
+        auto value = valueOf<GhostParams>(kGhostParams, a, ~0u, "a ghost");
+        if (!value) return value.error();
+        Status s = doc.setGhostParam(g, a.args["key"].get<std::string>(), *value);
+        doc.commit();
+        return withWhere(s);
+    }
+    if (k == "set" && a.args.contains("section")) {
+        const std::string section =
+            a.args["section"].is_string() ? a.args["section"].get<std::string>() : "";
+        Status s = failAt(a,
+                          "section: expected one of bright, bloom, halo, streaks, chromatic, "
+                          "starburst, dirt, tonemap, got " +
+                              jsonExcerpt(a.args["section"]));
+        forEachPostFxSection(doc.postFx(), [&](std::string_view name, auto table, auto& owner) {
+            using Owner = std::decay_t<decltype(owner)>;
+            if (name != section) return;
+            auto value = valueOf<Owner>(table, a, ~0u, "the " + section + " section");
+            if (!value) {
+                s = value.error();
+                return;
+            }
+            s = withWhere(doc.setPostFxParam(section, a.args["key"].get<std::string>(), *value));
+        });
+        doc.commit();
+        return s;
+    }
+    if (k == "set" && doc.kind == FlareKind::PostFx && !a.args.contains("element")) {
+        auto v = valueOf<PostFxParams>(kPostFxTopParams, a, ~0u, "the post-process preset");
+        if (!v) return v.error();
+        Status s = doc.setPostFxParam("", a.args["key"].get<std::string>(), *v);
+        doc.commit();
+        return withWhere(s);
+    }
     if (k == "set") {
         if (!a.args.contains("element")) {
             auto v = valueOf<Preset>(kPresetParams, a, ~0u, "the preset");
@@ -250,12 +318,19 @@ std::string scriptReference() {
         std::string fields;
         for (std::string_view f : s.fields) {
             if (f.empty()) continue;
-            fields += (fields.empty() ? std::string() : std::string(", ")) +
-                      (f[0] == '?' ? std::string("`") + std::string(f.substr(1)) + "` (optional)"
-                                   : std::string("`") + std::string(f) + "`");
+            if (!fields.empty()) fields += ", ";
+            const bool optional = f[0] == '?';
+            fields += '`';
+            fields += optional ? f.substr(1) : f;
+            fields += optional ? "` (optional)" : "`";
         }
-        out += std::string("| `") + std::string(s.kind) + "` | " + fields + " | " +
-               std::string(s.help) + " |\n";
+        out += "| `";
+        out += s.kind;
+        out += "` | ";
+        out += fields;
+        out += " | ";
+        out += s.help;
+        out += " |\n";
     }
     return out;
 }

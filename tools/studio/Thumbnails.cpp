@@ -18,11 +18,12 @@ ThumbnailRenderer::~ThumbnailRenderer() {
     m_thread.join();
 }
 
-void ThumbnailRenderer::request(PixelInput image, Point light, ViewSettings view,
+void ThumbnailRenderer::request(FlareKind kind, PixelInput image, Point light, ViewSettings view,
                                 std::vector<std::string> presets) {
     {
         std::lock_guard lock(m_mutex);
         ++m_generation;
+        m_kind = kind;
         m_image = std::move(image);
         m_light = light;
         m_view = view;
@@ -58,10 +59,24 @@ void ThumbnailRenderer::work() {
         const PixelInput image = m_image;  // copies: the next request may replace them
         const Point light = m_light;
         const ViewSettings view = m_view;
+        const FlareKind kind = m_kind;
         m_working = true;
         lock.unlock();
         Thumbnail t{preset, {}, {}, generation};
         runOnThisThread([&] {
+            if (kind == FlareKind::PostFx) {
+                auto params = loadPostFxPreset(preset);
+                if (!params) {
+                    t.error = params.error().message;
+                    return;
+                }
+                auto out = postFxPixels(postFxDisplayOptions(*params, view, preset), image);
+                if (out)
+                    t.image = toDisplay(std::move(out->image), ToneOperator::None, 1.f);
+                else
+                    t.error = out.error().message;
+                return;
+            }
             ApplyOptions o;
             o.preset = preset, o.light = light, o.fluxMode = view.fluxMode;
             o.intensity = view.intensity;

@@ -35,7 +35,7 @@ class ThumbnailRenderer {
 
     //! Renders `presets` on `image` (already small) with the light at `light` (its pixels),
     //! through `view`; returns at once. Earlier requests become stale.
-    void request(PixelInput image, Point light, ViewSettings view,
+    void request(FlareKind kind, PixelInput image, Point light, ViewSettings view,
                  std::vector<std::string> presets);
     //! The thumbnails finished since the last call, of the newest request only.
     std::vector<Thumbnail> take();
@@ -49,6 +49,7 @@ class ThumbnailRenderer {
     std::condition_variable m_wake;
     bool m_stop = false;
     unsigned m_generation = 0;
+    FlareKind m_kind = FlareKind::Sprite;
     PixelInput m_image;
     Point m_light;
     ViewSettings m_view;

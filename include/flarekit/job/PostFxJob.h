@@ -61,6 +61,9 @@ inline constexpr const char* kPostFxLayerNames[] = {"bloom", "ghosts", "halo", "
 struct PostFxJobOptions {
     std::string input, output;                  //!< images, or frame patterns for a sequence
     std::string preset = kDefaultPostFxPreset;  //!< shipped name or a JSON file
+    //! A preset held in memory (an editor's), used instead of reading `preset`, which then only
+    //! names it in messages. Checked with validatePostFxParams.
+    std::shared_ptr<const PostFxParams> presetParams;
     //! A multi-part EXR input's part to flare (name or index; empty: the first). The other parts
     //! go to the EXR output unchanged; another output format is refused.
     std::string part;
