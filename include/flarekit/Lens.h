@@ -294,6 +294,21 @@ inline constexpr Param<LensRenderOptions> kLensRenderParams[] = {
                                         "the dirt pattern (same seed, same pattern)"),
 };
 
+//! A drawn ghost where the image shows it: the surfaces it reflects at, its centre and size in
+//! pixels, its share of the light (RGB).
+struct GhostOnImage {
+    int first = -1, second = -1;  //!< reflects at `first`, then at `second` (< first)
+    double x = 0, y = 0;          //!< centre, pixels from the top-left
+    double radius = 0;            //!< pixels holding 90% of its landing rays
+    std::array<double, 3> intensity{};
+};
+
+//! The `count` brightest ghosts of a light at pixel `light` of a width x height image, as the
+//! lens render places that image on the sensor (centred, fitted inside it) and picks its ghosts:
+//! what a click on a ghost in the studio names. Brightest first; refused as analyseGhosts is.
+Result<std::vector<GhostOnImage>> ghostsOnImage(const Lens& lens, int width, int height,
+                                                Point light, int count);
+
 //! The lens as a sprite preset: a glow and (for a bladed iris) its diffraction spikes at the
 //! light, then its `ghosts` brightest ghosts traced at one field angle, each a polygon (disc for
 //! a round iris) at its traced position on the flare vector, with its size, colour and

@@ -201,7 +201,7 @@ Result<ImageOutput> renderOne(const LensJobOptions& a, const std::string& in,
 }  // namespace
 
 Result<Lens> openJobLens(const LensJobOptions& a) {
-    auto lens = loadLens(a.lens);
+    auto lens = a.lensData ? Result<Lens>(*a.lensData) : loadLens(a.lens);
     if (!lens) return lens;
     if (a.fNumber > 0) return stopDown(*lens, a.fNumber);
     return lens;

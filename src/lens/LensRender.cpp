@@ -421,6 +421,33 @@ Image lensFlareSum(const LensFlareLayers& layers) {
     return flare;
 }
 
+Result<std::vector<GhostOnImage>> ghostsOnImage(const Lens& lens, int width, int height,
+                                                Point light, int count) {
+    if (width < 1 || height < 1) return invalidInput("ghosts on image: an empty image");
+    SensorMap map;
+    map.width = width, map.height = height;
+    map.mmPerPixel = std::min(lens.sensor.width / width, lens.sensor.height / height);
+    const TraceLens dLine = lens::prepareTrace(lens, kLineD);
+    const auto angle =
+        fieldAngle(dLine, paraxial(lens).focalLength, map.toMmX(light.x), map.toMmY(light.y));
+    // The ghosts the render draws (pickGhosts' order), placed by the refined analysis.
+    const PickedGhosts picked = pickGhosts(lens, angle, count);
+    GhostQuery q;
+    q.angleXDeg = angle[0], q.angleYDeg = angle[1];
+    auto report = analyseGhosts(lens, q);
+    if (!report) return report.error();
+    std::vector<GhostOnImage> out;
+    for (const auto& [first, second] : picked.pairs) {
+        for (const GhostFigure& g : report->ghosts) {
+            if (g.first != first || g.second != second) continue;
+            out.push_back({g.first, g.second, map.toPxX(g.centerX), map.toPxY(g.centerY),
+                           g.radius90 / map.mmPerPixel, g.intensity});
+            break;
+        }
+    }
+    return out;
+}
+
 Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
                                         const std::vector<LensLight>& lights,
                                         const LensRenderOptions& options) {

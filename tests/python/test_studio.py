@@ -297,3 +297,38 @@ def test_an_invalid_post_process_edit_is_not_saved(studio, tmp_path):
     assert done.returncode == 2
     assert "not saved: ghosts[0].scale: expected |scale| >= 0.05" in done.stderr
     assert not (tmp_path / "bad.json").exists()
+
+
+def test_a_lens_is_rendered_as_the_cli_does_and_its_ghosts_are_named(studio, cli, tmp_path):
+    image, _ = flarekit.read_image(str(SUNSET_HDR))
+    small = np.ascontiguousarray(image[::4, ::4])  # 320x180: a lens render in seconds
+    flarekit.write_image(str(tmp_path / "small.exr"), small, depth="float")
+    done = studio([{"action": "open", "path": "small.exr"},
+                   {"action": "mode", "kind": "lens"},
+                   {"action": "load", "preset": "asahi-takumar-50"},
+                   {"action": "light", "at": [232.5, 62.5]},
+                   {"action": "set", "section": "render", "key": "ghosts", "value": 24},
+                   {"action": "set", "section": "render", "key": "ghost_gain", "value": 3},
+                   {"action": "export", "path": "lens.png"},
+                   {"action": "export", "path": "lens.exr"},
+                   {"action": "set", "section": "aperture", "key": "blades", "value": 5},
+                   {"action": "export", "path": "blades.exr"},
+                   {"action": "pick", "at": [90, 130]},
+                   {"action": "save", "path": "lens.json"}], ok=False)
+    # A lens is not saved (said on one line, exit 2, nothing written); all before it was done.
+    assert done.returncode == 2 and "not saved: saving a lens is not in the studio yet" in done.stderr
+    assert not (tmp_path / "lens.json").exists()
+    common = ["lens", "render", "asahi-takumar-50", tmp_path / "small.exr", "--light",
+              "232.5,62.5", "--ghosts", 24, "--ghost-gain", 3]
+    cli(*common, "-o", tmp_path / "cli.png")
+    cli(*common, "-o", tmp_path / "cli.exr")
+    assert levels(read(tmp_path / "lens.png"), read(tmp_path / "cli.png")) <= 1
+    np.testing.assert_allclose(read(tmp_path / "lens.exr")[..., :3],
+                               read(tmp_path / "cli.exr")[..., :3], rtol=1e-3, atol=1e-3)
+    # Five blades instead of the lens's own iris: another starburst.
+    assert np.abs(read(tmp_path / "blades.exr") - read(tmp_path / "lens.exr")).max() > 1e-3
+    picked = [line for line in done.stdout.splitlines() if line.startswith("picked ghost")]
+    assert len(picked) == 1, done.stdout
+    words = picked[0].split()
+    first, second = int(words[4]), int(words[6])
+    assert first > second >= 0

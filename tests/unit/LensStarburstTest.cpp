@@ -153,3 +153,54 @@ TEST(Lens, APupilMaskFromAnImageShapesTheStarburstAndKeepsItsShare) {
     EXPECT_NEAR(sum, 0.1 * light.energy[1], 0.05 * 0.1 * light.energy[1]);
     EXPECT_GT(yy, 4 * xx) << "the slit's pattern spreads across it";
 }
+
+// ghostsOnImage says where each drawn ghost is (the studio's ghost picking). On axis every ghost
+// is centred on the image centre (the lens is rotationally symmetric); off axis a ghost drawn
+// alone has its light-weighted centroid where it says, within a tenth of its radius (the
+// analyser's landing-ray centroid against the renderer's meshes).
+TEST(Lens, GhostsOnImageAreWhereTheRendererDrawsThem) {
+    auto lens = loadLens("angenieux-double-gauss");
+    ASSERT_TRUE(lens.ok());
+    auto onAxis = ghostsOnImage(*lens, 400, 300, {200.f, 150.f}, 8);
+    ASSERT_TRUE(onAxis.ok()) << onAxis.error().message;
+    ASSERT_EQ(onAxis->size(), 8u);
+    for (const GhostOnImage& g : *onAxis) {
+        EXPECT_NEAR(g.x, 200.0, 0.5) << g.first << "-" << g.second;
+        EXPECT_NEAR(g.y, 150.0, 0.5) << g.first << "-" << g.second;
+        EXPECT_GT(g.first, g.second);
+    }
+    const Point at{300.5f, 90.5f};
+    auto ghosts = ghostsOnImage(*lens, 400, 300, at, 8);
+    ASSERT_TRUE(ghosts.ok() && ghosts->size() == 8);
+    // The most compact of them inside the frame, drawn alone: the render of the k brightest
+    // less the render of the k - 1 brightest (ghosts add).
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < ghosts->size(); ++i) {
+        const GhostOnImage& c = (*ghosts)[i];
+        const bool inside = c.x - c.radius > 0 && c.x + c.radius < 400 && c.y - c.radius > 0 &&
+                            c.y + c.radius < 300;
+        if (inside && (k == 0 || c.radius < (*ghosts)[k].radius)) k = i;
+    }
+    ASSERT_GT(k, 0u) << "no ghost wholly inside the frame";
+    const GhostOnImage& g = (*ghosts)[k];
+    const auto render = [&](int n) {
+        LensRenderOptions o;
+        o.ghosts = n, o.glare = 0, o.starburst = 0;
+        LensLight light;
+        light.x = at.x, light.y = at.y, light.energy = {1e4, 1e4, 1e4};
+        auto layers = renderLensFlare(*lens, 400, 300, {light}, o);
+        EXPECT_TRUE(layers.ok());
+        return layers.ok() ? layers->ghosts : Image(400, 300);
+    };
+    const Image with = render(int(k) + 1), without = render(int(k));
+    double sum = 0, cx = 0, cy = 0;
+    for (int y = 0; y < 300; ++y)
+        for (int x = 0; x < 400; ++x) {
+            const Rgba &p = with.at(x, y), &q = without.at(x, y);
+            const double w = std::max(0.0, double(p.r + p.g + p.b) - double(q.r + q.g + q.b));
+            sum += w, cx += w * (x + 0.5), cy += w * (y + 0.5);
+        }
+    ASSERT_GT(sum, 0);
+    EXPECT_NEAR(cx / sum, g.x, 0.1 * g.radius + 1.0) << g.first << "-" << g.second;
+    EXPECT_NEAR(cy / sum, g.y, 0.1 * g.radius + 1.0) << g.first << "-" << g.second;
+}

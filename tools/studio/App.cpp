@@ -15,6 +15,7 @@
 #include <filesystem>
 
 #include "flarekit/ImageIO.h"
+#include "flarekit/Lens.h"
 
 namespace flarekit::studio {
 
@@ -114,7 +115,7 @@ int runStudio(const StudioOptions& options) {
 App::App(GLFWwindow* window, const StudioOptions& options)
     : m_window(window),
       m_options(options),
-      m_shipped{shippedPresetNames(), shippedPostFxPresetNames()} {
+      m_shipped{shippedPresetNames(), shippedPostFxPresetNames(), lensNames()} {
     if (!options.script.empty()) m_script = loadScript(options.script).value();
 }
 
@@ -260,6 +261,14 @@ Status App::stepScript() {
         m_dragFrame = 0, m_pointerScripted = true;
         return stepScript();
     }
+    if (a.kind == "pick") {
+        const auto& at = a.args["at"];
+        if (!at.is_array() || at.size() != 2 || !at[0].is_number() || !at[1].is_number())
+            return invalidInput(a.where + ": at: expected [x, y] in image pixels");
+        if (Status s = pickGhost({at[0].get<float>(), at[1].get<float>()}); !s)
+            return invalidInput(a.where + ": " + s.error().message);
+        return Ok{};
+    }
     if (a.kind == "panel") {
         const std::string name =
             a.args["name"].is_string() ? a.args["name"].get<std::string>() : "";
@@ -327,14 +336,18 @@ void App::updatePreview() {
     // and refined when the drag stops (full size, then the component passes).
     const bool coarse = m_dragging && m_lastRenderMs > 1000.0 / 30;
     m_preview.fit(m_doc, m_viewMaxW, m_viewMaxH, coarse ? 2 : 1);
+    m_preview.dragging = m_dragging;
     char view[160];
     std::snprintf(view, sizeof view, "|%.3f,%.3f|%u|%d|%g|%d|%d|%g", double(m_doc.light.x),
                   double(m_doc.light.y), m_doc.imageVersion(), m_preview.width(),
                   double(m_doc.view.exposure), int(m_doc.view.curve), int(m_doc.view.fluxMode),
                   double(m_doc.view.intensity));
+    // A lens dragged is drawn with its brightest ghosts only: the key says so, so that the
+    // whole flare is drawn when the drag stops.
+    const bool lensDrag = m_doc.kind == FlareKind::Lens && m_dragging;
     const std::string key = (m_doc.kind == FlareKind::Sprite ? presetToJson(m_doc.renderedPreset())
-                                                             : postFxPresetToJson(m_doc.postFx())) +
-                            view;
+                                                             : m_doc.currentJson()) +
+                            view + (lensDrag ? "|coarse" : "");
     if (key != m_renderedKey) {
         auto frame = m_preview.render(m_doc);
         if (!frame) return say(frame.error().message, true);
@@ -386,6 +399,42 @@ void App::updateThumbnails() {
     m_browserKind = m_doc.kind;
     m_browser.request(m_doc.kind, m_preview.small(),
                       {float(m_doc.light.x * s), float(m_doc.light.y * s)}, m_doc.view, shipped());
+}
+
+Status App::pickGhost(Point at) {
+    if (m_doc.kind != FlareKind::Lens) return invalidInput("pick: ghosts are picked in lens mode");
+    if (!m_doc.hasImage()) return invalidInput("pick: no image is open");
+    const LensJobOptions& job = m_doc.lensJob();
+    auto lens = job.fNumber > 0 ? stopDown(m_doc.lens(), job.fNumber) : Result<Lens>(m_doc.lens());
+    if (!lens) return lens.error();
+    const Image& image = m_doc.source().image;
+    auto ghosts =
+        ghostsOnImage(*lens, image.width(), image.height(), m_doc.light, job.render.ghosts);
+    if (!ghosts) return ghosts.error();
+    m_picked.reset();
+    // The ghost that shows there: of those whose disc holds the point, the brightest per area
+    // (a small bright ghost over a large faint one); else the one whose edge is nearest.
+    double best = 0;
+    bool inside = false;
+    for (const GhostOnImage& g : *ghosts) {
+        const double d = std::hypot(g.x - at.x, g.y - at.y), r = std::max(g.radius, 1.0);
+        const double brightness = (g.intensity[0] + g.intensity[1] + g.intensity[2]) / (r * r);
+        if (d <= r) {
+            if (!inside || brightness > best) m_picked = g, best = brightness, inside = true;
+        } else if (!inside && (!m_picked || d - r < best)) {
+            m_picked = g, best = d - r;
+        }
+    }
+    if (!m_picked) return invalidInput("pick: this light draws no ghost");
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "ghost of surfaces %d and %d (reflected at %d, then %d) at %.1f,%.1f, radius "
+                  "%.1f px",
+                  m_picked->first, m_picked->second, m_picked->first, m_picked->second, m_picked->x,
+                  m_picked->y, m_picked->radius);
+    say(line);
+    if (!m_script.empty()) std::printf("picked %s\n", line);
+    return Ok{};
 }
 
 Status App::writeScreenshot(const std::string& path) {

@@ -61,6 +61,10 @@ class App {
     void drawPresetPanel(float x, float y, float w, float h);
     void drawElementList();
     void drawPostFxPanel();
+    void drawLensPanel();
+    //! Names the ghost nearest `at` (image pixels) among the lens's drawn ghosts: its pair of
+    //! surfaces, shown on the view and in the status line (and on stdout for a script).
+    Status pickGhost(Point at);
     void drawViewPanel(float x, float y, float w, float h);
     void drawComponents(float x, float y, float w, float h);
     void drawBrowser(float h);
@@ -91,7 +95,7 @@ class App {
     std::string m_browserKey;
     std::string m_panel = "components";  //!< the bottom strip's tab: components or presets
     bool m_panelChanged = false;
-    std::vector<std::string> m_shipped[2];  //!< the shipped presets of each FlareKind
+    std::vector<std::string> m_shipped[3];  //!< the shipped presets (lenses) of each FlareKind
     const std::vector<std::string>& shipped() const { return m_shipped[int(m_doc.kind)]; }
     static std::string thumbId(FlareKind kind, const std::string& name) {
         return std::string(kFlareKindNames[int(kind)]) + "/" + name;
@@ -121,6 +125,11 @@ class App {
     std::string m_pendingShot;
     int m_exitCode = -1;  //!< set: leave the loop with it
 
+    // The lens diagram (its cross-section, made when the lens or its iris changes) and the
+    // ghost picked on the view.
+    GlTexture m_diagram;
+    std::string m_diagramKey;
+    std::optional<GhostOnImage> m_picked;
     std::string m_status;
     bool m_statusError = false;
     long m_frames = 0, m_renders = 0, m_dragFrames = 0;

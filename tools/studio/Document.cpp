@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/ParamJson.h"
 #include "core/SafeWrite.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Tonemap.h"
@@ -44,32 +45,74 @@ Document::Document() {
         m_post = *post;
         m_presetPath[1] = kDefaultPostFxPreset;
     }
+    // The first shipped lens, so that the lens mode has one to show.
+    for (const std::string& name : lensNames()) {
+        auto lens = loadLens(name);
+        if (!lens) continue;
+        m_lens = *lens;
+        m_presetPath[2] = m_lensJob.lens = name;
+        break;
+    }
     m_committed = design();
     m_savedJson[0] = presetToJson(m_preset);
     m_savedJson[1] = postFxPresetToJson(m_post);
 }
 
+namespace {
+
+//! A lens setting's text for undo and change checks: the name, the f-number, the render
+//! settings and the iris that differ from their defaults.
+std::string lensText(const Lens& lens, const LensJobOptions& job) {
+    return job.lens + writeParams<LensJobOptions>(job, kLensJobParams, LensJobOptions{}).dump() +
+           writeParams<LensRenderOptions>(job.render, kLensRenderParams, LensRenderOptions{})
+               .dump() +
+           writeParams<LensAperture>(lens.aperture, kLensApertureParams, LensAperture{}).dump();
+}
+
+}  // namespace
+
 std::string Document::designText(const Design& d) const {
-    return presetToJson(d.sprite) + postFxPresetToJson(d.post);
+    return presetToJson(d.sprite) + postFxPresetToJson(d.post) + lensText(d.lens, d.lensJob);
 }
 
 std::string Document::currentJson() const {
+    if (kind == FlareKind::Lens) return lensText(m_lens, m_lensJob);
     return kind == FlareKind::Sprite ? presetToJson(m_preset) : postFxPresetToJson(m_post);
 }
 
 void Document::restore(const Design& d) {
     m_preset = d.sprite;
     m_post = d.post;
+    m_lens = d.lens;
+    m_lensJob = d.lensJob;
     m_committed = d;
     clampSelection();
 }
 
 std::string Document::presetName() const {
+    if (kind == FlareKind::Lens) return m_lensJob.lens;
     return kind == FlareKind::Sprite ? m_preset.name : m_post.name;
 }
 
 std::vector<std::string> Document::shippedNames() const {
+    if (kind == FlareKind::Lens) return lensNames();
     return kind == FlareKind::Sprite ? shippedPresetNames() : shippedPostFxPresetNames();
+}
+
+LensJobOptions Document::lensOptions(double scale, bool coarse) const {
+    LensJobOptions o = m_lensJob;
+    o.lensData = std::make_shared<const Lens>(m_lens);
+    o.lightMode = LensLightMode::At;
+    o.light = Point{float(light.x * scale), float(light.y * scale)};
+    o.tonemap = ToneOperator::None;
+    if (coarse) {
+        // A drag's preview: the eight brightest ghosts on 16-ray meshes, the starburst at three
+        // wavelengths (about a tenth of the full render); refined when the drag stops.
+        o.render.ghosts = std::min(o.render.ghosts, 8);
+        o.render.gridSide = std::min(o.render.gridSide, 16);
+        o.render.starburstSamples = 3;
+    }
+    return o;
 }
 
 Status Document::openImage(const std::string& path) {
@@ -99,10 +142,15 @@ Status Document::loadPreset(const std::string& nameOrPath) {
         if (!preset) return preset.error();
         m_preset = *preset;
         solo = -1;
-    } else {
+    } else if (kind == FlareKind::PostFx) {
         auto post = loadPostFxPreset(nameOrPath);
         if (!post) return post.error();
         m_post = *post;
+    } else {
+        auto lens = loadLens(nameOrPath);
+        if (!lens) return lens.error();
+        m_lens = *lens;
+        m_lensJob.lens = nameOrPath;
     }
     m_undo.push_back(before);
     m_redo.clear();
@@ -115,6 +163,10 @@ Status Document::loadPreset(const std::string& nameOrPath) {
 
 Status Document::savePreset(const std::string& path) {
     commit();
+    if (kind == FlareKind::Lens)
+        return invalidInput(path +
+                            ": not saved: saving a lens is not in the studio yet (its "
+                            "f-number and render settings are `flarekit lens render` flags)");
     // Never a file the CLI would refuse: the edits are checked as the reader checks them.
     const Status valid =
         kind == FlareKind::Sprite ? validatePreset(m_preset) : validatePostFxParams(m_post);
@@ -171,8 +223,13 @@ Status Document::exportRender(const std::string& path, SampleFormat depth) const
         ApplyOptions o = applyOptions(1.0, path);
         if (!display) o.exposure = 1.f, o.tonemap = ToneOperator::None;
         out = applyPixels(o, renderedPreset(), m_source);
-    } else {
+    } else if (kind == FlareKind::PostFx) {
         out = postFxPixels(postFxOptions(display), m_source);
+    } else {
+        // Linear from the job; a display file through the view's exposure and curve (the
+        // CLI's lens render has no exposure: equal to it at the view's default of 1).
+        out = lensPixels(lensOptions(1.0, false), m_source);
+        if (out && display) toneMapImage(out->image, view.curve, view.exposure);
     }
     if (!out) return out.error();
     WriteOptions w;

@@ -12,6 +12,7 @@
 #include "flarekit/PostFxParams.h"
 #include "flarekit/Result.h"
 #include "flarekit/job/ApplyJob.h"
+#include "flarekit/job/LensJob.h"
 #include "flarekit/job/PixelJob.h"
 #include "flarekit/job/PostFxJob.h"
 
@@ -19,8 +20,8 @@ namespace flarekit::studio {
 
 //! Which flare the studio shows and edits: a sprite preset (`flarekit apply`) or a post-process
 //! preset (`flarekit postfx`). Both are kept; switching is not an edit.
-enum class FlareKind { Sprite, PostFx };
-inline constexpr std::string_view kFlareKindNames[] = {"sprite", "postfx"};
+enum class FlareKind { Sprite, PostFx, Lens };
+inline constexpr std::string_view kFlareKindNames[] = {"sprite", "postfx", "lens"};
 
 //! How the image is shown (and how 8/16-bit exports are encoded); not part of the preset.
 struct ViewSettings {
@@ -83,6 +84,15 @@ class Document {
     Status setGhostParam(int ghost, const std::string& key, const ParamValue& value);
     void addGhost();  //!< a copy of the last ghost (or a default one), at the end
     void removeGhost(int ghost);
+    // The lens: a shipped prescription, its iris (aperture), f-number and render settings.
+    // Its surfaces are shown, not edited, and a lens is not saved (not in the studio yet).
+    const Lens& lens() const { return m_lens; }
+    LensAperture& aperture() { return m_lens.aperture; }
+    LensJobOptions& lensJob() { return m_lensJob; }
+    const LensJobOptions& lensJob() const { return m_lensJob; }
+    //! The lens job's options: the lens in memory, the light at `scale` x the document's;
+    //! `coarse`: the few brightest ghosts on coarse meshes, for a drag.
+    LensJobOptions lensOptions(double scale, bool coarse) const;
     void addElement(ElementType type);  //!< after the selection, selected
     void duplicateElement(int element);
     void removeElement(int element);  //!< the last element cannot go (a preset needs one)
@@ -97,6 +107,8 @@ class Document {
     bool canRedo() const { return !m_redo.empty(); }
     //! The current kind's preset differs from the last one saved or loaded.
     bool isDirty() const;
+    //! The current kind's preset as text (a lens: its name and settings): what isDirty compares.
+    std::string currentJson() const;
 
     //! What is drawn: the preset with the soloed element alone, when one is.
     Preset renderedPreset() const;
@@ -123,11 +135,12 @@ class Document {
     struct Design {
         Preset sprite;
         PostFxParams post;
+        Lens lens;
+        LensJobOptions lensJob;
     };
-    Design design() const { return {m_preset, m_post}; }
+    Design design() const { return {m_preset, m_post, m_lens, m_lensJob}; }
     void restore(const Design& d);
     std::string designText(const Design& d) const;
-    std::string currentJson() const;
     bool changedSinceCommit() const;
     void clampSelection();
     PixelInput m_source;
@@ -135,8 +148,10 @@ class Document {
     std::string m_imagePath;
     Preset m_preset;
     PostFxParams m_post;
+    Lens m_lens;
+    LensJobOptions m_lensJob;
     Design m_committed;
-    std::string m_presetPath[2], m_savedJson[2];  //!< per FlareKind
+    std::string m_presetPath[3], m_savedJson[3];  //!< per FlareKind
     std::vector<Design> m_undo, m_redo;
 };
 

@@ -10,6 +10,7 @@
 
 #include "App.h"
 #include "ParamWidgets.h"
+#include "flarekit/Lens.h"
 
 namespace flarekit::studio {
 
@@ -111,6 +112,8 @@ void App::drawPresetPanel(float x, float y, float w, float h) {
     ImGui::RadioButton("sprite (apply)", &kind, int(FlareKind::Sprite));
     ImGui::SameLine();
     ImGui::RadioButton("post-process (postfx)", &kind, int(FlareKind::PostFx));
+    ImGui::SameLine();
+    ImGui::RadioButton("lens", &kind, int(FlareKind::Lens));
     m_doc.kind = FlareKind(kind);
     if (ImGui::BeginCombo("preset", m_doc.presetName().c_str())) {
         for (const std::string& name : shipped())
@@ -121,6 +124,11 @@ void App::drawPresetPanel(float x, float y, float w, float h) {
         ImGui::SetTooltip("the shipped presets; unsaved edits are never dropped without asking");
     if (m_doc.kind == FlareKind::PostFx) {
         drawPostFxPanel();
+        ImGui::End();
+        return;
+    }
+    if (m_doc.kind == FlareKind::Lens) {
+        drawLensPanel();
         ImGui::End();
         return;
     }
@@ -177,6 +185,41 @@ void App::drawPostFxPanel() {
         if (ImGui::Button("Add ghost")) m_doc.addGhost();
     }
     ImGui::EndChild();
+    ImGui::PopItemWidth();
+}
+
+void App::drawLensPanel() {
+    // The cross-section with its direct and brightest ghost rays, made when the iris changes.
+    const std::string key = m_doc.currentJson();
+    if (key != m_diagramKey) {
+        auto sheet = renderLensSheet(m_doc.lens(), 720);
+        if (sheet) m_diagram.upload(toDisplay(std::move(*sheet), ToneOperator::None, 1.f));
+        m_diagramKey = key;
+    }
+    const float w = ImGui::GetContentRegionAvail().x;
+    if (m_diagram.valid())
+        ImGui::Image(m_diagram.id(),
+                     ImVec2(w, w * float(m_diagram.height()) / float(m_diagram.width())));
+    ImGui::TextWrapped("%s: %zu surfaces. Right-click a ghost on the view to name its surfaces.",
+                       m_doc.lens().name.c_str(), m_doc.lens().surfaces.size());
+    if (m_picked)
+        ImGui::TextColored(ImVec4(0.4f, 1.f, 0.8f, 1.f), "picked: surfaces %d and %d",
+                           m_picked->first, m_picked->second);
+    ImGui::PushItemWidth(-150);
+    ImGui::Separator();
+    ImGui::TextDisabled("iris");
+    paramTable<LensAperture>(kLensApertureParams, m_doc.aperture(), LensAperture{});
+    ImGui::Separator();
+    ImGui::TextDisabled("stop and sources");
+    for (const Param<LensJobOptions>& p : kLensJobParams) {
+        if (p.key != "f_number" && p.key != "expand_highlights") continue;  // one placed light
+        ImGui::PushID(p.key.data());
+        paramWidget(p, m_doc.lensJob(), LensJobOptions{});
+        ImGui::PopID();
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("render");
+    paramTable<LensRenderOptions>(kLensRenderParams, m_doc.lensJob().render, LensRenderOptions{});
     ImGui::PopItemWidth();
 }
 
@@ -282,6 +325,11 @@ void App::drawViewPanel(float x, float y, float w, float h) {
                   float(img.width()),
                   float(img.height())};
         m_viewMaxW = int(m_view.w), m_viewMaxH = int(m_view.h);
+        if (m_doc.kind == FlareKind::Lens && ImGui::IsItemHovered() &&
+            ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+            const ImVec2 m = ImGui::GetIO().MousePos;
+            if (Status s = pickGhost(m_view.toImage(m.x, m.y)); !s) say(s.error().message, true);
+        }
         if (!postFx && ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
             const ImVec2 m = ImGui::GetIO().MousePos;
             m_doc.light = m_view.toImage(m.x, m.y);
@@ -302,6 +350,16 @@ void App::drawViewPanel(float x, float y, float w, float h) {
         draw->AddRect(p0, p1, IM_COL32(90, 90, 96, 255));
         float lx = 0, ly = 0;
         m_view.toWindow(m_doc.light, lx, ly);
+        if (m_doc.kind == FlareKind::Lens && m_picked) {
+            float gx = 0, gy = 0;
+            m_view.toWindow({float(m_picked->x), float(m_picked->y)}, gx, gy);
+            const float r = std::max(6.f, float(m_picked->radius) * m_view.w / m_view.imageW);
+            draw->AddCircle(ImVec2(gx, gy), r, IM_COL32(90, 255, 200, 230), 48, 2.f);
+            char label[48];
+            std::snprintf(label, sizeof label, "%d-%d", m_picked->first, m_picked->second);
+            draw->AddText(ImVec2(gx + r * 0.7f, gy - r * 0.7f - 14.f), IM_COL32(90, 255, 200, 255),
+                          label);
+        }
         if (!postFx) {
             draw->AddCircle(ImVec2(lx, ly), 9.f, IM_COL32(255, 220, 80, 230), 24, 1.5f);
             draw->AddLine(ImVec2(lx - 14, ly), ImVec2(lx + 14, ly), IM_COL32(255, 220, 80, 230));

@@ -86,7 +86,15 @@ Result<PreviewFrame> Preview::renderAt(const Document& doc, const PixelInput& im
     if (image.image.empty()) return invalidInput("no image is open");
     const auto start = std::chrono::steady_clock::now();
     PreviewFrame frame;
-    if (doc.kind == FlareKind::PostFx) {
+    if (doc.kind == FlareKind::Lens) {
+        auto out = lensPixels(doc.lensOptions(scale, dragging && !layers), image, {}, layers);
+        if (!out) return out.error();
+        if (!layers)
+            frame.after = toDisplay(std::move(out->image), doc.view.curve, doc.view.exposure);
+        for (auto& [name, pass] : out->layers)
+            frame.layers.emplace_back(
+                name, toDisplay(std::move(pass), doc.view.curve, doc.view.exposure));
+    } else if (doc.kind == FlareKind::PostFx) {
         // The chain applies the display curve itself (the preset's, else the view's); its
         // passes are linear and shown through the same curve.
         const PostFxJobOptions o = doc.postFxOptions(true);

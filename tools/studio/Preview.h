@@ -32,6 +32,8 @@ class Preview {
     //! image is area-averaged down once per size, so a 4096-pixel photograph costs what the
     //! screen shows. `coarse` divides that size again (a drag on a slow machine).
     void fit(const Document& doc, int maxWidth, int maxHeight, int coarse = 1);
+    //! A drag's preview: a lens flare with its brightest ghosts only (Document::lensOptions).
+    bool dragging = false;
     //! The flare at the fitted size.
     Result<PreviewFrame> render(const Document& doc) const;
     //! Each pass of the flare and the whole flare, kComponentWidth wide (in `layers`).

@@ -36,12 +36,13 @@ constexpr ActionSpec kActions[] = {
      "frames (default 8), drawing each"},
     {"mode",
      {"kind"},
-     "edits and shows the sprite preset (\"sprite\", `flarekit apply`) or the post-process "
-     "preset (\"postfx\", `flarekit postfx`)"},
+     "edits and shows the sprite preset (\"sprite\", `flarekit apply`), the post-process "
+     "preset (\"postfx\", `flarekit postfx`) or the lens (\"lens\", `flarekit lens render`)"},
     {"set",
      {"key", "value", "?element", "?section", "?ghost"},
      "sets a parameter: of element `element` (sprite, docs/presets.md), of a post-process "
-     "`section` (bloom, ...) or `ghost` (docs/postfx.md), or of the preset without them"},
+     "`section` (bloom, ...) or `ghost` (docs/postfx.md), of the lens's `section` (render, "
+     "aperture, job), or of the preset without them"},
     {"add_ghost", {}, "post-process: adds a copy of the last ghost"},
     {"remove_ghost", {"ghost"}, "post-process: removes a ghost"},
     {"view", {"key", "value"}, "sets a view setting: exposure, tonemap, flux_mode, intensity"},
@@ -62,6 +63,10 @@ constexpr ActionSpec kActions[] = {
      "renders at full size: EXR linear (float), PNG (8-bit) and TIFF (16-bit) through the view's "
      "exposure and curve; `depth` (8, 16, half, float) overrides the extension's"},
     {"screenshot", {"path"}, "writes the whole window as an 8-bit PNG"},
+    {"pick",
+     {"at"},
+     "lens: names the drawn ghost nearest [x, y] (image pixels), as a right click does, and "
+     "prints it: \"picked ghost of surfaces 7 and 3 ...\""},
     {"panel",
      {"name"},
      "shows a tab of the bottom strip: \"components\" (the passes) or \"presets\" (the "
@@ -156,7 +161,7 @@ Result<std::vector<Action>> loadScript(const std::string& path) {
 
 bool isWindowAction(const std::string& kind) {
     return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
-           kind == "wait" || kind == "split" || kind == "panel";
+           kind == "wait" || kind == "split" || kind == "panel" || kind == "pick";
 }
 
 Status runDocumentAction(Document& doc, const Action& a) {
@@ -207,7 +212,8 @@ Status runDocumentAction(Document& doc, const Action& a) {
                 doc.kind = FlareKind(i);
                 return Ok{};
             }
-        return failAt(a, "kind: expected \"sprite\" or \"postfx\", got " + jsonExcerpt(v));
+        return failAt(a,
+                      "kind: expected \"sprite\", \"postfx\" or \"lens\", got " + jsonExcerpt(v));
     }
     if (k == "add_ghost") {
         if (doc.postFx().ghosts.size() >= std::size_t(kMaxGhosts))
@@ -232,6 +238,29 @@ Status runDocumentAction(Document& doc, const Action& a) {
         Status s = doc.setGhostParam(g, a.args["key"].get<std::string>(), *value);
         doc.commit();
         return withWhere(s);
+    }
+    if (k == "set" && doc.kind == FlareKind::Lens) {
+        const std::string section =
+            a.args["section"].is_string() ? a.args["section"].get<std::string>() : "";
+        const auto apply = [&](auto table, auto& owner) -> Status {
+            using Owner = std::decay_t<decltype(owner)>;
+            auto value = valueOf<Owner>(table, a, ~0u, "the lens's " + section);
+            if (!value) return value.error();
+            findParam<Owner>(table, a.args["key"].get<std::string>())->set(owner, *value);
+            doc.commit();
+            return Ok{};
+        };
+        if (section == "render")
+            return apply(std::span<const Param<LensRenderOptions>>(kLensRenderParams),
+                         doc.lensJob().render);
+        if (section == "aperture")
+            return apply(std::span<const Param<LensAperture>>(kLensApertureParams), doc.aperture());
+        if (section == "job")
+            return apply(std::span<const Param<LensJobOptions>>(kLensJobParams), doc.lensJob());
+        return failAt(a,
+                      "section: expected \"render\", \"aperture\" or \"job\" for a lens, "
+                      "got " +
+                          jsonExcerpt(a.args["section"]));
     }
     if (k == "set" && a.args.contains("section")) {
         const std::string section =

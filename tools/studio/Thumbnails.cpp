@@ -64,6 +64,21 @@ void ThumbnailRenderer::work() {
         lock.unlock();
         Thumbnail t{preset, {}, {}, generation};
         runOnThisThread([&] {
+            if (kind == FlareKind::Lens) {
+                // Each shipped lens at its own stop on the light: its 16 brightest ghosts on
+                // 16-ray meshes and a 3-wavelength starburst (a thumbnail's detail, a tenth of
+                // the full render's time).
+                LensJobOptions o;
+                o.lens = preset, o.lightMode = LensLightMode::At, o.light = light;
+                o.tonemap = ToneOperator::None;
+                o.render.ghosts = 16, o.render.gridSide = 16, o.render.starburstSamples = 3;
+                auto out = lensPixels(o, image);
+                if (out)
+                    t.image = toDisplay(std::move(out->image), view.curve, view.exposure);
+                else
+                    t.error = out.error().message;
+                return;
+            }
             if (kind == FlareKind::PostFx) {
                 auto params = loadPostFxPreset(preset);
                 if (!params) {

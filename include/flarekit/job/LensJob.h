@@ -42,7 +42,10 @@ enum class LensLightMode {
 };
 
 struct LensJobOptions {
-    std::string lens;           //!< a shipped lens name or a prescription JSON file
+    std::string lens;  //!< a shipped lens name or a prescription JSON file
+    //! A lens held in memory (an editor's, made by loadLens or parseLens), used instead of
+    //! reading `lens`, which then only names it in messages.
+    std::shared_ptr<const Lens> lensData;
     double fNumber = 0;         //!< > 0: stopped down to this working f-number (paraxial)
     std::string input, output;  //!< images, or frame patterns for a sequence
     //! A multi-part EXR input's part to flare (name or index; empty: the first). The other parts
