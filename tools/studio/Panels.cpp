@@ -27,6 +27,14 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
                                     ImGuiWindowFlags_NoCollapse |
                                     ImGuiWindowFlags_NoBringToFrontOnFocus;
 
+//! A panel at a fixed place and size (the studio's layout is fixed, not dockable).
+void beginPanel(const char* name, float x, float y, float w, float h,
+                ImGuiWindowFlags flags = ImGuiWindowFlags_None) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::Begin(name, nullptr, kFixed | flags);
+}
+
 const std::vector<std::string> kImageExtensions = {".exr", ".hdr",  ".png",  ".jpg", ".jpeg",
                                                    ".tif", ".tiff", ".webp", ".bmp", ".tga"};
 
@@ -105,9 +113,7 @@ void App::handleShortcuts() {
 }
 
 void App::drawPresetPanel(float x, float y, float w, float h) {
-    ImGui::SetNextWindowPos(ImVec2(x, y));
-    ImGui::SetNextWindowSize(ImVec2(w, h));
-    ImGui::Begin("Preset", nullptr, kFixed);
+    beginPanel("Preset", x, y, w, h);
     int kind = int(m_doc.kind);
     ImGui::RadioButton("sprite (apply)", &kind, int(FlareKind::Sprite));
     ImGui::SameLine();
@@ -279,12 +285,10 @@ void App::drawElementList() {
 }
 
 void App::drawViewPanel(float x, float y, float w, float h) {
-    ImGui::SetNextWindowPos(ImVec2(x, y));
-    ImGui::SetNextWindowSize(ImVec2(w, h));
     // No scroll bar: the canvas fills the panel exactly, and a bar appearing on the second frame
     // would change the preview's size under the user.
-    ImGui::Begin("View", nullptr,
-                 kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    beginPanel("View", x, y, w, h,
+               ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PushItemWidth(120);
     // A post-process flare comes from the image's own highlights: the light and its flux do
     // not apply (shown disabled, so that the view keeps its place).
@@ -373,10 +377,8 @@ void App::drawViewPanel(float x, float y, float w, float h) {
 }
 
 void App::drawComponents(float x, float y, float w, float h) {
-    ImGui::SetNextWindowPos(ImVec2(x, y));
-    ImGui::SetNextWindowSize(ImVec2(w, h));
-    ImGui::Begin("Components", nullptr,
-                 kFixed | ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_NoTitleBar);
+    beginPanel("Components", x, y, w, h,
+               ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_NoTitleBar);
     // The tab a script asked for is selected once; after that the user's click decides.
     const auto tab = [&](const char* label, const char* name) {
         const bool asked = m_panelChanged && m_panel == name;

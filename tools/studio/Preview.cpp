@@ -85,36 +85,29 @@ Result<PreviewFrame> Preview::renderAt(const Document& doc, const PixelInput& im
                                        bool layers) const {
     if (image.image.empty()) return invalidInput("no image is open");
     const auto start = std::chrono::steady_clock::now();
-    PreviewFrame frame;
+    // Each job's image and passes, and the curve and exposure that show them: the sprite and
+    // lens jobs return linear light (the view's curve is applied here, to the passes too); the
+    // post-process chain applies its display curve itself (the preset's, else the view's).
+    Result<PixelOutput> out = invalidInput("");
+    ToneOperator curve = doc.view.curve, imageCurve = curve;
+    float exposure = doc.view.exposure, imageExposure = exposure;
     if (doc.kind == FlareKind::Lens) {
-        auto out = lensPixels(doc.lensOptions(scale, dragging && !layers), image, {}, layers);
-        if (!out) return out.error();
-        if (!layers)
-            frame.after = toDisplay(std::move(out->image), doc.view.curve, doc.view.exposure);
-        for (auto& [name, pass] : out->layers)
-            frame.layers.emplace_back(
-                name, toDisplay(std::move(pass), doc.view.curve, doc.view.exposure));
+        out = lensPixels(doc.lensOptions(scale, dragging && !layers), image, {}, layers);
     } else if (doc.kind == FlareKind::PostFx) {
-        // The chain applies the display curve itself (the preset's, else the view's); its
-        // passes are linear and shown through the same curve.
         const PostFxJobOptions o = doc.postFxOptions(true);
-        auto out = postFxPixels(o, image, {}, layers);
-        if (!out) return out.error();
-        if (!layers) frame.after = toDisplay(std::move(out->image), ToneOperator::None, 1.f);
-        for (auto& [name, pass] : out->layers)
-            frame.layers.emplace_back(name, toDisplay(std::move(pass), *o.tonemap, *o.exposure));
+        out = postFxPixels(o, image, {}, layers);
+        curve = *o.tonemap, exposure = *o.exposure;
+        imageCurve = ToneOperator::None, imageExposure = 1.f;
     } else {
-        // The view's curve is applied here, so that the passes are shown through it too.
         ApplyOptions o = doc.applyOptions(scale);
         o.exposure = 1.f, o.tonemap = ToneOperator::None;
-        auto out = applyPixels(o, doc.renderedPreset(), image, {}, layers);
-        if (!out) return out.error();
-        if (!layers)
-            frame.after = toDisplay(std::move(out->image), doc.view.curve, doc.view.exposure);
-        for (auto& [name, pass] : out->layers)
-            frame.layers.emplace_back(
-                name, toDisplay(std::move(pass), doc.view.curve, doc.view.exposure));
+        out = applyPixels(o, doc.renderedPreset(), image, {}, layers);
     }
+    if (!out) return out.error();
+    PreviewFrame frame;
+    if (!layers) frame.after = toDisplay(std::move(out->image), imageCurve, imageExposure);
+    for (auto& [name, pass] : out->layers)
+        frame.layers.emplace_back(name, toDisplay(std::move(pass), curve, exposure));
     frame.renderMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return frame;
