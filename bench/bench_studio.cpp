@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The studio's preview update on the CPU, as the window makes it while the light is dragged
 // (the view: the image with its flare at 1280x720, the sample photograph at its own size) and
-// when it stops (the component passes, each 320 pixels wide), for each shipped sprite preset.
+// when it stops (the component passes, each 320 pixels wide), for each shipped sprite preset;
+// each post-process preset's view, and a lens's view while dragged and when the drag stops.
 // frames/s is what the view can follow; the window's own drawing (Dear ImGui on llvmpipe) comes on
 // top, and is measured by `flarekit studio --stats` (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
@@ -16,14 +17,17 @@ using namespace flarekit::studio;
 
 namespace {
 
-void previewUpdate(benchmark::State& state, const std::string& preset, bool layers) {
+void previewUpdate(benchmark::State& state, FlareKind kind, const std::string& preset, bool layers,
+                   bool dragging) {
     Document doc;
     if (Status s = doc.openImage(FLAREKIT_SAMPLES "/sunset.png"); !s)
         return state.SkipWithError(s.error().message.c_str());
+    doc.kind = kind;
     if (Status s = doc.loadPreset(preset); !s)
         return state.SkipWithError(s.error().message.c_str());
     Preview preview;
     preview.fit(doc, 1280, 720);
+    preview.dragging = dragging;
     float x = 200;
     for (auto _ : state) {
         doc.light = {x, 260.f};  // a new place each frame, as in a drag
@@ -40,14 +44,26 @@ void previewUpdate(benchmark::State& state, const std::string& preset, bool laye
     state.SetItemsProcessed(state.iterations() * pixels);
 }
 
+void add(const std::string& name, FlareKind kind, const std::string& preset, bool layers,
+         bool dragging) {
+    benchmark::RegisterBenchmark(name.c_str(), previewUpdate, kind, preset, layers, dragging)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+}
+
 void registerAll() {
     for (const std::string& name : shippedPresetNames()) {
-        benchmark::RegisterBenchmark(("BM_StudioDrag/" + name).c_str(), previewUpdate, name, false)
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime();
-        benchmark::RegisterBenchmark(("BM_StudioRefine/" + name).c_str(), previewUpdate, name, true)
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime();
+        add("BM_StudioDrag/" + name, FlareKind::Sprite, name, false, true);
+        add("BM_StudioRefine/" + name, FlareKind::Sprite, name, true, false);
+    }
+    // A post-process flare does not follow the light: an update is an edit of the preset.
+    for (const std::string& name : shippedPostFxPresetNames())
+        add("BM_StudioPostFx/" + name, FlareKind::PostFx, name, false, false);
+    // A lens while the light is dragged (its 8 brightest ghosts, coarse meshes) and when it
+    // stops (every ghost of the render settings, 66 by default).
+    for (const char* lens : {"angenieux-double-gauss", "canon-zoom-70-210"}) {
+        add(std::string("BM_StudioLensDrag/") + lens, FlareKind::Lens, lens, false, true);
+        add(std::string("BM_StudioLensFull/") + lens, FlareKind::Lens, lens, false, false);
     }
 }
 

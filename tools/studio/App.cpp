@@ -156,10 +156,11 @@ int App::run() {
     if (m_options.stats && m_exitCode <= 0)
         std::fprintf(stderr,
                      "studio: %ld frames, %ld previews, %.1f ms each on average; drags %ld "
-                     "frames at %.1f frames/s; light at %.3f,%.3f\n",
+                     "frames at %.1f frames/s; longest frame beside the browser's work %.1f ms; "
+                     "light at %.3f,%.3f\n",
                      m_frames, m_renders, m_renders ? m_renderMsTotal / double(m_renders) : 0.0,
                      m_dragFrames, m_dragSeconds > 0 ? double(m_dragFrames) / m_dragSeconds : 0.0,
-                     double(m_doc.light.x), double(m_doc.light.y));
+                     m_longestBrowserFrame * 1000.0, double(m_doc.light.x), double(m_doc.light.y));
     return std::max(m_exitCode, 0);
 }
 
@@ -168,6 +169,7 @@ bool App::frame() {
     const double now = glfwGetTime();
     if (m_dragging && m_frameStart > 0) m_dragSeconds += now - m_frameStart, ++m_dragFrames;
     m_frameStart = now;
+    const long rendersBefore = m_renders;
     glfwPollEvents();
     if (Status s = stepScript(); !s) {
         std::fprintf(stderr, "flarekit studio: %s\n", s.error().message.c_str());
@@ -211,6 +213,10 @@ bool App::frame() {
         if (m_script.empty()) m_exitCode = 0;  // a plain --screenshot: one picture, then exit
     }
     glfwSwapBuffers(m_window);
+    // The longest frame while the browser's thumbnails were being made and the view itself had
+    // nothing to redraw: what the background work costs the window (uploads, contention).
+    if (m_browser.busy() && m_renders == rendersBefore)
+        m_longestBrowserFrame = std::max(m_longestBrowserFrame, glfwGetTime() - now);
     return true;
 }
 

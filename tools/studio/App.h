@@ -133,7 +133,7 @@ class App {
     std::string m_status;
     bool m_statusError = false;
     long m_frames = 0, m_renders = 0, m_dragFrames = 0;
-    double m_frameStart = 0, m_dragSeconds = 0;
+    double m_frameStart = 0, m_dragSeconds = 0, m_longestBrowserFrame = 0;
     double m_renderMsTotal = 0;
 };
 
