@@ -238,6 +238,12 @@ def test_script_errors_are_one_line_and_stop_before_any_later_action(studio, tmp
     assert done.returncode == 2 and "unknown action \"jump\"" in done.stderr
     done = studio([{"action": "open", "path": "missing.png"}], ok=False)
     assert done.returncode == 2 and "missing.png" in done.stderr
+    # A drag's frame count that is not a count: one line, not an uncaught exception.
+    done = studio([{"action": "open", "path": str(SUNSET)},
+                   {"action": "drag", "from": [1, 2], "to": [3, 4], "frames": "many"}], ok=False)
+    assert done.returncode == 2
+    assert done.stderr.strip().splitlines()[-1].endswith(
+        'actions[1]: frames: expected an integer in [1, 100000], got "many"')
 
 
 def test_the_docs_list_every_script_action(cli):

@@ -224,14 +224,11 @@ Status App::stepScript() {
     // The layout settles first (the main menu's height is known from the second frame on).
     if (m_script.empty() || m_frames < kSettleFrames) return Ok{};
     if (m_dragFrame >= 0) {  // a drag in progress: the pointer's next position
-        const Action& a = m_script[m_next - 1];
-        const int frames = a.args.value("frames", kDefaultDragFrames);
+        const int frames = m_dragSteps;
         // Pressed from frame 0 to `frames` (k = 0 to 1), released on the frame after.
-        const float k = std::min(1.f, float(m_dragFrame) / float(std::max(1, frames)));
-        const auto& from = a.args["from"];
-        const auto& to = a.args["to"];
-        const Point p{from[0].get<float>() + k * (to[0].get<float>() - from[0].get<float>()),
-                      from[1].get<float>() + k * (to[1].get<float>() - from[1].get<float>())};
+        const float k = std::min(1.f, float(m_dragFrame) / float(frames));
+        const Point p{m_dragFrom.x + k * (m_dragTo.x - m_dragFrom.x),
+                      m_dragFrom.y + k * (m_dragTo.y - m_dragFrom.y)};
         m_view.toWindow(p, m_pointerX, m_pointerY);
         m_pointerDown = m_dragFrame <= frames;
         if (m_dragFrame++ > frames) m_dragFrame = -1, m_pointerScripted = false;
@@ -258,21 +255,21 @@ Status App::stepScript() {
         return s;
     }
     if (a.kind == "drag") {
-        for (const char* f : {"from", "to"}) {
-            const auto& v = a.args[f];
-            if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
-                return invalidInput(a.where + ": " + f + ": expected [x, y] in image pixels");
-        }
+        auto from = actionPoint(a, "from");
+        if (!from) return from.error();
+        auto to = actionPoint(a, "to");
+        if (!to) return to.error();
+        auto frames = actionFrames(a, kDefaultDragFrames);
+        if (!frames) return frames.error();
         if (!m_doc.hasImage()) return invalidInput(a.where + ": drag: no image is open");
+        m_dragFrom = *from, m_dragTo = *to, m_dragSteps = *frames;
         m_dragFrame = 0, m_pointerScripted = true;
         return stepScript();
     }
     if (a.kind == "pick") {
-        const auto& at = a.args["at"];
-        if (!at.is_array() || at.size() != 2 || !at[0].is_number() || !at[1].is_number())
-            return invalidInput(a.where + ": at: expected [x, y] in image pixels");
-        if (Status s = pickGhost({at[0].get<float>(), at[1].get<float>()}); !s)
-            return invalidInput(a.where + ": " + s.error().message);
+        auto at = actionPoint(a, "at");
+        if (!at) return at.error();
+        if (Status s = pickGhost(*at); !s) return invalidInput(a.where + ": " + s.error().message);
         return Ok{};
     }
     if (a.kind == "panel") {
@@ -284,7 +281,9 @@ Status App::stepScript() {
         return Ok{};
     }
     if (a.kind == "wait") {
-        m_waitFrames = std::max(0, a.args.value("frames", 1) - 1);
+        auto frames = actionFrames(a, 1);
+        if (!frames) return frames.error();
+        m_waitFrames = *frames - 1;
         return Ok{};
     }
     if (a.kind == "split") {

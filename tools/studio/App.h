@@ -119,6 +119,8 @@ class App {
     std::vector<Action> m_script;
     std::size_t m_next = 0;
     int m_dragFrame = -1, m_waitFrames = 0;
+    Point m_dragFrom, m_dragTo;  //!< the drag in progress, image pixels
+    int m_dragSteps = 1;         //!< its frames
     bool m_pointerScripted = false;
     float m_pointerX = 0, m_pointerY = 0;
     bool m_pointerDown = false;

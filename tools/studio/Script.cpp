@@ -159,6 +159,25 @@ Result<std::vector<Action>> loadScript(const std::string& path) {
     return actions;
 }
 
+Result<Point> actionPoint(const Action& a, const char* field) {
+    const json& v = a.args[field];
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        return failAt(
+            a, std::string(field) + ": expected [x, y] in image pixels, got " + jsonExcerpt(v));
+    return Point{v[0].get<float>(), v[1].get<float>()};
+}
+
+Result<int> actionFrames(const Action& a, int fallback) {
+    // A drag or wait of 100,000 frames is half an hour at 60 frames/s: past any real script.
+    constexpr long long kMaxFrames = 100000;
+    if (!a.args.contains("frames")) return fallback;
+    const json& v = a.args["frames"];
+    if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > kMaxFrames)
+        return failAt(a, "frames: expected an integer in [1, " + std::to_string(kMaxFrames) +
+                             "], got " + jsonExcerpt(v));
+    return int(v.get<long long>());
+}
+
 bool isWindowAction(const std::string& kind) {
     return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
            kind == "wait" || kind == "split" || kind == "panel" || kind == "pick";
@@ -198,11 +217,9 @@ Status runDocumentAction(Document& doc, const Action& a) {
         return withWhere(doc.exportRender(*path, depth));
     }
     if (k == "light") {
-        const json& at = a.args["at"];
-        if (!at.is_array() || at.size() != 2 || !at[0].is_number() || !at[1].is_number())
-            return failAt(
-                a, std::string("at: expected [x, y] in image pixels, got ") + jsonExcerpt(at));
-        doc.light = {at[0].get<float>(), at[1].get<float>()};
+        auto at = actionPoint(a, "at");
+        if (!at) return at.error();
+        doc.light = *at;
         return Ok{};
     }
     if (k == "mode") {

@@ -29,6 +29,11 @@ struct Action {
 //! The script's actions, each checked for its kind and fields before the window opens.
 Result<std::vector<Action>> loadScript(const std::string& path);
 
+//! The action's `field` as [x, y] image pixels, or the error naming it.
+Result<Point> actionPoint(const Action& action, const char* field);
+//! The action's optional `frames`: an integer in [1, 100000] (`fallback` when absent).
+Result<int> actionFrames(const Action& action, int fallback);
+
 //! What the app plays itself (it needs the pointer, the framebuffer or a question's answer).
 bool isWindowAction(const std::string& kind);
 
