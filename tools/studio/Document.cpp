@@ -53,7 +53,7 @@ Document::Document() {
         m_presetPath[2] = m_lensJob.lens = name;
         break;
     }
-    m_committed = design();
+    markCommitted();
     m_savedJson[0] = presetToJson(m_preset);
     m_savedJson[1] = postFxPresetToJson(m_post);
 }
@@ -71,8 +71,13 @@ std::string lensText(const Lens& lens, const LensJobOptions& job) {
 
 }  // namespace
 
-std::string Document::designText(const Design& d) const {
-    return presetToJson(d.sprite) + postFxPresetToJson(d.post) + lensText(d.lens, d.lensJob);
+std::string Document::designText() const {
+    return presetToJson(m_preset) + postFxPresetToJson(m_post) + lensText(m_lens, m_lensJob);
+}
+
+void Document::markCommitted() {
+    m_committed = design();
+    m_committedText = designText();
 }
 
 std::string Document::currentJson() const {
@@ -85,7 +90,7 @@ void Document::restore(const Design& d) {
     m_post = d.post;
     m_lens = d.lens;
     m_lensJob = d.lensJob;
-    m_committed = d;
+    markCommitted();
     clampSelection();
 }
 
@@ -154,7 +159,7 @@ Status Document::loadPreset(const std::string& nameOrPath) {
     }
     m_undo.push_back(before);
     m_redo.clear();
-    m_committed = design();
+    markCommitted();
     m_savedJson[int(kind)] = currentJson();
     m_presetPath[int(kind)] = nameOrPath;
     clampSelection();
@@ -333,14 +338,14 @@ void Document::setVisible(int element, bool visible) {
 }
 
 bool Document::changedSinceCommit() const {
-    return designText(design()) != designText(m_committed);
+    return designText() != m_committedText;
 }
 
 void Document::commit() {
     if (!changedSinceCommit()) return;
     m_undo.push_back(m_committed);
     m_redo.clear();
-    m_committed = design();
+    markCommitted();
 }
 
 bool Document::undo() {

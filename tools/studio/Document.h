@@ -140,7 +140,10 @@ class Document {
     };
     Design design() const { return {m_preset, m_post, m_lens, m_lensJob}; }
     void restore(const Design& d);
-    std::string designText(const Design& d) const;
+    //! The current design as text: what an edit is detected by (against m_committedText).
+    std::string designText() const;
+    //! The current design becomes the one undo steps start from.
+    void markCommitted();
     bool changedSinceCommit() const;
     void clampSelection();
     PixelInput m_source;
@@ -151,6 +154,7 @@ class Document {
     Lens m_lens;
     LensJobOptions m_lensJob;
     Design m_committed;
+    std::string m_committedText;  //!< designText() of m_committed, kept, not remade each frame
     std::string m_presetPath[3], m_savedJson[3];  //!< per FlareKind
     std::vector<Design> m_undo, m_redo;
 };
