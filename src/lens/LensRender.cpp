@@ -17,6 +17,7 @@
 #include "flarekit/Lens.h"
 #include "flarekit/ParamText.h"
 #include "lens/GhostMesh.h"
+#include "lens/GhostPlacement.h"
 #include "lens/LensTrace.h"
 #include "lens/Spectrum.h"
 #include "lens/Starburst.h"
@@ -92,38 +93,15 @@ namespace {
 
 using lens::Cover;
 using lens::edgeMask;
+using lens::fieldAngle;
 using lens::kMaskEdge;
 using lens::Mesh;
+using lens::PickedGhosts;
+using lens::pickGhosts;
 using lens::pixelIndex;
 using lens::RayResult;
 using lens::SensorMap;
 using lens::TraceLens;
-
-//! The field angle (degrees) whose direct image's centroid lands at display point (x, y) mm:
-//! paraxial first, then corrected twice by the traced centroid (distortion).
-std::array<double, 2> fieldAngle(const TraceLens& t, double focal, double x, double y) {
-    double tx = x / focal, ty = y / focal;
-    const auto path = lens::ghostPath(int(t.surfaces.size()), -1, -1);
-    const double sa = t.surfaces.front().semiAperture;
-    for (int iter = 0; iter < 2; ++iter) {
-        const lens::Vec dir =
-            lens::beamDirection(std::atan(tx) * 180 / M_PI, std::atan(ty) * 180 / M_PI);
-        double cx = 0, cy = 0;
-        int n = 0;
-        for (int k = 0; k < 64; ++k) {
-            const double gx = sa * (2.0 * ((k % 8) + 0.5) / 8 - 1),
-                         gy = sa * (2.0 * ((k / 8) + 0.5) / 8 - 1);
-            const RayResult r =
-                lens::traceRay(t, path, lens::beamOrigin(t, dir, gx, gy), dir, true);
-            if (r.alive) cx += r.x, cy += r.y, ++n;
-        }
-        if (n == 0) break;
-        cx /= n, cy /= n;
-        if (std::fabs(cx) > 1e-9) tx *= x / cx;
-        if (std::fabs(cy) > 1e-9) ty *= y / cy;
-    }
-    return {std::atan(tx) * 180 / M_PI, std::atan(ty) * 180 / M_PI};
-}
 
 //! Traces the mesh into `m`, reusing its rays' storage: a light after the first fills the
 //! meshes the one before it left (no allocation, no page faults on fresh memory per source).
@@ -266,31 +244,6 @@ void rasteriseBand(const std::vector<Mesh>& meshes, const lens::Iris& iris, Imag
 }
 
 //! Which ghosts to draw: the brightest `count` at the angle of the brightest source.
-//! The `count` brightest ghosts at `angle` (pairs of surfaces) and the brightest one's share of
-//! the light (luminance-weighted over its RGB figures; 0 when none reaches the sensor).
-struct PickedGhosts {
-    std::vector<std::array<int, 2>> pairs;
-    double share = 0;
-};
-
-PickedGhosts pickGhosts(const Lens& lens, std::array<double, 2> angle, int count) {
-    PickedGhosts out;
-    if (count <= 0) return out;
-    GhostQuery q;
-    q.angleXDeg = angle[0], q.angleYDeg = angle[1], q.gridSide = 16;
-    q.ghostRays = 0;  // the intensities only: positions are drawn from the meshes
-    auto report = analyseGhosts(lens, q);
-    if (!report) return out;
-    for (const GhostFigure& g : report->ghosts) {
-        if (int(out.pairs.size()) >= count) break;
-        if (g.intensity[0] + g.intensity[1] + g.intensity[2] <= 0) continue;
-        out.pairs.push_back({g.first, g.second});
-        // Rec. 709 luminance, in double: the shares run down to 1e-9.
-        out.share = std::max(
-            out.share, 0.2126 * g.intensity[0] + 0.7152 * g.intensity[1] + 0.0722 * g.intensity[2]);
-    }
-    return out;
-}
 
 //! The starburst of one source: the PSF scaled by wavelength (Fraunhofer: the pattern's size
 //! goes as lambda), summed over the samples, `share` of its energy.
@@ -419,33 +372,6 @@ Image lensFlareSum(const LensFlareLayers& layers) {
                                      : layers.ghosts.data()[i] + layers.starburst.data()[i] +
                                            layers.glare.data()[i];
     return flare;
-}
-
-Result<std::vector<GhostOnImage>> ghostsOnImage(const Lens& lens, int width, int height,
-                                                Point light, int count) {
-    if (width < 1 || height < 1) return invalidInput("ghosts on image: an empty image");
-    SensorMap map;
-    map.width = width, map.height = height;
-    map.mmPerPixel = std::min(lens.sensor.width / width, lens.sensor.height / height);
-    const TraceLens dLine = lens::prepareTrace(lens, kLineD);
-    const auto angle =
-        fieldAngle(dLine, paraxial(lens).focalLength, map.toMmX(light.x), map.toMmY(light.y));
-    // The ghosts the render draws (pickGhosts' order), placed by the refined analysis.
-    const PickedGhosts picked = pickGhosts(lens, angle, count);
-    GhostQuery q;
-    q.angleXDeg = angle[0], q.angleYDeg = angle[1];
-    auto report = analyseGhosts(lens, q);
-    if (!report) return report.error();
-    std::vector<GhostOnImage> out;
-    for (const auto& [first, second] : picked.pairs) {
-        for (const GhostFigure& g : report->ghosts) {
-            if (g.first != first || g.second != second) continue;
-            out.push_back({g.first, g.second, map.toPxX(g.centerX), map.toPxY(g.centerY),
-                           g.radius90 / map.mmPerPixel, g.intensity});
-            break;
-        }
-    }
-    return out;
 }
 
 Result<LensFlareLayers> renderLensFlare(const Lens& lens, int width, int height,
