@@ -39,6 +39,8 @@ packages=(
   # the embedding example's window test and the studio's tests run on a private X server (Xvfb,
   # local socket only; xauth for xvfb-run in the docs)
   xvfb xauth
+  # flarekit convert: Unity's lens-flare assets are YAML (yaml-cpp, MIT)
+  libyaml-cpp-dev
   # flarekit studio, the live designer: Dear ImGui 1.86 panels in a GLFW window
   libimgui-dev
   # shots on a farm: the Slurm test runs a one-node cluster (its own munged, slurmctld, slurmd)

@@ -6,7 +6,9 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "flarekit/Blend.h"
@@ -26,8 +28,12 @@ enum class ElementType {
     //! that edge and gone `reach` inside or outside it (BCC's Edge Streak, FlareSim's Outside
     //! Source): the flare leaves the frame with the light instead of vanishing at the border.
     EdgeStreak,
+    //! A texture drawn as the element: an engine's image-based flare element (Unity's Image
+    //! type, Babylon's and three.js's textures) kept as the image itself, scaled so the texture
+    //! spans the element's diameter, tinted by `color` x `intensity` (see `texture`).
+    Image,
 };
-inline constexpr int kElementTypeCount = 7;
+inline constexpr int kElementTypeCount = 8;
 std::optional<ElementType> parseElementType(std::string_view name);
 std::string_view elementTypeName(ElementType type);
 
@@ -57,6 +63,14 @@ struct ElementParams {
     //! False: kept in the preset but not drawn (an element switched off while designing, as
     //! Unity's lens-flare elements have a Visible box).
     bool visible = true;
+    //! Image elements: the texture file as the preset names it (relative to the preset's
+    //! folder) and its pixels, linear RGBA, read when the preset is parsed. Not a table
+    //! parameter: a path is not a number (the preset reader handles the "texture" key).
+    std::string texture;
+    std::shared_ptr<const Image> textureImage;
+    //! What another engine's file held for this element and flarekit cannot draw (a curve, a
+    //! blend mode it lacks), as compact JSON: kept so converting back restores it. Empty: none.
+    std::string source;
 };
 
 //! Bit of an element type in Param::appliesTo.
@@ -72,7 +86,8 @@ inline constexpr std::uint32_t kGlow = typeBit(ElementType::Glow),
                                kRays = typeBit(ElementType::Rays),
                                kDisc = typeBit(ElementType::Disc),
                                kPolygon = typeBit(ElementType::Polygon), kSpikes = kStreaks | kRays,
-                               kEdgeStreak = typeBit(ElementType::EdgeStreak);
+                               kEdgeStreak = typeBit(ElementType::EdgeStreak),
+                               kImage = typeBit(ElementType::Image);
 }  // namespace element_bits
 
 //! Every element parameter. Ranges are what still gives a sensible image; they exist to catch

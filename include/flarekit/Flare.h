@@ -23,6 +23,9 @@ struct Preset {
     std::string description;
     float intensity = 1.f;  //!< multiplies every element
     std::vector<ElementParams> elements;
+    //! Another engine's settings for the whole flare that flarekit cannot draw, as compact
+    //! JSON (flarekit/Convert.h): kept so converting back restores them. Empty: none.
+    std::string source;
 };
 
 inline constexpr Param<Preset> kPresetParams[] = {
@@ -90,7 +93,7 @@ struct FlareStats {
 FlareStats renderFlare(Image& image, const Preset& preset, Point light, float intensity);
 
 //! A flare split into the passes a compositor grades separately: each element goes to one layer
-//! by its type (glow: Glow; halo: Ring; ghosts: Disc, Polygon; streaks: Streaks, EdgeStreak;
+//! by its type (glow: Glow; halo: Ring; ghosts: Disc, Polygon, Image; streaks: Streaks, EdgeStreak;
 //! starburst: Rays). Only the layers the preset has are made, in this order.
 struct FlareLayer {
     std::string name;

@@ -284,6 +284,9 @@ struct PostFxParams {
     DirtParams dirt;
     ToneParams tone;
     float flareIntensity = 1.f;  //!< multiplies ghosts, halo and streaks
+    //! Another engine's settings flarekit cannot run, as compact JSON (flarekit/Convert.h):
+    //! kept so converting back restores them. Empty: none.
+    std::string source;
 };
 inline constexpr Param<PostFxParams> kPostFxTopParams[] = {
     param<&PostFxParams::flareIntensity>("flare_intensity", 0, 1000, "",

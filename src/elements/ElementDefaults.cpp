@@ -44,6 +44,9 @@ ElementParams defaultElement(ElementType type) {
             p.innerColor = Rgb{1.f, 1.f, 1.f};
             p.intensity = 0.5f;
             break;
+        case ElementType::Image:  // the texture as drawn, white tint
+            p.size = 0.1f;
+            break;
         case ElementType::Polygon:
             p.size = 0.07f;
             p.color = {0.4f, 0.6f, 0.5f};

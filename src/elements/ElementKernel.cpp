@@ -12,7 +12,7 @@ namespace flarekit {
 
 namespace {
 constexpr std::array<std::string_view, kElementTypeCount> kTypeNames = {
-    "glow", "ring", "streaks", "rays", "disc", "polygon", "edge-streak"};
+    "glow", "ring", "streaks", "rays", "disc", "polygon", "edge-streak", "image"};
 Rgb scaled(const Rgb& c, float k) {
     return {c[0] * k, c[1] * k, c[2] * k};
 }
@@ -46,9 +46,15 @@ ElementKernel prepareElement(const ElementParams& params, float radiusPx) {
         k.spikeProfile = makeSpikeProfile(params.thickness, k.pixel);
         k.maxHalfWidth = spikeSupport(k.spikeProfile);
     }
-    // Support: an ellipse of semi-axes (R*aspect, R) rotated, plus the antialiasing band.
+    // Support: an ellipse of semi-axes (R*aspect, R) rotated, plus the antialiasing band; an
+    // image fills the rotated rectangle of half sides (R*aspect, R).
     const float a = radiusPx * params.aspect, b = radiusPx;
     const float margin = 1.f + 1.f / std::min(1.f, params.aspect);
+    if (params.type == ElementType::Image) {
+        k.halfExtentX = std::abs(a * k.cosRot) + std::abs(b * k.sinRot) + margin;
+        k.halfExtentY = std::abs(a * k.sinRot) + std::abs(b * k.cosRot) + margin;
+        return k;
+    }
     k.halfExtentX = std::sqrt(a * a * k.cosRot * k.cosRot + b * b * k.sinRot * k.sinRot) + margin;
     k.halfExtentY = std::sqrt(a * a * k.sinRot * k.sinRot + b * b * k.cosRot * k.cosRot) + margin;
     return k;
@@ -65,6 +71,7 @@ Rgba shadeElement(const ElementKernel& k, float dx, float dy) {
     // Into the element's frame: undo the clockwise rotation, then the horizontal stretch.
     const float lx = (dx * k.cosRot + dy * k.sinRot) / (k.params.aspect * k.radiusPx);
     const float ly = (-dx * k.sinRot + dy * k.cosRot) / k.radiusPx;
+    if (k.params.type == ElementType::Image) return shadeImage(k, lx, ly);
     if (lx * lx + ly * ly >= (1.f + k.pixel) * (1.f + k.pixel)) return {};
     switch (k.params.type) {
         case ElementType::Glow:
@@ -79,6 +86,8 @@ Rgba shadeElement(const ElementKernel& k, float dx, float dy) {
             return shadeDisc(k, lx, ly);
         case ElementType::Polygon:
             return shadePolygon(k, lx, ly);
+        case ElementType::Image:
+            break;  // shaded above: its support is a square, not the unit disc
     }
     return {};
 }

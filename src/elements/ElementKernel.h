@@ -52,6 +52,9 @@ Rgba shadeRing(const ElementKernel& k, float x, float y);
 Rgba shadeSpikes(const ElementKernel& k, float x, float y);
 Rgba shadeDisc(const ElementKernel& k, float x, float y);
 Rgba shadePolygon(const ElementKernel& k, float x, float y);
+//! The texture over the square [-1, 1]^2 (bilinear, clear outside), premultiplied by its alpha
+//! and tinted by k.outer.
+Rgba shadeImage(const ElementKernel& k, float x, float y);
 std::vector<Spike> makeSpikes(const ElementParams& params);
 //! The glow falloff g(d) of Glow.cpp: 1 at the centre, 0 at and past the rim.
 float glowProfile(float d);

@@ -12,6 +12,7 @@ int flareLayerOf(ElementType type) {
             return 1;
         case ElementType::Disc:
         case ElementType::Polygon:
+        case ElementType::Image:  // engines' textured elements are mostly ghosts
             return 2;
         case ElementType::Streaks:
         case ElementType::EdgeStreak:

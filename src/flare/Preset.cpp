@@ -12,6 +12,7 @@
 #include "core/ParamJson.h"
 #include "core/PresetFiles.h"
 #include "flarekit/Flare.h"
+#include "flarekit/ImageIO.h"
 #include "flarekit/ParamText.h"
 
 namespace flarekit {
@@ -30,7 +31,33 @@ std::string elementTypeList() {
     return names;
 }
 
-Result<ElementParams> readElement(const json& e, const JsonPlace& at) {
+//! Largest texture side an image element may name: 8192 covers any engine's flare texture
+//! (they are 64-2048 px) and bounds what a preset makes the reader allocate.
+constexpr int kMaxTextureSide = 8192;
+
+//! An image element's "texture": the file, relative to the preset's folder, read linear.
+Status readTexture(const json& value, const fs::path& baseDir, const JsonPlace& at,
+                   ElementParams& p) {
+    if (!value.is_string() || value.get<std::string>().empty())
+        return at.fail("expected the file name of an image, got " + jsonExcerpt(value));
+    p.texture = value.get<std::string>();
+    const fs::path file =
+        fs::path(p.texture).is_absolute() ? fs::path(p.texture) : baseDir / fs::path(p.texture);
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+        return at.fail("expected an image file, '" + file.string() + "' does not exist");
+    auto loaded = readImage(file.string(), JobMemory{32, 0, "preset texture"});
+    if (!loaded) return at.fail(loaded.error().message);
+    if (loaded->image.width() > kMaxTextureSide || loaded->image.height() > kMaxTextureSide) {
+        return at.fail("expected a texture of at most " + std::to_string(kMaxTextureSide) +
+                       " pixels a side, got " + std::to_string(loaded->image.width()) + "x" +
+                       std::to_string(loaded->image.height()));
+    }
+    p.textureImage = std::make_shared<const Image>(std::move(loaded->image));
+    return Ok{};
+}
+
+Result<ElementParams> readElement(const json& e, const JsonPlace& at, const fs::path& baseDir) {
     if (!e.is_object()) return at.fail("expected an object, got " + jsonExcerpt(e));
     const auto typeIt = e.find("type");
     if (typeIt == e.end())
@@ -40,10 +67,23 @@ Result<ElementParams> readElement(const json& e, const JsonPlace& at) {
         return (at / "type")
             .fail("expected one of " + elementTypeList() + ", got " + jsonExcerpt(*typeIt));
     ElementParams p = defaultElement(*type);
-    if (auto err = readParams<ElementParams>(e, kElementParams, p, at, {"type"}, typeBit(*type),
-                                             elementTypeName(*type))) {
+    const bool image = *type == ElementType::Image;
+    if (auto err = image ? readParams<ElementParams>(e, kElementParams, p, at,
+                                                     {"type", "texture", "source"}, typeBit(*type),
+                                                     elementTypeName(*type))
+                         : readParams<ElementParams>(e, kElementParams, p, at, {"type", "source"},
+                                                     typeBit(*type), elementTypeName(*type))) {
         return *err;
     }
+    if (const auto src = e.find("source"); src != e.end()) {
+        if (!src->is_object())
+            return (at / "source").fail("expected an object, got " + jsonExcerpt(*src));
+        p.source = src->dump();
+    }
+    const auto tex = e.find("texture");
+    if (!image) return p;
+    if (tex == e.end()) return (at / "texture").fail("missing; expected the file of the image");
+    if (Status s = readTexture(*tex, baseDir, at / "texture", p); !s) return s.error();
     return p;
 }
 
@@ -63,6 +103,8 @@ Status validatePreset(const Preset& preset) {
         }
         if (Status s = validateParams<ElementParams>(e, kElementParams, at, typeBit(e.type)); !s)
             return s;
+        if (e.type == ElementType::Image && !e.textureImage)
+            return invalidInput(at + "texture: expected the image of an image element");
     }
     return Ok{};
 }
@@ -75,11 +117,16 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
     if (!doc.is_object()) return top.fail("expected an object, got " + jsonExcerpt(doc));
     Preset preset;
     preset.name = fs::path(source).stem().string();
+    const fs::path baseDir = fs::path(source).parent_path();
     for (const auto& [key, value] : doc.items()) {
         if (key == "name" || key == "description") {
             if (!value.is_string())
                 return (top / key).fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? preset.name : preset.description) = value.get<std::string>();
+        } else if (key == "source") {
+            if (!value.is_object())
+                return (top / key).fail("expected an object, got " + jsonExcerpt(value));
+            preset.source = value.dump();
         } else if (key == "elements") {
             if (!value.is_array() || value.empty() || value.size() > kMaxPresetElements) {
                 return (top / key).fail("expected an array of 1 to " +
@@ -87,7 +134,8 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
                                         jsonExcerpt(value));
             }
             for (std::size_t i = 0; i < value.size(); ++i) {
-                auto element = readElement(value[i], JsonPlace(source, "element").index(i));
+                auto element =
+                    readElement(value[i], JsonPlace(source, "element").index(i), baseDir);
                 if (!element) return element.error();
                 preset.elements.push_back(element.value());
             }
@@ -97,7 +145,7 @@ Result<Preset> parsePreset(const std::string& jsonText, const std::string& sourc
             p->set(preset, *v);
         } else {
             return (top / key).fail(
-                "unknown key (expected one of: name, description, intensity, elements)");
+                "unknown key (expected one of: name, description, intensity, elements, source)");
         }
     }
     if (preset.elements.empty())
@@ -112,11 +160,20 @@ std::string presetToJson(const Preset& preset) {
     doc["name"] = preset.name;
     if (!preset.description.empty()) doc["description"] = preset.description;
     if (preset.intensity != Preset{}.intensity) doc["intensity"] = preset.intensity;
+    if (json src = json::parse(preset.source, nullptr, false); src.is_object())
+        doc["source"] = std::move(src);
     doc["elements"] = json::array();
     for (const ElementParams& e : preset.elements) {
         json element =
             writeParams<ElementParams>(e, kElementParams, defaultElement(e.type), typeBit(e.type));
         element["type"] = std::string(elementTypeName(e.type));
+        // One colour where the type's default has a gradient: written, or reading it back would
+        // bring the default's inner colour back.
+        if (!e.innerColor && defaultElement(e.type).innerColor)
+            element["inner_color"] = {e.color[0], e.color[1], e.color[2]};
+        if (e.type == ElementType::Image) element["texture"] = e.texture;
+        if (json src = json::parse(e.source, nullptr, false); src.is_object())
+            element["source"] = std::move(src);
         doc["elements"].push_back(std::move(element));
     }
     // One element per line, as the shipped presets are written.
@@ -192,6 +249,9 @@ std::string presetParameterReference() {
             case ElementType::EdgeStreak:
                 os << "aspect " << p.aspect << ", reach " << p.reach
                    << " (placed on the frame edge; t unused)";
+                break;
+            case ElementType::Image:
+                os << "texture (required): an image file, relative to the preset's folder";
                 break;
             case ElementType::Glow:
                 break;

@@ -117,6 +117,10 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
             if (!value.is_string())
                 return (top / key).fail("expected a string, got " + jsonExcerpt(value));
             (key == "name" ? p.name : p.description) = value.get<std::string>();
+        } else if (key == "source") {
+            if (!value.is_object())
+                return (top / key).fail("expected an object, got " + jsonExcerpt(value));
+            p.source = value.dump();
         } else if (const Param<PostFxParams>* f = findParam<PostFxParams>(kPostFxTopParams, key)) {
             auto v = readParamValue(*f, value, top / key);
             if (!v) return v.error();
@@ -138,7 +142,8 @@ Result<PostFxParams> parsePostFxPreset(const std::string& jsonText, const std::s
         } else {
             return (top / key).fail(
                 "unknown key (expected one of: name, description, flare_intensity, bright, bloom, "
-                "ghosts, ghost_series, halo, streaks, chromatic, starburst, dirt, tonemap)");
+                "ghosts, ghost_series, halo, streaks, chromatic, starburst, dirt, tonemap, "
+                "source)");
         }
     }
     if (Status s = validatePostFxParams(p); !s)
@@ -160,6 +165,8 @@ std::string postFxPresetToJson(const PostFxParams& params) {
         const json keys = writeParams<Owner>(owner, table, Owner{});
         if (!keys.empty()) text += "  \"" + std::string(section) + "\": " + keys.dump() + ",\n";
     });
+    if (json src = json::parse(params.source, nullptr, false); src.is_object())
+        text += "  \"source\": " + src.dump() + ",\n";
     text += "  \"ghosts\": [";
     for (std::size_t i = 0; i < params.ghosts.size(); ++i)
         text += std::string(i ? ",\n    " : "\n    ") +

@@ -53,6 +53,14 @@ TEST(Elements, EveryTypeIsZeroPastItsRadius) {
     for (int t = 0; t < kElementTypeCount; ++t) {
         ElementParams p = defaultElement(ElementType(t));
         p.aspect = 1.f;  // the bound renderElement states is for unstretched elements
+        if (p.type == ElementType::Image) {
+            // A round texture (an image's square corners reach past the radius by design).
+            Image disc(32, 32);
+            for (int y = 0; y < 32; ++y)
+                for (int x = 0; x < 32; ++x)
+                    if (std::hypot(x + 0.5 - 16, y + 0.5 - 16) < 12) disc.at(x, y) = {1, 1, 1, 1};
+            p.textureImage = std::make_shared<const Image>(std::move(disc));
+        }
         for (float radius : {7.3f, 40.f, 123.5f}) {
             const Image img = renderElement(p, radius);
             EXPECT_EQ(maxBeyond(img, radius + 1.0), 0.f)

@@ -127,6 +127,9 @@ TEST(Params, EveryPostFxDefaultIsInsideItsOwnRange) {
     for (int t = 0; t < kElementTypeCount; ++t) {
         Preset preset;
         preset.elements.push_back(defaultElement(ElementType(t)));
+        // An image element's texture is part of it, not a default.
+        if (ElementType(t) == ElementType::Image)
+            preset.elements.back().textureImage = std::make_shared<const Image>(2, 2);
         EXPECT_TRUE(validatePreset(preset).ok()) << t;
     }
 }

@@ -54,7 +54,7 @@ TEST(Preset, ReportsTheFieldAndWhatWasExpected) {
               "my.json: element[0].color: expected an array of 3 numbers in [0, 64], got [1,2]");
     EXPECT_EQ(
         errorOf(R"({"elements":[{"type":"sparkle"}]})"),
-        R"(my.json: element[0].type: expected one of "glow", "ring", "streaks", "rays", "disc", "polygon", "edge-streak", got "sparkle")");
+        R"(my.json: element[0].type: expected one of "glow", "ring", "streaks", "rays", "disc", "polygon", "edge-streak", "image", got "sparkle")");
     EXPECT_EQ(
         errorOf(R"({"elements":[{"size":0.1}]})").rfind("my.json: element[0].type: missing", 0),
         0u);
@@ -65,7 +65,8 @@ TEST(Preset, ReportsTheFieldAndWhatWasExpected) {
               "my.json: elements: expected an array of 1 to 256 elements, got []");
     EXPECT_EQ(
         errorOf(R"({"elemnts":[]})"),
-        "my.json: elemnts: unknown key (expected one of: name, description, intensity, elements)");
+        "my.json: elemnts: unknown key (expected one of: name, description, intensity, elements, "
+        "source)");
     EXPECT_EQ(errorOf(R"({"name":"x"})"),
               "my.json: elements: missing; expected an array of elements");
     EXPECT_EQ(errorOf("[1,2]"), "my.json: (top level): expected an object, got [1,2]");
@@ -75,7 +76,8 @@ TEST(Preset, UnknownKeysAndKeysOfOtherTypesAreRejected) {
     const std::string e = errorOf(R"({"elements":[{"type":"glow","blades":6}]})");
     EXPECT_EQ(
         e.rfind(
-            "my.json: element[0].blades: unknown key for a glow (expected one of: type, t, size",
+            "my.json: element[0].blades: unknown key for a glow (expected one of: type, source, t, "
+            "size",
             0),
         0u)
         << e;

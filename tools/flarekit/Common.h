@@ -84,6 +84,7 @@ void addBlendCommand(CLI::App& app, int& exitCode);
 void addApplyCommand(CLI::App& app, int& exitCode);
 void addElementsCommand(CLI::App& app, int& exitCode);
 void addPresetsCommand(CLI::App& app, int& exitCode);
+void addConvertCommand(CLI::App& app, int& exitCode);
 void addVisibilityCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addLightsCommand(CLI::App& app, int& exitCode);

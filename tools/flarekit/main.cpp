@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
     addApplyCommand(app, exitCode);
     addElementsCommand(app, exitCode);
     addPresetsCommand(app, exitCode);
+    addConvertCommand(app, exitCode);
     addVisibilityCommand(app, exitCode);
     addRenderCommand(app, exitCode);
     addLightsCommand(app, exitCode);

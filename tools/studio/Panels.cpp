@@ -277,8 +277,11 @@ void App::drawElementList() {
     if (ImGui::Button("Remove") && n > 1) m_doc.removeElement(sel);
     ImGui::SameLine();
     if (ImGui::BeginCombo("##add", "Add", ImGuiComboFlags_NoArrowButton)) {
+        // An image element needs a texture file: it comes from an engine's flare (File > Open
+        // of a Unity, Babylon or three.js file), not from this list.
         for (int t = 0; t < kElementTypeCount; ++t)
-            if (ImGui::Selectable(std::string(elementTypeName(ElementType(t))).c_str()))
+            if (ElementType(t) != ElementType::Image &&
+                ImGui::Selectable(std::string(elementTypeName(ElementType(t))).c_str()))
                 m_doc.addElement(ElementType(t));
         ImGui::EndCombo();
     }

@@ -334,8 +334,11 @@ Status runDocumentAction(Document& doc, const Action& a) {
         const auto type = a.args["type"].is_string()
                               ? parseElementType(a.args["type"].get<std::string>())
                               : std::nullopt;
-        if (!type)
-            return failAt(a, "type: expected an element type, got " + jsonExcerpt(a.args["type"]));
+        if (!type || *type == ElementType::Image)
+            return failAt(a,
+                          "type: expected an element type other than image (an image element "
+                          "needs its texture file), got " +
+                              jsonExcerpt(a.args["type"]));
         doc.addElement(*type);
         return Ok{};
     }
