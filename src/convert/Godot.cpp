@@ -223,11 +223,10 @@ Result<std::string> writeGodot(const PostFxParams& p, ExportContext& ctx) {
             "[ext_resource path=\"res://addons/lens-flare/lens-flare.gd\" type=\"Script\" id=1]");
     os << "[gd_scene load_steps=" << resources.size() + 1 << " format=2]\n\n";
     for (const json& r : resources) os << r.get<std::string>() << "\n";
-    // The add-on's node as the root of its own scene (a parent path would name a node this
-    // scene does not have).
-    std::string node = kept.value("node", std::string("[node name=\"LensFlare\" type=\"Node\"]"));
-    if (const auto parent = node.find(" parent="); parent != std::string::npos)
-        node = node.substr(0, parent) + "]";
+    // The add-on's node as it was; one that had a parent gets a plain root to hang from.
+    const std::string node =
+        kept.value("node", std::string("[node name=\"LensFlare\" type=\"Node\"]"));
+    if (node.find(" parent=") != std::string::npos) os << "\n[node name=\"Root\" type=\"Node\"]\n";
     os << "\n"
        << node << "\n"
        << "script = " << script << "\n";
