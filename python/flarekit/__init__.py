@@ -10,6 +10,7 @@ from ._flarekit import (  # noqa: F401
     apply,
     apply_file,
     blend8,
+    convert,
     elements,
     lens_ghosts,
     lens_render,
@@ -28,7 +29,7 @@ from ._flarekit import (  # noqa: F401
 )
 
 __all__ = [
-    "apply", "apply_file", "blend8", "elements", "lens_ghosts", "lens_render",
+    "apply", "apply_file", "blend8", "convert", "elements", "lens_ghosts", "lens_render",
     "lens_render_file", "lenses", "load_preset", "max_memory", "postfx", "postfx_file",
     "presets", "read_image", "set_max_memory", "validate_preset", "visibility", "write_image",
 ]

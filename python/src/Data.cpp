@@ -3,10 +3,13 @@
 // element contact sheet and scene visibility.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
 #include "Bindings.h"
 #include "Convert.h"
 #include "Keywords.h"
 #include "core/PresetFiles.h"
+#include "flarekit/Convert.h"
 #include "flarekit/Flare.h"
 #include "flarekit/Lens.h"
 #include "flarekit/PostFxParams.h"
@@ -75,6 +78,57 @@ py::dict visibilityDict(const VisibilityResult& r, int latency) {
 }  // namespace
 
 void addData(py::module_& m) {
+    m.def(
+        "convert",
+        [](const std::string& input, const std::string& output,
+           const std::optional<std::string>& from, const std::optional<std::string>& to,
+           float aspect, int referenceHeight, const std::string& unityBlendOrder,
+           const std::string& unityAssets) {
+            ConvertOptions options;
+            const auto format = [](const std::optional<std::string>& name, const char* key) {
+                std::optional<FlareFormat> f;
+                if (!name) return f;
+                f = parseFlareFormat(*name);
+                if (!f)
+                    throw py::value_error(std::string(key) +
+                                          ": expected one of flarekit, playcanvas, babylon, "
+                                          "three, unity, unreal, godot, got '" +
+                                          *name + "'");
+                return f;
+            };
+            options.from = format(from, "from_");
+            options.to = format(to, "to");
+            options.aspect = aspect;
+            options.referenceHeight = referenceHeight;
+            const auto order = std::find(std::begin(kUnityBlendOrderNames),
+                                         std::end(kUnityBlendOrderNames), unityBlendOrder);
+            if (order == std::end(kUnityBlendOrderNames))
+                throw py::value_error("unity_blend_order: expected auto, current or early, got '" +
+                                      unityBlendOrder + "'");
+            options.unityBlendOrder = UnityBlendOrder(order - std::begin(kUnityBlendOrderNames));
+            options.unityAssets = unityAssets;
+            Result<std::vector<std::string>> warnings = internalError("not run");
+            {
+                py::gil_scoped_release release;
+                warnings = convertFlare(input, output, options);
+            }
+            return unwrap(std::move(warnings));
+        },
+        py::arg("input"), py::arg("output"), py::arg("from_") = py::none(),
+        py::arg("to") = py::none(), py::arg("aspect") = ConvertOptions{}.aspect,
+        py::arg("reference_height") = ConvertOptions{}.referenceHeight,
+        py::arg("unity_blend_order") = "auto", py::arg("unity_assets") = "",
+        "convert(input, output, from_=None, to=None, aspect=1.7778, reference_height=1080, "
+        "unity_blend_order='auto', unity_assets='') -> list[str]\n\nConverts a flare between "
+        "flarekit presets and PlayCanvas, Babylon.js, three.js, Unity (sprite flares) and "
+        "Unreal, Godot (post-process flares), as `flarekit convert` does (docs/interop.md); "
+        "textures are written beside the output. Returns the warnings (one per feature that "
+        "did not map); bad input raises ValueError with the CLI's message.\n\n"
+        "from_, to: 'flarekit', 'playcanvas', 'babylon', 'three', 'unity', 'unreal', 'godot' "
+        "(default: from the files).\naspect: screen width / height the engines' sizes are "
+        "converted through, [0.1, 10].\nreference_height: frame height for pixel sizes "
+        "(three.js), [16, 16384].\nunity_blend_order: 'auto', 'current' (SRP 12.0+) or "
+        "'early' (SRP 12 previews).\nunity_assets: folder of a Unity project's .meta files.");
     m.def(
         "presets", [](const std::string& kind) { return presetNamesIn(kindNamed(kind).subdir); },
         py::arg("kind") = "sprite",

@@ -29,7 +29,7 @@ Result<FlareAsset> readBabylon(const json& doc, ImportContext& ctx) {
                   " flares of a Babylon.js LensFlareSystem");
     }
     FlareAsset asset;
-    asset.sprite.name = doc.value("name", fs::path(ctx.path).stem().string());
+    asset.sprite.name = fieldOr(doc, "name", fs::path(ctx.path).stem().string());
     for (std::size_t i = 0; i < flares->size(); ++i) {
         const json& f = (*flares)[i];
         const JsonPlace at = (top / "flares").index(i);

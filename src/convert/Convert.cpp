@@ -7,6 +7,7 @@
 #include "convert/ConvertCommon.h"
 #include "core/SafeWrite.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/ParamText.h"
 
 namespace flarekit {
 
@@ -176,7 +177,10 @@ Result<FlareFormat> outputFlareFormat(const std::string& path, const ConvertOpti
                         "output does not tell which");
 }
 
-Result<FlareAsset> importFlare(const std::string& path, const ConvertOptions& options) {
+namespace {
+Result<FlareAsset> importUnguarded(const std::string& path, const ConvertOptions& options) {
+    if (Status s = validateParams<ConvertOptions>(options, kConvertParams, ""); !s)
+        return s.error();
     FlareFormat format;
     if (options.from) {
         format = *options.from;
@@ -230,8 +234,11 @@ Result<FlareAsset> importFlare(const std::string& path, const ConvertOptions& op
     return asset;
 }
 
-Result<std::vector<std::string>> exportFlare(const FlareAsset& asset, const std::string& path,
-                                             FlareFormat format, const ConvertOptions& options) {
+Result<std::vector<std::string>> exportUnguarded(const FlareAsset& asset, const std::string& path,
+                                                 FlareFormat format,
+                                                 const ConvertOptions& options) {
+    if (Status s = validateParams<ConvertOptions>(options, kConvertParams, ""); !s)
+        return s.error();
     const std::string name = std::string(kFlareFormatNames[int(format)]);
     if (format != FlareFormat::Flarekit && asset.postFx != isPostFxFormat(format)) {
         return invalidInput(path + ": " + name + " holds " +
@@ -271,6 +278,28 @@ Result<std::vector<std::string>> exportFlare(const FlareAsset& asset, const std:
     if (!text) return text.error();
     if (Status s = writeAll(path, *text, ctx); !s) return s.error();
     return ctx.warnings;
+}
+
+}  // namespace
+
+// The readers and writers handle every error of a user's file as a Result; these guards turn
+// anything a library below still throws (an allocation, a YAML corner case) into an error
+// rather than let it cross the API.
+Result<FlareAsset> importFlare(const std::string& path, const ConvertOptions& options) {
+    try {
+        return importUnguarded(path, options);
+    } catch (const std::exception& e) {
+        return internalError(path + ": reading the flare failed: " + e.what());
+    }
+}
+
+Result<std::vector<std::string>> exportFlare(const FlareAsset& asset, const std::string& path,
+                                             FlareFormat format, const ConvertOptions& options) {
+    try {
+        return exportUnguarded(asset, path, format, options);
+    } catch (const std::exception& e) {
+        return internalError(path + ": writing the flare failed: " + e.what());
+    }
 }
 
 Result<std::vector<std::string>> convertFlare(const std::string& input, const std::string& output,

@@ -197,9 +197,13 @@ std::string sourceBlock(FlareFormat format, const json& fields) {
     return json{{"format", std::string(kFlareFormatNames[int(format)])}, {"fields", fields}}.dump();
 }
 
+bool isCountCopy(const ElementParams& e) {
+    return fieldOr(json::parse(e.source, nullptr, false), "copy", false);
+}
+
 json sourceFields(const std::string& source, FlareFormat format) {
     const json s = json::parse(source, nullptr, false);
-    if (!s.is_object() || s.value("format", "") != kFlareFormatNames[int(format)] ||
+    if (fieldOr(s, "format", std::string()) != kFlareFormatNames[int(format)] ||
         !s.contains("fields") || !s["fields"].is_object())
         return json::object();
     return s["fields"];

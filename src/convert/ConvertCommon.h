@@ -84,6 +84,26 @@ Result<std::string> readString(const json& object, const char* key, const JsonPl
 //! [r, g, b] or [r, g, b, a] or {"r": .., "g": .., "b": ..} (upper- or lower-case keys).
 Result<Rgb> readRgb(const json& value, const JsonPlace& at, std::optional<float>* alpha = nullptr);
 
+//! `object[key]` when it is there and of type T, else `fallback`: never throws (nlohmann's
+//! value() throws on a value of another type, and these values come from users' files).
+template <class T>
+T fieldOr(const json& object, const char* key, T fallback) {
+    if (!object.is_object()) return fallback;
+    const auto it = object.find(key);
+    if (it == object.end()) return fallback;
+    if constexpr (std::is_same_v<T, std::string>) {
+        return it->is_string() ? it->get<std::string>() : fallback;
+    } else if constexpr (std::is_same_v<T, bool>) {
+        return it->is_boolean() ? it->get<bool>() : fallback;
+    } else if constexpr (std::is_same_v<T, json>) {
+        return it->type() == fallback.type() ? *it : fallback;
+    } else {
+        return it->is_number() ? it->get<T>() : fallback;
+    }
+}
+//! Whether an element is a copy an engine's count made (written back as the count, not itself).
+bool isCountCopy(const ElementParams& e);
+
 //! The first error among several reads, or nothing when all succeeded.
 template <class... R>
 std::optional<Error> firstError(const R&... results) {

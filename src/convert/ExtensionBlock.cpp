@@ -22,7 +22,7 @@ Result<ElementParams> elementFromExtension(const json& block, const JsonPlace& a
     if (!type || *type == ElementType::Image)
         return (at / "type")
             .fail("expected a procedural element type, got " +
-                  jsonExcerpt(block.value("type", json())));
+                  jsonExcerpt(block.contains("type") ? block["type"] : json()));
     ElementParams e = defaultElement(*type);
     if (auto err = readParams<ElementParams>(block, kElementParams, e, at, {"type"}, typeBit(*type),
                                              elementTypeName(*type)))

@@ -12,6 +12,7 @@
 // distortion offsets red and blue by that many texels of the add-on's 1/4-resolution buffer,
 // about distortion / 240 of the distance to the centre at a 1920-wide frame's edge; the
 // strength is scaled so the add-on's default (10) is flarekit's flare_intensity 1.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <sstream>
@@ -188,22 +189,29 @@ Result<std::string> writeGodot(const PostFxParams& p, ExportContext& ctx) {
     out["ghostCount"] = n;
     out["ghostSpacing"] = spacing;
     out["flareBlur"] = n ? p.ghosts[0].blur : 0.f;
-    // Round trip: the source's own values where flarekit's match what they were read as.
+    // Round trip: the source's own values where flarekit's still match what they were read as.
     const double halo = p.halo.intensity > 0 ? double(p.halo.radius) / 2.0 : 0.0;
-    out["haloWidth"] = kept.contains("haloWidth") &&
-                               std::abs(kept["haloWidth"].get<double>() * 2.0 - 2.0 * halo) < 1e-6
-                           ? kept["haloWidth"].get<double>()
-                           : halo;
-    const double distortion = double(p.chromatic.amount) * kTexelsPerAmount;
+    const double keptHalo = fieldOr(kept, "haloWidth", -1.0);
+    out["haloWidth"] = std::abs(keptHalo - halo) < 1e-6 ? keptHalo : halo;
+    const double keptDistortion = fieldOr(kept, "distortion", -1.0);
     out["distortion"] =
-        kept.contains("distortion") &&
-                std::abs(std::min(0.5, kept["distortion"].get<double>() / kTexelsPerAmount) -
-                         double(p.chromatic.amount)) < 1e-6
-            ? kept["distortion"].get<double>()
-            : distortion;
+        keptDistortion >= 0 && std::abs(std::min(0.5, keptDistortion / kTexelsPerAmount) -
+                                        double(p.chromatic.amount)) < 1e-6
+            ? keptDistortion
+            : double(p.chromatic.amount) * kTexelsPerAmount;
     if (p.streaks.intensity > 0) out["streakStrength"] = p.streaks.intensity;
     for (const auto& [k, x] : kept.items())
         if (!out.contains(k) && k != "node" && k != "script" && k != "ext_resources") out[k] = x;
+    // The add-on's own ranges (its inspector clamps to them): a value past one is written at
+    // the bound, with a warning.
+    for (const GodotKey& k : kKeys) {
+        if (!out.contains(k.name) || !out[k.name].is_number()) continue;
+        const double x = out[k.name].get<double>(), c = std::clamp(x, k.min, k.max);
+        if (c == x) continue;
+        ctx.warn(std::string(k.name) + " " + formatParamNumber(x) + ": past the add-on's range " +
+                 formatParamRange(k.min, k.max) + "; written as " + formatParamNumber(c));
+        out[k.name] = c;
+    }
     const auto dropped = [&](bool on, const char* what) {
         if (on) ctx.warn(std::string(what) + ": the Godot add-on has none; left out");
     };
@@ -214,10 +222,10 @@ Result<std::string> writeGodot(const PostFxParams& p, ExportContext& ctx) {
         if (x.is_number_float()) x = tidy(x.get<double>());
     if (fs::path(ctx.path).extension() == ".json") return out.dump(2) + "\n";
     // A scene holding the add-on's node, as Godot writes one (format 2: Godot 3).
-    const std::string script = kept.value("script", std::string("ExtResource( 1 )"));
+    const std::string script = fieldOr(kept, "script", std::string("ExtResource( 1 )"));
     std::ostringstream os;
     os.precision(9);
-    json resources = kept.value("ext_resources", json::array());
+    json resources = fieldOr(kept, "ext_resources", json::array());
     if (resources.empty())
         resources.push_back(
             "[ext_resource path=\"res://addons/lens-flare/lens-flare.gd\" type=\"Script\" id=1]");
@@ -225,7 +233,7 @@ Result<std::string> writeGodot(const PostFxParams& p, ExportContext& ctx) {
     for (const json& r : resources) os << r.get<std::string>() << "\n";
     // The add-on's node as it was; one that had a parent gets a plain root to hang from.
     const std::string node =
-        kept.value("node", std::string("[node name=\"LensFlare\" type=\"Node\"]"));
+        fieldOr(kept, "node", std::string("[node name=\"LensFlare\" type=\"Node\"]"));
     if (node.find(" parent=") != std::string::npos) os << "\n[node name=\"Root\" type=\"Node\"]\n";
     os << "\n"
        << node << "\n"

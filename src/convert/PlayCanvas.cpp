@@ -43,7 +43,7 @@ const char* shapeOf(ElementType type) {
 //! The flarekit copy of one PlayCanvas element, `copy` of `count`.
 bool isCopy(const ElementParams& e) {
     const json s = json::parse(e.source, nullptr, false);
-    return s.is_object() && s.value("copy", false);
+    return fieldOr(s, "copy", false);
 }
 
 }  // namespace
@@ -55,7 +55,7 @@ Result<FlareAsset> readPlayCanvas(const json& doc, ImportContext& ctx) {
         return (top / "elements").fail("expected an array of PlayCanvas lens-flare elements");
     }
     FlareAsset asset;
-    asset.sprite.name = doc.value("name", fs::path(ctx.path).stem().string());
+    asset.sprite.name = fieldOr(doc, "name", fs::path(ctx.path).stem().string());
     auto intensity = readNumber(doc, "intensity", top, 1.0, 0, 1000);
     if (!intensity) return intensity.error();
     asset.sprite.intensity = float(*intensity);
@@ -147,8 +147,8 @@ Result<std::string> writePlayCanvas(const Preset& preset, ExportContext& ctx) {
             continue;
         }
         json f = sourceFields(e.source, FlareFormat::PlayCanvas);
-        const int count = f.value("count", 1);
-        const double spread = f.value("spread", 0.0);
+        const int count = fieldOr(f, "count", 1);
+        const double spread = fieldOr(f, "spread", 0.0);
         f["offset"] = uFromT(e.t) + (count > 1 ? spread / 2.0 : 0.0);
         f["size"] = double(e.size) * 2.0;
         f["aspect"] = e.aspect;

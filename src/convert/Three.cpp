@@ -50,7 +50,7 @@ Result<FlareAsset> readThree(const json& doc, ImportContext& ctx) {
     }
     const double height = ctx.options.referenceHeight;
     FlareAsset asset;
-    asset.sprite.name = doc.value("name", fs::path(ctx.path).stem().string());
+    asset.sprite.name = fieldOr(doc, "name", fs::path(ctx.path).stem().string());
     for (std::size_t i = 0; i < elements->size(); ++i) {
         const json& f = (*elements)[i];
         const JsonPlace at = (top / "elements").index(i);

@@ -175,7 +175,7 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
     std::map<std::string, std::string> textures;
     bool texturesIndexed = false;
     FlareAsset asset;
-    asset.sprite.name = mono.value("m_Name", fs::path(ctx.path).stem().string());
+    asset.sprite.name = fieldOr(mono, "m_Name", fs::path(ctx.path).stem().string());
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const JsonPlace at = (top / "elements").index(i);
         if (!elements[i].is_object()) return at.fail("expected a map");
@@ -229,8 +229,7 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
         switch (int(*type)) {
             case kImage: {
                 const json* tex = f.find({"lensFlareTexture"});
-                const std::string guid =
-                    tex && tex->is_object() ? tex->value("guid", std::string()) : std::string();
+                const std::string guid = tex ? fieldOr(*tex, "guid", std::string()) : std::string();
                 if (guid.empty())
                     return (at / "lensFlareTexture")
                         .fail("expected {fileID, guid, type} of a texture for an image element");
@@ -340,8 +339,8 @@ Result<std::string> writeUnity(const Preset& preset, ExportContext& ctx) {
         const ElementParams& e = preset.elements[i];
         const std::string label = elementLabel(e, i);
         json u = sourceFields(e.source, FlareFormat::Unity);
-        if (json::parse(e.source, nullptr, false).value("copy", false) == true) continue;
-        const bool early = u.value("blend_order", "current") == "early";
+        if (isCountCopy(e)) continue;
+        const bool early = fieldOr(u, "blend_order", std::string("current")) == "early";
         u.erase("blend_order");
         const auto set = [&](const char* key, double v) { u[key] = unityNumber(v); };
         // The names this element was read with (pre-12.0 assets lack the m_ prefix).
@@ -410,7 +409,7 @@ Result<std::string> writeUnity(const Preset& preset, ExportContext& ctx) {
         const bool baked = type == kImage && e.type != ElementType::Image;
         const Rgb c = baked ? Rgb{1, 1, 1} : e.color;
         const std::string alpha = u.contains("tint") && u["tint"].is_object()
-                                      ? u["tint"].value("a", std::string("1"))
+                                      ? fieldOr(u["tint"], "a", std::string("1"))
                                       : std::string("1");
         u["tint"] = {{"r", unityNumber(c[0])},
                      {"g", unityNumber(c[1])},

@@ -271,7 +271,7 @@ Result<std::string> writeUnreal(const PostFxParams& p, ExportContext& ctx) {
     dropped(p.starburst.intensity > 0, "starburst");
     dropped(p.dirt.intensity > 0, "dirt");
     dropped(p.bloom.intensity > 0, "bloom (Unreal's bloom settings are not the lens flare's)");
-    const bool lowerCase = kept.value("__key_case", "") == "lower";
+    const bool lowerCase = fieldOr(kept, "__key_case", std::string()) == "lower";
     kept.erase("__key_case");
     for (const auto& [k, v] : kept.items()) {
         // The source's own spelling of a key flarekit writes replaces flarekit's.

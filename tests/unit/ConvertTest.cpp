@@ -2,7 +2,7 @@
 // flarekit convert: each engine's position and size conventions checked by rendering the
 // imported element and finding it where that engine's own formula puts it (a light in a
 // corner, two aspect ratios); round trips format -> flarekit -> format on the fixtures in
-// tests/data/interop; renders of imported presets against the same elements written by hand;
+// examples/interop; renders of imported presets against the same elements written by hand;
 // bad input as one line naming the file and the field, with nothing written.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using test::TempDir;
 
-const std::string kData = std::string(FLAREKIT_SOURCE_DIR) + "/tests/data/interop";
+const std::string kData = std::string(FLAREKIT_SOURCE_DIR) + "/examples/interop";
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path);
@@ -473,6 +473,67 @@ TEST(Convert, ProceduralElementsBakedForTextureEnginesComeBackAsThemselves) {
         EXPECT_NEAR(back->sprite.elements[i].t, preset->elements[i].t, 1e-6) << i;
         EXPECT_NEAR(back->sprite.elements[i].size, preset->elements[i].size, 1e-6) << i;
     }
+}
+
+}  // namespace
+}  // namespace flarekit
+
+namespace flarekit {
+namespace {
+
+TEST(Convert, EveryShippedPresetExportsToEveryFormatOfItsKindAndReadsBack) {
+    for (const std::string& name : shippedPresetNames()) {
+        auto preset = loadPreset(name);
+        ASSERT_TRUE(preset.ok());
+        FlareAsset asset;
+        asset.sprite = *preset;
+        for (FlareFormat f : {FlareFormat::PlayCanvas, FlareFormat::Babylon, FlareFormat::Three,
+                              FlareFormat::Unity}) {
+            TempDir dir;
+            const std::string out =
+                dir.file(f == FlareFormat::Unity ? "flare.asset" : "flare.json");
+            auto warnings = exportFlare(asset, out, f);
+            ASSERT_TRUE(warnings.ok()) << name << " " << warnings.error().message;
+            ConvertOptions from;
+            from.from = f;
+            auto back = importFlare(out, from);
+            ASSERT_TRUE(back.ok()) << name << " " << back.error().message;
+            EXPECT_EQ(back->sprite.elements.size(), preset->elements.size()) << name;
+            for (std::size_t i = 0; i < preset->elements.size(); ++i)
+                EXPECT_NEAR(back->sprite.elements[i].t, preset->elements[i].t, 1e-5)
+                    << name << " " << kFlareFormatNames[int(f)] << " " << i;
+        }
+    }
+    for (const std::string& name : shippedPostFxPresetNames()) {
+        auto chain = loadPostFxPreset(name);
+        ASSERT_TRUE(chain.ok());
+        FlareAsset asset;
+        asset.postFx = true;
+        asset.chain = *chain;
+        for (const char* file : {"flare.ini", "flare.tscn"}) {
+            TempDir dir;
+            auto warnings = exportFlare(asset, dir.file(file),
+                                        file[6] == 'i' ? FlareFormat::Unreal : FlareFormat::Godot);
+            ASSERT_TRUE(warnings.ok()) << name << " " << warnings.error().message;
+            auto back = importFlare(dir.file(file));
+            ASSERT_TRUE(back.ok()) << name << " " << back.error().message;
+            EXPECT_NEAR(back->chain.flareIntensity, chain->flareIntensity, 1e-5) << name;
+        }
+    }
+}
+
+TEST(Convert, ValuesOfTheWrongTypeAreBadInputNotACrash) {
+    TempDir dir;
+    spit(dir.file("b.json"), R"({"name":5,"flares":[{"size":0.1,"position":0,"textureName":7}]})");
+    auto r = importFlare(dir.file("b.json"));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
+    EXPECT_EQ(r.error().message,
+              dir.file("b.json") + ": flares[0].textureName: expected a string, got 7");
+    spit(dir.file("u.asset"), unityAsset("flareType: 0\n    lensFlareTexture: {guid: {a: 1}}"));
+    r = importFlare(dir.file("u.asset"));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
 }
 
 }  // namespace
