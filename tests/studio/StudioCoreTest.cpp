@@ -153,3 +153,34 @@ TEST(StudioScript, EveryActionIsCheckedBeforeTheWindowOpens) {
     EXPECT_NE(bad.error().message.find("expected an object {\"actions\": [...]}"),
               std::string::npos);
 }
+
+TEST(StudioDocument, OpensAndSavesOtherEnginesFlaresThroughTheConverter) {
+    TempDir dir;
+    Document doc;
+    doc.kind = FlareKind::PostFx;
+    // A Unity asset switches to sprite flares: its elements, with what did not map as warnings.
+    ASSERT_TRUE(doc.loadPreset(FLAREKIT_INTEROP "/unity/Assets/Flares/SunFlare.asset").ok());
+    EXPECT_EQ(doc.kind, FlareKind::Sprite);
+    auto direct = importFlare(FLAREKIT_INTEROP "/unity/Assets/Flares/SunFlare.asset");
+    ASSERT_TRUE(direct.ok());
+    EXPECT_EQ(presetToJson(doc.preset()), presetToJson(direct->sprite));
+    EXPECT_EQ(doc.warnings, direct->warnings);
+    EXPECT_FALSE(doc.isDirty());
+    // Edited and saved as a Unity asset: what the converter writes for the edited preset.
+    ASSERT_TRUE(doc.setElementParam(0, "intensity", number(2.5)).ok());
+    ASSERT_TRUE(doc.savePreset(dir.file("Edited.asset")).ok());
+    EXPECT_FALSE(doc.isDirty());
+    auto back = importFlare(dir.file("Edited.asset"));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_FLOAT_EQ(back->sprite.elements[0].intensity, 2.5f);
+    EXPECT_TRUE(std::filesystem::exists(dir.file("Ghost.png.meta")));
+    // A Godot scene is a post-process preset; saved back as a scene beside a JSON copy.
+    ASSERT_TRUE(doc.loadPreset(FLAREKIT_INTEROP "/godot/lens_flare.tscn").ok());
+    EXPECT_EQ(doc.kind, FlareKind::PostFx);
+    ASSERT_TRUE(doc.savePreset(dir.file("flare.tscn")).ok());
+    ASSERT_TRUE(doc.savePreset(dir.file("flare.json")).ok());
+    auto scene = importFlare(dir.file("flare.tscn")), preset = importFlare(dir.file("flare.json"));
+    ASSERT_TRUE(scene.ok() && preset.ok());
+    EXPECT_TRUE(preset->postFx);
+    EXPECT_EQ(scene->chain.ghosts.size(), preset->chain.ghosts.size());
+}

@@ -143,7 +143,9 @@ int App::run() {
         }
     }
     if (!m_options.file.empty()) {
-        const bool preset = std::filesystem::path(m_options.file).extension() == ".json";
+        // A preset (flarekit's, or another engine's flare file) rather than an image.
+        const std::string ext = std::filesystem::path(m_options.file).extension().string();
+        const bool preset = ext == ".json" || ext == ".asset" || ext == ".tscn" || ext == ".ini";
         Status s = preset ? m_doc.loadPreset(m_options.file) : m_doc.openImage(m_options.file);
         if (!s) {
             std::fprintf(stderr, "flarekit studio: %s\n", s.error().message.c_str());
@@ -332,7 +334,21 @@ void App::choosePreset(const std::string& name) {
         return;
     }
     if (Status s = m_doc.loadPreset(name); !s) return say(s.error().message, true);
-    say(std::string("preset ") + name);
+    sayWithWarnings(std::string("preset ") + name);
+}
+
+void App::saveAs(const std::string& path) {
+    if (Status s = m_doc.savePreset(path); !s) return say(s.error().message, true);
+    sayWithWarnings(std::string("saved ") + path);
+}
+
+void App::sayWithWarnings(const std::string& line) {
+    // What did not carry over between engines: the first on the status line, all on stderr.
+    for (const std::string& w : m_doc.warnings)
+        std::fprintf(stderr, "flarekit studio: %s\n", w.c_str());
+    if (m_doc.warnings.empty()) return say(line);
+    say(line + " (" + std::to_string(m_doc.warnings.size()) +
+        " not carried over: " + m_doc.warnings.front() + ")");
 }
 
 void App::updatePreview() {

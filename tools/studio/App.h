@@ -75,6 +75,10 @@ class App {
     void drawFileDialog();
     void handleShortcuts();
     void choosePreset(const std::string& name);
+    //! Saves the preset (flarekit JSON, or an engine's format by extension) and says so.
+    void saveAs(const std::string& path);
+    //! `line` on the status line, with what the last load or save could not carry over.
+    void sayWithWarnings(const std::string& line);
     void updatePreview();
     Status writeScreenshot(const std::string& path);
     void say(const std::string& line, bool error = false);

@@ -139,9 +139,42 @@ Status Document::openImage(const std::string& path) {
     return Ok{};
 }
 
+namespace {
+//! The engine format of a file the studio is asked to open, or Flarekit (a shipped name, a
+//! flarekit preset, or a file no importer recognises: the preset reader's message then says why).
+FlareFormat formatOfFile(const std::string& nameOrPath) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(nameOrPath, ec)) return FlareFormat::Flarekit;
+    auto format = detectFlareFormat(nameOrPath);
+    return format ? *format : FlareFormat::Flarekit;
+}
+}  // namespace
+
 Status Document::loadPreset(const std::string& nameOrPath) {
     commit();
     const Design before = design();
+    warnings.clear();
+    if (const FlareFormat format = formatOfFile(nameOrPath); format != FlareFormat::Flarekit) {
+        auto asset = importFlare(nameOrPath);
+        if (!asset) return asset.error();
+        kind = asset->postFx ? FlareKind::PostFx : FlareKind::Sprite;
+        if (asset->postFx) {
+            m_post = asset->chain;
+        } else {
+            m_preset = asset->sprite;
+            solo = -1;
+        }
+        warnings = asset->warnings;
+        m_format[int(kind)] = format;
+        m_undo.push_back(before);
+        m_redo.clear();
+        markCommitted();
+        m_savedJson[int(kind)] = currentJson();
+        m_presetPath[int(kind)] = nameOrPath;
+        clampSelection();
+        return Ok{};
+    }
+    m_format[int(kind)] = FlareFormat::Flarekit;
     if (kind == FlareKind::Sprite) {
         auto preset = flarekit::loadPreset(nameOrPath);
         if (!preset) return preset.error();
@@ -177,7 +210,26 @@ Status Document::savePreset(const std::string& path) {
         kind == FlareKind::Sprite ? validatePreset(m_preset) : validatePostFxParams(m_post);
     if (!valid) return invalidInput(path + ": not saved: " + valid.error().message);
     const std::string text = currentJson();
-    if (Status s = writeFileSafely(path, text); !s) return s;
+    warnings.clear();
+    // An engine's file: by its extension, or the JSON of the engine the preset came from when
+    // saved back to where it was opened.
+    ConvertOptions options;
+    auto byExtension = outputFlareFormat(path, options);
+    const bool sameFile = path == m_presetPath[int(kind)];
+    const FlareFormat format =
+        byExtension ? *byExtension : (sameFile ? m_format[int(kind)] : FlareFormat::Flarekit);
+    if (format == FlareFormat::Flarekit) {
+        if (Status s = writeFileSafely(path, text); !s) return s;
+    } else {
+        FlareAsset asset;
+        asset.postFx = kind == FlareKind::PostFx;
+        asset.sprite = m_preset;
+        asset.chain = m_post;
+        auto written = exportFlare(asset, path, format, options);
+        if (!written) return written.error();
+        warnings = *written;
+    }
+    m_format[int(kind)] = format;
     m_savedJson[int(kind)] = text;
     m_presetPath[int(kind)] = path;
     return Ok{};

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flarekit/Convert.h"
 #include "flarekit/Flare.h"
 #include "flarekit/PostFxParams.h"
 #include "flarekit/Result.h"
@@ -56,11 +57,18 @@ class Document {
     //! the finder accepts (else two thirds across, a quarter down). The preset is kept.
     Status openImage(const std::string& path);
     //! A shipped preset of the current kind by name or a JSON file, replacing that preset
-    //! (undoable). Callers ask first when isDirty().
+    //! (undoable). Another engine's flare file (a Unity .asset, a Godot .tscn, Unreal settings,
+    //! a PlayCanvas, Babylon.js or three.js JSON) is read through flarekit convert's importer and
+    //! switches to its kind (sprite or post-process); what did not map is in `warnings`.
+    //! Callers ask first when isDirty().
     Status loadPreset(const std::string& nameOrPath);
     //! The current kind's preset as the CLI reads it (presetToJson, postFxPresetToJson), written
-    //! atomically; clears isDirty().
+    //! atomically; clears isDirty(). An engine's file (by extension: .asset, .tscn, .ini, or the
+    //! JSON of the engine the preset was opened from, at its own path) is written by flarekit
+    //! convert's exporter, with its textures beside it.
     Status savePreset(const std::string& path);
+    //! What the last load or save could not carry over (one line each), for the status line.
+    std::vector<std::string> warnings;
     FlareKind kind = FlareKind::Sprite;
     //! The current kind's preset name, and the shipped presets of that kind.
     std::string presetName() const;
@@ -156,6 +164,8 @@ class Document {
     Design m_committed;
     std::string m_committedText;  //!< designText() of m_committed, kept, not remade each frame
     std::string m_presetPath[3], m_savedJson[3];  //!< per FlareKind
+    //! The engine format each kind's preset was opened from (Flarekit: a preset file or name).
+    FlareFormat m_format[3] = {FlareFormat::Flarekit, FlareFormat::Flarekit, FlareFormat::Flarekit};
     std::vector<Design> m_undo, m_redo;
 };
 

@@ -35,6 +35,8 @@ void beginPanel(const char* name, float x, float y, float w, float h,
     ImGui::Begin(name, nullptr, kFixed | flags);
 }
 
+//! Flare files: flarekit and engine JSON, Unity assets, Godot scenes, Unreal settings.
+const std::vector<std::string> kFlareExtensions = {".json", ".asset", ".tscn", ".ini"};
 const std::vector<std::string> kImageExtensions = {".exr", ".hdr",  ".png",  ".jpg", ".jpeg",
                                                    ".tif", ".tiff", ".webp", ".bmp", ".tga"};
 
@@ -68,13 +70,11 @@ void App::drawMenu() {
             m_dialog.open("Open image", kImageExtensions, false,
                           [this](const std::string& p) { openAny(p); });
         if (ImGui::MenuItem("Open preset..."))
-            m_dialog.open("Open preset", {".json"}, false,
+            m_dialog.open("Open preset (flarekit, or an engine's flare)", kFlareExtensions, false,
                           [this](const std::string& p) { choosePreset(p); });
         if (ImGui::MenuItem("Save preset as...", "Ctrl+S"))
-            m_dialog.open("Save preset", {".json"}, true, [this](const std::string& p) {
-                if (Status s = m_doc.savePreset(p); !s) return say(s.error().message, true);
-                say(std::string("saved ") + p);
-            });
+            m_dialog.open("Save preset (.json; .asset Unity, .tscn Godot, .ini Unreal)",
+                          kFlareExtensions, true, [this](const std::string& p) { saveAs(p); });
         if (ImGui::MenuItem("Export render...", nullptr, false, m_doc.hasImage()))
             m_dialog.open("Export render (.exr float, .png 8-bit, .tif 16-bit)", kImageExtensions,
                           true, [this](const std::string& p) {
@@ -106,10 +106,8 @@ void App::handleShortcuts() {
         m_dialog.open("Open image", kImageExtensions, false,
                       [this](const std::string& p) { openAny(p); });
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false))
-        m_dialog.open("Save preset", {".json"}, true, [this](const std::string& p) {
-            if (Status s = m_doc.savePreset(p); !s) return say(s.error().message, true);
-            say(std::string("saved ") + p);
-        });
+        m_dialog.open("Save preset (.json; .asset Unity, .tscn Godot, .ini Unreal)",
+                      kFlareExtensions, true, [this](const std::string& p) { saveAs(p); });
 }
 
 void App::drawPresetPanel(float x, float y, float w, float h) {
