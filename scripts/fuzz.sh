@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(FuzzPreset FuzzPostFxPreset FuzzScene FuzzImageRead FuzzPsp FuzzShotFiles)
+[ ${#targets[@]} -gt 0 ] || targets=(FuzzPreset FuzzPostFxPreset FuzzScene FuzzImageRead FuzzPsp FuzzShotFiles FuzzConvert)
 
 if [ "${FLAREKIT_FUZZ_NO_BUILD:-}" != 1 ]; then  # set by callers that run targets in parallel
 # FLAREKIT_LAUNCHER: setup.sh's ccache flags (two words, split on purpose)

@@ -185,9 +185,11 @@ Result<Rgb> readRgb(const json& value, const JsonPlace& at, std::optional<float>
 
 json unmappedFields(const json& object, std::initializer_list<const char*> mapped) {
     json out = json::object();
-    for (const auto& [key, value] : object.items()) {
+    // Named references, not a structured binding: clang 14 cannot capture one in a lambda.
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const std::string& key = it.key();
         if (std::none_of(mapped.begin(), mapped.end(), [&](const char* m) { return key == m; }))
-            out[key] = value;
+            out[key] = it.value();
     }
     return out;
 }

@@ -122,6 +122,41 @@ Result<Rgb> tintOf(const Fields& f, const JsonPlace& at) {
     return c;
 }
 
+//! Unity's Gradient (colorGradient: key0..7 with ctime0..7 in 0..65535, m_NumColorKeys,
+//! m_Mode 0 blend / 1 fixed) at t in [0, 1]; white where the asset has none.
+Rgb gradientAt(const json& g, double t) {
+    const auto num = [&](const std::string& key, double fallback) {
+        const std::string s = fieldOr(g, key.c_str(), std::string());
+        char* end = nullptr;
+        const double x = std::strtod(s.c_str(), &end);
+        return !s.empty() && *end == '\0' && std::isfinite(x) ? x : fallback;
+    };
+    const auto key = [&](int i) {
+        const json& k = g.is_object() && g.contains("key" + std::to_string(i))
+                            ? g["key" + std::to_string(i)]
+                            : json();
+        const auto c = [&](const char* n) {
+            const std::string s = fieldOr(k, n, std::string("1"));
+            return float(std::clamp(std::strtod(s.c_str(), nullptr), 0.0, 1000.0));
+        };
+        return Rgb{c("r"), c("g"), c("b")};
+    };
+    const int n = std::clamp(int(num("m_NumColorKeys", 0)), 0, 8);
+    if (n == 0) return {1, 1, 1};
+    const double at = t * 65535.0;
+    if (at <= num("ctime0", 0)) return key(0);
+    for (int i = 1; i < n; ++i) {
+        const double t0 = num("ctime" + std::to_string(i - 1), 0),
+                     t1 = num("ctime" + std::to_string(i), 65535);
+        if (at > t1) continue;
+        if (num("m_Mode", 0) == 1 || t1 <= t0) return key(i);  // fixed: the next key's colour
+        const float w = float((at - t0) / (t1 - t0));
+        const Rgb a = key(i - 1), b = key(i);
+        return {a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1]), a[2] + w * (b[2] - a[2])};
+    }
+    return key(n - 1);
+}
+
 //! flarekit's blend for Unity's blendMode integer in the given order; nullopt when unknown.
 std::optional<BlendMode> blendOf(int mode, bool early) {
     // current: Additive, Screen, Premultiply, Lerp; early: Lerp, Additive, Premultiply, Screen.
@@ -278,6 +313,15 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
         e.rotationDeg = float(std::fmod(*rotation, 360.0));
         e.blend = *blend;
         e.visible = *visible != 0 && int(*type) != kNested;
+        auto angular = f.number({"angularOffset"}, 0);
+        if (angular && *angular != 0)
+            ctx.warn(label +
+                     ".angularOffset: flarekit keeps elements on the flare line; kept in "
+                     "source");
+        if (auto distortion = f.number({"enableRadialDistortion"}, 0); distortion && *distortion)
+            ctx.warn(label +
+                     ".enableRadialDistortion: flarekit does not resize elements toward "
+                     "the frame edge; kept in source");
         for (const char* k : {"positionOffset", "translationScale"}) {
             auto x = f.component(k, "x", k[0] == 'p' ? 0 : 1);
             auto y = f.component(k, "y", k[0] == 'p' ? 0 : 1);
@@ -312,6 +356,11 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
             if (n > 1) {
                 copy.t = tFromU(2.0 * *position + double(c) * 2.0 * *spread / (n - 1));
                 copy.rotationDeg = float(std::fmod(*rotation + c * *angleStep, 360.0));
+                // Each copy takes its colour from the element's gradient at i / (count - 1).
+                const Rgb g = gradientAt(
+                    elements[i].contains("colorGradient") ? elements[i]["colorGradient"] : json(),
+                    double(c) / (n - 1));
+                for (int ch = 0; ch < 3; ++ch) copy.color[std::size_t(ch)] *= g[std::size_t(ch)];
                 if (c > 0) copy.source = json{{"format", "unity"}, {"copy", true}}.dump();
             }
             asset.sprite.elements.push_back(std::move(copy));
@@ -407,7 +456,17 @@ Result<std::string> writeUnity(const Preset& preset, ExportContext& ctx) {
         u["sizeXY"] = {{"x", unityNumber(sy * e.aspect)}, {"y", unityNumber(sy)}};
         set("rotation", e.rotationDeg);
         const bool baked = type == kImage && e.type != ElementType::Image;
-        const Rgb c = baked ? Rgb{1, 1, 1} : e.color;
+        Rgb c = baked ? Rgb{1, 1, 1} : e.color;
+        // The first of several uniform copies carries the gradient's first colour: the tint is
+        // what remains (the copies were read as tint x gradient).
+        if (fieldOr(u, "allowMultipleElement", std::string("0")) == "1" &&
+            fieldOr(u, "distribution", std::string("0")) == "0" && u.contains("colorGradient")) {
+            const Rgb g = gradientAt(u["colorGradient"], 0.0);
+            for (int ch = 0; ch < 3; ++ch)
+                c[std::size_t(ch)] = g[std::size_t(ch)] > 0.f
+                                         ? c[std::size_t(ch)] / g[std::size_t(ch)]
+                                         : c[std::size_t(ch)];
+        }
         const std::string alpha = u.contains("tint") && u["tint"].is_object()
                                       ? fieldOr(u["tint"], "a", std::string("1"))
                                       : std::string("1");

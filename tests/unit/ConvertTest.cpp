@@ -391,6 +391,11 @@ TEST(Convert, WhatDoesNotMapIsOneWarningEachAndKeptInSource) {
     EXPECT_NEAR(e[2].t, 1 - 1.6, 1e-6);
     EXPECT_NEAR(e[3].t, 1 - 1.8, 1e-6);
     EXPECT_NE(e[0].source.find("\"m_FallOff\":\"0.5\""), std::string::npos);
+    // Each copy's colour: the tint x the gradient (orange to white) at 0, 1/2, 1.
+    EXPECT_NEAR(e[1].color[1], 0.8f * 0.5f, 1e-6);
+    EXPECT_NEAR(e[2].color[1], 0.8f * 0.75f, 1e-6);
+    EXPECT_NEAR(e[3].color[1], 0.8f * 1.f, 1e-6);
+    EXPECT_NEAR(e[2].color[2], 0.6f * 0.6f, 1e-6);
 }
 
 TEST(Convert, UnityBlendModesReadInEitherPackageOrder) {
