@@ -84,29 +84,12 @@ Result<std::string> writeBabylon(const Preset& preset, ExportContext& ctx) {
             continue;
         }
         json f = sourceFields(e.source, FlareFormat::Babylon);
-        const float k = e.intensity * preset.intensity;
+        const TexturedQuad q = texturedQuad(e, i, preset.intensity, "Babylon.js", ctx);
         f["position"] = e.t;
-        if (e.type == ElementType::Image) {
-            f["textureName"] = ctx.addCopy(e.texture);
-            f["size"] = babylonSizeFromRadius(e.size * std::max(1.f, e.aspect), ctx.options.aspect);
-            f["color"] = {e.color[0] * k, e.color[1] * k, e.color[2] * k};
-            if (e.aspect != 1.f || e.rotationDeg != 0.f)
-                ctx.warn(label + "aspect and rotation: Babylon.js draws square, unrotated flares");
-        } else {
-            float share = 1.f, gain = 1.f;
-            f["textureName"] = ctx.addBaked(e, int(i), share, gain);
-            f["size"] = babylonSizeFromRadius(e.size / share, ctx.options.aspect);
-            const float g = gain * preset.intensity;
-            f["color"] = {g, g, g};
-            f["flarekit"] = elementExtension(e);
-            if (e.type == ElementType::EdgeStreak)
-                ctx.warn(label +
-                         "Babylon.js places every flare on the flare line, not on the "
-                         "frame edge");
-        }
-        if (e.blend != BlendMode::Add)
-            ctx.warn(label + "blend " + std::string(kBlendModeNames[int(e.blend)]) +
-                     ": Babylon.js adds every flare");
+        f["textureName"] = q.texture;
+        f["size"] = babylonSizeFromRadius(q.radius, ctx.options.aspect);
+        f["color"] = {q.color[0], q.color[1], q.color[2]};
+        if (!q.extension.is_null()) f["flarekit"] = q.extension;
         flares.push_back(std::move(f));
     }
     if (flares.empty()) return invalidInput(ctx.path + ": no visible element to write");

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "convert/ExtensionBlock.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/ParamText.h"
 
@@ -97,6 +98,43 @@ std::string dumpByLine(const json& raw, const char* listKey) {
     for (std::size_t i = 0; i < list.size(); ++i)
         text += "    " + list[i].dump() + (i + 1 < list.size() ? ",\n" : "\n");
     return text + "  ]\n}\n";
+}
+
+TexturedQuad texturedQuad(const ElementParams& e, std::size_t index, float presetIntensity,
+                          const char* engine, ExportContext& ctx) {
+    const std::string label = elementLabel(e, index);
+    TexturedQuad q;
+    const float k = e.intensity * presetIntensity;
+    if (e.type == ElementType::Image) {
+        q.texture = ctx.addCopy(e.texture);
+        q.radius = e.size * std::max(1.f, e.aspect);
+        q.color = {e.color[0] * k, e.color[1] * k, e.color[2] * k};
+        if (e.aspect != 1.f || e.rotationDeg != 0.f)
+            ctx.warn(label + "aspect and rotation: " + engine +
+                     " draws square, unrotated textures");
+    } else {
+        float share = 1.f, gain = 1.f;
+        q.texture = ctx.addBaked(e, int(index), share, gain);
+        q.radius = e.size / share;
+        const float g = gain * presetIntensity;
+        q.color = {g, g, g};
+        q.extension = elementExtension(e);
+        if (e.type == ElementType::EdgeStreak)
+            ctx.warn(label + engine +
+                     " places every element on the flare line, not on the "
+                     "frame edge");
+    }
+    if (e.blend != BlendMode::Add)
+        ctx.warn(label + "blend " + std::string(kBlendModeNames[int(e.blend)]) + ": " + engine +
+                 " adds every element");
+    return q;
+}
+
+Result<json> jsonOrText(const std::string& text, const std::string& path,
+                        Result<json> (*readText)(const std::string&, const std::string&)) {
+    const auto first = text.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos && text[first] == '{') return parseJsonText(text, path);
+    return readText(text, path);
 }
 
 Result<double> readNumber(const json& object, const char* key, const JsonPlace& at,

@@ -72,6 +72,24 @@ json tidied(const json& v);
 //! a line of its own (how flarekit writes presets): readable, and diffs stay per element.
 std::string dumpByLine(const json& doc, const char* listKey);
 
+//! How an engine that draws only textured quads (Babylon.js, three.js) gets a flarekit element:
+//! its own texture, or the element baked into one; the quad's radius (frame heights) and the
+//! colour the engine multiplies the texture by; `extension` the element's keys when baked.
+struct TexturedQuad {
+    std::string texture;
+    float radius = 0.f;
+    Rgb color{1, 1, 1};
+    json extension;  //!< null unless baked
+};
+//! Also warns (naming `engine`) of what such an engine cannot draw: aspect and rotation of a
+//! texture, a frame-edge placement, a blend other than add.
+TexturedQuad texturedQuad(const ElementParams& e, std::size_t index, float presetIntensity,
+                          const char* engine, ExportContext& ctx);
+
+//! The JSON of a file that is JSON (its first character '{') or else read by `readText`.
+Result<json> jsonOrText(const std::string& text, const std::string& path,
+                        Result<json> (*readText)(const std::string&, const std::string&));
+
 // Typed reads: the value or one line naming the file, the field and what was expected.
 Result<double> readNumber(const json& object, const char* key, const JsonPlace& at,
                           std::optional<double> fallback, double min = -1e9, double max = 1e9);

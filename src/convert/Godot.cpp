@@ -99,17 +99,9 @@ Result<json> parseTscn(const std::string& text, const std::string& path) {
 }  // namespace
 
 Result<FlareAsset> readGodot(const std::string& text, ImportContext& ctx) {
-    json doc;
-    const std::string t = trim(text);
-    if (!t.empty() && t.front() == '{') {
-        auto parsed = parseJsonText(text, ctx.path);
-        if (!parsed) return parsed.error();
-        doc = *parsed;
-    } else {
-        auto parsed = parseTscn(text, ctx.path);
-        if (!parsed) return parsed.error();
-        doc = *parsed;
-    }
+    auto parsed = jsonOrText(text, ctx.path, parseTscn);
+    if (!parsed) return parsed.error();
+    json doc = *parsed;
     const JsonPlace top(ctx.path);
     std::map<std::string, double> v;
     for (const GodotKey& k : kKeys) {

@@ -102,25 +102,12 @@ Result<std::string> writeThree(const Preset& preset, ExportContext& ctx) {
             continue;
         }
         json f = sourceFields(e.source, FlareFormat::Three);
-        const float k = e.intensity * preset.intensity;
+        const TexturedQuad q = texturedQuad(e, i, preset.intensity, "three.js's Lensflare", ctx);
         f["distance"] = uFromT(e.t) / 2.0;
-        if (e.type == ElementType::Image) {
-            f["texture"] = ctx.addCopy(e.texture);
-            f["size"] = double(e.size * std::max(1.f, e.aspect)) * 2.0 * height;
-            f["color"] = {e.color[0] * k, e.color[1] * k, e.color[2] * k};
-            if (e.aspect != 1.f || e.rotationDeg != 0.f)
-                ctx.warn(label + "aspect and rotation: three.js draws square, unrotated elements");
-        } else {
-            float share = 1.f, gain = 1.f;
-            f["texture"] = ctx.addBaked(e, int(i), share, gain);
-            f["size"] = double(e.size / share) * 2.0 * height;
-            const float g = gain * preset.intensity;
-            f["color"] = {g, g, g};
-            f["flarekit"] = elementExtension(e);
-        }
-        if (e.blend != BlendMode::Add)
-            ctx.warn(label + "blend " + std::string(kBlendModeNames[int(e.blend)]) +
-                     ": three.js's Lensflare adds every element");
+        f["texture"] = q.texture;
+        f["size"] = double(q.radius) * 2.0 * height;
+        f["color"] = {q.color[0], q.color[1], q.color[2]};
+        if (!q.extension.is_null()) f["flarekit"] = q.extension;
         elements.push_back(std::move(f));
     }
     if (elements.empty()) return invalidInput(ctx.path + ": no visible element to write");

@@ -344,9 +344,9 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
         e.source = sourceBlock(FlareFormat::Unity, kept);
         const int copies = *multiple != 0 ? int(*count) : 1;
         if (copies > 1 && *distribution != 0)
-            ctx.warn(label + ".distribution " + unityNumber(*distribution) +
-                     " (curve or random): flarekit draws the element once at its position; "
-                     "kept in source");
+            ctx.warn(label + ".distribution " +
+                     (*distribution == 1 ? std::string("1 (curve)") : std::string("2 (random)")) +
+                     ": flarekit draws the element once at its position; kept in source");
         const int n = *distribution == 0 ? copies : 1;
         if (asset.sprite.elements.size() + std::size_t(n) > kMaxPresetElements)
             return at.fail("expected at most " + std::to_string(kMaxPresetElements) +

@@ -136,17 +136,9 @@ Result<Rgb> unrealColor(const json& v, const JsonPlace& at, double& alpha) {
 }  // namespace
 
 Result<FlareAsset> readUnreal(const std::string& text, ImportContext& ctx) {
-    json doc;
-    const std::string t = trim(text);
-    if (!t.empty() && t.front() == '{') {
-        auto parsed = parseJsonText(text, ctx.path);
-        if (!parsed) return parsed.error();
-        doc = *parsed;
-    } else {
-        auto parsed = parseUnrealText(text, ctx.path);
-        if (!parsed) return parsed.error();
-        doc = *parsed;
-    }
+    auto parsed = jsonOrText(text, ctx.path, parseUnrealText);
+    if (!parsed) return parsed.error();
+    json doc = *parsed;
     // FPostProcessSettings exported whole nests the flare keys in "settings" at most.
     if (const json* inner = findKey(doc, "Settings"); inner && inner->is_object()) doc = *inner;
     const JsonPlace top(ctx.path);

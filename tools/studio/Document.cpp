@@ -166,12 +166,7 @@ Status Document::loadPreset(const std::string& nameOrPath) {
         }
         warnings = asset->warnings;
         m_format[int(kind)] = format;
-        m_undo.push_back(before);
-        m_redo.clear();
-        markCommitted();
-        m_savedJson[int(kind)] = currentJson();
-        m_presetPath[int(kind)] = nameOrPath;
-        clampSelection();
+        finishLoad(before, nameOrPath);
         return Ok{};
     }
     m_format[int(kind)] = FlareFormat::Flarekit;
@@ -190,13 +185,17 @@ Status Document::loadPreset(const std::string& nameOrPath) {
         m_lens = *lens;
         m_lensJob.lens = nameOrPath;
     }
+    finishLoad(before, nameOrPath);
+    return Ok{};
+}
+
+void Document::finishLoad(const Design& before, const std::string& path) {
     m_undo.push_back(before);
     m_redo.clear();
     markCommitted();
     m_savedJson[int(kind)] = currentJson();
-    m_presetPath[int(kind)] = nameOrPath;
+    m_presetPath[int(kind)] = path;
     clampSelection();
-    return Ok{};
 }
 
 Status Document::savePreset(const std::string& path) {

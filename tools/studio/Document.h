@@ -164,6 +164,9 @@ class Document {
     Design m_committed;
     std::string m_committedText;  //!< designText() of m_committed, kept, not remade each frame
     std::string m_presetPath[3], m_savedJson[3];  //!< per FlareKind
+    //! After a preset replaced the current kind's: one undo step back to `before`, and `path`
+    //! as what is saved and unchanged.
+    void finishLoad(const Design& before, const std::string& path);
     //! The engine format each kind's preset was opened from (Flarekit: a preset file or name).
     FlareFormat m_format[3] = {FlareFormat::Flarekit, FlareFormat::Flarekit, FlareFormat::Flarekit};
     std::vector<Design> m_undo, m_redo;
