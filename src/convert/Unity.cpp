@@ -193,6 +193,17 @@ Result<json> parseUnityYaml(const std::string& text, const std::string& path) {
                         "data asset (LensFlareDataSRP)");
 }
 
+//! The GUID of a texture written beside the asset without a .meta of its own: the .meta
+//! already beside the output when there is one (a project's references to that texture must
+//! keep working, so it is never replaced), else a new one written with it.
+std::string newTextureMeta(const std::string& file, ExportContext& ctx) {
+    const fs::path existing = fs::path(ctx.path).parent_path() / (file + ".meta");
+    if (std::string guid = unityGuidOfMeta(existing); !guid.empty()) return guid;
+    const std::string guid = unityGuidFor(ctx.path, file);
+    ctx.files.push_back({file + ".meta", {}, {}, unityTextureMeta(guid)});
+    return guid;
+}
+
 }  // namespace
 
 Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
@@ -412,8 +423,7 @@ Result<std::string> writeUnity(const Preset& preset, ExportContext& ctx) {
                 const std::string file = ctx.addCopy(e.texture);
                 std::string guid = unityGuidOfMeta(e.texture + ".meta");
                 if (guid.empty()) {
-                    guid = unityGuidFor(ctx.path, file);
-                    ctx.files.push_back({file + ".meta", {}, {}, unityTextureMeta(guid)});
+                    guid = newTextureMeta(file, ctx);
                 } else {
                     ctx.addCopy(e.texture + ".meta");
                 }
@@ -437,8 +447,7 @@ Result<std::string> writeUnity(const Preset& preset, ExportContext& ctx) {
                 type = kImage;
                 float share = 1.f, gain = 1.f;
                 const std::string file = ctx.addBaked(e, int(i), share, gain);
-                const std::string guid = unityGuidFor(ctx.path, file);
-                ctx.files.push_back({file + ".meta", {}, {}, unityTextureMeta(guid)});
+                const std::string guid = newTextureMeta(file, ctx);
                 u["lensFlareTexture"] = {{"fileID", "2800000"}, {"guid", guid}, {"type", "3"}};
                 radius = e.size / share;
                 set(name("m_LocalIntensity", "localIntensity"), gain);

@@ -543,3 +543,28 @@ TEST(Convert, ValuesOfTheWrongTypeAreBadInputNotACrash) {
 
 }  // namespace
 }  // namespace flarekit
+
+namespace flarekit {
+namespace {
+
+TEST(Convert, AUnityProjectsOwnMetaBesideTheOutputKeepsItsGuid) {
+    TempDir dir;
+    auto preset = loadPreset("hexagon-ghosts");
+    ASSERT_TRUE(preset.ok());
+    FlareAsset asset;
+    asset.sprite = *preset;
+    ASSERT_TRUE(exportFlare(asset, dir.file("Flare.asset"), FlareFormat::Unity).ok());
+    // The glow was baked (Unity has no glow shape) with a .meta; the project re-imported it
+    // under a GUID of its own.
+    const std::string meta = dir.file("Flare-0-glow.png.meta");
+    ASSERT_TRUE(fs::exists(meta));
+    const std::string mine = "fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n";
+    spit(meta, mine);
+    ASSERT_TRUE(exportFlare(asset, dir.file("Flare.asset"), FlareFormat::Unity).ok());
+    EXPECT_EQ(slurp(meta), mine);
+    EXPECT_NE(slurp(dir.file("Flare.asset")).find("guid: 0123456789abcdef0123456789abcdef"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace flarekit
