@@ -57,6 +57,9 @@ struct ElementParams {
     float minLength =
         0.3f;        //!< rays: shortest ray, fraction of radius (lengths uniform in [minLength, 1])
     int blades = 6;  //!< polygon: number of aperture blades
+    //! polygon: 0 sharp corners, 1 the inscribed circle: the polygon shrunk by roundness x its
+    //! apothem and grown back by a disc of that radius (Unity's SDF roundness).
+    float roundness = 0.f;
     std::uint32_t seed = 1;  //!< rays: random seed (same seed, same rays, on every platform)
     BlendMode blend = BlendMode::Add;  //!< how the element composites onto the image
     float reach = 0.25f;  //!< edge streak: fades out this far from the edge, image heights
@@ -127,6 +130,9 @@ inline constexpr Param<ElementParams> kElementParams[] = {
                                      element_bits::kRays),
     param<&ElementParams::blades>("blades", 3, 32, "", "aperture blades (polygon sides)",
                                   element_bits::kPolygon),
+    param<&ElementParams::roundness>("roundness", 0, 1, "",
+                                     "corner rounding: 0 sharp, 1 the inscribed circle",
+                                     element_bits::kPolygon),
     param<&ElementParams::seed>("seed", 0, 4294967295.0, "",
                                 "random seed of the rays (same seed, same rays everywhere)",
                                 element_bits::kRays),

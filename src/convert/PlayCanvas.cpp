@@ -93,6 +93,7 @@ Result<FlareAsset> readPlayCanvas(const json& doc, ImportContext& ctx) {
         auto count = readInt(f, "count", at, 1, 1, int(kMaxPresetElements));
         auto spread = readNumber(f, "spread", at, 0.0, -16, 16);
         auto sides = readInt(f, "sides", at, e.blades, 3, 32);
+        auto roundness = readNumber(f, "roundness", at, e.roundness, 0, 1);
         if (auto err =
                 firstError(offset, size, aspect, rotation, autoRotate, gain, count, spread, sides))
             return *err;
@@ -107,13 +108,13 @@ Result<FlareAsset> readPlayCanvas(const json& doc, ImportContext& ctx) {
         e.aspect = float(*aspect);
         e.rotationDeg = float(*rotation);
         e.intensity = float(*gain);
-        if (e.type == ElementType::Polygon) e.blades = *sides;
+        if (e.type == ElementType::Polygon) e.blades = *sides, e.roundness = float(*roundness);
         if (*autoRotate)
             ctx.warn("elements[" + std::to_string(i) +
                      "].autoRotate: flarekit does not turn elements toward the light; kept in "
                      "source");
         json kept = unmappedFields(f, {"shape", "offset", "size", "aspect", "rotation", "color",
-                                       "intensity", "sides", "flarekit"});
+                                       "intensity", "sides", "roundness", "flarekit"});
         for (int c = 0; c < *count; ++c) {
             if (asset.sprite.elements.size() >= kMaxPresetElements)
                 return at.fail("expected at most " + std::to_string(kMaxPresetElements) +
@@ -159,11 +160,14 @@ Result<std::string> writePlayCanvas(const Preset& preset, ExportContext& ctx) {
             f["shape"] = ctx.addCopy(e.texture);
         } else if (const char* shape = shapeOf(e.type)) {
             f["shape"] = shape;
-            if (e.type == ElementType::Polygon) f["sides"] = e.blades;
+            if (e.type == ElementType::Polygon) {
+                f["sides"] = e.blades;
+                if (e.roundness > 0.f) f["roundness"] = e.roundness;
+            }
             // Only what the look's own keys do not say.
             json ext = elementExtension(e);
             for (const char* k :
-                 {"t", "size", "aspect", "rotation", "color", "intensity", "blades"})
+                 {"t", "size", "aspect", "rotation", "color", "intensity", "blades", "roundness"})
                 ext.erase(k);
             if (ext.size() > 1) f["flarekit"] = std::move(ext);
         } else {

@@ -299,9 +299,7 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
                 e = defaultElement(ElementType::Polygon);
                 e.blades = int(*sides);
                 e.softness = float(1.0 - *edgeOffset);
-                if (*roundness > 0)
-                    ctx.warn(label + ".m_SdfRoundness " + unityNumber(*roundness) +
-                             ": flarekit's polygons have sharp corners; kept in source");
+                e.roundness = float(*roundness);
                 break;
             case kRing:
                 e = defaultElement(ElementType::Ring);
@@ -349,7 +347,8 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
         if (int(*type) == kCircle || int(*type) == kPolygon)
             for (const char* k : {"m_EdgeOffset", "edgeOffset"}) kept.erase(k);
         if (int(*type) == kPolygon)
-            for (const char* k : {"m_SideCount", "sideCount"}) kept.erase(k);
+            for (const char* k : {"m_SideCount", "sideCount", "m_SdfRoundness", "sdfRoundness"})
+                kept.erase(k);
         if (int(*type) == kRing) kept.erase("ringThickness");
         kept["blend_order"] = early ? "early" : "current";
         e.source = sourceBlock(FlareFormat::Unity, kept);
@@ -433,6 +432,7 @@ Result<std::string> writeUnity(const Preset& preset, ExportContext& ctx) {
             case ElementType::Polygon:
                 type = kPolygon;
                 set(name("m_SideCount", "sideCount"), e.blades);
+                set(name("m_SdfRoundness", "sdfRoundness"), e.roundness);
                 set(name("m_EdgeOffset", "edgeOffset"), 1.0 - e.softness);
                 break;
             case ElementType::Disc:

@@ -2,6 +2,8 @@
 // Polygonal iris ghost: the shape of an N-blade aperture that modern engines give their
 // ghosts. A regular N-gon with circumradius 1 (vertices on the rim): the distance to the
 // nearest edge along its normal is d*cos(phi) - cos(pi/N), phi the angle to that normal.
+// Rounded corners (roundness r) are the Minkowski sum of the polygon of apothem (1 - r) cos(pi/N)
+// and a disc of radius r cos(pi/N), as Unity's SDF polygon rounds them.
 #include <cmath>
 #include <numbers>
 
@@ -20,7 +22,16 @@ Rgba shadePolygon(const ElementKernel& k, float x, float y) {
     const float apothem = std::cos(0.5f * sector);
     const float filter = std::max(k.pixel, k.params.softness);
     const float edge = apothem - 0.5f * (filter - k.pixel);
-    return gradient(k, std::min(d, 1.f), coverage::below(d * std::cos(phi), edge, filter));
+    // Distance along the edge normal; with rounding, the inner polygon (apothem shrunk by
+    // roundness) plus the Euclidean distance to it past its corner, so the corner is an arc.
+    float along = d * std::cos(phi);
+    if (k.params.roundness > 0.f) {
+        const float inner = apothem * (1.f - k.params.roundness);
+        const float halfSide = inner * std::tan(0.5f * sector);
+        const float across = std::abs(d * std::sin(phi)) - halfSide;
+        if (across > 0.f) along = inner + std::hypot(std::max(along - inner, 0.f), across);
+    }
+    return gradient(k, std::min(d, 1.f), coverage::below(along, edge, filter));
 }
 
 }  // namespace flarekit

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "TempDir.h"
 #include "flarekit/Convert.h"
@@ -381,9 +382,8 @@ TEST(Convert, AnImportedLookRendersAsTheSameElementsWrittenByHand) {
 TEST(Convert, WhatDoesNotMapIsOneWarningEachAndKeptInSource) {
     auto asset = importFlare(kData + "/unity/Assets/Flares/SunFlare.asset");
     ASSERT_TRUE(asset.ok());
-    ASSERT_EQ(asset->warnings.size(), 2u);
+    ASSERT_EQ(asset->warnings.size(), 1u);
     EXPECT_NE(asset->warnings[0].find("elements[0].m_FallOff 0.5"), std::string::npos);
-    EXPECT_NE(asset->warnings[1].find("elements[3].m_SdfRoundness 0.3"), std::string::npos);
     // The uniform count of 3 drawn as three copies 2 x lengthSpread / 2 apart in u.
     const auto& e = asset->sprite.elements;
     ASSERT_EQ(e.size(), 6u);
@@ -391,6 +391,7 @@ TEST(Convert, WhatDoesNotMapIsOneWarningEachAndKeptInSource) {
     EXPECT_NEAR(e[2].t, 1 - 1.6, 1e-6);
     EXPECT_NEAR(e[3].t, 1 - 1.8, 1e-6);
     EXPECT_NE(e[0].source.find("\"m_FallOff\":\"0.5\""), std::string::npos);
+    EXPECT_FLOAT_EQ(e[5].roundness, 0.3f);  // m_SdfRoundness: flarekit's polygon roundness
     // Each copy's colour: the tint x the gradient (orange to white) at 0, 1/2, 1.
     EXPECT_NEAR(e[1].color[1], 0.8f * 0.5f, 1e-6);
     EXPECT_NEAR(e[2].color[1], 0.8f * 0.75f, 1e-6);
@@ -564,6 +565,54 @@ TEST(Convert, AUnityProjectsOwnMetaBesideTheOutputKeepsItsGuid) {
     EXPECT_EQ(slurp(meta), mine);
     EXPECT_NE(slurp(dir.file("Flare.asset")).find("guid: 0123456789abcdef0123456789abcdef"),
               std::string::npos);
+}
+
+}  // namespace
+}  // namespace flarekit
+
+namespace flarekit {
+namespace {
+
+//! Coverage of a rounded polygon against its definition: inside exactly where the distance to
+//! the polygon of apothem (1 - r) cos(pi/N) is under r cos(pi/N).
+TEST(Convert, RoundedPolygonsAreThePolygonGrownByADisc) {
+    ElementParams p = defaultElement(ElementType::Polygon);
+    p.blades = 5;
+    p.softness = 0.f;
+    p.intensity = 1.f;
+    p.color = {1, 1, 1};
+    p.innerColor = Rgb{1, 1, 1};
+    for (float r : {0.f, 0.3f, 1.f}) {
+        p.roundness = r;
+        const float radius = 100.f;
+        const Image img = renderElement(p, radius);
+        const double apothem = std::cos(std::numbers::pi / 5), inner = apothem * (1 - r);
+        int wrong = 0, checked = 0;
+        for (int y = 0; y < img.height(); y += 3)
+            for (int x = 0; x < img.width(); x += 3) {
+                const double px = (x + 0.5 - img.width() / 2.0) / radius,
+                             py = (y + 0.5 - img.height() / 2.0) / radius;
+                // Distance to the inner polygon: the largest over its edges of the distance
+                // past each edge, exact off the corners; near corners, to the corner point.
+                double dist = 0;
+                for (int i = 0; i < 5; ++i) {
+                    const double a = 2 * std::numbers::pi * i / 5;
+                    const double along = px * std::cos(a) + py * std::sin(a) - inner;
+                    const double across = std::abs(-px * std::sin(a) + py * std::cos(a)) -
+                                          inner * std::tan(std::numbers::pi / 5);
+                    if (along <= 0) continue;
+                    dist = std::max(dist, across > 0 ? std::hypot(along, across) : along);
+                }
+                const double margin = 1.5 / radius;  // antialiasing band
+                const double d = dist - apothem * r;
+                if (std::abs(d) < margin) continue;
+                ++checked;
+                const bool inside = img.at(x, y).a > 0.5f;
+                wrong += inside != (d < 0);
+            }
+        EXPECT_EQ(wrong, 0) << r;
+        EXPECT_GT(checked, 1000);
+    }
 }
 
 }  // namespace
