@@ -327,7 +327,7 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
             ctx.warn(label +
                      ".angularOffset: flarekit keeps elements on the flare line; kept in "
                      "source");
-        if (auto distortion = f.number({"enableRadialDistortion"}, 0); distortion && *distortion)
+        if (auto distortion = f.number({"enableRadialDistortion"}, 0); distortion && *distortion != 0)
             ctx.warn(label +
                      ".enableRadialDistortion: flarekit does not resize elements toward "
                      "the frame edge; kept in source");
