@@ -31,19 +31,86 @@ constexpr double kUnitySizeToRadius = 0.05;
 
 enum UnityType { kImage = 0, kCircle = 1, kPolygon = 2, kRing = 3, kNested = 4 };
 
-json yamlToJson(const YAML::Node& n) {
+//! Nodes converted from one asset at most: a flare asset has ~10^3 (curves included); the bound
+//! stops an alias-laden file from expanding exponentially (YAML's "billion laughs").
+constexpr std::size_t kMaxYamlNodes = std::size_t(1) << 20;
+//! Nesting deeper than a flare asset's (curves' keys sit at depth 6) is refused: a recursion bound.
+constexpr int kMaxYamlDepth = 64;
+
+struct YamlBudget {
+    std::size_t nodes = 0;
+    bool exceeded = false;
+};
+
+json yamlToJson(const YAML::Node& n, YamlBudget& budget, int depth = 0) {
+    if (++budget.nodes > kMaxYamlNodes || depth > kMaxYamlDepth) {
+        budget.exceeded = true;
+        return nullptr;
+    }
     if (n.IsMap()) {
         json o = json::object();
-        for (const auto& kv : n) o[kv.first.as<std::string>()] = yamlToJson(kv.second);
+        for (const auto& kv : n) {
+            o[kv.first.IsScalar() ? kv.first.as<std::string>() : std::string("?")] =
+                yamlToJson(kv.second, budget, depth + 1);
+            if (budget.exceeded) return nullptr;
+        }
         return o;
     }
     if (n.IsSequence()) {
         json a = json::array();
-        for (const auto& v : n) a.push_back(yamlToJson(v));
+        for (const auto& v : n) {
+            a.push_back(yamlToJson(v, budget, depth + 1));
+            if (budget.exceeded) return nullptr;
+        }
         return a;
     }
     if (n.IsScalar()) return n.as<std::string>();
     return nullptr;
+}
+
+//! Unity's assets are YAML documents each headed `--- !u!CLASS &ID`, with no tag inside: the
+//! bodies are cut out here and each parsed alone, so that the parser never sees a tag or a
+//! directive. (yaml-cpp 0.7 loops forever on a tag holding a comma right after `---`, which a
+//! hostile file can carry; no flare asset has one.) One line naming a tag that is refused.
+Result<std::vector<std::string>> unityDocuments(const std::string& text, const std::string& path) {
+    std::vector<std::string> bodies;
+    std::istringstream in(text);
+    std::string line, body;
+    bool inDocument = false;
+    int lineNo = 0;
+    for (; std::getline(in, line); ++lineNo) {
+        if (line.rfind("---", 0) == 0) {
+            if (inDocument) bodies.push_back(body);
+            body.clear();
+            inDocument = true;
+            continue;
+        }
+        if (!inDocument && (line.empty() || line[0] == '%' || line[0] == '#')) continue;
+        if (!inDocument) inDocument = true;  // a document without a header
+        // A tag starts with '!' after a space, a flow indicator or the line's start, outside
+        // quotes; Unity writes none inside a document.
+        char quote = 0;
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            const char c = line[i];
+            if (quote) {
+                if (c == quote) quote = 0;
+                continue;
+            }
+            if (c == '"' || c == '\'') {
+                quote = c;
+            } else if (c == '#' && (i == 0 || line[i - 1] == ' ')) {
+                break;  // a comment
+            } else if (c == '!' &&
+                       (i == 0 || std::string(" [{,:-").find(line[i - 1]) != std::string::npos)) {
+                return invalidInput(path + ": line " + std::to_string(lineNo + 1) +
+                                    ": expected no YAML tag inside a Unity asset's document");
+            }
+        }
+        body += line;
+        body += '\n';
+    }
+    if (inDocument) bodies.push_back(body);
+    return bodies;
 }
 
 void emitJson(YAML::Emitter& out, const json& v) {
@@ -179,10 +246,19 @@ int unityBlendOf(BlendMode b, bool early) {
 }
 
 Result<json> parseUnityYaml(const std::string& text, const std::string& path) {
+    auto bodies = unityDocuments(text, path);
+    if (!bodies) return bodies.error();
     try {
-        for (const YAML::Node& doc : YAML::LoadAll(text)) {
-            if (doc.IsMap() && doc["MonoBehaviour"] && doc["MonoBehaviour"]["elements"])
-                return yamlToJson(doc["MonoBehaviour"]);
+        for (const std::string& body : *bodies) {
+            const YAML::Node doc = YAML::Load(body);
+            if (!doc.IsMap() || !doc["MonoBehaviour"] || !doc["MonoBehaviour"]["elements"])
+                continue;
+            YamlBudget budget;
+            json mono = yamlToJson(doc["MonoBehaviour"], budget);
+            if (budget.exceeded)
+                return invalidInput(path + ": MonoBehaviour: expected a lens-flare asset, got " +
+                                    "more than a million YAML nodes or nesting deeper than 64");
+            return mono;
         }
     } catch (const YAML::Exception& e) {
         return invalidInput(path + ": invalid YAML at line " + std::to_string(e.mark.line + 1) +
@@ -327,7 +403,8 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
             ctx.warn(label +
                      ".angularOffset: flarekit keeps elements on the flare line; kept in "
                      "source");
-        if (auto distortion = f.number({"enableRadialDistortion"}, 0); distortion && *distortion != 0)
+        if (auto distortion = f.number({"enableRadialDistortion"}, 0);
+            distortion && *distortion != 0)
             ctx.warn(label +
                      ".enableRadialDistortion: flarekit does not resize elements toward "
                      "the frame edge; kept in source");

@@ -536,6 +536,16 @@ TEST(Convert, ValuesOfTheWrongTypeAreBadInputNotACrash) {
     EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
     EXPECT_EQ(r.error().message,
               dir.file("b.json") + ": flares[0].textureName: expected a string, got 7");
+    // A tag holding a comma right after `---` makes yaml-cpp 0.7 loop forever: refused first.
+    spit(dir.file("t.asset"), "%YAML 1.1\n--- !a,b\nMonoBehaviour:\n  elements: []\n");
+    r = importFlare(dir.file("t.asset"));
+    ASSERT_FALSE(r.ok());
+    spit(dir.file("t.asset"), "--- !u!114 &1\nMonoBehaviour:\n  m_Name: !x,y\n");
+    r = importFlare(dir.file("t.asset"));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(
+        r.error().message,
+        dir.file("t.asset") + ": line 3: expected no YAML tag inside a Unity asset's document");
     spit(dir.file("u.asset"), unityAsset("flareType: 0\n    lensFlareTexture: {guid: {a: 1}}"));
     r = importFlare(dir.file("u.asset"));
     ASSERT_FALSE(r.ok());
