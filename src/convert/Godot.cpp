@@ -81,7 +81,9 @@ Result<json> parseTscn(const std::string& text, const std::string& path) {
         if (isGodotKey(key) && key != "lensDirt" && (value.empty() || *end != '\0'))
             return invalidInput(path + ": line " + std::to_string(lineNo) + ": " + key +
                                 ": expected a number, got '" + value.substr(0, 60) + "'");
-        const bool whole = value.find_first_of(".eE") == std::string::npos;
+        // Written without a point: an integer (ghostCount = 6), when it is one that fits.
+        const bool whole = value.find_first_of(".eE") == std::string::npos && std::isfinite(x) &&
+                           std::abs(x) < 1e15 && x == std::floor(x);
         node[key] = key == "lensDirt" || key == "script" ? json(value)
                     : whole                              ? json((long long)x)
                                                          : json(x);

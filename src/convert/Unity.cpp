@@ -208,7 +208,7 @@ Rgb gradientAt(const json& g, double t) {
         };
         return Rgb{c("r"), c("g"), c("b")};
     };
-    const int n = std::clamp(int(num("m_NumColorKeys", 0)), 0, 8);
+    const int n = int(std::clamp(num("m_NumColorKeys", 0), 0.0, 8.0));
     if (n == 0) return {1, 1, 1};
     const double at = t * 65535.0;
     if (at <= num("ctime0", 0)) return key(0);
@@ -338,8 +338,9 @@ Result<FlareAsset> readUnity(const std::string& text, ImportContext& ctx) {
                                   edgeOffset, fallOff, sides, roundness, multiple, count,
                                   distribution, spread, angleStep, thickness, tint))
             return *err;
-        const auto blend =
-            *blendMode == std::floor(*blendMode) ? blendOf(int(*blendMode), early) : std::nullopt;
+        const auto blend = *blendMode == std::floor(*blendMode) && std::abs(*blendMode) < 1e6
+                               ? blendOf(int(*blendMode), early)
+                               : std::nullopt;
         if (!blend)
             return (at / "blendMode")
                 .fail(std::string("expected 0 to 3 (") +
