@@ -40,12 +40,6 @@ const char* shapeOf(ElementType type) {
     return nullptr;
 }
 
-//! The flarekit copy of one PlayCanvas element, `copy` of `count`.
-bool isCopy(const ElementParams& e) {
-    const json s = json::parse(e.source, nullptr, false);
-    return fieldOr(s, "copy", false);
-}
-
 }  // namespace
 
 Result<FlareAsset> readPlayCanvas(const json& doc, ImportContext& ctx) {
@@ -141,7 +135,7 @@ Result<std::string> writePlayCanvas(const Preset& preset, ExportContext& ctx) {
     json elements = json::array();
     for (std::size_t i = 0; i < preset.elements.size(); ++i) {
         const ElementParams& e = preset.elements[i];
-        if (isCopy(e)) continue;  // written as its first element's count
+        if (isCountCopy(e)) continue;  // written as its first element's count
         const std::string label = elementLabel(e, i);
         if (!e.visible) {
             ctx.warn(label + "switched off: a LensFlareLook has no hidden elements; left out");
