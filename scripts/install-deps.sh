@@ -52,6 +52,9 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest
   # the flare-data generator's PyTorch dataset and its Dask cluster runs (and their tests)
   python3-torch python3-dask python3-distributed
+  # the frei0r filter for ffmpeg, melt, Kdenlive and Shotcut: frei0r.h (the plug-in only; see
+  # NOTICE), and melt for its test in the real host (ffmpeg is above)
+  frei0r-plugins-dev melt
   # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
   clang libclang-rt-14-dev
 )

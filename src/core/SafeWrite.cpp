@@ -61,7 +61,7 @@ Status replaceAtomically(const std::string& shownPath, const fs::path& target,
                          std::string_view bytes, mode_t mode) {
     static std::atomic<int> counter{0};
     const fs::path temp =
-        target.parent_path() / (".flarekit-tmp-" + std::to_string(::getpid()) + "-" +
+        target.parent_path() / (std::string(kTempFilePrefix) + std::to_string(::getpid()) + "-" +
                                 std::to_string(counter++) + "-" + target.filename().string());
     TrackedTempPath tracked(temp.string());
     const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
@@ -111,6 +111,20 @@ Status checkWritablePath(const std::string& path) {
     }
     if (fs::is_directory(p, ec)) return invalidInput(path + ": output path is a directory");
     return Ok{};
+}
+
+std::size_t removeOrphanTempFiles(const std::string& dir) {
+    std::size_t removed = 0;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        std::error_code typeEc;
+        if (!it->is_regular_file(typeEc)) continue;
+        if (!it->path().filename().string().starts_with(kTempFilePrefix)) continue;
+        std::error_code removeEc;
+        if (fs::remove(it->path(), removeEc)) ++removed;
+    }
+    return removed;
 }
 
 Status makeOutputDirectory(const std::string& dir) {

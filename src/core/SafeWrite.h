@@ -3,6 +3,7 @@
 // crash never leaves a truncated file and never replaces what the user had.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -24,6 +25,14 @@ Status writeFileSafely(const std::string& path, std::string_view bytes);
 //! Why `path` cannot be written (it is a directory, or its folder cannot be made because an
 //! ancestor is a file), or Ok. A missing folder is not an error: writeFileSafely makes it.
 Status checkWritablePath(const std::string& path);
+
+//! The name every temporary file of writeFileSafely starts with.
+inline constexpr std::string_view kTempFilePrefix = ".flarekit-tmp-";
+
+//! Removes the temporary files writeFileSafely left in `dir` and its subfolders when its process
+//! was killed (SIGKILL, a lost cluster worker, a power cut): only for a folder whose writers are
+//! all known to be done. Returns how many were removed; best effort, never fails.
+std::size_t removeOrphanTempFiles(const std::string& dir);
 
 //! Makes the folder `dir` (and its parents) when missing; one line naming it when that fails.
 Status makeOutputDirectory(const std::string& dir);

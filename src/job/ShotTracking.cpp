@@ -3,15 +3,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace flarekit {
 
+int trackerLookBack(double fps) {
+    return int(std::ceil(0.5 * fps));
+}
+
 ShotTracking::ShotTracking(const ShotPlan& plan, const LightSearchOptions& search,
                            const JobEvents& events)
-    : m_plan(plan),
-      m_search(search),
-      m_events(events),
-      m_lookBack(int(std::ceil(0.5 * plan.fps))) {}
+    : m_plan(plan), m_search(search), m_events(events), m_lookBack(trackerLookBack(plan.fps)) {}
 
 Result<std::vector<LightCandidate>> ShotTracking::lightsIn(int frame, const Image* image) {
     {
@@ -49,6 +51,26 @@ Result<TrackedLight> ShotTracking::at(int frame, const Image* image) {
     }
     std::lock_guard lock(m_mutex);
     m_tracked[frame] = light;
+    return light;
+}
+
+LiveTracking::LiveTracking(const LightSearchOptions& search, double fps)
+    : m_search(search), m_lookBack(trackerLookBack(fps)) {}
+
+TrackedLight LiveTracking::next(int frame, const Image& image) {
+    if (!m_history.empty() &&
+        (frame <= m_history.back().first || frame - m_history.back().first > m_lookBack))
+        m_history.clear();
+    m_history.emplace_back(frame, findLights(image, m_search).candidates);
+    while (m_history.front().first < frame - m_lookBack) m_history.pop_front();
+    // As ShotTracking::at: a fresh tracker over the frames of the look-back, in order.
+    LightTracker tracker;
+    TrackedLight light;
+    std::optional<int> previous;
+    for (const auto& [number, lights] : m_history) {
+        light = tracker.update(lights, previous ? double(number - *previous) : 0.0);
+        previous = number;
+    }
     return light;
 }
 

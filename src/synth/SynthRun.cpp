@@ -269,6 +269,9 @@ Result<SynthRunReport> runSynthJob(const SynthRunOptions& o, const JobEvents& ev
     }
     if (Status s = writeFileSafely((fs::path(o.out) / "labels.jsonl").string(), lines); !s)
         return s.error();
+    // A writer killed outright (SIGKILL, a lost Dask worker) leaves its temporary file; with
+    // every sample complete no writer of this set is needed any more, so its leftovers go.
+    removeOrphanTempFiles(o.out);
     report.complete = true;
     return report;
 }

@@ -247,6 +247,10 @@ def test_interrupted_run_resumes_to_the_same_set(cli, tmp_path):
         exr = tmp_path / "cut" / name.replace(".json", ".exr")
         assert filecmp.cmp(exr, tmp_path / "whole" / exr.name, shallow=False)
     assert not [f for f in os.listdir(tmp_path / "cut") if f.startswith(".")]
+    # What a writer killed outright (SIGKILL, a lost cluster worker) leaves: its temporary file.
+    orphan = labels / ".flarekit-tmp-999999-0-000039.json"
+    orphan.write_text("{")
     done = run_cli(cli, *args, "--out", tmp_path / "cut", "--resume")
+    assert not orphan.exists()
     assert f"{len(finished)} already complete" in done.stderr
     same_tree(tmp_path / "whole", tmp_path / "cut")

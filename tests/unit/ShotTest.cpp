@@ -9,6 +9,7 @@
 
 #include "TempDir.h"
 #include "flarekit/Shot.h"
+#include "flarekit/job/ShotTracking.h"
 
 using namespace flarekit;
 using flarekit::test::TempDir;
@@ -272,4 +273,50 @@ TEST(LightTracker, ASunsOwnGlowCandidatesNeverTakeItOver) {
     const TrackedLight hidden = city.update({lightAt(146.2f, 81, 88700, 82, false, 12)}, 1);
     EXPECT_FALSE(hidden.found);
     EXPECT_NEAR(hidden.position.x, 134.2f, 1e-3);
+}
+
+namespace {
+//! A 96 x 64 HDR frame: a dim sky and a sun (a 3 px disc at 500) at x = 20 + 3 * frame, with a
+//! second, dimmer light that appears from frame 8 (so the tracker has a choice to remember).
+Image movingSun(int frame) {
+    Image image(96, 64);
+    image.fill({0.05f, 0.06f, 0.08f, 1});
+    auto disc = [&](float cx, float cy, float value) {
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (std::hypot(float(x) + 0.5f - cx, float(y) + 0.5f - cy) <= 3.f)
+                    image.at(x, y) = {value, value, value, 1};
+    };
+    disc(20.f + 3.f * float(frame), 20.f, 500.f);
+    if (frame >= 8) disc(70.f, 48.f, 300.f);
+    return image;
+}
+}  // namespace
+
+TEST(LiveTracking, EachFrameDependsOnlyOnTheHalfSecondBeforeItAndASeekStartsAfresh) {
+    EXPECT_EQ(trackerLookBack(24), 12);
+    EXPECT_EQ(trackerLookBack(30), 15);
+    LiveTracking whole({}, 24);
+    std::vector<TrackedLight> lights;
+    for (int f = 0; f <= 20; ++f) lights.push_back(whole.next(f, movingSun(f)));
+    for (const TrackedLight& t : lights) ASSERT_TRUE(t.found);
+    EXPECT_NEAR(lights[20].position.x, 80.f, 0.5f);
+    // Frame 20 from the 12 frames before it alone: the same light, to the bit (as ShotTracking
+    // gives a farm chunk that starts anywhere).
+    LiveTracking chunk({}, 24);
+    TrackedLight last;
+    for (int f = 8; f <= 20; ++f) last = chunk.next(f, movingSun(f));
+    EXPECT_EQ(last.position.x, lights[20].position.x);
+    EXPECT_EQ(last.position.y, lights[20].position.y);
+    EXPECT_EQ(last.flareScale, lights[20].flareScale);
+    // Started a frame earlier: that frame falls out of the look-back, so the same light again.
+    LiveTracking longer({}, 24);
+    for (int f = 7; f <= 20; ++f) last = longer.next(f, movingSun(f));
+    EXPECT_EQ(last.position.x, lights[20].position.x);
+    // A seek back to frame 3: as a tracker that saw frames 0-3 only from frame 3 on.
+    const TrackedLight seeked = whole.next(3, movingSun(3));
+    LiveTracking fresh({}, 24);
+    const TrackedLight alone = fresh.next(3, movingSun(3));
+    EXPECT_EQ(seeked.position.x, alone.position.x);
+    EXPECT_EQ(seeked.found, alone.found);
 }

@@ -5,8 +5,11 @@
 // the same whichever chunk renders it.
 #pragma once
 
+#include <deque>
 #include <map>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 #include "flarekit/Flare.h"
 #include "flarekit/job/ShotRun.h"
@@ -26,12 +29,30 @@ class ShotTracking {
     const ShotPlan& m_plan;
     LightSearchOptions m_search;
     JobEvents m_events;
-    //! Frames looked back: half a second of the shot (12 at 24 fps), time for the alpha-beta
-    //! filter to settle and for a switch to be decided.
-    int m_lookBack;
+    int m_lookBack;  //!< trackerLookBack(fps)
     std::mutex m_mutex;
     std::map<int, std::vector<LightCandidate>> m_lights;
     std::map<int, TrackedLight> m_tracked;
+};
+
+//! The look-back of the tracker at `fps` frames per second: half a second of the shot (12 at
+//! 24 fps), time for the alpha-beta filter to settle and for a switch to be decided.
+int trackerLookBack(double fps);
+
+//! The same light for frames a host hands over one at a time (a video editor's filter, which
+//! never sees the whole shot): each frame's light is what ShotTracking gives the frame of the
+//! same number in a file sequence, because both run a fresh tracker over the same look-back.
+class LiveTracking {
+  public:
+    explicit LiveTracking(const LightSearchOptions& search, double fps = 24);
+    //! The light in `image`, frame number `frame`. A frame at or before the previous one, or
+    //! more than the look-back after it (a host seeking), forgets what came before.
+    TrackedLight next(int frame, const Image& image);
+
+  private:
+    LightSearchOptions m_search;
+    int m_lookBack;
+    std::deque<std::pair<int, std::vector<LightCandidate>>> m_history;
 };
 
 }  // namespace flarekit
