@@ -55,6 +55,9 @@ packages=(
   # the frei0r filter for ffmpeg, melt, Kdenlive and Shotcut: frei0r.h (the plug-in only; see
   # NOTICE), and melt for its test in the real host (ffmpeg is above)
   frei0r-plugins-dev melt
+  # the GIMP 2.10 plug-in: libgimp (LGPL-3.0-or-later, linked by the plug-in only) and GIMP for
+  # its test in batch mode
+  libgimp2.0-dev gimp
   # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
   clang libclang-rt-14-dev
 )

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "HostFlare.h"
 #include "flarekit/Flare.h"
 #include "flarekit/Param.h"
 #include "flarekit/job/ApplyJob.h"
@@ -14,9 +15,8 @@
 
 namespace flarekit::frei0r {
 
-//! Which of flarekit's flares the filter draws.
-enum class FilterMode { Sprite, PostFx, Lens };
-inline constexpr std::string_view kFilterModeNames[] = {"sprite", "postfx", "lens"};
+using host::FlareMode;
+using FilterMode = host::FlareMode;
 
 //! Where the light is in each frame.
 enum class LightSource {
@@ -25,10 +25,6 @@ enum class LightSource {
     Position,  //!< the x and y parameters, which the host can keyframe
 };
 inline constexpr std::string_view kLightSourceNames[] = {"track", "auto", "position"};
-
-//! The lens a lens-mode filter without a preset uses: a normal 50 mm prime, the lens most
-//! footage is shot through.
-inline constexpr const char* kDefaultFilterLens = "asahi-takumar-50";
 
 struct FilterSettings {
     FilterMode mode = FilterMode::Sprite;
@@ -73,7 +69,7 @@ inline constexpr Param<FilterSettings> kFilterNumberParams[] = {
                                 "a second, as flarekit apply --fps does)"),
 };
 inline constexpr Param<FilterSettings> kFilterChoiceParams[] = {
-    choice<&FilterSettings::mode>("mode", kFilterModeNames,
+    choice<&FilterSettings::mode>("mode", host::kFlareModeNames,
                                   "sprite: a sprite preset; postfx: the post-process chain (the "
                                   "frame's lights expanded as postfx --expand-highlights does); "
                                   "lens: a lens prescription's traced ghosts"),

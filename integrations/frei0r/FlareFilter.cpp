@@ -14,19 +14,6 @@ namespace flarekit::frei0r {
 
 namespace {
 
-std::string presetName(const FilterSettings& s) {
-    if (!s.preset.empty()) return s.preset;
-    switch (s.mode) {
-        case FilterMode::PostFx:
-            return kDefaultPostFxPreset;
-        case FilterMode::Lens:
-            return kDefaultFilterLens;
-        case FilterMode::Sprite:
-            break;
-    }
-    return kDefaultSpritePreset;
-}
-
 //! RGBA8888 to the working space: sRGB colour decoded exactly, straight alpha linear.
 PixelInput decodeFrame(const std::uint8_t* in, int width, int height) {
     PixelInput input;
@@ -48,22 +35,12 @@ PixelInput decodeFrame(const std::uint8_t* in, int width, int height) {
     return input;
 }
 
-//! The flare a job added to `plate`, times `gain`: what intensity means for the post-process
-//! chain and the lens, whose jobs have no multiplier of their own (1 leaves the job's image).
-void scaleFlare(Image& result, const Image& plate, float gain) {
-    if (gain == 1.f) return;
-    float* r = result.data();
-    const float* p = plate.data();
-    for (std::size_t i = 0; i < 4 * result.pixelCount(); i += 4)
-        for (std::size_t c = 0; c < 3; ++c) r[i + c] = p[i + c] + gain * (r[i + c] - p[i + c]);
-}
-
 }  // namespace
 
 void FlareFilter::set(const FilterSettings& next) {
     const FilterSettings& now = m_settings;
     const bool look = next.mode != now.mode || next.preset != now.preset;
-    if (look) m_loaded = false;
+    if (look) m_look.reset();
     if (look || next.light != now.light || next.threshold != now.threshold || next.fps != now.fps) {
         m_tracking.reset();
         m_lastTime.reset();
@@ -76,33 +53,6 @@ void FlareFilter::report(const std::string& line) {
     if (line == m_lastReport) return;
     m_lastReport = line;
     std::fprintf(stderr, "flarekit (frei0r): %s; frame left unchanged\n", line.c_str());
-}
-
-Status FlareFilter::loadLook() {
-    m_preset.reset(), m_postFx.reset(), m_lens.reset();
-    const std::string name = presetName(m_settings);
-    switch (m_settings.mode) {
-        case FilterMode::Sprite: {
-            auto preset = loadPreset(name);
-            if (!preset) return preset.error();
-            m_preset = std::move(*preset);
-            break;
-        }
-        case FilterMode::PostFx: {
-            auto params = loadPostFxPreset(name);
-            if (!params) return params.error();
-            m_postFx = std::make_shared<const PostFxParams>(std::move(*params));
-            break;
-        }
-        case FilterMode::Lens: {
-            auto lens = loadLens(name);
-            if (!lens) return lens.error();
-            m_lens = std::make_shared<const Lens>(std::move(*lens));
-            break;
-        }
-    }
-    m_loaded = true;
-    return Ok{};
 }
 
 int FlareFilter::frameAt(double time) {
@@ -120,81 +70,37 @@ int FlareFilter::frameAt(double time) {
 }
 
 Status FlareFilter::render(double time, const std::uint8_t* in, std::uint8_t* out) {
-    if (!m_loaded) {
-        if (Status s = loadLook(); !s) return s;
+    const FilterSettings& s = m_settings;
+    if (!m_look) {
+        auto look = host::Look::load(s.mode, s.preset);
+        if (!look) return look.error();
+        m_look = std::move(*look);
     }
     PixelInput input = decodeFrame(in, m_width, m_height);
-    const std::string name = presetName(m_settings);
-    const FilterSettings& s = m_settings;
-    LightSearchOptions search;
-    if (s.threshold > 0) search.minLuminance = float(s.threshold);
-    const Point placed{float(s.x * m_width), float(s.y * m_height)};
-
-    std::optional<TrackedLight> tracked;
+    host::FlareRequest request;
+    request.intensity = s.intensity;
+    request.threshold = s.threshold;
+    if (s.light == LightSource::Position)
+        request.light = Point{float(s.x * m_width), float(s.y * m_height)};
     if (s.light == LightSource::Track && s.mode != FilterMode::PostFx) {
         const bool again = m_lastTime && time == *m_lastTime;  // the host asks for it again
         const int frame = frameAt(time);
         if (!again) {
-            if (!m_tracking) m_tracking.emplace(search, s.fps);
+            if (!m_tracking) m_tracking.emplace(host::searchOptions(request), s.fps);
             m_lastLight = m_tracking->next(frame, input.image);
         }
-        tracked = m_lastLight;
-        if (!tracked->found) {
+        if (!m_lastLight.found) {
             std::memcpy(out, in, std::size_t(m_width) * std::size_t(m_height) * 4);
             return Ok{};
         }
+        request.light = m_lastLight.position;
+        request.lightScale = m_lastLight.flareScale;
     }
-
-    Result<PixelOutput> result = Error{};
-    const Image plate = s.mode == FilterMode::Sprite ? Image{} : input.image;
-    switch (s.mode) {
-        case FilterMode::Sprite: {
-            ApplyOptions o;
-            o.preset = name;
-            o.intensity = s.intensity;
-            o.lightSearch = search;
-            if (tracked) {
-                // The tracked light's strength, as a tracked shot in `flarekit apply` has it.
-                o.light = tracked->position;
-                o.fluxMode = FluxMode::Fixed;
-                o.intensity *= tracked->flareScale;
-            } else if (s.light == LightSource::Position) {
-                o.light = placed;
-            }
-            result = applyPixels(o, *m_preset, std::move(input));
-            break;
-        }
-        case FilterMode::PostFx: {
-            PostFxJobOptions o;
-            o.preset = name;
-            o.presetParams = m_postFx;
-            if (s.threshold > 0) o.threshold = float(s.threshold);
-            // A video frame clips its lights at white: without their highlights expanded (as
-            // `flarekit postfx --expand-highlights` does) the chain's bright-pass sees no light.
-            o.expandHighlights = ExpandHighlights{}.gain;
-            result = postFxPixels(o, std::move(input));
-            break;
-        }
-        case FilterMode::Lens: {
-            LensJobOptions o;
-            o.lens = name;
-            o.lensData = m_lens;
-            if (s.threshold > 0) o.threshold = s.threshold;
-            if (tracked) {
-                o.lightMode = LensLightMode::At, o.light = tracked->position;
-            } else if (s.light == LightSource::Position) {
-                o.lightMode = LensLightMode::At, o.light = placed;
-            }
-            result = lensPixels(o, std::move(input));
-            break;
-        }
-    }
-    if (!result) return result.error();
-    Image& image = result->image;
-    if (s.mode != FilterMode::Sprite) scaleFlare(image, plate, s.intensity);
-    encodeSrgb8(image.data(), image.pixelCount(), 4, out);
+    auto image = host::drawFlare(*m_look, request, std::move(input));
+    if (!image) return image.error();
+    encodeSrgb8(image->data(), image->pixelCount(), 4, out);
     // The host's alpha exactly as it came (a job keeps it; its float round trip need not).
-    for (std::size_t i = 0; i < image.pixelCount(); ++i) out[4 * i + 3] = in[4 * i + 3];
+    for (std::size_t i = 0; i < image->pixelCount(); ++i) out[4 * i + 3] = in[4 * i + 3];
     return Ok{};
 }
 

@@ -10,9 +10,7 @@
 #include <string>
 
 #include "FilterSettings.h"
-#include "flarekit/Flare.h"
-#include "flarekit/Lens.h"
-#include "flarekit/PostFxParams.h"
+#include "HostFlare.h"
 #include "flarekit/job/ShotTracking.h"
 
 namespace flarekit::frei0r {
@@ -34,17 +32,13 @@ class FlareFilter {
 
   private:
     Status render(double time, const std::uint8_t* in, std::uint8_t* out);
-    Status loadLook();
     //! The frame's number in the clip: frames counted by the smallest step between times seen.
     int frameAt(double time);
     void report(const std::string& line);
 
     int m_width, m_height;
     FilterSettings m_settings;
-    bool m_loaded = false;
-    std::optional<Preset> m_preset;
-    std::shared_ptr<const PostFxParams> m_postFx;
-    std::shared_ptr<const Lens> m_lens;
+    std::optional<host::Look> m_look;  //!< loaded at the first frame after a change
     std::optional<LiveTracking> m_tracking;
     std::optional<double> m_lastTime;
     double m_step = 0;
