@@ -58,6 +58,8 @@ packages=(
   # the GIMP 2.10 plug-in: libgimp (LGPL-3.0-or-later, linked by the plug-in only) and GIMP for
   # its test in batch mode
   libgimp2.0-dev gimp
+  # the Blender add-on's test: Blender 3.4 on the system's Python, rendering in the background
+  blender
   # the fuzz targets: clang with libFuzzer and the sanitizer runtimes
   clang libclang-rt-14-dev
 )

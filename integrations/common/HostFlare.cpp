@@ -75,52 +75,56 @@ LightSearchOptions searchOptions(const FlareRequest& request) {
     return search;
 }
 
-Result<Image> drawFlare(const Look& look, const FlareRequest& r, PixelInput input) {
-    Result<PixelOutput> result = Error{};
-    Image plate;
-    switch (look.mode) {
-        case FlareMode::Sprite: {
-            ApplyOptions o;
-            o.preset = look.name;
-            o.intensity = r.intensity;
-            o.lightSearch = searchOptions(r);
-            o.light = r.light;
-            if (r.light && r.lightScale) {
-                // A tracked light's strength, as a tracked shot in `flarekit apply` has it.
-                o.fluxMode = FluxMode::Fixed;
-                o.intensity *= *r.lightScale;
-            }
-            result = applyPixels(o, *look.preset, std::move(input));
-            break;
-        }
-        case FlareMode::PostFx: {
-            plate = input.image;
-            PostFxJobOptions o;
-            o.preset = look.name;
-            o.presetParams = look.postFx;
-            if (r.threshold > 0) o.threshold = float(r.threshold);
-            // Display-referred pixels clip their lights at white: without their highlights
-            // expanded (as `flarekit postfx --expand-highlights` does) the chain's bright-pass
-            // sees no light.
-            if (input.displayReferred) o.expandHighlights = ExpandHighlights{}.gain;
-            result = postFxPixels(o, std::move(input));
-            break;
-        }
-        case FlareMode::Lens: {
-            plate = input.image;
-            LensJobOptions o;
-            o.lens = look.name;
-            o.lensData = look.lens;
-            if (r.threshold > 0) o.threshold = r.threshold;
-            if (r.light) o.lightMode = LensLightMode::At, o.light = *r.light;
-            result = lensPixels(o, std::move(input));
-            break;
-        }
+namespace {
+
+Result<PixelOutput> spriteFlare(const Look& look, const FlareRequest& r, PixelInput input) {
+    ApplyOptions o;
+    o.preset = look.name;
+    o.intensity = r.intensity;
+    o.lightSearch = searchOptions(r);
+    o.light = r.light;
+    if (r.light && r.lightScale) {
+        // A tracked light's strength, as a tracked shot in `flarekit apply` has it.
+        o.fluxMode = FluxMode::Fixed;
+        o.intensity *= *r.lightScale;
     }
-    if (!result) return result.error();
-    Image image = std::move(result->image);
-    if (look.mode != FlareMode::Sprite) scaleFlare(image, plate, r.intensity);
-    return image;
+    return applyPixels(o, *look.preset, std::move(input));
+}
+
+Result<PixelOutput> postFxFlare(const Look& look, const FlareRequest& r, PixelInput input) {
+    PostFxJobOptions o;
+    o.preset = look.name;
+    o.presetParams = look.postFx;
+    if (r.threshold > 0) o.threshold = float(r.threshold);
+    // Display-referred pixels clip their lights at white: without their highlights expanded
+    // (as `flarekit postfx --expand-highlights` does) the chain's bright-pass sees no light.
+    if (input.displayReferred) o.expandHighlights = ExpandHighlights{}.gain;
+    return postFxPixels(o, std::move(input));
+}
+
+Result<PixelOutput> lensFlare(const Look& look, const FlareRequest& r, PixelInput input) {
+    LensJobOptions o;
+    o.lens = look.name;
+    o.lensData = look.lens;
+    if (r.threshold > 0) o.threshold = r.threshold;
+    if (r.light) o.lightMode = LensLightMode::At, o.light = *r.light;
+    return lensPixels(o, std::move(input));
+}
+
+}  // namespace
+
+Result<Image> drawFlare(const Look& look, const FlareRequest& r, PixelInput input) {
+    if (look.mode == FlareMode::Sprite) {
+        auto out = spriteFlare(look, r, std::move(input));
+        if (!out) return out.error();
+        return std::move(out->image);
+    }
+    const Image plate = input.image;
+    auto out = look.mode == FlareMode::PostFx ? postFxFlare(look, r, std::move(input))
+                                              : lensFlare(look, r, std::move(input));
+    if (!out) return out.error();
+    scaleFlare(out->image, plate, r.intensity);
+    return std::move(out->image);
 }
 
 }  // namespace flarekit::host

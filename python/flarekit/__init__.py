@@ -13,6 +13,7 @@ from ._flarekit import (  # noqa: F401
     convert,
     elements,
     lens_ghosts,
+    lens_info,
     lens_render,
     lens_render_file,
     lenses,
@@ -23,15 +24,17 @@ from ._flarekit import (  # noqa: F401
     presets,
     read_image,
     set_max_memory,
+    TemporalFilter,
     validate_preset,
     visibility,
     write_image,
 )
 
 __all__ = [
-    "apply", "apply_file", "blend8", "convert", "elements", "lens_ghosts", "lens_render",
+    "apply", "apply_file", "blend8", "convert", "elements", "lens_ghosts", "lens_info", "lens_render",
     "lens_render_file", "lenses", "load_preset", "max_memory", "postfx", "postfx_file",
-    "presets", "read_image", "set_max_memory", "validate_preset", "visibility", "write_image",
+    "presets", "read_image", "set_max_memory", "TemporalFilter", "validate_preset", "visibility",
+    "write_image",
 ]
 
 

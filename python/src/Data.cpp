@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "Bindings.h"
 #include "Convert.h"
@@ -137,6 +138,26 @@ void addData(py::module_& m) {
     m.def(
         "lenses", [] { return lensNames(); },
         "lenses() -> list[str]\n\nThe shipped lens prescriptions' names.");
+    m.def(
+        "lens_info",
+        [](const std::string& nameOrPath) {
+            const Lens lens = unwrap(loadLens(nameOrPath));
+            const Paraxial p = paraxial(lens);
+            py::dict out;
+            out["name"] = lens.name;
+            out["focal_length_mm"] = p.focalLength;
+            out["f_number"] = p.fNumber;
+            out["sensor_mm"] = py::make_tuple(lens.sensor.width, lens.sensor.height);
+            // The sensor's width seen through the paraxial focal length: what a camera's
+            // horizontal angle of view is matched against.
+            out["horizontal_fov_deg"] =
+                2.0 * std::atan(lens.sensor.width / (2.0 * p.focalLength)) * 180.0 / M_PI;
+            out["blades"] = lens.aperture.blades;
+            return out;
+        },
+        py::arg("lens"),
+        "lens_info(lens) -> dict\n\nA prescription's paraxial focal length and f-number, its "
+        "sensor (mm), the horizontal angle of view they make (degrees) and its iris blades.");
     m.def(
         "load_preset",
         [](const std::string& nameOrPath, const std::string& kind) {

@@ -61,4 +61,5 @@ PYBIND11_MODULE(_flarekit, m) {
     python::addData(m);
     python::addImages(m);
     python::addSynth(m);
+    python::addTemporal(m);
 }

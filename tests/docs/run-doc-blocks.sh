@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # Documentation that runs: every ```sh block of README.md and docs/*.md, in order, one temporary
 # folder per Markdown file (so a page's blocks build on each other as a reader's would), with
-# `flarekit` on PATH, the repository's samples/, presets/, examples/ and build/ beside, and the
-# small inputs the pages name (photo.exr, plate/sh010.####.exr, sun.csv, ...) made from the
-# shipped samples. A block fails the test when it exits non-zero, when a file it names with -o
+# `flarekit` on PATH, the repository's samples/, presets/, examples/, integrations/ and build/
+# beside, and the small inputs the pages name (photo.exr, plate/sh010.####.exr, sun.csv, ...)
+# made from the shipped samples. A block fails the test when it exits non-zero, when a file it names with -o
 # is missing, or when an image it wrote does not decode. A block that cannot run here is marked
 # in the Markdown on the line before it, and is listed by name as skipped:
 #   <!-- docs-test: skip: the reason -->
@@ -104,7 +104,7 @@ for page in "${pages[@]}"; do
   blocks="$work/blocks-$name"
   mkdir -p "$dir" "$blocks"
   cp -r "$fixtures/." "$dir/"
-  for shared in samples presets examples; do ln -s "$src/$shared" "$dir/$shared"; done
+  for shared in samples presets examples integrations; do ln -s "$src/$shared" "$dir/$shared"; done
   ln -s "$build" "$dir/build"
   extract "$page" "$blocks"
   for block in "$blocks"/*.sh; do

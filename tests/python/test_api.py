@@ -158,3 +158,33 @@ def test_docstrings_list_the_parameter_tables(cli):
     pyi = os.path.join(os.path.dirname(flarekit.__file__), "_flarekit.pyi")
     text = open(pyi, encoding="utf-8").read()
     assert "def apply(image: numpy.ndarray" in text and "light_threshold" in text
+
+
+def test_temporal_filter_releases_with_its_time_constant_and_checks_its_keywords():
+    f = flarekit.TemporalFilter(release=0.5, attack=0.0)
+    first = f.update(1.0, (50, 50), True, 100, 100, 0.0)
+    assert first["coverage"] == 1.0 and first["edge_fade"] == 1.0
+    # Hidden: the coverage falls by exp(-dt / release) a frame (the library's closed form).
+    hidden = f.update(0.0, (50, 50), True, 100, 100, 1 / 24)
+    assert hidden["coverage"] == pytest.approx(np.exp(-1 / 24 / 0.5), rel=1e-12)
+    # Attack 0: back at once. On the frame's edge the flare weight is 0, the coverage is not.
+    edge = f.update(1.0, (0, 50), True, 100, 100, 1 / 24)
+    assert edge["coverage"] == 1.0 and edge["edge_fade"] == 0.0 and edge["flare_weight"] == 0.0
+    with pytest.raises(ValueError, match="release"):
+        flarekit.TemporalFilter(release=-1)
+    with pytest.raises(ValueError, match="coverage"):
+        f.update(1.5, (0, 0), True, 10, 10, 0.1)
+
+
+def test_lens_info_gives_the_paraxial_focal_length_and_the_angle_of_view():
+    info = flarekit.lens_info("asahi-takumar-50")
+    # The prescription is the patent's, scaled to f = 100 mm on a 72 x 48 mm sensor: the angle
+    # of view of a 50 mm lens on 36 x 24 mm.
+    assert info["focal_length_mm"] == pytest.approx(100.0, abs=0.05)
+    assert info["sensor_mm"] == (72.0, 48.0)
+    assert info["horizontal_fov_deg"] == pytest.approx(
+        np.degrees(2 * np.arctan(36.0 / info["focal_length_mm"])), rel=1e-12)
+    assert info["horizontal_fov_deg"] == pytest.approx(39.6, abs=0.1)
+    assert info["blades"] == 6
+    with pytest.raises(ValueError, match="no-such-lens"):
+        flarekit.lens_info("no-such-lens")
