@@ -100,7 +100,7 @@ def test_the_installed_add_on_linked_into_blender_finds_the_installed_module(tmp
     addons = tmp_path / "scripts" / "addons"
     addons.mkdir(parents=True)
     (addons / "flarekit_blender").symlink_to(
-        prefix / "share" / "flarekit" / "blender" / "flarekit_blender")
+        prefix / "share" / "blender" / "scripts" / "addons" / "flarekit_blender")
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["BLENDER_USER_SCRIPTS"] = str(tmp_path / "scripts")
     script = ("import addon_utils, bpy, flarekit\n"

@@ -32,15 +32,15 @@ bl_info = {
 
 def _import_flarekit():
     """flarekit's Python module: on the path already, or installed beside this add-on
-    (PREFIX/share/flarekit/blender/flarekit_blender -> PREFIX/lib/python3/dist-packages)."""
+    (PREFIX/share/blender/scripts/addons/flarekit_blender -> PREFIX/lib/python3/dist-packages)."""
     try:
         import flarekit  # noqa: F401
         return
     except ImportError:
         pass
     here = os.path.dirname(os.path.realpath(__file__))
-    candidate = os.path.normpath(os.path.join(here, "..", "..", "..", "..", "lib", "python3",
-                                              "dist-packages"))
+    candidate = os.path.normpath(os.path.join(here, "..", "..", "..", "..", "..", "lib",
+                                              "python3", "dist-packages"))
     if os.path.isdir(os.path.join(candidate, "flarekit")):
         sys.path.append(candidate)
 
