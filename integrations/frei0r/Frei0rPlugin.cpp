@@ -41,6 +41,7 @@ static_assert(std::size(kFilterParams) == std::size_t(kFilterParamCount));
 struct Instance {
     FlareFilter filter;
     std::string strings[kFilterParamCount];
+    std::string refused[kFilterParamCount];  //!< the last value refused, said once
 };
 
 const std::string& helpText(int index) {
@@ -119,7 +120,7 @@ void f0r_get_param_info(f0r_param_info_t* info, int index) {
 f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
     // A frame the library's image limits refuse is refused here, before any work.
     if (width == 0 || height == 0 || width > 1u << 16 || height > 1u << 16) return nullptr;
-    return new (std::nothrow) Instance{FlareFilter(int(width), int(height)), {}};
+    return new (std::nothrow) Instance{FlareFilter(int(width), int(height)), {}, {}};
 }
 
 void f0r_destruct(f0r_instance_t instance) {
@@ -141,9 +142,12 @@ void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) 
             if (p.text) {
                 next.*(p.text->member) = value;
             } else if (auto s = flarekit::frei0r::setChoice(next, *p.number, value); !s) {
-                std::fprintf(stderr, "flarekit (frei0r): %s; kept '%s'\n",
-                             s.error().message.c_str(),
-                             flarekit::frei0r::choiceName(next, *p.number).c_str());
+                // Said once: a host such as melt sets every parameter again for each frame.
+                if (self->refused[index] != value)
+                    std::fprintf(stderr, "flarekit (frei0r): %s; kept '%s'\n",
+                                 s.error().message.c_str(),
+                                 flarekit::frei0r::choiceName(next, *p.number).c_str());
+                self->refused[index] = value;
                 return;
             }
         }

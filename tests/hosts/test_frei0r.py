@@ -182,10 +182,13 @@ def test_bad_parameters_never_stop_the_host(clip, tmp_path):
     folder, frames, _ = clip
     # An unknown mode keeps the current one (sprite), with one line on stderr.
     done = ffmpeg(folder / "sun.%03d.png", tmp_path / "a.%03d.png", ["bogus"], frames=2)
-    assert "mode: expected one of sprite, postfx, lens, got 'bogus'" in done.stderr
+    assert done.stderr.count("mode: expected one of sprite, postfx, lens, got 'bogus'") == 1
     ffmpeg(folder / "sun.%03d.png", tmp_path / "b.%03d.png", ["sprite"], frames=2)
     assert np.array_equal(read_frames(tmp_path / "a.%03d.png", WIDTH, HEIGHT),
                           read_frames(tmp_path / "b.%03d.png", WIDTH, HEIGHT))
+    # melt sets every parameter again for each frame: still said once.
+    done = melt(folder / "sun.mov", tmp_path / "m.%03d.png", tmp_path, {"mode": "bogus"})
+    assert done.stderr.count("got 'bogus'") == 1, done.stderr
     # A preset that is not there: every frame unchanged, the reason said once.
     done = ffmpeg(folder / "sun.%03d.png", tmp_path / "c.%03d.png", ["sprite", "no-such-preset"],
                   frames=3)
