@@ -223,7 +223,7 @@ constexpr TextParam<param_detail::OwnerOf<Member>> text(std::string_view key,
 }
 
 template <class Owner>
-const Param<Owner>* findParam(std::span<const Param<Owner>> table, std::string_view key) {
+constexpr const Param<Owner>* findParam(std::span<const Param<Owner>> table, std::string_view key) {
     for (const Param<Owner>& p : table) {
         if (p.key == key) return &p;
     }

@@ -15,7 +15,6 @@
 
 namespace flarekit::frei0r {
 
-using host::FlareMode;
 using FilterMode = host::FlareMode;
 
 //! Where the light is in each frame.
@@ -37,15 +36,11 @@ struct FilterSettings {
 };
 
 namespace detail {
-//! The library's own description of a parameter the filter passes on (its range, unit, help).
-template <class Owner, std::size_t N>
-constexpr const Param<Owner>& libraryParam(const Param<Owner> (&table)[N], std::string_view key) {
-    for (const auto& p : table)
-        if (p.key == key) return p;
-    return table[0];
-}
-inline constexpr const Param<ApplyOptions>& kIntensity = libraryParam(kApplyParams, "intensity");
-inline constexpr const Param<ShotOptions>& kFps = libraryParam(kShotParams, "fps");
+// The library's own descriptions of the parameters the filter passes on (range, unit, help); a
+// key that is not in its table does not compile.
+inline constexpr const Param<ApplyOptions>& kIntensity =
+    *findParam<ApplyOptions>(kApplyParams, "intensity");
+inline constexpr const Param<ShotOptions>& kFps = *findParam<ShotOptions>(kShotParams, "fps");
 }  // namespace detail
 
 //! In frei0r's order; a host addresses them by name (ffmpeg, MLT) or by index.

@@ -44,18 +44,16 @@ struct Instance {
     std::string refused[kFilterParamCount];  //!< the last value refused, said once
 };
 
-const std::string& helpText(int index) {
+//! Each parameter's name and help as the C strings f0r_get_param_info lends the host (made once,
+//! never freed: a host may keep the pointers).
+struct ParamTexts {
+    std::string name, help;
+};
+const ParamTexts& paramTexts(int index) {
     static const auto* texts = [] {
-        auto* t = new std::string[kFilterParamCount];
-        for (int i = 0; i < kFilterParamCount; ++i) t[i] = std::string(kFilterParams[i].help());
-        return t;
-    }();
-    return texts[index];
-}
-const std::string& nameText(int index) {
-    static const auto* texts = [] {
-        auto* t = new std::string[kFilterParamCount];
-        for (int i = 0; i < kFilterParamCount; ++i) t[i] = std::string(kFilterParams[i].name);
+        auto* t = new ParamTexts[kFilterParamCount];
+        for (int i = 0; i < kFilterParamCount; ++i)
+            t[i] = {std::string(kFilterParams[i].name), std::string(kFilterParams[i].help())};
         return t;
     }();
     return texts[index];
@@ -109,9 +107,9 @@ void f0r_get_plugin_info(f0r_plugin_info_t* info) {
 void f0r_get_param_info(f0r_param_info_t* info, int index) {
     if (!validIndex(index)) return;
     try {
-        info->name = nameText(index).c_str();
+        info->name = paramTexts(index).name.c_str();
         info->type = kFilterParams[index].isString ? F0R_PARAM_STRING : F0R_PARAM_DOUBLE;
-        info->explanation = helpText(index).c_str();
+        info->explanation = paramTexts(index).help.c_str();
     } catch (...) {
         info->name = "", info->type = F0R_PARAM_DOUBLE, info->explanation = "";
     }

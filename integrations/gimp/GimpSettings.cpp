@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "flarekit/ParamText.h"
+
 namespace flarekit::gimp {
 
 void Settings::setPreset(std::string_view name) {
@@ -21,10 +23,12 @@ Status checkSettings(const Settings& s) {
             return st;
     }
     if (!std::isfinite(s.intensity) || s.intensity < kIntensityMin || s.intensity > kIntensityMax)
-        return invalidInput("intensity: expected a number in [0, 1000], got " +
+        return invalidInput("intensity: expected a number in " +
+                            formatParamRange(kIntensityMin, kIntensityMax) + ", got " +
                             std::to_string(s.intensity));
     if (!std::isfinite(s.threshold) || s.threshold < 0 || s.threshold > kThresholdMax)
-        return invalidInput("threshold: expected a number in [0, 1000000], got " +
+        return invalidInput("threshold: expected a number in " +
+                            formatParamRange(0, kThresholdMax) + ", got " +
                             std::to_string(s.threshold));
     return Ok{};
 }

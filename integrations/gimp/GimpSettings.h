@@ -32,18 +32,12 @@ struct Settings {
     void setPreset(std::string_view name);
 };
 
-namespace detail {
-constexpr const Param<ApplyOptions>& intensityParam() {
-    for (const auto& p : kApplyParams)
-        if (p.key == "intensity") return p;
-    return kApplyParams[0];
-}
-}  // namespace detail
-
 //! The numbers' ranges: intensity is the library's own parameter; a threshold up to 10^6
 //! linear is past any light a photograph or render holds.
-inline constexpr double kIntensityMin = detail::intensityParam().min;
-inline constexpr double kIntensityMax = detail::intensityParam().max;
+inline constexpr const Param<ApplyOptions>& kIntensityParam =
+    *findParam<ApplyOptions>(kApplyParams, "intensity");
+inline constexpr double kIntensityMin = kIntensityParam.min;
+inline constexpr double kIntensityMax = kIntensityParam.max;
 inline constexpr double kThresholdMax = 1e6;
 
 //! One argument of the procedure after run-mode, image and drawable.

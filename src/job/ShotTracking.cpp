@@ -11,6 +11,23 @@ int trackerLookBack(double fps) {
     return int(std::ceil(0.5 * fps));
 }
 
+namespace {
+
+//! A fresh tracker over the frames of a look-back, in order: the light at the last of them.
+//! ShotTracking and LiveTracking both end here, so the two give the same light.
+TrackedLight trackLookBack(const std::vector<FrameLights>& frames) {
+    LightTracker tracker;
+    TrackedLight light;
+    std::optional<int> previous;
+    for (const auto& [frame, lights] : frames) {
+        light = tracker.update(lights, previous ? double(frame - *previous) : 0.0);
+        previous = frame;
+    }
+    return light;
+}
+
+}  // namespace
+
 ShotTracking::ShotTracking(const ShotPlan& plan, const LightSearchOptions& search,
                            const JobEvents& events)
     : m_plan(plan), m_search(search), m_events(events), m_lookBack(trackerLookBack(plan.fps)) {}
@@ -39,16 +56,14 @@ Result<TrackedLight> ShotTracking::at(int frame, const Image* image) {
         if (auto it = m_tracked.find(frame); it != m_tracked.end()) return it->second;
     }
     const auto& shot = m_plan.shotFrames;
-    LightTracker tracker;
-    TrackedLight light;
-    std::optional<int> previous;
+    std::vector<FrameLights> window;
     for (auto it = std::lower_bound(shot.begin(), shot.end(), frame - m_lookBack);
          it != shot.end() && *it <= frame; ++it) {
         auto lights = lightsIn(*it, *it == frame ? image : nullptr);
         if (!lights) return lights.error();
-        light = tracker.update(*lights, previous ? double(*it - *previous) : 0.0);
-        previous = *it;
+        window.emplace_back(*it, std::move(*lights));
     }
+    const TrackedLight light = trackLookBack(window);
     std::lock_guard lock(m_mutex);
     m_tracked[frame] = light;
     return light;
@@ -62,16 +77,11 @@ TrackedLight LiveTracking::next(int frame, const Image& image) {
         (frame <= m_history.back().first || frame - m_history.back().first > m_lookBack))
         m_history.clear();
     m_history.emplace_back(frame, findLights(image, m_search).candidates);
-    while (m_history.front().first < frame - m_lookBack) m_history.pop_front();
-    // As ShotTracking::at: a fresh tracker over the frames of the look-back, in order.
-    LightTracker tracker;
-    TrackedLight light;
-    std::optional<int> previous;
-    for (const auto& [number, lights] : m_history) {
-        light = tracker.update(lights, previous ? double(number - *previous) : 0.0);
-        previous = number;
-    }
-    return light;
+    const auto first = std::find_if(m_history.begin(), m_history.end(), [&](const FrameLights& f) {
+        return f.first >= frame - m_lookBack;
+    });
+    m_history.erase(m_history.begin(), first);
+    return trackLookBack(m_history);
 }
 
 }  // namespace flarekit

@@ -79,6 +79,12 @@ double pixelX(double cx) {
 double pixelY(double cy) {
     return (1.0 - cy) * kH / 2.0;
 }
+//! Where three.js's Lensflare and Unity's LensFlareCommonSRP both draw an element at `t` (their
+//! distance and position): the light's clip-space position x (1 - 2t), to half a pixel.
+void expectAtClipSpaceMirror(const Drawn& d, double t) {
+    EXPECT_NEAR(d.cx, pixelX(clipX(kLight.x) * (1 - 2 * t)), 0.5) << t;
+    EXPECT_NEAR(d.cy, pixelY(clipY(kLight.y) * (1 - 2 * t)), 0.5) << t;
+}
 
 TEST(Convert, BabylonPlacesAFlareWhereLensFlareSystemDrawsIt) {
     TempDir dir;
@@ -102,8 +108,7 @@ TEST(Convert, ThreeJsPlacesAnElementWhereLensflareDrawsIt) {
                                      std::to_string(distance) + "}]}");
         const Drawn d = render(importSprite(dir.file("t.json")), kW, kH, kLight);
         // Lensflare.js: positionScreen + (-2 positionScreen) x distance, in clip space.
-        EXPECT_NEAR(d.cx, pixelX(clipX(kLight.x) * (1 - 2 * distance)), 0.5) << distance;
-        EXPECT_NEAR(d.cy, pixelY(clipY(kLight.y) * (1 - 2 * distance)), 0.5) << distance;
+        expectAtClipSpaceMirror(d, distance);
     }
 }
 
@@ -115,8 +120,7 @@ TEST(Convert, UnityPlacesAnElementWhereLensFlareCommonSrpDrawsIt) {
                         std::to_string(position) + "\n    uniformScale: 0.4"));
         const Drawn d = render(importSprite(dir.file("u.asset")), kW, kH, kLight);
         // LensFlareCommonSRP: screenPos x (1 - 2 x position) in clip space.
-        EXPECT_NEAR(d.cx, pixelX(clipX(kLight.x) * (1 - 2 * position)), 0.5) << position;
-        EXPECT_NEAR(d.cy, pixelY(clipY(kLight.y) * (1 - 2 * position)), 0.5) << position;
+        expectAtClipSpaceMirror(d, position);
     }
 }
 

@@ -5,7 +5,6 @@
 // the same whichever chunk renders it.
 #pragma once
 
-#include <deque>
 #include <map>
 #include <mutex>
 #include <utility>
@@ -15,6 +14,9 @@
 #include "flarekit/job/ShotRun.h"
 
 namespace flarekit {
+
+//! A frame's number and the light finder's candidates in it.
+using FrameLights = std::pair<int, std::vector<LightCandidate>>;
 
 class ShotTracking {
   public:
@@ -52,7 +54,7 @@ class LiveTracking {
   private:
     LightSearchOptions m_search;
     int m_lookBack;
-    std::deque<std::pair<int, std::vector<LightCandidate>>> m_history;
+    std::vector<FrameLights> m_history;  //!< the look-back's frames, oldest first
 };
 
 }  // namespace flarekit

@@ -2,6 +2,7 @@
 """The flare of a rendered frame through flarekit's jobs: each light's sprite flare at its
 projected position (scaled by the light it sends into the lens, its colour and its coverage),
 the post-process chain on the whole render, or a lens prescription matched to the camera."""
+import functools
 import json
 import math
 import os
@@ -30,19 +31,25 @@ def camera_hfov(scene, camera, focal_px):
     return math.degrees(2.0 * math.atan(width / (2.0 * focal_px)))
 
 
+@functools.lru_cache(maxsize=1)
+def _shipped_lens_infos():
+    """Every shipped lens's paraxial data, traced once (they do not change while Blender runs)."""
+    return tuple(flarekit.lens_info(name) for name in flarekit.lenses())
+
+
 def nearest_lens(hfov):
     """The shipped lens whose sensor and focal length make the angle of view nearest hfov."""
-    infos = [flarekit.lens_info(name) for name in flarekit.lenses()]
-    return min(infos, key=lambda i: abs(i["horizontal_fov_deg"] - hfov))["name"]
+    return min(_shipped_lens_infos(), key=lambda i: abs(i["horizontal_fov_deg"] - hfov))["name"]
 
 
 def lens_with_blades(name, blades, folder):
     """The lens as a JSON file with the camera's blade count (Blender's 0: a round iris)."""
+    count = int(blades) if blades >= 3 else 0
+    path = os.path.join(folder, f"{name}-{count}-blades.json")
+    if os.path.exists(path):  # written for an earlier frame of this render
+        return path
     data = flarekit.load_preset(name, kind="lens")
-    aperture = dict(data.get("aperture", {}))
-    aperture["blades"] = int(blades) if blades >= 3 else 0
-    data["aperture"] = aperture
-    path = os.path.join(folder, f"{name}-{aperture['blades']}-blades.json")
+    data["aperture"] = dict(data.get("aperture", {}), blades=count)
     with open(path, "w") as out:
         json.dump(data, out)
     return path
