@@ -7,6 +7,8 @@
 //   BM_OcclusionOneByOne/<lights> the same lights, one fk_engine_occlusion call per light
 //   BM_TextureMask/<lights>      texture-mask: a sun map per light drawn by the occluder
 //                                callback (flarekit's SceneOccluders: the whole scene a light)
+//   BM_OcclusionWithTiles/<lights> compute with the occluder callback set: lights under
+//                                1,024 depth samples from sun maps, the rest on the depth
 // Counters (means per frame):
 //   cpu_ms   wall time inside the API call(s): what the application's render thread pays
 //   gpu_ms   GPU time of the call(s), from timestamp queries around them
@@ -173,11 +175,45 @@ void BM_TextureMask(benchmark::State& state) {
         return fk_engine_occlusion(x.engine, &x.frame, x.lights.data(), count) == 0;
     });
     fk_engine_set_method(b.engine, "compute");
+    fk_engine_set_occluder_callback(b.engine, nullptr, nullptr);
+}
+
+//! Counts the callback's calls: the lights measured from sun maps.
+struct CountedOccluders {
+    SceneOccluders* scene = nullptr;
+    long long calls = 0;
+    static void draw(void* user, int view, int light, const float* vp, unsigned fb,
+                     const int* viewport) {
+        auto* self = static_cast<CountedOccluders*>(user);
+        ++self->calls;
+        SceneOccluders::draw(self->scene, view, light, vp, fb, viewport);
+    }
+};
+
+void BM_OcclusionWithTiles(benchmark::State& state) {
+    const int count = int(state.range(0));
+    Bench& b = bench();
+    if (!b.engine) return state.SkipWithError(b.error.c_str());
+    static auto occluders = SceneOccluders::create(b.scene);
+    if (!occluders) return state.SkipWithError(occluders.error().message.c_str());
+    static CountedOccluders counted;
+    counted = {occluders->get(), 0};
+    fk_engine_set_occluder_callback(b.engine, &CountedOccluders::draw, &counted);
+    measure(state, [count](Bench& x) {
+        return fk_engine_occlusion(x.engine, &x.frame, x.lights.data(), count) == 0;
+    });
+    state.counters["tiled"] = double(counted.calls) / double(state.iterations() + 1);
+    fk_engine_set_occluder_callback(b.engine, nullptr, nullptr);
 }
 
 }  // namespace
 
 BENCHMARK(BM_TextureMask)->Arg(16)->Arg(128)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OcclusionWithTiles)
+    ->Arg(128)
+    ->Arg(1024)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckAndPack)->Arg(1024)->Arg(4096)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Occlusion)
     ->Arg(1)

@@ -149,6 +149,14 @@ FK_API int fk_engine_set_guard_band(fk_engine* e, int view, int enabled);
 /* Directions sampled per light: samples_per_side^2 (1..64; default 32, 1,024 rays per light,
  * a standard error near 0.004 on an edge across the disc). */
 FK_API int fk_engine_set_samples(fk_engine* e, int samples_per_side);
+/* Small lights with method "compute": a light whose disc covers fewer than `depth_samples`
+ * samples of the frame's depth (pi r^2 x the MSAA count, r its radius in pixels) is measured
+ * from a sun-map tile the occluder callback draws, as "texture-mask" measures every light, in
+ * the same call; the others on the depth. A depth buffer places an edge only to its sample
+ * grid, a large share of a disc a few pixels wide. Default 1,024 (a radius under 18 px at 1x,
+ * 9 px at 4x MSAA); 0 measures every light on the depth. Without an occluder callback every
+ * light is measured on the depth. Cost: one callback per small light and view. */
+FK_API int fk_engine_set_tile_threshold(fk_engine* e, int depth_samples);
 /* The temporal filter (flarekit/Temporal.h): attack and release time constants in seconds
  * (defaults 0.04, 0.12) and the edge-fade width in shorter sides of the viewport (0.08). */
 FK_API int fk_engine_set_temporal(fk_engine* e, float attack_seconds, float release_seconds,

@@ -73,6 +73,9 @@ class Engine {
         return outcome(fk_engine_set_transmittance(m_engine, view, texture));
     }
     Outcome setSamples(int perSide) { return outcome(fk_engine_set_samples(m_engine, perSide)); }
+    Outcome setTileThreshold(int depthSamples) {
+        return outcome(fk_engine_set_tile_threshold(m_engine, depthSamples));
+    }
     Outcome setTemporal(float attack, float release, float guardBand) {
         return outcome(fk_engine_set_temporal(m_engine, attack, release, guardBand));
     }

@@ -209,6 +209,12 @@ int fk_engine_set_guard_band(fk_engine* e, int view, int enabled) {
         [&](flarekit::engine::Engine& en) { return en.setGuardBand(view, enabled != 0); }, false);
 }
 
+int fk_engine_set_tile_threshold(fk_engine* e, int depth_samples) {
+    return guarded(
+        e, "fk_engine_set_tile_threshold",
+        [&](flarekit::engine::Engine& en) { return en.setTileThreshold(depth_samples); }, false);
+}
+
 int fk_engine_set_samples(fk_engine* e, int samples_per_side) {
     return guarded(
         e, "fk_engine_set_samples",

@@ -74,6 +74,7 @@ Result<std::unique_ptr<Engine>> Engine::create(int maxLights) {
     impl->flare = std::move(*flare);
     for (gl::Buffer& b : impl->lightBuffers) b = makeBuffer(GLsizeiptr(maxLights) * kLightBytes);
     impl->state = makeBuffer(GLsizeiptr(maxLights) * FK_MAX_VIEWS * 4 * GLsizeiptr(sizeof(float)));
+    impl->tiles = makeBuffer(GLsizeiptr(maxLights) * FK_MAX_VIEWS * GLsizeiptr(sizeof(int)));
     impl->coverageImage = gl::makeTexture2D(GL_R32F, maxLights, FK_MAX_VIEWS);
     glTextureParameteri(impl->coverageImage.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(impl->coverageImage.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -174,48 +175,12 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
 
     const GlStateGuard guard;
     const GLuint lightBuffer = m->uploadLights(lights, count);
-    if (m->textureMask) {
-        for (std::size_t v = 0; v < frames.size(); ++v)
-            if (Status s = m->measureSunMaps(int(v), frames[v], lights, count, lightBuffer); !s)
-                return s;
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
-                        GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
-                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        return Ok{};
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lightBuffer);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStateBinding, m->state.get());
-    glBindImageTexture(kStateImageUnit, m->coverageImage.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       GL_R32F);
     for (std::size_t v = 0; v < frames.size(); ++v) {
-        const fk_frame& f = frames[v];
-        const CoverageProgram& c = m->coverage[depth[v].multisample ? 1 : 0];
-        const GLuint p = c.program.get();
-        c.pass.set(p, f, int(v), m->maxLights, m->temporal, m->guardBand[v]);
-        glProgramUniform1i(p, c.perSide, m->samplesPerSide);
-        glProgramUniform1i(p, c.depthSamples, depth[v].samples);
-        glProgramUniform2f(p, c.textureSize, float(f.width), float(f.height));
-        const GLuint transmittance = m->transmittance[v];
-        glProgramUniform1i(p, c.hasTransmittance, transmittance != 0 ? 1 : 0);
-        glBindTextureUnit(kTransmittanceUnit, transmittance);
-        glBindSampler(kTransmittanceUnit, m->linear.get());
-        if (depth[v].multisample) {
-            const SamplePattern& pattern = m->patternFor(f.depth_texture, depth[v].samples);
-            glProgramUniform1i(p, c.sampleCount, depth[v].samples);
-            glProgramUniform2fv(p, c.samplePositions, depth[v].samples, pattern.positions.data());
-        }
-        // A depth-stencil texture may be set to hand out stencil: read its depth, then put
-        // the application's mode back.
-        GLint mode = GL_DEPTH_COMPONENT;
-        glGetTextureParameteriv(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
-        if (mode != GL_DEPTH_COMPONENT)
-            glTextureParameteri(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
-        glBindTextureUnit(kDepthUnit, f.depth_texture);
-        glBindSampler(kDepthUnit, m->nearest.get());
-        glUseProgram(p);
-        glDispatchCompute(GLuint(count), 1, 1);
-        if (mode != GL_DEPTH_COMPONENT)
-            glTextureParameteri(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, mode);
+        const int view = int(v);
+        if (m->assignTiles(view, frames[v], depth[v].samples, lights, count) > 0)
+            if (Status s = m->measureSunMaps(view, frames[v], lights, count, lightBuffer); !s)
+                return s;
+        if (!m->textureMask) m->measureDepth(view, frames[v], depth[v], count, lightBuffer);
     }
     // The application's shaders (texelFetch of the coverage texture), the flare draw and
     // read-backs all see the stores.
@@ -223,6 +188,43 @@ Status Engine::occlusion(std::span<const fk_frame> frames, const fk_light* light
                     GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     return Ok{};
+}
+
+void Engine::Impl::measureDepth(int view, const fk_frame& f, const DepthTextureInfo& depth,
+                                int count, GLuint lightBuffer) {
+    // The sun-map pass, or an occluder callback, may have bound anything: bind it all here.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lightBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStateBinding, state.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTilesBinding, tiles.get());
+    glBindImageTexture(kStateImageUnit, coverageImage.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_R32F);
+    const CoverageProgram& c = coverage[depth.multisample ? 1 : 0];
+    const GLuint p = c.program.get();
+    c.pass.set(p, f, view, maxLights, temporal, guardBand[std::size_t(view)]);
+    glProgramUniform1i(p, c.perSide, samplesPerSide);
+    glProgramUniform1i(p, c.depthSamples, depth.samples);
+    glProgramUniform2f(p, c.textureSize, float(f.width), float(f.height));
+    const GLuint kept = transmittance[std::size_t(view)];
+    glProgramUniform1i(p, c.hasTransmittance, kept != 0 ? 1 : 0);
+    glBindTextureUnit(kTransmittanceUnit, kept);
+    glBindSampler(kTransmittanceUnit, linear.get());
+    if (depth.multisample) {
+        const SamplePattern& pattern = patternFor(f.depth_texture, depth.samples);
+        glProgramUniform1i(p, c.sampleCount, depth.samples);
+        glProgramUniform2fv(p, c.samplePositions, depth.samples, pattern.positions.data());
+    }
+    // A depth-stencil texture may be set to hand out stencil: read its depth, then put the
+    // application's mode back.
+    GLint mode = GL_DEPTH_COMPONENT;
+    glGetTextureParameteriv(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
+    if (mode != GL_DEPTH_COMPONENT)
+        glTextureParameteri(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    glBindTextureUnit(kDepthUnit, f.depth_texture);
+    glBindSampler(kDepthUnit, nearest.get());
+    glUseProgram(p);
+    glDispatchCompute(GLuint(count), 1, 1);
+    if (mode != GL_DEPTH_COMPONENT)
+        glTextureParameteri(f.depth_texture, GL_DEPTH_STENCIL_TEXTURE_MODE, mode);
 }
 
 Result<int> Engine::readView(int view, float* coverage, float* inFrame, float* filtered,

@@ -20,6 +20,8 @@ namespace flarekit::engine {
 //! The samples per side a new engine casts, and the most it takes (kEngineMeasureParams).
 inline constexpr int kDefaultSamplesPerSide = EngineMeasureSettings{}.samplesPerSide;
 inline constexpr int kMaxSamplesPerSide = int(kEngineMeasureParams[0].max);
+inline constexpr int kDefaultTileBelow = EngineMeasureSettings{}.tileBelowSamples;
+inline constexpr int kMaxTileBelow = int(kEngineMeasureParams[1].max);
 
 class Engine {
   public:
@@ -39,6 +41,7 @@ class Engine {
     Status setGuardBand(int view, bool enabled);
     Status setOccluderCallback(fk_occluder_callback callback, void* user);
     Status setSamples(int perSide);
+    Status setTileThreshold(int depthSamples);
     Status setTemporal(float attackSeconds, float releaseSeconds, float guardBand);
     Status reset();
 

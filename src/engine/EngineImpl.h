@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/Engine.h"
+#include "engine/EngineInput.h"
 #include "engine/EnginePrograms.h"
 #include "engine/SunMaps.h"
 #include "flare/ElementSprites.h"
@@ -45,6 +46,8 @@ struct Engine::Impl {
     std::array<gl::Buffer, kLightRing> lightBuffers;
     int ringAt = 0;
     gl::Buffer state;           //!< vec4 per light and view (light_coverage.comp)
+    gl::Buffer tiles;           //!< int per light and view: its sun-map tile or -1
+    std::vector<int> tileOf;    //!< one view's `tiles`, as uploaded
     gl::Texture coverageImage;  //!< R32F, maxLights x FK_MAX_VIEWS: filtered coverage
     gl::VertexArray vertexArray;
     gl::Framebuffer probe;  //!< for asking where a multisampled texture's samples are
@@ -54,6 +57,7 @@ struct Engine::Impl {
     std::array<GLuint, FK_MAX_VIEWS> transmittance{};
     std::array<bool, FK_MAX_VIEWS> guardBand{};
     int samplesPerSide = kDefaultSamplesPerSide;
+    int tileBelow = kDefaultTileBelow;
     TemporalParams temporal;
     int lastViews = 0;
     std::array<int, FK_MAX_VIEWS> lastCount{};
@@ -62,8 +66,15 @@ struct Engine::Impl {
     GLuint uploadLights(const fk_light* lights, int count);
     const SamplePattern& patternFor(GLuint texture, int samples);
     Status ensureSprites(LoadedPreset& p, int height);
+    //! Which lights of view `view` sun-map tiles measure (tileOf, uploaded to `tiles`): all
+    //! with texture-mask, those under tileBelow depth samples with compute and a callback.
+    //! Returns how many.
+    int assignTiles(int view, const fk_frame& f, int depthSamples, const fk_light* lights,
+                    int count);
     Status measureSunMaps(int view, const fk_frame& f, const fk_light* lights, int count,
                           GLuint lightBuffer);
+    void measureDepth(int view, const fk_frame& f, const DepthTextureInfo& depth, int count,
+                      GLuint lightBuffer);
 };
 
 }  // namespace flarekit::engine

@@ -29,16 +29,14 @@ Result<EngineRun> runEngineScene(const Scene& scene, const EngineRunOptions& o) 
     if (!engine) return internalError(fk_error(nullptr));
     fk_engine* e = engine.get();
     if (fk_engine_set_method(e, o.method.c_str()) < 0 ||
-        fk_engine_set_samples(e, o.samplesPerSide) < 0)
+        fk_engine_set_samples(e, o.measure.samplesPerSide) < 0 ||
+        fk_engine_set_tile_threshold(e, o.measure.tileBelowSamples) < 0)
         return invalidInput(fk_error(e));
-    // texture-mask: the sun maps get the scene's objects from the occluder callback.
-    std::unique_ptr<SceneOccluders> occluders;
-    if (o.method == "texture-mask") {
-        auto made = SceneOccluders::create(scene);
-        if (!made) return made.error();
-        occluders = std::move(*made);
-        fk_engine_set_occluder_callback(e, &SceneOccluders::draw, occluders.get());
-    }
+    // The sun maps (every light with texture-mask, the small ones with compute) get the
+    // scene's objects from the occluder callback, as an application's would.
+    auto occluders = SceneOccluders::create(scene);
+    if (!occluders) return occluders.error();
+    fk_engine_set_occluder_callback(e, &SceneOccluders::draw, occluders->get());
     // Each preset named by a light, loaded once (only when flares are drawn); the first light
     // whose preset fails to load names itself.
     std::map<std::string, int> ids;

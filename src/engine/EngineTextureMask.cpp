@@ -1,10 +1,50 @@
 // SPDX-License-Identifier: Apache-2.0
-// texture-mask through the engine: the application's occluder callback draws each light's
-// sun map (SunMapAtlas), and one dispatch of sunmap_coverage.comp reduces them all.
+// Sun maps through the engine: the application's occluder callback draws the tile of each
+// light they measure (SunMapAtlas: every light with texture-mask, the small ones with
+// compute), and one dispatch of sunmap_coverage.comp reduces them all.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "engine/EngineImpl.h"
 #include "engine/GlStateGuard.h"
 
 namespace flarekit::engine {
+
+namespace {
+//! The light's radius on screen in pixels of the frame's viewport, as light_coverage.comp
+//! reckons it (tan of its half-angle, at most 1.4 rad, times the projection's y scale), or
+//! -1 when the camera is inside a sphere light (which every method counts as fully seen).
+double radiusPixels(const fk_frame& f, const fk_light& l) {
+    double half = double(l.radius) * std::numbers::pi / 180.0;
+    if (l.type == FK_LIGHT_POINT) {
+        double centre[3];
+        for (int r = 0; r < 3; ++r)
+            centre[r] = double(f.view[r]) * l.position[0] + double(f.view[4 + r]) * l.position[1] +
+                        double(f.view[8 + r]) * l.position[2] + double(f.view[12 + r]);
+        const double distance = std::hypot(centre[0], centre[1], centre[2]);
+        if (distance <= l.radius) return -1;
+        half = std::asin(double(l.radius) / distance);
+    }
+    return std::tan(std::min(half, 1.4)) * f.projection[5] * 0.5 * f.viewport[3];
+}
+}  // namespace
+
+int Engine::Impl::assignTiles(int view, const fk_frame& f, int depthSamples, const fk_light* lights,
+                              int count) {
+    tileOf.assign(std::size_t(count), -1);
+    int tiled = 0;
+    if (occluders && (textureMask || tileBelow > 0)) {
+        for (int i = 0; i < count; ++i) {
+            const double r = radiusPixels(f, lights[i]);
+            const double footprint = std::numbers::pi * r * r * depthSamples;
+            if (textureMask || (r >= 0 && footprint < tileBelow)) tileOf[std::size_t(i)] = tiled++;
+        }
+    }
+    glNamedBufferSubData(tiles.get(), GLintptr(view) * maxLights * GLintptr(sizeof(int)),
+                         GLsizeiptr(count * sizeof(int)), tileOf.data());
+    return tiled;
+}
 
 Status Engine::setMethod(const std::string& method) {
     if (method == "compute") {
@@ -18,12 +58,6 @@ Status Engine::setMethod(const std::string& method) {
             "draws), got \"" +
             method + "\"");
     }
-    if (!m->sunMaps) {
-        const GlStateGuard guard;
-        auto atlas = SunMapAtlas::create(m->maxLights);
-        if (!atlas) return atlas.error();
-        m->sunMaps = std::move(*atlas);
-    }
     m->textureMask = true;
     return Ok{};
 }
@@ -34,9 +68,23 @@ Status Engine::setOccluderCallback(fk_occluder_callback callback, void* user) {
     return Ok{};
 }
 
+Status Engine::setTileThreshold(int depthSamples) {
+    if (depthSamples < 0 || depthSamples > kMaxTileBelow) {
+        return invalidInput("tile-below: expected 0.." + std::to_string(kMaxTileBelow) +
+                            " depth samples, got " + std::to_string(depthSamples));
+    }
+    m->tileBelow = depthSamples;
+    return Ok{};
+}
+
 Status Engine::Impl::measureSunMaps(int view, const fk_frame& f, const fk_light* lights, int count,
                                     GLuint lightBuffer) {
-    sunMaps->draw(view, f, lights, count, occluders, occludersUser);
+    if (!sunMaps) {
+        auto atlas = SunMapAtlas::create(maxLights);
+        if (!atlas) return atlas.error();
+        sunMaps = std::move(*atlas);
+    }
+    sunMaps->draw(view, f, lights, tileOf.data(), count, occluders, occludersUser);
     // The callbacks may have bound anything: bind what the reduction reads now.
     const SunMapProgram& c = sunMap;
     const GLuint p = c.program.get();
@@ -45,6 +93,7 @@ Status Engine::Impl::measureSunMaps(int view, const fk_frame& f, const fk_light*
     glProgramUniform1i(p, c.tilesPerRow, sunMaps->tilesPerRow());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lightBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStateBinding, state.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTilesBinding, tiles.get());
     glBindImageTexture(kStateImageUnit, coverageImage.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_R32F);
     // The reduction reads the atlas where the compute pass reads depth (drawing, then sampling

@@ -11,7 +11,7 @@ void setEnabled(GLenum cap, GLboolean on) {
         glDisable(cap);
 }
 constexpr GLuint kUnits[4] = {kElementUnit, kCoverageUnit, kTransmittanceUnit, kDepthUnit};
-constexpr GLuint kStorage[2] = {kLightsBinding, kStateBinding};
+constexpr GLuint kStorage[3] = {kTilesBinding, kLightsBinding, kStateBinding};
 }  // namespace
 
 GlStateGuard::GlStateGuard() {

@@ -20,7 +20,7 @@ namespace flarekit::engine {
 inline constexpr GLuint kElementUnit = 12, kCoverageUnit = 13, kTransmittanceUnit = 14,
                         kDepthUnit = 15;
 inline constexpr GLuint kStateImageUnit = 7;
-inline constexpr GLuint kLightsBinding = 6, kStateBinding = 7;
+inline constexpr GLuint kTilesBinding = 5, kLightsBinding = 6, kStateBinding = 7;
 //! Draw buffers whose blend and colour mask are saved: the GL 4.5 minimum of GL_MAX_DRAW_BUFFERS.
 inline constexpr int kSavedDrawBuffers = 8;
 
@@ -52,7 +52,7 @@ class GlStateGuard {
     GLint m_imageName = 0, m_imageLevel = 0, m_imageLayer = 0, m_imageAccess = GL_READ_ONLY,
           m_imageFormat = GL_R32F;
     GLboolean m_imageLayered = GL_FALSE;
-    std::array<StorageBinding, 2> m_storage;  //!< kLightsBinding, kStateBinding
+    std::array<StorageBinding, 3> m_storage;  //!< kTilesBinding, kLightsBinding, kStateBinding
     GLint m_storageGeneric = 0;
     std::array<DrawBuffer, kSavedDrawBuffers> m_drawBuffers;
     GLboolean m_depthTest = GL_FALSE, m_depthMask = GL_TRUE, m_stencilTest = GL_FALSE,

@@ -87,8 +87,8 @@ Result<SunMapAtlas> SunMapAtlas::create(int maxLights) {
     return a;
 }
 
-void SunMapAtlas::draw(int view, const fk_frame& f, const fk_light* lights, int count,
-                       fk_occluder_callback occluders, void* user) const {
+void SunMapAtlas::draw(int view, const fk_frame& f, const fk_light* lights, const int* tileOf,
+                       int count, fk_occluder_callback occluders, void* user) const {
     // The eye: view = [R | t] is rigid, so the eye is -R^T t.
     double eye[3];
     for (int i = 0; i < 3; ++i)
@@ -98,6 +98,8 @@ void SunMapAtlas::draw(int view, const fk_frame& f, const fk_light* lights, int 
     glClearNamedFramebufferfv(m_target.get(), GL_COLOR, 0, white);
     const double nearPlane = nearPlaneOf(f);
     for (int i = 0; i < count; ++i) {
+        const int at = tileOf[i];
+        if (at < 0) continue;  // measured on the frame's depth
         const fk_light& l = lights[i];
         double axis[3], half = 0, farPlane = 1e7;
         if (l.type == FK_LIGHT_POINT) {
@@ -117,7 +119,7 @@ void SunMapAtlas::draw(int view, const fk_frame& f, const fk_light* lights, int 
         }
         const std::array<float, 16> vp =
             sunMapCamera(eye, axis, half, nearPlane, farPlane, f.depth_convention);
-        const int tile[4] = {(i % m_tilesPerRow) * m_tileSize, (i / m_tilesPerRow) * m_tileSize,
+        const int tile[4] = {(at % m_tilesPerRow) * m_tileSize, (at / m_tilesPerRow) * m_tileSize,
                              m_tileSize, m_tileSize};
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_target.get());
         glViewport(tile[0], tile[1], tile[2], tile[3]);

@@ -17,10 +17,10 @@ class SunMapAtlas {
   public:
     //! Tiles for `maxLights` lights (a current GL context is needed).
     static Result<SunMapAtlas> create(int maxLights);
-    //! Clears the atlas white and calls `occluders` once per light, its tile bound and set as
-    //! the viewport (the caller restores the GL state). A camera inside a sphere light gets
-    //! no call: the reduction counts it fully seen.
-    void draw(int view, const fk_frame& f, const fk_light* lights, int count,
+    //! Clears the atlas white and calls `occluders` once per light with a tile (tileOf[i] >=
+    //! 0), that tile bound and set as the viewport (the caller restores the GL state). A camera
+    //! inside a sphere light gets no call: the reduction counts it fully seen.
+    void draw(int view, const fk_frame& f, const fk_light* lights, const int* tileOf, int count,
               fk_occluder_callback occluders, void* user) const;
     GLuint texture() const { return m_atlas.get(); }
     int tileSize() const { return m_tileSize; }

@@ -63,6 +63,7 @@ TEST(Engine, LeavesTheApplicationsGlStateAsItFoundIt) {
     glBindImageTexture(7, appTexture.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, appBuffer);
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 7, appBuffer, 0, 128);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 5, appBuffer, 0, 64);
     glEnablei(GL_BLEND, 0);
     glDisablei(GL_BLEND, 1);
     glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO);
@@ -109,6 +110,7 @@ TEST(Engine, LeavesTheApplicationsGlStateAsItFoundIt) {
     glBlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glDeleteBuffers(1, &appBuffer);
     glDeleteSamplers(1, &appSampler);

@@ -95,7 +95,8 @@ inline Scene wallScene() {
 
 //! Every piece of state GlStateGuard promises to keep, read back.
 struct AppState {
-    GLint program, vao, drawFb, readFb, viewport[4], active, image, ssbo6, ssbo7, ssboGeneric;
+    GLint program, vao, drawFb, readFb, viewport[4], active, image, ssbo5, ssbo6, ssbo7,
+        ssboGeneric;
     GLint units[4][3];  // 2D, 2D multisample, sampler on units 12-15
     GLboolean blend0, blend1, depthTest, depthMask, scissor, cull, stencil, mask0[4], mask1[4];
     GLint src0, dst0, eq0, src1, polygon[2];
@@ -111,6 +112,7 @@ inline AppState readState() {
     glGetIntegerv(GL_VIEWPORT, s.viewport);
     glGetIntegerv(GL_ACTIVE_TEXTURE, &s.active);
     glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 7, &s.image);
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 5, &s.ssbo5);
     glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 6, &s.ssbo6);
     glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 7, &s.ssbo7);
     glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &s.ssboGeneric);

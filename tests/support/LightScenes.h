@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 
 #include "flarekit/Scene.h"
 #include "scene/CameraMath.h"
@@ -17,8 +18,14 @@ inline double lampUniform(unsigned& state) {
     return double(state >> 8) / double(1u << 24);
 }
 
+//! Lights' radii on screen, in pixels, drawn log-uniformly from [min, max]; {0, 0} keeps
+//! the world radii of 0.15-0.5 m.
+struct PixelRadii {
+    double min = 0, max = 0;
+};
+
 inline Scene lampScene(int lights, unsigned seed, bool translucent = true, int width = 1280,
-                       int height = 720) {
+                       int height = 720, PixelRadii pixelRadii = {}) {
     Scene s;
     s.width = width;
     s.height = height;
@@ -47,6 +54,12 @@ inline Scene lampScene(int lights, unsigned seed, bool translucent = true, int w
         l.type = LightType::Point;
         l.position = {u(-20, 20), u(-1, 7), -u(8, 55)};
         l.radius = u(0.15, 0.5);
+        if (pixelRadii.max > 0) {  // r px = radius / distance x focal length in pixels
+            const double px = pixelRadii.min * std::pow(pixelRadii.max / pixelRadii.min, u(0, 1));
+            const double focal =
+                0.5 * height / std::tan(s.camera.fovYDeg * std::numbers::pi / 360.0);
+            l.radius = px * length(l.position - s.camera.position) / focal;
+        }
         l.color = {1.0, u(0.6, 0.9), u(0.3, 0.6)};
         l.intensity = u(20, 80);
         l.preset = "subtle";

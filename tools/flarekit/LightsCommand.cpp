@@ -52,7 +52,7 @@ int runLights(const LightsArgs& a) {
         o.method = a.method;
         o.render = a.render;
         o.render.shadows = !a.noShadows;
-        o.samplesPerSide = a.measure.samplesPerSide;
+        o.measure = a.measure;
         auto run = runEngine(*scene, o);
         if (!run) return run.error();
         printReport(a, *run);
@@ -81,6 +81,7 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
     addParamOption<EngineMeasureSettings>(cmd, kEngineMeasureParams, "samples", args->measure);
+    addParamOption<EngineMeasureSettings>(cmd, kEngineMeasureParams, "tile-below", args->measure);
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);
     cmd->add_option("--tonemap", args->tonemap,
                     "display curve of 8/16-bit outputs: aces, filmic, none; EXR stays linear")

@@ -21,8 +21,8 @@ struct EngineRunOptions {
     std::string source;  //!< the scene file, for messages
     std::string method = "compute";
     RenderOptions render;
-    int samplesPerSide = EngineMeasureSettings{}.samplesPerSide;  //!< kEngineMeasureParams
-    bool flares = true;  //!< draw the flares and read the frame back
+    EngineMeasureSettings measure;  //!< kEngineMeasureParams
+    bool flares = true;             //!< draw the flares and read the frame back
 };
 
 struct EngineRun {

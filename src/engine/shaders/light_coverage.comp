@@ -39,6 +39,7 @@ shared vec2 sums[256];
 void main() {
     uint light = gl_WorkGroupID.x;
     uint index = gl_LocalInvocationIndex;
+    if (tiles[stateBase + int(light)] >= 0) return;  // too small for the depth: its sun map
     LightView v = lightView(lights[light]);
     vec3 helper = abs(v.axis.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
     vec3 t1 = normalize(cross(v.axis, helper));

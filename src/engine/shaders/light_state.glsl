@@ -2,8 +2,12 @@
 // Per light and view: the raw coverage, its temporally filtered value (attack / release, as
 // TemporalFilter of flarekit/Temporal.h) and the in-frame share, in the state buffer, and the
 // filtered value in the coverage texture the application and the flare draw read. Prepended
-// to both occlusion passes (light_coverage.comp, sunmap_coverage.comp).
+// to both occlusion passes (light_coverage.comp, sunmap_coverage.comp); each light is
+// measured by exactly one of them, the one its entry of `tiles` names.
 layout(std430, binding = 7) buffer State { vec4 state[]; };  // raw, filtered, in frame, started
+// Per light and view: its sun-map tile, or -1 where the frame's depth measures it
+// (Engine::Impl::assignTiles: texture-mask tiles every light, compute the small ones).
+layout(std430, binding = 5) readonly buffer Tiles { int tiles[]; };
 layout(r32f, binding = 7) uniform writeonly image2D filteredCoverage;
 uniform int viewIndex;
 uniform int stateBase;                  // viewIndex x max lights

@@ -17,8 +17,10 @@ shared vec3 sums[256];    // weighted white, weight, directions in frame
 void main() {
     uint light = gl_WorkGroupID.x;
     uint index = gl_LocalInvocationIndex;
+    int tile = tiles[stateBase + int(light)];
+    if (tile < 0) return;  // measured on the frame's depth (light_coverage.comp)
     LightView v = lightView(lights[light]);
-    ivec2 origin = ivec2(int(light) % tilesPerRow, int(light) / tilesPerRow) * tileSize;
+    ivec2 origin = ivec2(tile % tilesPerRow, tile / tilesPerRow) * tileSize;
     float tanHalf = tan(min(v.halfAngle, 1.4));  // kMaxSunMapHalfAngle of Engine.cpp
     vec3 s = vec3(0.0);
     for (int k = int(index); k < tileSize * tileSize; k += 256) {
