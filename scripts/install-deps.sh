@@ -34,6 +34,9 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   # the demo's and shots' MP4 (run as a program, not linked)
   ffmpeg
+  # the any-renderer shaders compiled at build time: GLSL to SPIR-V (glslc), SPIR-V to HLSL and
+  # MSL (SPIRV-Cross), and their tests' checks (spirv-val, glslang's HLSL front end)
+  glslc spirv-cross spirv-tools glslang-tools
   # the embedding example opens a window with GLFW when there is a display
   libglfw3-dev
   # the embedding example's window test and the studio's tests run on a private X server (Xvfb,

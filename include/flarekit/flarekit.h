@@ -15,6 +15,8 @@
 #ifndef FLAREKIT_FLAREKIT_H
 #define FLAREKIT_FLAREKIT_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -163,6 +165,70 @@ FK_API int fk_engine_set_temporal(fk_engine* e, float attack_seconds, float rele
                                   float guard_band);
 /* Forgets the filtered coverage: the next call starts each light from its measurement. */
 FK_API int fk_engine_reset(fk_engine* e);
+/* A preset from JSON text in memory (`length` bytes, no terminator needed), for engines whose
+ * assets are packed: the same format and checks as a preset file. >= 0 id, < 0 error. */
+FK_API int fk_engine_load_preset_json(fk_engine* e, const char* json, size_t length);
+
+/* ---- Any renderer: flares as instance data (no GL; any thread, one set per thread) ----
+ * For Direct3D, Metal, WebGPU, Vulkan and engines with their own pipelines: an fk_flare_set
+ * holds presets and their sprite textures for one frame height; fk_flare_set_instances turns
+ * lights and their coverage (the engine's own occlusion query, its own texture read, or
+ * fk_engine_read_view) into one record per element per light, which the shaders of
+ * fk_flare_shader draw: a quad per record, premultiplied sprite x colour, added to the linear
+ * HDR colour (blend rgb ONE, ONE; alpha ZERO, ONE). See docs/engine-api.md for the bindings. */
+typedef struct fk_flare_set fk_flare_set;
+
+typedef struct {
+    float position[2];  /* the quad's centre, viewport pixels, origin bottom-left (as GL) */
+    float half_size[2]; /* half width and height in pixels, before rotation */
+    float rotation;     /* radians, counter-clockwise: 0, or pi/2 for an edge streak on a side
+                           edge (its sprite is symmetric, so the turn's direction is free) */
+    float color[3];     /* linear RGB factor of the sprite's premultiplied rgb (alpha is not) */
+    int texture;        /* sprite slot: fk_flare_set_texture */
+    int light;          /* the light's index in the call */
+    int preset;         /* the light's preset id */
+    int element;        /* the element's index among its preset's sprites */
+} fk_flare_instance;
+
+FK_API fk_flare_set* fk_flare_set_create(void);
+FK_API void fk_flare_set_destroy(fk_flare_set* s);
+/* The set's last error, "" if none (fk_flare_set_error(NULL): the last failed create). */
+FK_API const char* fk_flare_set_error(const fk_flare_set* s);
+/* As fk_engine_load_preset / fk_engine_load_preset_json: >= 0 id, < 0 error. */
+FK_API int fk_flare_set_load_preset(fk_flare_set* s, const char* name_or_path);
+FK_API int fk_flare_set_load_preset_json(fk_flare_set* s, const char* json, size_t length);
+/* Renders every loaded preset's sprites for frames `frame_height` pixels tall (element sizes
+ * are fractions of the height). Returns the number of sprite slots, over all presets, or < 0.
+ * Call again after loading a preset or when the viewport's height changes. */
+FK_API int fk_flare_set_prepare(fk_flare_set* s, int frame_height);
+/* Sprite slot `slot`: its size, and with `rgba` non-NULL its texels (width x height x 4
+ * floats, premultiplied linear RGBA, top row first, a clear border around the element).
+ * Upload as a texture sampled linearly with clamping. 0 ok, < 0 error. */
+FK_API int fk_flare_set_texture(const fk_flare_set* s, int slot, int* width, int* height,
+                                float* rgba);
+/* The instances of `count` lights (presets from this set) seen through `frame` (its matrices
+ * and viewport; the depth texture is not read), each light weighed by coverage[i] in [0, 1],
+ * faded near the viewport's edge over `edge_fade` shorter sides (0.08: the engine's default)
+ * and by its flux, as fk_engine_draw weighs it. Writes at most `capacity` records in draw
+ * order (preset, element, light) and returns how many there are (out may be NULL to count
+ * them), or < 0. The frame's viewport height must be the prepared height. */
+FK_API int fk_flare_set_instances(fk_flare_set* s, const fk_frame* frame, const fk_light* lights,
+                                  const float* coverage, int count, float edge_fade,
+                                  fk_flare_instance* out, int capacity);
+
+/* The shaders that draw fk_flare_instance records, compiled at build time from one GLSL
+ * source: GLSL 4.50 for OpenGL, SPIR-V for Vulkan, HLSL (shader model 5.0) for Direct3D
+ * 11/12, MSL 2.0 for Metal. Returns the text (NUL-terminated; SPIR-V: the binary) and its
+ * size in bytes, or NULL for an unknown language or stage. */
+typedef enum {
+    FK_SHADER_GLSL = 0,
+    FK_SHADER_SPIRV = 1,
+    FK_SHADER_HLSL = 2,
+    FK_SHADER_MSL = 3
+} fk_shader_language;
+typedef enum { FK_SHADER_VERTEX = 0, FK_SHADER_FRAGMENT = 1 } fk_shader_stage;
+FK_API const void* fk_flare_shader(fk_shader_language language, fk_shader_stage stage,
+                                   size_t* size);
 
 #ifdef __cplusplus
 }

@@ -116,6 +116,20 @@ int fk_engine_load_preset(fk_engine* e, const char* name_or_path) {
     return rc < 0 ? rc : id;
 }
 
+int fk_engine_load_preset_json(fk_engine* e, const char* json, size_t length) {
+    int id = kInvalid;
+    const int rc = guarded(
+        e, "fk_engine_load_preset_json",
+        [&](flarekit::engine::Engine& en) {
+            auto loaded = en.loadPresetJson(json, length);
+            if (!loaded) return flarekit::Status(loaded.error());
+            id = *loaded;
+            return flarekit::Status(flarekit::Ok{});
+        },
+        false);
+    return rc < 0 ? rc : id;
+}
+
 int fk_engine_set_method(fk_engine* e, const char* method) {
     return guarded(e, "fk_engine_set_method", [&](flarekit::engine::Engine& en) {
         return en.setMethod(method ? method : "(NULL)");

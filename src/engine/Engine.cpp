@@ -108,6 +108,16 @@ Result<int> Engine::loadPreset(const std::string& nameOrPath) {
     return int(m->presets.size()) - 1;
 }
 
+Result<int> Engine::loadPresetJson(const char* json, std::size_t length) {
+    if (!json) return invalidInput("json: expected preset JSON text, got NULL");
+    auto preset = parsePreset(std::string(json, length), "json");
+    if (!preset) return preset.error();
+    LoadedPreset p;
+    p.preset = std::move(*preset);
+    m->presets.push_back(std::move(p));
+    return int(m->presets.size()) - 1;
+}
+
 Status Engine::setSamples(int perSide) {
     if (perSide < 1 || perSide > kMaxSamplesPerSide) {
         return invalidInput("samples_per_side: expected 1.." + std::to_string(kMaxSamplesPerSide) +

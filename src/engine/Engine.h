@@ -29,6 +29,7 @@ class Engine {
     ~Engine();
 
     Result<int> loadPreset(const std::string& nameOrPath);
+    Result<int> loadPresetJson(const char* json, std::size_t length);
     Status setMethod(const std::string& method);
     Status occlusion(std::span<const fk_frame> frames, const fk_light* lights, int count);
     Status draw(int view, const fk_frame* frame, const fk_light* lights, int count,

@@ -19,12 +19,8 @@ Status Engine::Impl::ensureSprites(LoadedPreset& p, int height) {
 Status Engine::draw(int view, const fk_frame* frame, const fk_light* lights, int count,
                     unsigned framebuffer) {
     if (Status s = checkView(view); !s) return s;
-    if (!frame) return invalidInput("frame: expected a frame, got NULL");
     // Drawing needs the frame's matrices and viewport, not its depth texture.
-    fk_frame numbers = *frame;
-    if (auto info = checkFrame(&numbers, "frame"); !info) {
-        if (info.error().message.find(".depth_texture") == std::string::npos) return info.error();
-    }
+    if (Status s = checkFrameNumbers(frame, "frame"); !s) return s;
     if (Status s = checkLights(lights, count, m->maxLights, int(m->presets.size())); !s) return s;
     if (Status s = checkFramebuffer(framebuffer); !s) return s;
     if (count == 0) return Ok{};

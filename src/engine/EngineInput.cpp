@@ -39,7 +39,7 @@ int enumBits(const Enum& field) {
 
 }  // namespace
 
-Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at) {
+Status checkFrameNumbers(const fk_frame* frame, const std::string& at) {
     if (!frame) return invalidInput(at + ": expected a frame, got NULL");
     const fk_frame& f = *frame;
     if (const int convention = enumBits(f.depth_convention);
@@ -67,6 +67,12 @@ Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at
                             std::to_string(v[1]) + ", " + std::to_string(v[2]) + ", " +
                             std::to_string(v[3]) + "]");
     }
+    return Ok{};
+}
+
+Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at) {
+    if (Status s = checkFrameNumbers(frame, at); !s) return s.error();
+    const fk_frame& f = *frame;
     const std::string texture = at + ".depth_texture: ";
     if (f.depth_texture == 0 || !glIsTexture(f.depth_texture)) {
         return invalidInput(texture + "expected the name of a GL texture, got " +

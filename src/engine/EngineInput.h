@@ -22,6 +22,8 @@ struct DepthTextureInfo {
 //! depth texture (a 2D or 2D multisample texture of that size with a depth format); `at` is
 //! the argument's name for messages.
 Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at);
+//! The frame's numbers alone (no GL): what drawing or instance data needs of it.
+Status checkFrameNumbers(const fk_frame* frame, const std::string& at);
 
 //! count in [0, maxLights], every light's type, finite position / direction, positive radius
 //! (directional: at most 45 degrees), non-negative colour and intensity, preset -1 or a

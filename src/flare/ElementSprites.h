@@ -1,18 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// A preset's elements as GL textures for frames of one height: each element rendered once on
-// the CPU (renderElement, the kernels of renderFlare) at its size in pixels, Tanczos's sprite
-// textures. Shared by GpuSpriteFlare (one sun) and the engine API (every light, instanced).
+// A preset's sprite images (SpriteImages.h) as GL textures for frames of one height. Shared by
+// GpuSpriteFlare (one sun) and the engine API (every light, instanced).
 #pragma once
 
 #include <vector>
 
+#include "flare/SpriteImages.h"
 #include "flarekit/Flare.h"
 #include "gl/GlObjects.h"
 
 namespace flarekit {
-
-//! renderFlare skips elements below half a pixel in radius (FlareRenderer.cpp); so do sprites.
-inline constexpr float kMinSpriteRadiusPx = 0.5f;
 
 struct ElementSprite {
     float t;             //!< position on the flare vector
