@@ -37,6 +37,9 @@ packages=(
   # the any-renderer shaders compiled at build time: GLSL to SPIR-V (glslc), SPIR-V to HLSL and
   # MSL (SPIRV-Cross), and their tests' checks (spirv-val, glslang's HLSL front end)
   glslc spirv-cross spirv-tools glslang-tools
+  # the engine API's Vulkan backend: Vulkan headers (the library loads libvulkan.so.1 only when
+  # a Vulkan engine is made), and for its tests Mesa's lavapipe and the Khronos validation layer
+  libvulkan-dev libvulkan1 mesa-vulkan-drivers vulkan-validationlayers
   # the embedding example opens a window with GLFW when there is a display
   libglfw3-dev
   # the embedding example's window test and the studio's tests run on a private X server (Xvfb,

@@ -33,8 +33,15 @@ namespace {
 std::string withPrelude(const char* text, const std::string& defines, bool state) {
     std::string body(text);
     if (body.rfind("#version", 0) == 0) body = body.substr(body.find('\n') + 1);
-    return "#version 450 core\n" + defines + shaders::light_view_glsl +
+    return "#version 450 core\n" + defines + shaders::backend_glsl + shaders::light_view_glsl +
            (state ? shaders::light_state_glsl : "") + "\n#line 2\n" + body;
+}
+
+//! A shader without the light prelude, after backend.glsl's definitions alone.
+std::string withBackend(const char* text) {
+    std::string body(text);
+    if (body.rfind("#version", 0) == 0) body = body.substr(body.find('\n') + 1);
+    return std::string("#version 450 core\n") + shaders::backend_glsl + "\n#line 2\n" + body;
 }
 
 //! An occlusion pass (the per-light state included) and its shared uniforms.
@@ -78,7 +85,7 @@ Result<SunMapProgram> linkSunMap() {
 Result<FlareProgram> linkFlare() {
     auto p = gl::linkProgram(
         {{GL_VERTEX_SHADER, "light_flare.vert", withPrelude(shaders::light_flare_vert, "", false)},
-         {GL_FRAGMENT_SHADER, "light_flare.frag", shaders::light_flare_frag}});
+         {GL_FRAGMENT_SHADER, "light_flare.frag", withBackend(shaders::light_flare_frag)}});
     if (!p) return p.error();
     FlareProgram f;
     f.program = std::move(*p);

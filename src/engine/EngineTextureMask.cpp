@@ -26,7 +26,7 @@ double radiusPixels(const fk_frame& f, const fk_light& l) {
         if (distance <= l.radius) return -1;
         half = std::asin(double(l.radius) / distance);
     }
-    return std::tan(std::min(half, 1.4)) * f.projection[5] * 0.5 * f.viewport[3];
+    return std::tan(std::min(half, 1.4)) * std::abs(f.projection[5]) * 0.5 * f.viewport[3];
 }
 }  // namespace
 

@@ -83,7 +83,7 @@ void appendFlareInstances(const fk_frame& f, const fk_light* lights, const float
                     ? v.radius /
                           std::sqrt(std::max(1e-30f, dot(v.centre, v.centre) - v.radius * v.radius))
                     : std::tan(v.halfAngle);
-            const float radiusOfHeight = tanRadius * f.projection[5] / 2.f;
+            const float radiusOfHeight = tanRadius * std::abs(f.projection[5]) / 2.f;
             const float flux = lum * kPi * radiusOfHeight * radiusOfHeight / float(kReferenceFlux);
             const float weight = coverage[i];
             const EdgePlacement edge =

@@ -10,10 +10,15 @@
 // TemporalFilter) and stores the filtered value in the coverage texture. Built twice: with
 // MULTISAMPLE defined a direction reads the depth sample of its pixel nearest to it.
 layout(local_size_x = 256) in;
+UNIFORMS_BEGIN(CoverageParams, 11)
+UNIFORM int perSide;          // directions per side for a light large on screen
+UNIFORM int samplesPerPixel;  // depth samples per pixel (1, or the MSAA count)
+UNIFORM bool hasTransmittance;
+UNIFORM int sampleCount;
+UNIFORM vec2 samplePositions[16];  // within the pixel, [0, 1)^2 (glGetMultisamplefv)
+UNIFORMS_END
 #ifdef MULTISAMPLE
-layout(binding = 15) uniform sampler2DMS depthSamples;
-uniform int sampleCount;
-uniform vec2 samplePositions[16];  // within the pixel, [0, 1)^2 (glGetMultisamplefv)
+layout(BINDING(15, 5)) uniform sampler2DMS depthSamples;
 float depthAt(vec2 p) {
     vec2 inPixel = fract(p);
     int nearest = 0;
@@ -25,14 +30,10 @@ float depthAt(vec2 p) {
     return texelFetch(depthSamples, ivec2(p), nearest).r;
 }
 #else
-layout(binding = 15) uniform sampler2D depthTexture;
+layout(BINDING(15, 5)) uniform sampler2D depthTexture;
 float depthAt(vec2 p) { return texelFetch(depthTexture, ivec2(p), 0).r; }
 #endif
-layout(binding = 14) uniform sampler2D transmittance;
-uniform bool hasTransmittance;
-
-uniform int perSide;        // directions per side for a light large on screen
-uniform int samplesPerPixel;  // depth samples per pixel (1, or the MSAA count)
+layout(BINDING(14, 6)) uniform sampler2D transmittance;
 
 shared vec2 sums[256];
 
@@ -47,7 +48,7 @@ void main() {
     // Directions per side: about 16 per depth sample the light covers, up to perSide. A
     // light a few pixels wide is resolved by its few samples, not by more directions (its
     // error is the depth's quantization); this keeps a street of distant lamps cheap.
-    float radiusPx = tan(min(v.halfAngle, 1.4)) * projectionMatrix[1][1] * 0.5 * float(viewport.w);
+    float radiusPx = tan(min(v.halfAngle, 1.4)) * abs(projectionMatrix[1][1]) * 0.5 * float(viewport.w);
     float covered = 3.14159265 * radiusPx * radiusPx * float(samplesPerPixel);
     int side = clamp(int(ceil(sqrt(16.0 * covered))), min(8, perSide), perSide);
     int total = side * side;

@@ -8,19 +8,23 @@
 // temporal filter's does) x its flux in frame heights squared over
 // kReferenceFlux (sunFlareScale's model: luminance x pi x (tan(angular radius) / (2 tan(fov_y
 // / 2)))^2), tinted by the light's colour at unit luminance.
-layout(binding = 13) uniform sampler2D coverageTexture;
-uniform int coverageChannel;  // the channel of texel (light, view) that weighs the light
-uniform bool fadeAtEdges;     // apply edgeFade here (the weight is a raw measurement)
-uniform int viewIndex;
-uniform int presetId;
-uniform float t;         // position on the flare vector
-uniform vec2 halfSize;   // quad half size, pixels
-uniform float guardBand; // edge-fade width, shorter sides of the viewport
-uniform float referenceFlux;
-uniform bool edgeStreak;  // this element is an edge streak (placed on the frame edge)
-uniform float reach;      // its reach, viewport heights
-out vec2 uv;
-flat out vec3 tint;
+layout(BINDING(13, 7)) uniform sampler2D coverageTexture;
+UNIFORMS_BEGIN(FlareParams, 12)
+UNIFORM int coverageChannel;  // the channel of texel (light, view) that weighs the light
+UNIFORM bool fadeAtEdges;     // apply edgeFade here (the weight is a raw measurement)
+UNIFORM int viewIndex;
+UNIFORM float guardBand;  // edge-fade width, shorter sides of the viewport
+UNIFORM float referenceFlux;
+UNIFORMS_END
+UNIFORMS_BEGIN(ElementParams, 13)  // one element of one preset
+UNIFORM vec2 halfSize;  // quad half size, pixels
+UNIFORM int presetId;
+UNIFORM float t;        // position on the flare vector
+UNIFORM bool edgeStreak;  // this element is an edge streak (placed on the frame edge)
+UNIFORM float reach;      // its reach, viewport heights
+UNIFORMS_END
+layout(location = 0) out vec2 uv;
+layout(location = 1) flat out vec3 tint;
 
 // edgeStreakPlacement of flarekit/Flare.h (src/flare/FlareRenderer.cpp), line for line:
 // xy centre, z 1 on a side edge (turned a quarter), w the weight.
@@ -56,7 +60,7 @@ float edgeFade(vec2 p, vec2 size) {
 }
 
 void main() {
-    Light l = lights[gl_InstanceID];
+    Light l = lights[INSTANCE_ID];
     LightView v = lightView(l);
     vec4 clip = projectionMatrix * (v.point ? vec4(v.centre, 1.0) : vec4(v.axis, 0.0));
     vec2 size = vec2(viewport.zw);
@@ -65,9 +69,9 @@ void main() {
     float lum = dot(radiance, vec3(0.2126, 0.7152, 0.0722));
     float tanRadius = v.point ? v.radius / sqrt(max(1e-30, dot(v.centre, v.centre) - v.radius * v.radius))
                               : tan(v.halfAngle);
-    float radiusOfHeight = tanRadius * projectionMatrix[1][1] / 2.0;
+    float radiusOfHeight = tanRadius * abs(projectionMatrix[1][1]) / 2.0;
     float flux = lum * kPi * radiusOfHeight * radiusOfHeight / referenceFlux;
-    float weight = texelFetch(coverageTexture, ivec2(gl_InstanceID, viewIndex), 0)[coverageChannel];
+    float weight = texelFetch(coverageTexture, ivec2(INSTANCE_ID, viewIndex), 0)[coverageChannel];
     vec4 edge = edgeStreak ? edgeStreakPlacement(light, size, reach) : vec4(0.0, 0.0, 0.0, 1.0);
     // An edge streak takes the coverage alone: it is what is left of the flare past the edge.
     float fade = edgeStreak ? edge.w : fadeAtEdges ? edgeFade(light, size) : 1.0;
@@ -75,10 +79,11 @@ void main() {
     tint = lum > 0.0 ? radiance / lum * intensity : vec3(0.0);
     bool drawn = int(l.presetPad.x) == presetId && intensity > 0.0 && !isinf(intensity) &&
                  !isnan(intensity);
-    vec2 corner = vec2(gl_VertexID & 1, (gl_VertexID >> 1) & 1);
-    uv = vec2(corner.x, 1.0 - corner.y);  // element images are stored top row first
+    vec2 corner = vec2(VERTEX_ID & 1, (VERTEX_ID >> 1) & 1);
+    // Element images are stored top row first; the quad's top is corner.y 1 (GL) or 0 (Vulkan).
+    uv = vec2(corner.x, SPRITE_ROW_FROM_TOP == 1 ? corner.y : 1.0 - corner.y);
     bool transposed = edge.z > 0.5;       // a quarter turn of a doubly symmetric sprite
-    if (transposed) uv = vec2(corner.y, 1.0 - corner.x);
+    if (transposed) uv = vec2(corner.y, SPRITE_ROW_FROM_TOP == 1 ? corner.x : 1.0 - corner.x);
     vec2 centre = edgeStreak ? edge.xy : size * 0.5 + t * (light - size * 0.5);
     vec2 p = centre + (corner * 2.0 - 1.0) * (transposed ? halfSize.yx : halfSize);
     gl_Position = drawn ? vec4(p / size * 2.0 - 1.0, 0.0, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);

@@ -4,14 +4,17 @@
 // filtered value in the coverage texture the application and the flare draw read. Prepended
 // to both occlusion passes (light_coverage.comp, sunmap_coverage.comp); each light is
 // measured by exactly one of them, the one its entry of `tiles` names.
-layout(std430, binding = 7) buffer State { vec4 state[]; };  // raw, filtered, in frame, started
+layout(std430, BINDING(7, 2)) buffer State { vec4 state[]; };  // raw, filtered, in frame, started
 // Per light and view: its sun-map tile, or -1 where the frame's depth measures it
 // (Engine::Impl::assignTiles: texture-mask tiles every light, compute the small ones).
-layout(std430, binding = 5) readonly buffer Tiles { int tiles[]; };
-layout(r32f, binding = 7) uniform writeonly image2D filteredCoverage;
-uniform int viewIndex;
-uniform int stateBase;                  // viewIndex x max lights
-uniform float attackStep, releaseStep;  // 1 - exp(-dt / tau), from the CPU
+layout(std430, BINDING(5, 3)) readonly buffer Tiles { int tiles[]; };
+layout(r32f, BINDING(7, 4)) uniform writeonly image2D filteredCoverage;
+UNIFORMS_BEGIN(StateParams, 10)
+UNIFORM int viewIndex;
+UNIFORM int stateBase;     // viewIndex x max lights
+UNIFORM float attackStep;  // 1 - exp(-dt / tau), from the CPU
+UNIFORM float releaseStep;
+UNIFORMS_END
 
 void storeCoverage(uint light, float raw, float inFrame) {
     vec4 previous = state[stateBase + int(light)];

@@ -9,12 +9,16 @@ struct Light {
     vec4 colorIntensity;   // rgb: colour; a: intensity
     vec4 presetPad;        // x: preset id (-1: no flare)
 };
-layout(std430, binding = 6) readonly buffer Lights { Light lights[]; };
+layout(std430, BINDING(6, 1)) readonly buffer Lights { Light lights[]; };
 
-uniform mat4 viewMatrix;        // world to view, rigid
-uniform mat4 projectionMatrix;  // view to clip
-uniform ivec4 viewport;         // x, y, w, h in the depth texture (or framebuffer)
-uniform int depthConvention;    // fk_depth_convention
+UNIFORMS_BEGIN(ViewParams, 0)
+UNIFORM mat4 viewMatrix;        // world to view, rigid
+UNIFORM mat4 projectionMatrix;  // view to clip
+UNIFORM ivec4 viewport;         // x, y, w, h in the depth texture (or framebuffer)
+UNIFORM vec2 depthTextureSize;
+UNIFORM int depthConvention;    // fk_depth_convention
+UNIFORM bool depthPastViewport;  // fk_engine_set_guard_band
+UNIFORMS_END
 
 const float kPi = 3.14159265358979;
 // A point light is tested at its sphere's near side pulled 0.1% toward the camera, so a bulb
@@ -80,8 +84,6 @@ float storedDepth(float zNdc) {
 // light's stored depth along it, and whether that is inside the viewport. False when it falls
 // behind the camera, or outside what may be read: the viewport, or with a guard band (depth
 // rendered past the viewport with the same projection) the whole depth texture.
-uniform bool depthPastViewport;  // fk_engine_set_guard_band
-uniform vec2 depthTextureSize;
 bool landsAt(LightView v, vec3 d, out vec2 pixel, out float lightDepth, out bool inView) {
     vec4 clip;
     if (v.point) {

@@ -9,9 +9,11 @@
 // like the ray caster's; off-screen lights keep their coverage. The in-frame share comes from
 // 16 x 16 directions of the cone against the frame's projection.
 layout(local_size_x = 256) in;
-layout(binding = 15) uniform sampler2D sunMaps;
-uniform int tileSize;     // texels a side
-uniform int tilesPerRow;
+layout(BINDING(15, 9)) uniform sampler2D sunMaps;
+UNIFORMS_BEGIN(SunMapParams, 11)
+UNIFORM int tileSize;  // texels a side
+UNIFORM int tilesPerRow;
+UNIFORMS_END
 shared vec3 sums[256];    // weighted white, weight, directions in frame
 
 void main() {

@@ -1,0 +1,553 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "engine/vulkan/VulkanHost.h"
+
+#include <atomic>
+#include <cstring>
+#include <mutex>
+
+#include "flarekit_exported_shaders.h"
+
+namespace flarekit::vk {
+
+namespace {
+
+// What the host calls besides the engine's functions (Api).
+#define FLAREKIT_VK_HOST_GLOBAL(X) \
+    X(vkCreateInstance)            \
+    X(vkEnumerateInstanceLayerProperties)
+#define FLAREKIT_VK_HOST_INSTANCE(X)            \
+    X(vkDestroyInstance)                        \
+    X(vkEnumeratePhysicalDevices)               \
+    X(vkGetPhysicalDeviceQueueFamilyProperties) \
+    X(vkCreateDevice)
+#define FLAREKIT_VK_HOST_DEVICE(X) \
+    X(vkDestroyDevice)             \
+    X(vkGetDeviceQueue)            \
+    X(vkCreateCommandPool)         \
+    X(vkDestroyCommandPool)        \
+    X(vkAllocateCommandBuffers)    \
+    X(vkFreeCommandBuffers)        \
+    X(vkBeginCommandBuffer)        \
+    X(vkEndCommandBuffer)          \
+    X(vkQueueSubmit)               \
+    X(vkQueueWaitIdle)             \
+    X(vkCmdCopyImageToBuffer)      \
+    X(vkCmdBindVertexBuffers)      \
+    X(vkCmdPushConstants)
+
+struct HostApi {
+#define FLAREKIT_VK_MEMBER(name) PFN_##name name = nullptr;
+    FLAREKIT_VK_HOST_GLOBAL(FLAREKIT_VK_MEMBER)
+    FLAREKIT_VK_HOST_INSTANCE(FLAREKIT_VK_MEMBER)
+    FLAREKIT_VK_HOST_DEVICE(FLAREKIT_VK_MEMBER)
+#undef FLAREKIT_VK_MEMBER
+    PFN_vkCreateDebugUtilsMessengerEXT vkCreateDebugUtilsMessengerEXT = nullptr;
+    PFN_vkDestroyDebugUtilsMessengerEXT vkDestroyDebugUtilsMessengerEXT = nullptr;
+};
+
+//! What the validation layer said (warnings and errors).
+struct Messages {
+    std::mutex lock;
+    int count = 0;
+    std::string first;
+};
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                         VkDebugUtilsMessageTypeFlagsEXT,
+                                         const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                         void* user) {
+    auto* m = static_cast<Messages*>(user);
+    const std::lock_guard<std::mutex> guard(m->lock);
+    if (m->count++ == 0) m->first = data && data->pMessage ? data->pMessage : "(no text)";
+    return VK_FALSE;
+}
+
+}  // namespace
+
+struct VulkanHost::Impl {
+    PFN_vkGetInstanceProcAddr gipa = nullptr;
+    HostApi h;
+    Device d;
+    std::uint32_t family = 0;
+    VkQueue queue = VK_NULL_HANDLE;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    Messages messages;
+    VkPipelineLayout depthLayout = VK_NULL_HANDLE;
+    std::vector<std::pair<std::uint64_t, VkPipeline>> depthPipelines;  //!< by format, samples, Z
+
+    ~Impl() {
+        for (auto& [key, p] : depthPipelines) d.api.vkDestroyPipeline(d.device, p, nullptr);
+        if (depthLayout) d.api.vkDestroyPipelineLayout(d.device, depthLayout, nullptr);
+        if (pool) h.vkDestroyCommandPool(d.device, pool, nullptr);
+        if (d.device) h.vkDestroyDevice(d.device, nullptr);
+        if (messenger && h.vkDestroyDebugUtilsMessengerEXT)
+            h.vkDestroyDebugUtilsMessengerEXT(d.instance, messenger, nullptr);
+        if (d.instance) h.vkDestroyInstance(d.instance, nullptr);
+    }
+    Result<VkPipeline> depthPipeline(VkFormat format, int samples, bool reversedZ);
+};
+
+VulkanHost::VulkanHost(std::unique_ptr<Impl> impl) : m(std::move(impl)), m_device(&m->d) {}
+VulkanHost::~VulkanHost() = default;
+
+Result<std::unique_ptr<VulkanHost>> VulkanHost::create(bool validation) {
+    auto m = std::make_unique<Impl>();
+    std::string why;
+    m->gipa = systemLoader(&why);
+    if (!m->gipa) return invalidInput("--backend vulkan: " + why);
+    HostApi& h = m->h;
+#define FLAREKIT_VK_LOAD(name) h.name = reinterpret_cast<PFN_##name>(m->gipa(nullptr, #name));
+    FLAREKIT_VK_HOST_GLOBAL(FLAREKIT_VK_LOAD)
+#undef FLAREKIT_VK_LOAD
+    if (!h.vkCreateInstance)
+        return invalidInput("--backend vulkan: the loader has no vkCreateInstance");
+    const char* layer = "VK_LAYER_KHRONOS_validation";
+    if (validation) {
+        std::uint32_t n = 0;
+        h.vkEnumerateInstanceLayerProperties(&n, nullptr);
+        std::vector<VkLayerProperties> layers(n);
+        h.vkEnumerateInstanceLayerProperties(&n, layers.data());
+        bool found = false;
+        for (const VkLayerProperties& l : layers) found |= std::strcmp(l.layerName, layer) == 0;
+        if (!found)
+            return invalidInput("Vulkan validation: VK_LAYER_KHRONOS_validation is not installed");
+    }
+    auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+    app.pApplicationName = "flarekit";
+    app.apiVersion = VK_API_VERSION_1_3;
+    auto messengerInfo = make<VkDebugUtilsMessengerCreateInfoEXT>(
+        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+    messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messengerInfo.pfnUserCallback = &onMessage;
+    messengerInfo.pUserData = &m->messages;
+    const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    auto instanceInfo = make<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+    instanceInfo.pApplicationInfo = &app;
+    if (validation) {
+        instanceInfo.enabledLayerCount = 1;
+        instanceInfo.ppEnabledLayerNames = &layer;
+        instanceInfo.enabledExtensionCount = 1;
+        instanceInfo.ppEnabledExtensionNames = &extension;
+        instanceInfo.pNext = &messengerInfo;  // instance creation itself is checked too
+    }
+    if (Status s =
+            check(h.vkCreateInstance(&instanceInfo, nullptr, &m->d.instance), "vkCreateInstance");
+        !s)
+        return invalidInput("--backend vulkan: no Vulkan driver (" + s.error().message + ")");
+    const VkInstance instance = m->d.instance;
+#define FLAREKIT_VK_LOAD(name) h.name = reinterpret_cast<PFN_##name>(m->gipa(instance, #name));
+    FLAREKIT_VK_HOST_INSTANCE(FLAREKIT_VK_LOAD)
+#undef FLAREKIT_VK_LOAD
+    if (validation) {
+        h.vkCreateDebugUtilsMessengerEXT = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            m->gipa(instance, "vkCreateDebugUtilsMessengerEXT"));
+        h.vkDestroyDebugUtilsMessengerEXT = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            m->gipa(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        if (h.vkCreateDebugUtilsMessengerEXT)
+            h.vkCreateDebugUtilsMessengerEXT(instance, &messengerInfo, nullptr, &m->messenger);
+    }
+    std::uint32_t count = 0;
+    h.vkEnumeratePhysicalDevices(instance, &count, nullptr);
+    std::vector<VkPhysicalDevice> physical(count);
+    h.vkEnumeratePhysicalDevices(instance, &count, physical.data());
+    // The first device with a graphics-and-compute queue family.
+    for (VkPhysicalDevice p : physical) {
+        std::uint32_t families = 0;
+        h.vkGetPhysicalDeviceQueueFamilyProperties(p, &families, nullptr);
+        std::vector<VkQueueFamilyProperties> props(families);
+        h.vkGetPhysicalDeviceQueueFamilyProperties(p, &families, props.data());
+        for (std::uint32_t f = 0; f < families && !m->d.physical; ++f) {
+            constexpr VkQueueFlags kBoth = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+            if ((props[f].queueFlags & kBoth) == kBoth) m->d.physical = p, m->family = f;
+        }
+        if (m->d.physical) break;
+    }
+    if (!m->d.physical)
+        return invalidInput("--backend vulkan: no Vulkan device with a graphics and compute queue");
+    const float priority = 1.f;
+    auto queueInfo = make<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+    queueInfo.queueFamilyIndex = m->family;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+    auto features13 = make<VkPhysicalDeviceVulkan13Features>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+    features13.dynamicRendering = VK_TRUE;
+    auto deviceInfo = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
+    deviceInfo.pNext = &features13;
+    deviceInfo.queueCreateInfoCount = 1;
+    deviceInfo.pQueueCreateInfos = &queueInfo;
+    if (Status s = check(h.vkCreateDevice(m->d.physical, &deviceInfo, nullptr, &m->d.device),
+                         "vkCreateDevice");
+        !s)
+        return invalidInput("--backend vulkan: the device needs Vulkan 1.3 (" + s.error().message +
+                            ")");
+    auto api = loadApi(m->gipa, instance, m->d.device);
+    if (!api) return api.error();
+    m->d.api = *api;
+    m->d.api.vkGetPhysicalDeviceMemoryProperties(m->d.physical, &m->d.memory);
+    m->d.api.vkGetPhysicalDeviceProperties(m->d.physical, &m->d.properties);
+    const VkDevice device = m->d.device;
+#define FLAREKIT_VK_LOAD(name) \
+    h.name = reinterpret_cast<PFN_##name>(m->d.api.vkGetDeviceProcAddr(device, #name));
+    FLAREKIT_VK_HOST_DEVICE(FLAREKIT_VK_LOAD)
+#undef FLAREKIT_VK_LOAD
+    h.vkGetDeviceQueue(device, m->family, 0, &m->queue);
+    auto poolInfo = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    poolInfo.queueFamilyIndex = m->family;
+    if (Status s = check(h.vkCreateCommandPool(device, &poolInfo, nullptr, &m->pool),
+                         "vkCreateCommandPool");
+        !s)
+        return s.error();
+    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, 64};
+    auto layoutInfo =
+        make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &range;
+    if (Status s =
+            check(m->d.api.vkCreatePipelineLayout(device, &layoutInfo, nullptr, &m->depthLayout),
+                  "vkCreatePipelineLayout");
+        !s)
+        return s.error();
+    return std::unique_ptr<VulkanHost>(new VulkanHost(std::move(m)));
+}
+
+fk_vulkan_device VulkanHost::engineDevice(int framesInFlight) const {
+    fk_vulkan_device d{};
+    d.instance = m->d.instance;
+    d.physical_device = m->d.physical;
+    d.device = m->d.device;
+    d.queue_family_index = m->family;
+    d.get_instance_proc_addr = m->gipa;
+    d.frames_in_flight = framesInFlight;
+    return d;
+}
+
+Status VulkanHost::submit(const std::function<void(VkCommandBuffer)>& record) {
+    const HostApi& h = m->h;
+    auto alloc = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    alloc.commandPool = m->pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    if (Status s = check(h.vkAllocateCommandBuffers(m->d.device, &alloc, &cmd),
+                         "vkAllocateCommandBuffers");
+        !s)
+        return s;
+    auto begin = make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    h.vkBeginCommandBuffer(cmd, &begin);
+    record(cmd);
+    Status s = check(h.vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    if (s) {
+        auto submitInfo = make<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+        submitInfo.commandBufferCount = 1;
+        submitInfo.pCommandBuffers = &cmd;
+        s = check(h.vkQueueSubmit(m->queue, 1, &submitInfo, VK_NULL_HANDLE), "vkQueueSubmit");
+        if (s) s = check(h.vkQueueWaitIdle(m->queue), "vkQueueWaitIdle");
+    }
+    h.vkFreeCommandBuffers(m->d.device, m->pool, 1, &cmd);
+    return s;
+}
+
+namespace {
+void layoutBarrier(const Api& a, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
+                   VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                   VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                   VkAccessFlags dstAccess) {
+    auto b = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+    b.srcAccessMask = srcAccess;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
+    a.vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+}  // namespace
+
+Result<Image> VulkanHost::colorImage(VkFormat format, int width, int height, const float* rgba) {
+    const Device& d = m->d;
+    auto image = d.makeImage(format, std::uint32_t(width), std::uint32_t(height),
+                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    if (!image) return image.error();
+    const VkDeviceSize bytes = VkDeviceSize(width) * VkDeviceSize(height) * 16;
+    auto staging = d.makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    if (!staging) {
+        d.destroy(*image);
+        return staging.error();
+    }
+    if (rgba)
+        std::memcpy(staging->mapped, rgba, bytes);
+    else
+        std::memset(staging->mapped, 0, bytes);
+    const VkImage target = image->image;
+    Status s = submit([&](VkCommandBuffer cmd) {
+        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {std::uint32_t(width), std::uint32_t(height), 1};
+        d.api.vkCmdCopyBufferToImage(cmd, staging->buffer, target,
+                                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    });
+    d.destroy(*staging);
+    if (!s) {
+        d.destroy(*image);
+        return s.error();
+    }
+    return *image;
+}
+
+Result<std::vector<float>> VulkanHost::readColor(const Image& image, int width, int height) {
+    const Device& d = m->d;
+    const VkDeviceSize bytes = VkDeviceSize(width) * VkDeviceSize(height) * 16;
+    auto staging = d.makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    if (!staging) return staging.error();
+    Status s = submit([&](VkCommandBuffer cmd) {
+        layoutBarrier(
+            d.api, cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {std::uint32_t(width), std::uint32_t(height), 1};
+        m->h.vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                    staging->buffer, 1, &region);
+        layoutBarrier(d.api, cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        auto host = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        d.api.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                                   0, 1, &host, 0, nullptr, 0, nullptr);
+    });
+    std::vector<float> pixels;
+    if (s) {
+        pixels.resize(std::size_t(width) * std::size_t(height) * 4);
+        std::memcpy(pixels.data(), staging->mapped, bytes);
+    }
+    d.destroy(*staging);
+    if (!s) return s.error();
+    return pixels;
+}
+
+Result<DepthImage> VulkanHost::depthImage(int width, int height, int samples, VkFormat format) {
+    const Device& d = m->d;
+    DepthImage out;
+    out.format = format;
+    out.samples = samples;
+    out.width = width;
+    out.height = height;
+    auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {std::uint32_t(width), std::uint32_t(height), 1};
+    info.mipLevels = info.arrayLayers = 1;
+    info.samples = VkSampleCountFlagBits(samples);
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (Status s =
+            check(d.api.vkCreateImage(d.device, &info, nullptr, &out.image), "vkCreateImage");
+        !s)
+        return s.error();
+    VkMemoryRequirements r{};
+    d.api.vkGetImageMemoryRequirements(d.device, out.image, &r);
+    for (std::uint32_t i = 0; i < d.memory.memoryTypeCount && !out.memory; ++i) {
+        if ((r.memoryTypeBits & (1u << i)) == 0 ||
+            (d.memory.memoryTypes[i].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) == 0)
+            continue;
+        auto alloc = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+        alloc.allocationSize = r.size;
+        alloc.memoryTypeIndex = i;
+        if (d.api.vkAllocateMemory(d.device, &alloc, nullptr, &out.memory) != VK_SUCCESS)
+            out.memory = VK_NULL_HANDLE;
+    }
+    if (!out.memory) {
+        destroy(out);
+        return internalError("no device memory for a depth image");
+    }
+    d.api.vkBindImageMemory(d.device, out.image, out.memory, 0);
+    auto view = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    view.image = out.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    if (Status s = check(d.api.vkCreateImageView(d.device, &view, nullptr, &out.view),
+                         "vkCreateImageView");
+        !s) {
+        destroy(out);
+        return s.error();
+    }
+    return out;
+}
+
+void VulkanHost::destroy(DepthImage& depth) const {
+    const Device& d = m->d;
+    if (depth.view) d.api.vkDestroyImageView(d.device, depth.view, nullptr);
+    if (depth.image) d.api.vkDestroyImage(d.device, depth.image, nullptr);
+    if (depth.memory) d.api.vkFreeMemory(d.device, depth.memory, nullptr);
+    depth = DepthImage{};
+}
+
+Result<VkPipeline> VulkanHost::Impl::depthPipeline(VkFormat format, int samples, bool reversedZ) {
+    const std::uint64_t key =
+        (std::uint64_t(format) << 8) | (std::uint64_t(samples) << 1) | (reversedZ ? 1u : 0u);
+    for (auto& [k, p] : depthPipelines)
+        if (k == key) return p;
+    auto module = d.makeShader(exported::vk_depth_vert_spv, exported::vk_depth_vert_spv_size);
+    if (!module) return module.error();
+    auto stage =
+        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stage.module = *module;
+    stage.pName = "main";
+    const VkVertexInputBindingDescription binding{0, 12, VK_VERTEX_INPUT_RATE_VERTEX};
+    const VkVertexInputAttributeDescription attribute{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+    auto input = make<VkPipelineVertexInputStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    input.vertexBindingDescriptionCount = input.vertexAttributeDescriptionCount = 1;
+    input.pVertexBindingDescriptions = &binding;
+    input.pVertexAttributeDescriptions = &attribute;
+    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    auto viewport = make<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = viewport.scissorCount = 1;
+    auto raster = make<VkPipelineRasterizationStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.lineWidth = 1.f;
+    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
+    auto depthState = make<VkPipelineDepthStencilStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+    depthState.depthTestEnable = depthState.depthWriteEnable = VK_TRUE;
+    depthState.depthCompareOp = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+    auto blend = make<VkPipelineColorBlendStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    auto dynamicState = make<VkPipelineDynamicStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+    dynamicState.dynamicStateCount = 2;
+    dynamicState.pDynamicStates = dynamic;
+    auto rendering =
+        make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    rendering.depthAttachmentFormat = format;
+    auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+    info.pNext = &rendering;
+    info.stageCount = 1;
+    info.pStages = &stage;
+    info.pVertexInputState = &input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depthState;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamicState;
+    info.layout = depthLayout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult r =
+        d.api.vkCreateGraphicsPipelines(d.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    d.api.vkDestroyShaderModule(d.device, *module, nullptr);
+    if (Status s = check(r, "vkCreateGraphicsPipelines"); !s) return s.error();
+    depthPipelines.push_back({key, pipeline});
+    return pipeline;
+}
+
+Status VulkanHost::drawDepth(const DepthImage& depth, const std::vector<float>& mesh,
+                             const float viewProjection[16], bool reversedZ) {
+    const Device& d = m->d;
+    auto pipeline = m->depthPipeline(depth.format, depth.samples, reversedZ);
+    if (!pipeline) return pipeline.error();
+    Buffer vertices;
+    if (!mesh.empty()) {
+        auto b = d.makeBuffer(VkDeviceSize(mesh.size() * sizeof(float)),
+                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true);
+        if (!b) return b.error();
+        vertices = *b;
+        std::memcpy(vertices.mapped, mesh.data(), mesh.size() * sizeof(float));
+    }
+    const bool stencil = depth.format == VK_FORMAT_D24_UNORM_S8_UINT ||
+                         depth.format == VK_FORMAT_D32_SFLOAT_S8_UINT ||
+                         depth.format == VK_FORMAT_D16_UNORM_S8_UINT;
+    const VkImageAspectFlags aspect =
+        VK_IMAGE_ASPECT_DEPTH_BIT | (stencil ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
+    Status s = submit([&](VkCommandBuffer cmd) {
+        layoutBarrier(d.api, cmd, depth.image, aspect, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                      VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+        auto attachment =
+            make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+        attachment.imageView = depth.view;
+        attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        attachment.clearValue.depthStencil = {reversedZ ? 0.f : 1.f, 0};
+        auto rendering = make<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+        rendering.renderArea = {{0, 0}, {std::uint32_t(depth.width), std::uint32_t(depth.height)}};
+        rendering.layerCount = 1;
+        rendering.pDepthAttachment = &attachment;
+        d.api.vkCmdBeginRendering(cmd, &rendering);
+        const VkViewport viewport{0, 0, float(depth.width), float(depth.height), 0, 1};
+        d.api.vkCmdSetViewport(cmd, 0, 1, &viewport);
+        d.api.vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+        d.api.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, *pipeline);
+        m->h.vkCmdPushConstants(cmd, m->depthLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, 64,
+                                viewProjection);
+        if (vertices.buffer) {
+            const VkDeviceSize offset = 0;
+            m->h.vkCmdBindVertexBuffers(cmd, 0, 1, &vertices.buffer, &offset);
+            d.api.vkCmdDraw(cmd, std::uint32_t(mesh.size() / 3), 1, 0, 0);
+        }
+        d.api.vkCmdEndRendering(cmd);
+        layoutBarrier(
+            d.api, cmd, depth.image, aspect, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    });
+    d.destroy(vertices);
+    return s;
+}
+
+int VulkanHost::validationMessages() const {
+    const std::lock_guard<std::mutex> guard(m->messages.lock);
+    return m->messages.count;
+}
+
+std::string VulkanHost::firstValidationMessage() const {
+    const std::lock_guard<std::mutex> guard(m->messages.lock);
+    return m->messages.first;
+}
+
+std::string VulkanHost::deviceName() const {
+    return m->d.properties.deviceName;
+}
+
+}  // namespace flarekit::vk

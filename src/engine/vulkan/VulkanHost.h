@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// A headless Vulkan application for flarekit's own use: the CLI's `--backend vulkan` and the
+// tests create one to give the engine API a device, as an application would (instance,
+// device with Vulkan 1.3's dynamic rendering, one graphics-and-compute queue, a command pool),
+// render a scene's depth into their own images and read images back. With validation on, the
+// Khronos validation layer checks every call and the host counts what it reports.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/vulkan/VulkanResources.h"
+#include "flarekit/Result.h"
+#include "flarekit/Scene.h"
+#include "flarekit/flarekit_vulkan.h"
+
+namespace flarekit::vk {
+
+//! A depth image of the host's, with its view (depth aspect) and format.
+struct DepthImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_D32_SFLOAT;
+    int samples = 1;
+    int width = 0, height = 0;
+};
+
+class VulkanHost {
+  public:
+    //! `validation`: enable VK_LAYER_KHRONOS_validation and count its messages (an error if
+    //! the layer is not installed).
+    static Result<std::unique_ptr<VulkanHost>> create(bool validation);
+    ~VulkanHost();
+
+    //! The device for fk_engine_create_vulkan.
+    fk_vulkan_device engineDevice(int framesInFlight) const;
+    const Device& device() const { return *m_device; }
+    //! Records with `record` into a fresh command buffer, submits it and waits.
+    Status submit(const std::function<void(VkCommandBuffer)>& record);
+    //! A colour image in COLOR_ATTACHMENT_OPTIMAL usable as attachment, transfer source and
+    //! destination, holding `rgba` (width x height x 4 floats, rows from the top).
+    Result<Image> colorImage(VkFormat format, int width, int height, const float* rgba);
+    //! Its pixels read back (R32G32B32A32_SFLOAT images), rows from the top.
+    Result<std::vector<float>> readColor(const Image& image, int width, int height);
+    Result<DepthImage> depthImage(int width, int height, int samples, VkFormat format);
+    void destroy(DepthImage& d) const;
+    //! Draws `mesh` (triangle positions, xyz each) with `viewProjection` (column-major) into
+    //! `depth` (cleared to `clearDepth`, compared LESS or GREATER for reversed Z), and leaves
+    //! it in DEPTH_STENCIL_READ_ONLY_OPTIMAL, its writes visible to compute shaders.
+    Status drawDepth(const DepthImage& depth, const std::vector<float>& mesh,
+                     const float viewProjection[16], bool reversedZ);
+
+    //! Validation messages of warning or error severity so far, and the first one's text.
+    int validationMessages() const;
+    std::string firstValidationMessage() const;
+    std::string deviceName() const;
+
+  private:
+    struct Impl;
+    explicit VulkanHost(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m;
+    const Device* m_device = nullptr;
+};
+
+}  // namespace flarekit::vk

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "engine/vulkan/VulkanResources.h"
+
+#include <cstring>
+
+namespace flarekit::vk {
+
+Status check(VkResult result, const char* call) {
+    if (result == VK_SUCCESS) return Ok{};
+    return internalError(std::string(call) + " failed: " + resultName(result));
+}
+
+Result<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& r,
+                                        VkMemoryPropertyFlags wanted) const {
+    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+        if ((r.memoryTypeBits & (1u << i)) == 0) continue;
+        if ((memory.memoryTypes[i].propertyFlags & wanted) != wanted) continue;
+        auto info = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+        info.allocationSize = r.size;
+        info.memoryTypeIndex = i;
+        VkDeviceMemory m = VK_NULL_HANDLE;
+        if (Status s =
+                check(api.vkAllocateMemory(device, &info, allocator, &m), "vkAllocateMemory");
+            !s)
+            return s.error();
+        return m;
+    }
+    return internalError("the device has no memory type with the properties the engine needs");
+}
+
+Result<Buffer> Device::makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage,
+                                  bool hostVisible) const {
+    Buffer b;
+    b.size = size;
+    auto info = make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    if (Status s = check(api.vkCreateBuffer(device, &info, allocator, &b.buffer), "vkCreateBuffer");
+        !s)
+        return s.error();
+    VkMemoryRequirements r{};
+    api.vkGetBufferMemoryRequirements(device, b.buffer, &r);
+    auto m = allocate(
+        r, hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                       : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    if (!m) {
+        destroy(b);
+        return m.error();
+    }
+    b.memory = *m;
+    Status s = check(api.vkBindBufferMemory(device, b.buffer, b.memory, 0), "vkBindBufferMemory");
+    if (s && hostVisible)
+        s = check(api.vkMapMemory(device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
+    if (!s) {
+        destroy(b);
+        return s.error();
+    }
+    return b;
+}
+
+Result<Image> Device::makeImage(VkFormat format, std::uint32_t width, std::uint32_t height,
+                                VkImageUsageFlags usage) const {
+    Image i;
+    auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (Status s = check(api.vkCreateImage(device, &info, allocator, &i.image), "vkCreateImage");
+        !s)
+        return s.error();
+    VkMemoryRequirements r{};
+    api.vkGetImageMemoryRequirements(device, i.image, &r);
+    auto m = allocate(r, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    if (!m) {
+        destroy(i);
+        return m.error();
+    }
+    i.memory = *m;
+    Status s = check(api.vkBindImageMemory(device, i.image, i.memory, 0), "vkBindImageMemory");
+    if (s) {
+        auto v = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+        v.image = i.image;
+        v.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        v.format = format;
+        v.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        s = check(api.vkCreateImageView(device, &v, allocator, &i.view), "vkCreateImageView");
+    }
+    if (!s) {
+        destroy(i);
+        return s.error();
+    }
+    return i;
+}
+
+Result<VkShaderModule> Device::makeShader(const unsigned char* spirv, std::size_t size) const {
+    // The embedded bytes carry no alignment promise; Vulkan reads 32-bit words.
+    std::vector<std::uint32_t> words(size / 4);
+    std::memcpy(words.data(), spirv, words.size() * 4);
+    auto info = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    info.codeSize = words.size() * 4;
+    info.pCode = words.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    if (Status s = check(api.vkCreateShaderModule(device, &info, allocator, &module),
+                         "vkCreateShaderModule");
+        !s)
+        return s.error();
+    return module;
+}
+
+Result<VkSampler> Device::makeSampler(VkFilter filter) const {
+    auto info = make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    info.magFilter = info.minFilter = filter;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    // A clear border: sprites fade to nothing past their edge, as on GL.
+    info.addressModeU = info.addressModeV = info.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    info.maxLod = 0;
+    VkSampler s = VK_NULL_HANDLE;
+    if (Status st = check(api.vkCreateSampler(device, &info, allocator, &s), "vkCreateSampler");
+        !st)
+        return st.error();
+    return s;
+}
+
+void Device::destroy(Buffer& b) const {
+    if (b.buffer) api.vkDestroyBuffer(device, b.buffer, allocator);
+    if (b.memory) api.vkFreeMemory(device, b.memory, allocator);  // unmaps too
+    b = Buffer{};
+}
+
+void Device::destroy(Image& i) const {
+    if (i.view) api.vkDestroyImageView(device, i.view, allocator);
+    if (i.image) api.vkDestroyImage(device, i.image, allocator);
+    if (i.memory) api.vkFreeMemory(device, i.memory, allocator);
+    i = Image{};
+}
+
+}  // namespace flarekit::vk

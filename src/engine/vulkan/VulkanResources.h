@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Vulkan backend's buffers, images and the one-time objects made from them (shader
+// modules, samplers), each with the device memory it owns, created and destroyed through the
+// application's device and allocator.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/vulkan/VulkanApi.h"
+#include "flarekit/Result.h"
+
+namespace flarekit::vk {
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;  //!< host-visible buffers stay mapped
+    VkDeviceSize size = 0;
+};
+
+struct Image {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+//! The device and what creating objects on it needs.
+struct Device {
+    Api api;
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    const VkAllocationCallbacks* allocator = nullptr;
+    VkPhysicalDeviceMemoryProperties memory{};
+    VkPhysicalDeviceProperties properties{};
+
+    //! A buffer of `usage`; host-visible and mapped (coherent) or device-local.
+    Result<Buffer> makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible) const;
+    //! A single-sample 2D colour image of `format` with a view of it.
+    Result<Image> makeImage(VkFormat format, std::uint32_t width, std::uint32_t height,
+                            VkImageUsageFlags usage) const;
+    Result<VkShaderModule> makeShader(const unsigned char* spirv, std::size_t size) const;
+    Result<VkSampler> makeSampler(VkFilter filter) const;
+    void destroy(Buffer& b) const;
+    void destroy(Image& i) const;
+
+  private:
+    Result<VkDeviceMemory> allocate(const VkMemoryRequirements& r,
+                                    VkMemoryPropertyFlags wanted) const;
+};
+
+//! A zeroed Vulkan structure of type `type` (its sType set), for filling field by field.
+template <class T>
+T make(VkStructureType type) {
+    T v{};
+    v.sType = type;
+    return v;
+}
+
+//! `call`'s name and result as an internal error (a driver refusal), or Ok.
+Status check(VkResult result, const char* call);
+
+}  // namespace flarekit::vk
