@@ -5,6 +5,8 @@
 #include <map>
 #include <memory>
 
+#include "engine/EngineRunLights.h"
+#include "engine/vulkan/VulkanRun.h"
 #include "flarekit/flarekit.h"
 #include "flarekit/gl/GpuTimer.h"
 #include "flarekit/gl/HeadlessGl.h"
@@ -17,26 +19,8 @@ struct EngineDeleter {
 };
 }  // namespace
 
-Result<EngineRun> runEngineScene(const Scene& scene, const EngineRunOptions& o) {
-    auto context = gl::createFrameContext(scene.width, scene.height, o.render.msaaSamples,
-                                          o.source + ": image");
-    if (!context) return context.error();
-    auto renderer = SceneRenderer::create(scene, o.render);
-    if (!renderer) return renderer.error();
-    if (Status s = renderer->draw(scene); !s) return s.error();
-    const std::size_t count = sceneLights(scene).size();
-    std::unique_ptr<fk_engine, EngineDeleter> engine(fk_engine_create(int(count)));
-    if (!engine) return internalError(fk_error(nullptr));
-    fk_engine* e = engine.get();
-    if (fk_engine_set_method(e, o.method.c_str()) < 0 ||
-        fk_engine_set_samples(e, o.measure.samplesPerSide) < 0 ||
-        fk_engine_set_tile_threshold(e, o.measure.tileBelowSamples) < 0)
-        return invalidInput(fk_error(e));
-    // The sun maps (every light with texture-mask, the small ones with compute) get the
-    // scene's objects from the occluder callback, as an application's would.
-    auto occluders = SceneOccluders::create(scene);
-    if (!occluders) return occluders.error();
-    fk_engine_set_occluder_callback(e, &SceneOccluders::draw, occluders->get());
+Result<std::vector<fk_light>> sceneEngineLights(fk_engine* e, const Scene& scene,
+                                                const EngineRunOptions& o) {
     // Each preset named by a light, loaded once (only when flares are drawn); the first light
     // whose preset fails to load names itself.
     std::map<std::string, int> ids;
@@ -57,6 +41,33 @@ Result<EngineRun> runEngineScene(const Scene& scene, const EngineRunOptions& o) 
         const auto it = ids.find(name);
         return it == ids.end() ? -1 : it->second;
     });
+    return lights;
+}
+
+Result<EngineRun> runEngineScene(const Scene& scene, const EngineRunOptions& o) {
+    auto context = gl::createFrameContext(scene.width, scene.height, o.render.msaaSamples,
+                                          o.source + ": image");
+    if (!context) return context.error();
+    auto renderer = SceneRenderer::create(scene, o.render);
+    if (!renderer) return renderer.error();
+    if (Status s = renderer->draw(scene); !s) return s.error();
+    if (o.backend == "vulkan") return vk::runEngineSceneOnVulkan(scene, o, *renderer);
+    const std::size_t count = sceneLights(scene).size();
+    std::unique_ptr<fk_engine, EngineDeleter> engine(fk_engine_create(int(count)));
+    if (!engine) return internalError(fk_error(nullptr));
+    fk_engine* e = engine.get();
+    if (fk_engine_set_method(e, o.method.c_str()) < 0 ||
+        fk_engine_set_samples(e, o.measure.samplesPerSide) < 0 ||
+        fk_engine_set_tile_threshold(e, o.measure.tileBelowSamples) < 0)
+        return invalidInput(fk_error(e));
+    // The sun maps (every light with texture-mask, the small ones with compute) get the
+    // scene's objects from the occluder callback, as an application's would.
+    auto occluders = SceneOccluders::create(scene);
+    if (!occluders) return occluders.error();
+    fk_engine_set_occluder_callback(e, &SceneOccluders::draw, occluders->get());
+    auto lightList = sceneEngineLights(e, scene, o);
+    if (!lightList) return lightList.error();
+    const std::vector<fk_light>& lights = *lightList;
     const fk_frame frame = engineFrame(scene, *renderer);
     if (fk_engine_set_transmittance(e, 0, engineTransmittance(*renderer)) < 0)
         return internalError(fk_error(e));

@@ -32,6 +32,7 @@ Result<VisibilityResult> engineLightsVisibility(const Scene& scene,
     o.render = a.render;
     o.render.shadows = false;
     o.flares = false;
+    o.backend = a.backend;
     const auto start = Clock::now();
     auto run = runEngineScene(scene, o);
     if (!run) return run.error();
@@ -47,6 +48,15 @@ Result<VisibilityResult> gpuSceneVisibility(const Scene& scene, const SceneVisib
                                             int* latencyFrames) {
     int latency = 0;
     const std::vector<SceneLight> lights = sceneLights(scene);
+    if (a.backend == "vulkan") {
+        if (a.method != "compute") {
+            return invalidInput(
+                "--backend vulkan: expected --method compute (the Vulkan "
+                "backend's batched pass), got " +
+                a.method);
+        }
+        return engineLightsVisibility(scene, a);
+    }
     if ((a.method == "compute" || a.method == "texture-mask") &&
         (lights.size() > 1 || lights.front().type != LightType::Directional))
         return engineLightsVisibility(scene, a);

@@ -40,9 +40,11 @@ inline std::string slurp(const std::string& path) {
     return ss.str();
 }
 
-inline CliResult runCli(const std::vector<std::string>& args) {
+//! `environment`: NAME=value words set for the run (env(1)), e.g. to hide the Vulkan driver.
+inline CliResult runCli(const std::vector<std::string>& args, const std::string& environment = "") {
     static TempDir logs;
-    std::string cmd = quote(FLAREKIT_CLI);
+    std::string cmd = environment.empty() ? std::string() : "env " + environment + " ";
+    cmd.append(quote(FLAREKIT_CLI));
     // append() rather than "literal" + std::string: GCC 12 gives a false -Wrestrict on the latter.
     for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd.append(" >")

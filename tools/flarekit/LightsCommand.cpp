@@ -15,7 +15,7 @@ namespace flarekit::cli {
 
 namespace {
 struct LightsArgs {
-    std::string scene, out, method = "compute", tonemap = "aces";
+    std::string scene, out, method = "compute", tonemap = "aces", backend = "gl";
     ToneParams tone;
     RenderOptions render;
     EngineMeasureSettings measure;
@@ -53,6 +53,7 @@ int runLights(const LightsArgs& a) {
         o.render = a.render;
         o.render.shadows = !a.noShadows;
         o.measure = a.measure;
+        o.backend = a.backend;
         auto run = runEngine(*scene, o);
         if (!run) return run.error();
         printReport(a, *run);
@@ -80,6 +81,11 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::IsMember(choiceNames(kEngineMethodNames)))
         ->capture_default_str();
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);
+    cmd->add_option("--backend", args->backend,
+                    "the engine API's backend: gl, or vulkan (the scene's depth drawn again by a "
+                    "Vulkan device; needs a Vulkan 1.3 driver)")
+        ->check(CLI::IsMember({"gl", "vulkan"}))
+        ->capture_default_str();
     addParamOption<EngineMeasureSettings>(cmd, kEngineMeasureParams, "samples", args->measure);
     addParamOption<EngineMeasureSettings>(cmd, kEngineMeasureParams, "tile-below", args->measure);
     addParamOption<ToneParams>(cmd, kToneParams, "exposure", args->tone);

@@ -20,7 +20,7 @@ namespace flarekit::cli {
 
 namespace {
 struct VisibilityArgs {
-    std::string scene, method = "raycast", variant = "circle";
+    std::string scene, method = "raycast", variant = "circle", backend = "gl";
     RaycastOptions raycast;
     RenderOptions render;
     bool json = false;
@@ -33,6 +33,7 @@ Result<VisibilityResult> runGpu(const VisibilityArgs& a, const Scene& scene, int
     o.method = a.method;
     o.methodOptions.textureMaskVariant = a.variant;
     o.render = a.render;
+    o.backend = a.backend;
     return gpuSceneVisibility(scene, o, &latency);
 }
 #else
@@ -47,6 +48,9 @@ int runVisibility(const VisibilityArgs& a) {
     int latency = 0;
     Result<VisibilityResult> r = internalError("unreached");
     if (a.method == "raycast") {
+        if (a.backend != "gl")
+            return report(invalidInput("--backend " + a.backend +
+                                       ": expected --method compute (raycast runs on the CPU)"));
         r = raycastVisibility(*scene, a.raycast);
     } else {
         r = runGpu(a, *scene, latency);
@@ -90,6 +94,11 @@ void addVisibilityCommand(CLI::App& app, int& exitCode) {
            "--variant", args->variant,
            "texture-mask sampling: square (16x16, 256 points), circle, bilinear (64 points)")
         ->check(CLI::IsMember(choiceNames(kTextureMaskVariantNames)))
+        ->capture_default_str();
+    cmd->add_option("--backend", args->backend,
+                    "the engine API's backend for --method compute: gl or vulkan (needs a "
+                    "Vulkan 1.3 driver)")
+        ->check(CLI::IsMember({"gl", "vulkan"}))
         ->capture_default_str();
     addParamOptions<RaycastOptions>(cmd, kRaycastParams, args->raycast);
     addParamOptions<RenderOptions>(cmd, kRenderParams, args->render);

@@ -20,6 +20,9 @@ namespace flarekit {
 struct EngineRunOptions {
     std::string source;  //!< the scene file, for messages
     std::string method = "compute";
+    //! "gl", or "vulkan": the depth drawn again by a Vulkan host and every light measured and
+    //! drawn through the Vulkan backend (compute only).
+    std::string backend = "gl";
     RenderOptions render;
     EngineMeasureSettings measure;  //!< kEngineMeasureParams
     bool flares = true;             //!< draw the flares and read the frame back

@@ -67,7 +67,8 @@ struct SceneVisibilityOptions {
     std::string source;  //!< the scene file, for messages
     std::string method;  //!< a GPU method (gpuVisibilityMethods)
     GpuVisibilityOptions methodOptions;
-    RenderOptions render;  //!< the scene pass (shadows are off: visibility reads depth only)
+    RenderOptions render;        //!< the scene pass (shadows are off: visibility reads depth only)
+    std::string backend = "gl";  //!< "vulkan": compute through the Vulkan backend
 };
 
 //! Every light of `scene` measured by a GPU method in its own headless context. The seeds'

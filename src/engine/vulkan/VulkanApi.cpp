@@ -55,26 +55,27 @@ Result<Api> loadApi(PFN_vkGetInstanceProcAddr gipa, VkInstance instance, VkDevic
     return a;
 }
 
-const char* resultName(VkResult r) {
+std::string resultName(VkResult r) {
     switch (r) {
-        case VK_SUCCESS:
-            return "VK_SUCCESS";
-        case VK_ERROR_OUT_OF_HOST_MEMORY:
-            return "VK_ERROR_OUT_OF_HOST_MEMORY";
-        case VK_ERROR_OUT_OF_DEVICE_MEMORY:
-            return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-        case VK_ERROR_INITIALIZATION_FAILED:
-            return "VK_ERROR_INITIALIZATION_FAILED";
-        case VK_ERROR_DEVICE_LOST:
-            return "VK_ERROR_DEVICE_LOST";
-        case VK_ERROR_FEATURE_NOT_PRESENT:
-            return "VK_ERROR_FEATURE_NOT_PRESENT";
-        case VK_ERROR_FORMAT_NOT_SUPPORTED:
-            return "VK_ERROR_FORMAT_NOT_SUPPORTED";
-        case VK_ERROR_OUT_OF_POOL_MEMORY:
-            return "VK_ERROR_OUT_OF_POOL_MEMORY";
+#define FLAREKIT_VK_RESULT(name) \
+    case name:                   \
+        return #name;
+        FLAREKIT_VK_RESULT(VK_SUCCESS)
+        FLAREKIT_VK_RESULT(VK_ERROR_OUT_OF_HOST_MEMORY)
+        FLAREKIT_VK_RESULT(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+        FLAREKIT_VK_RESULT(VK_ERROR_INITIALIZATION_FAILED)
+        FLAREKIT_VK_RESULT(VK_ERROR_DEVICE_LOST)
+        FLAREKIT_VK_RESULT(VK_ERROR_FEATURE_NOT_PRESENT)
+        FLAREKIT_VK_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED)
+        FLAREKIT_VK_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+        FLAREKIT_VK_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER)
+        FLAREKIT_VK_RESULT(VK_ERROR_LAYER_NOT_PRESENT)
+        FLAREKIT_VK_RESULT(VK_ERROR_EXTENSION_NOT_PRESENT)
+        FLAREKIT_VK_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
+        FLAREKIT_VK_RESULT(VK_ERROR_FRAGMENTED_POOL)
+#undef FLAREKIT_VK_RESULT
         default:
-            return "a VkResult error";
+            return "VkResult " + std::to_string(int(r));
     }
 }
 

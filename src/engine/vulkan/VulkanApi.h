@@ -9,6 +9,8 @@
 #endif
 #include <vulkan/vulkan.h>
 
+#include <string>
+
 #include "flarekit/Result.h"
 
 namespace flarekit::vk {
@@ -81,6 +83,6 @@ Result<Api> loadApi(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance in
 PFN_vkGetInstanceProcAddr systemLoader(std::string* why);
 
 //! A VkResult as its name, for messages.
-const char* resultName(VkResult r);
+std::string resultName(VkResult r);
 
 }  // namespace flarekit::vk

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <mutex>
 
+#include "core/HalfFloat.h"
 #include "flarekit_exported_shaders.h"
 
 namespace flarekit::vk {
@@ -303,6 +304,43 @@ Result<Image> VulkanHost::colorImage(VkFormat format, int width, int height, con
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                       VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    });
+    d.destroy(*staging);
+    if (!s) {
+        d.destroy(*image);
+        return s.error();
+    }
+    return *image;
+}
+
+Result<Image> VulkanHost::sampledImage(int width, int height, const float* rgba) {
+    const Device& d = m->d;
+    auto image =
+        d.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, std::uint32_t(width), std::uint32_t(height),
+                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    if (!image) return image.error();
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    auto staging = d.makeBuffer(VkDeviceSize(pixels) * 8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    if (!staging) {
+        d.destroy(*image);
+        return staging.error();
+    }
+    floatsToHalf(rgba, pixels, 4, static_cast<std::uint16_t*>(staging->mapped));
+    const VkImage target = image->image;
+    Status s = submit([&](VkCommandBuffer cmd) {
+        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {std::uint32_t(width), std::uint32_t(height), 1};
+        d.api.vkCmdCopyBufferToImage(cmd, staging->buffer, target,
+                                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT);
     });
     d.destroy(*staging);
     if (!s) {

@@ -43,6 +43,9 @@ class VulkanHost {
     //! A colour image in COLOR_ATTACHMENT_OPTIMAL usable as attachment, transfer source and
     //! destination, holding `rgba` (width x height x 4 floats, rows from the top).
     Result<Image> colorImage(VkFormat format, int width, int height, const float* rgba);
+    //! A sampled RGBA16F image in SHADER_READ_ONLY_OPTIMAL holding `rgba` (rows from the top),
+    //! visible to compute shaders: the application's transmittance, say.
+    Result<Image> sampledImage(int width, int height, const float* rgba);
     //! Its pixels read back (R32G32B32A32_SFLOAT images), rows from the top.
     Result<std::vector<float>> readColor(const Image& image, int width, int height);
     Result<DepthImage> depthImage(int width, int height, int samples, VkFormat format);
