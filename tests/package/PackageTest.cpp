@@ -87,6 +87,63 @@ class Xvfb {
 
 }  // namespace
 
+TEST(Package, AVulkanApplicationBuildsAgainstThePackageAndMatchesTheRayCasterUnderValidation) {
+    // examples/embed-vk: its own instance, device, 4x MSAA reversed-Z depth image and frames in
+    // flight; flarekit records into its command buffers, with the validation layer on.
+    TempDir dir;
+    const std::string prefix = dir.file("prefix"), build = dir.file("embed-vk"),
+                      log = dir.file("log");
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --install " + FLAREKIT_BUILD_DIR + " --prefix " +
+                      prefix,
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " -S " + FLAREKIT_VK_EXAMPLE_DIR + " -B " + build +
+                      " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + prefix,
+                  log),
+              0)
+        << slurp(log);
+    ASSERT_EQ(run(std::string(FLAREKIT_CMAKE) + " --build " + build, log), 0) << slurp(log);
+    const std::string scene = dir.file("city.json"), coverage = dir.file("coverage.json"),
+                      rays = dir.file("rays.json"), frame = dir.file("frame.ppm");
+    ASSERT_EQ(run(build + "/embed-vk --validate --frames 3 --out " + frame + " --scene-json " +
+                      scene + " --coverage-json " + coverage,
+                  log),
+              0)
+        << slurp(log);
+    EXPECT_NE(slurp(log).find("255 lights"), std::string::npos) << slurp(log);
+    EXPECT_EQ(slurp(log).find("validation"), std::string::npos) << slurp(log);
+    // "P6\n1280 720\n255\n" and the RGB bytes.
+    EXPECT_EQ(std::filesystem::file_size(frame), std::size_t(16 + 1280 * 720 * 3));
+    ASSERT_EQ(run(std::string(FLAREKIT_CLI) + " visibility " + scene +
+                      " --method raycast --samples 64 --json",
+                  rays),
+              0)
+        << slurp(rays);
+    const auto sceneJson = nlohmann::json::parse(slurp(scene));
+    const auto engine = nlohmann::json::parse(slurp(coverage))["coverage"];
+    const auto truth = nlohmann::json::parse(slurp(rays))["lights"];
+    ASSERT_EQ(engine.size(), truth.size());
+    const auto& eye = sceneJson["camera"]["position"];
+    const double focalPx = double(sceneJson["image"]["height"]) / 2 /
+                           std::tan(double(sceneJson["camera"]["fov_y_deg"]) * M_PI / 360);
+    int compared = 0, hidden = 0;
+    for (std::size_t i = 1; i < engine.size(); ++i) {  // the lamps
+        const auto& p = sceneJson["lights"][i]["position"];
+        const double d = std::hypot(double(p[0]) - double(eye[0]), double(p[1]) - double(eye[1]),
+                                    double(p[2]) - double(eye[2]));
+        const double radiusPx = focalPx * double(sceneJson["lights"][i]["radius"]) / d;
+        if (double(truth[i]["in_frame"]) < 1 || radiusPx < kMinRadiusPx) continue;
+        const double t = truth[i]["coverage"];
+        EXPECT_NEAR(double(engine[i]), t, depthTolerance(radiusPx))
+            << "light " << i << ", " << radiusPx << " px";
+        ++compared;
+        hidden += t == 0 ? 1 : 0;
+    }
+    EXPECT_GE(compared, 40);
+    EXPECT_GE(hidden, 10);
+}
+
 TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCaster) {
     TempDir dir;
     const std::string prefix = dir.file("prefix"), build = dir.file("embed"), log = dir.file("log");

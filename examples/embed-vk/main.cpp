@@ -1,0 +1,788 @@
+// SPDX-License-Identifier: Apache-2.0
+// embed-vk: a small Vulkan application with its own instance, device, pipelines, city of street
+// lamps, reversed-Z 4x MSAA depth image and frame loop (two frames in flight), which gets lens
+// flares from flarekit through the C API alone: each frame it records flarekit's occlusion
+// pass on its depth image (fk_engine_record_occlusion) and every light's flare into its HDR
+// colour (fk_engine_record_draw) into its own command buffer, then its own tone map.
+//   embed-vk [--frames N] [--size WxH] [--out frame.ppm] [--scene-json S] [--coverage-json C]
+//            [--validate]
+// Headless: it renders N frames (default 3) and writes the last to --out (and the last frame's
+// world as a flarekit scene, and flarekit's coverage of each light, for `flarekit visibility`
+// to judge). --validate turns on the Khronos validation layer and fails (exit 1) on any
+// message it reports.
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../embed-gl/City.h"  // the same city as embed-gl
+#include "embed_vk_shaders.h"  // the SPIR-V of shaders/ (glslc at build time)
+#include "flarekit/flarekit_vulkan.h"
+
+namespace {
+
+using Mat = std::array<float, 16>;  // column-major
+
+int fail(const char* what, VkResult r = VK_SUCCESS) {
+    std::fprintf(stderr, "embed-vk: %s%s%d%s\n", what, r ? " (VkResult " : "", int(r),
+                 r ? ")" : "");
+    std::exit(1);
+}
+
+void check(VkResult r, const char* what) {
+    if (r != VK_SUCCESS) fail(what, r);
+}
+
+Mat lookAt(V3 eye, V3 target) {
+    V3 f{target.x - eye.x, target.y - eye.y, target.z - eye.z};
+    const float fl = std::sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+    f = {f.x / fl, f.y / fl, f.z / fl};
+    V3 s{-f.z, 0.f, f.x};  // f x up, up = +y
+    const float sl = std::sqrt(s.x * s.x + s.z * s.z);
+    s = {s.x / sl, 0.f, s.z / sl};
+    const V3 u{s.y * f.z - s.z * f.y, s.z * f.x - s.x * f.z, s.x * f.y - s.y * f.x};
+    const float ts = s.x * eye.x + s.y * eye.y + s.z * eye.z,
+                tu = u.x * eye.x + u.y * eye.y + u.z * eye.z,
+                tf = f.x * eye.x + f.y * eye.y + f.z * eye.z;
+    // clang-format off
+    return {s.x, u.x, -f.x, 0,
+            s.y, u.y, -f.y, 0,
+            s.z, u.z, -f.z, 0,
+            -ts, -tu,  tf,  1};
+    // clang-format on
+}
+
+//! Reversed-Z with an infinite far plane (near at depth 1, infinity at 0) and Vulkan's clip
+//! space (y down: the y scale is negative).
+Mat reversedInfinitePerspective(float fovYDeg, float aspect, float nearPlane) {
+    const float f = 1.f / std::tan(fovYDeg * 3.14159265f / 360.f);
+    return {f / aspect, 0, 0, 0, 0, -f, 0, 0, 0, 0, 0, -1, 0, 0, nearPlane, 0};
+}
+
+Mat multiply(const Mat& a, const Mat& b) {
+    Mat r{};
+    for (int c = 0; c < 4; ++c)
+        for (int row = 0; row < 4; ++row)
+            for (int k = 0; k < 4; ++k) r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
+    return r;
+}
+
+struct Vertex {
+    float p[3], n[3], c[4];
+};
+
+void pushBox(std::vector<Vertex>& out, const CityBox& b) {
+    const float lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            const float uv[4][2] = {{lo[u], lo[v]}, {hi[u], lo[v]}, {hi[u], hi[v]}, {lo[u], hi[v]}};
+            for (int k : {0, 1, 2, 0, 2, 3}) {
+                Vertex x{};
+                x.p[axis] = side ? hi[axis] : lo[axis];
+                x.p[u] = uv[k][0], x.p[v] = uv[k][1];
+                x.n[axis] = side ? 1.f : -1.f;
+                x.c[0] = b.color.x, x.c[1] = b.color.y, x.c[2] = b.color.z;
+                out.push_back(x);
+            }
+        }
+}
+
+//! A lamp's bulb: a 12 x 8 sphere of kBulbShare of the light's radius (inside the light).
+void pushBulb(std::vector<Vertex>& out, const Lamp& l) {
+    const float r = l.radius * kBulbShare, pi = 3.14159265f;
+    const auto at = [&](int slice, int stack) {
+        const float theta = pi * float(stack) / 8.f, phi = 2.f * pi * float(slice) / 12.f;
+        Vertex x{};
+        const float d[3] = {std::sin(theta) * std::cos(phi), std::cos(theta),
+                            std::sin(theta) * std::sin(phi)};
+        for (int i = 0; i < 3; ++i) x.n[i] = d[i];
+        x.p[0] = l.position.x + r * d[0], x.p[1] = l.position.y + r * d[1],
+        x.p[2] = l.position.z + r * d[2];
+        x.c[0] = 2500.f, x.c[1] = 1875.f, x.c[2] = 1125.f, x.c[3] = 1.f;
+        return x;
+    };
+    for (int st = 0; st < 8; ++st)
+        for (int sl = 0; sl < 12; ++sl) {
+            const Vertex a = at(sl, st), b = at(sl + 1, st), c = at(sl + 1, st + 1),
+                         d = at(sl, st + 1);
+            for (const Vertex& v : {a, b, c, a, c, d}) out.push_back(v);
+        }
+}
+
+struct Options {
+    int frames = 3, width = 1280, height = 720;
+    std::string out = "embed-vk.ppm", sceneJson, coverageJson;
+    bool validate = false;
+};
+
+bool parse(int argc, char** argv, Options& o) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool more = i + 1 < argc;
+        if (a == "--frames" && more)
+            o.frames = std::atoi(argv[++i]);
+        else if (a == "--size" && more) {
+            if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2) return false;
+        } else if (a == "--out" && more)
+            o.out = argv[++i];
+        else if (a == "--scene-json" && more)
+            o.sceneJson = argv[++i];
+        else if (a == "--coverage-json" && more)
+            o.coverageJson = argv[++i];
+        else if (a == "--validate")
+            o.validate = true;
+        else
+            return false;
+    }
+    return o.frames >= 1 && o.width >= 16 && o.height >= 16 && o.width <= 8192 && o.height <= 8192;
+}
+
+int g_validationMessages = 0;
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidation(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                            VkDebugUtilsMessageTypeFlagsEXT,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                            void*) {
+    ++g_validationMessages;
+    std::fprintf(stderr, "embed-vk: validation: %s\n", data->pMessage);
+    return VK_FALSE;
+}
+
+//! The application's device: instance, the first device with a graphics queue, Vulkan 1.3's
+//! dynamic rendering on.
+struct Gpu {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    uint32_t family = 0;
+    VkQueue queue = VK_NULL_HANDLE;
+    VkPhysicalDeviceMemoryProperties memory{};
+
+    explicit Gpu(bool validate) {
+        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+        app.pApplicationName = "embed-vk";
+        app.apiVersion = VK_API_VERSION_1_3;
+        VkDebugUtilsMessengerCreateInfoEXT messages{
+            VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+        messages.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+        messages.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+        messages.pfnUserCallback = &onValidation;
+        const char* layer = "VK_LAYER_KHRONOS_validation";
+        const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+        VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+        info.pApplicationInfo = &app;
+        if (validate) {
+            info.pNext = &messages;
+            info.enabledLayerCount = 1;
+            info.ppEnabledLayerNames = &layer;
+            info.enabledExtensionCount = 1;
+            info.ppEnabledExtensionNames = &extension;
+        }
+        check(vkCreateInstance(&info, nullptr, &instance), "no Vulkan 1.3 instance");
+        if (validate) {
+            auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+            if (create) create(instance, &messages, nullptr, &messenger);
+        }
+        uint32_t count = 0;
+        vkEnumeratePhysicalDevices(instance, &count, nullptr);
+        std::vector<VkPhysicalDevice> devices(count);
+        vkEnumeratePhysicalDevices(instance, &count, devices.data());
+        for (VkPhysicalDevice p : devices) {
+            uint32_t n = 0;
+            vkGetPhysicalDeviceQueueFamilyProperties(p, &n, nullptr);
+            std::vector<VkQueueFamilyProperties> families(n);
+            vkGetPhysicalDeviceQueueFamilyProperties(p, &n, families.data());
+            for (uint32_t f = 0; f < n && !physical; ++f)
+                if ((families[f].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
+                    (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT))
+                    physical = p, family = f;
+        }
+        if (!physical) fail("no Vulkan device with a graphics queue");
+        vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+        const float priority = 1.f;
+        VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+        queueInfo.queueFamilyIndex = family;
+        queueInfo.queueCount = 1;
+        queueInfo.pQueuePriorities = &priority;
+        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        v13.dynamicRendering = VK_TRUE;  // flarekit's draw begins its own rendering
+        VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        deviceInfo.pNext = &v13;
+        deviceInfo.queueCreateInfoCount = 1;
+        deviceInfo.pQueueCreateInfos = &queueInfo;
+        check(vkCreateDevice(physical, &deviceInfo, nullptr, &device), "no Vulkan 1.3 device");
+        vkGetDeviceQueue(device, family, 0, &queue);
+    }
+    ~Gpu() {
+        vkDestroyDevice(device, nullptr);
+        if (messenger) {
+            auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+            if (destroy) destroy(instance, messenger, nullptr);
+        }
+        vkDestroyInstance(instance, nullptr);
+    }
+
+    VkDeviceMemory allocate(VkMemoryRequirements r, VkMemoryPropertyFlags wanted) const {
+        for (uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+            if (!(r.memoryTypeBits & (1u << i)) ||
+                (memory.memoryTypes[i].propertyFlags & wanted) != wanted)
+                continue;
+            VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+            info.allocationSize = r.size;
+            info.memoryTypeIndex = i;
+            VkDeviceMemory m = VK_NULL_HANDLE;
+            check(vkAllocateMemory(device, &info, nullptr, &m), "vkAllocateMemory");
+            return m;
+        }
+        fail("no memory type");
+        return VK_NULL_HANDLE;
+    }
+};
+
+struct Target {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+Target makeTarget(const Gpu& g, VkFormat format, int w, int h, VkSampleCountFlagBits samples,
+                  VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+    Target t;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {uint32_t(w), uint32_t(h), 1};
+    info.mipLevels = info.arrayLayers = 1;
+    info.samples = samples;
+    info.usage = usage;
+    check(vkCreateImage(g.device, &info, nullptr, &t.image), "vkCreateImage");
+    VkMemoryRequirements r;
+    vkGetImageMemoryRequirements(g.device, t.image, &r);
+    t.memory = g.allocate(r, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    vkBindImageMemory(g.device, t.image, t.memory, 0);
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = t.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    check(vkCreateImageView(g.device, &view, nullptr, &t.view), "vkCreateImageView");
+    return t;
+}
+
+void destroy(const Gpu& g, Target& t) {
+    vkDestroyImageView(g.device, t.view, nullptr);
+    vkDestroyImage(g.device, t.image, nullptr);
+    vkFreeMemory(g.device, t.memory, nullptr);
+}
+
+void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = srcAccess;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+VkShaderModule shader(const Gpu& g, const unsigned char* code, size_t size) {
+    std::vector<uint32_t> words(size / 4);
+    std::memcpy(words.data(), code, size);
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = size;
+    info.pCode = words.data();
+    VkShaderModule m = VK_NULL_HANDLE;
+    check(vkCreateShaderModule(g.device, &info, nullptr, &m), "vkCreateShaderModule");
+    return m;
+}
+
+//! A graphics pipeline for dynamic rendering: `vert` + `frag`, the scene's vertex layout or
+//! none, one colour attachment of `color` and optionally a depth one (reversed-Z GREATER).
+VkPipeline pipeline(const Gpu& g, VkPipelineLayout layout, VkShaderModule vert, VkShaderModule frag,
+                    bool sceneVertices, VkFormat color, VkFormat depth,
+                    VkSampleCountFlagBits samples) {
+    VkPipelineShaderStageCreateInfo stages[2] = {
+        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT, stages[0].module = vert, stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, stages[1].module = frag,
+    stages[1].pName = "main";
+    const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    const VkVertexInputAttributeDescription attributes[3] = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12},
+        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 24}};
+    VkPipelineVertexInputStateCreateInfo input{
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    if (sceneVertices) {
+        input.vertexBindingDescriptionCount = 1, input.pVertexBindingDescriptions = &binding;
+        input.vertexAttributeDescriptionCount = 3, input.pVertexAttributeDescriptions = attributes;
+    }
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.lineWidth = 1.f;
+    VkPipelineMultisampleStateCreateInfo multisample{
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = samples;
+    VkPipelineDepthStencilStateCreateInfo depthState{
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depthState.depthTestEnable = depthState.depthWriteEnable = sceneVertices;
+    depthState.depthCompareOp = VK_COMPARE_OP_GREATER;  // reversed Z
+    VkPipelineColorBlendAttachmentState write{};
+    write.colorWriteMask = 0xf;
+    VkPipelineColorBlendStateCreateInfo blend{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = 1;
+    blend.pAttachments = &write;
+    const VkDynamicState dynamic[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamicState{
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamicState.dynamicStateCount = 2;
+    dynamicState.pDynamicStates = dynamic;
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &color;
+    rendering.depthAttachmentFormat = depth;
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.pNext = &rendering;
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depthState;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamicState;
+    info.layout = layout;
+    VkPipeline p = VK_NULL_HANDLE;
+    check(vkCreateGraphicsPipelines(g.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
+          "vkCreateGraphicsPipelines");
+    return p;
+}
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+};
+
+Buffer hostBuffer(const Gpu& g, VkDeviceSize size, VkBufferUsageFlags usage) {
+    Buffer b;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    check(vkCreateBuffer(g.device, &info, nullptr, &b.buffer), "vkCreateBuffer");
+    VkMemoryRequirements r;
+    vkGetBufferMemoryRequirements(g.device, b.buffer, &r);
+    b.memory =
+        g.allocate(r, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    vkBindBufferMemory(g.device, b.buffer, b.memory, 0);
+    vkMapMemory(g.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
+    return b;
+}
+
+void destroy(const Gpu& g, Buffer& b) {
+    vkDestroyBuffer(g.device, b.buffer, nullptr);
+    vkFreeMemory(g.device, b.memory, nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    if (!parse(argc, argv, o)) {
+        std::fprintf(stderr,
+                     "usage: embed-vk [--frames N] [--size WxH] [--out F.ppm] [--scene-json S] "
+                     "[--coverage-json C] [--validate]\n");
+        return 2;
+    }
+    Gpu g(o.validate);
+    const int w = o.width, h = o.height;
+    constexpr int kFramesInFlight = 2;
+    constexpr VkSampleCountFlagBits kMsaa = VK_SAMPLE_COUNT_4_BIT;
+    constexpr VkFormat kHdr = VK_FORMAT_R16G16B16A16_SFLOAT, kDepth = VK_FORMAT_D32_SFLOAT,
+                       kLdr = VK_FORMAT_R8G8B8A8_UNORM;
+
+    // The city, as embed-gl draws it.
+    const City city = makeCity();
+    std::vector<Vertex> mesh;
+    for (const CityBox& b : city.boxes) pushBox(mesh, b);
+    pushBox(mesh, {{-2000, -1, -2000}, {2000, 0, 2000}, {0.25f, 0.25f, 0.27f}});  // the ground
+    for (const Lamp& l : city.lamps) pushBulb(mesh, l);
+    Buffer vertices =
+        hostBuffer(g, mesh.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    std::memcpy(vertices.mapped, mesh.data(), mesh.size() * sizeof(Vertex));
+
+    // Targets: 4x MSAA colour and depth, the resolved HDR colour flarekit adds flares to, and
+    // the tone-mapped 8-bit frame.
+    Target msColor = makeTarget(g, kHdr, w, h, kMsaa, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                VK_IMAGE_ASPECT_COLOR_BIT);
+    Target msDepth =
+        makeTarget(g, kDepth, w, h, kMsaa,
+                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                   VK_IMAGE_ASPECT_DEPTH_BIT);
+    Target hdr = makeTarget(g, kHdr, w, h, VK_SAMPLE_COUNT_1_BIT,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                            VK_IMAGE_ASPECT_COLOR_BIT);
+    Target ldr = makeTarget(g, kLdr, w, h, VK_SAMPLE_COUNT_1_BIT,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                            VK_IMAGE_ASPECT_COLOR_BIT);
+    Buffer readback = hostBuffer(g, VkDeviceSize(w) * h * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+
+    // Pipelines: the sky and the city into the MSAA targets, the tone map into the 8-bit frame.
+    const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                   80};
+    VkPipelineLayoutCreateInfo pushLayout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    pushLayout.pushConstantRangeCount = 1;
+    pushLayout.pPushConstantRanges = &push;
+    VkPipelineLayout sceneLayout = VK_NULL_HANDLE;
+    check(vkCreatePipelineLayout(g.device, &pushLayout, nullptr, &sceneLayout), "layout");
+    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_LINEAR;
+    samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VkSampler sampler = VK_NULL_HANDLE;
+    check(vkCreateSampler(g.device, &samplerInfo, nullptr, &sampler), "sampler");
+    const VkDescriptorSetLayoutBinding hdrBinding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                                  VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = 1;
+    setInfo.pBindings = &hdrBinding;
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    check(vkCreateDescriptorSetLayout(g.device, &setInfo, nullptr, &setLayout), "set layout");
+    VkPipelineLayoutCreateInfo tonemapLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    tonemapLayoutInfo.setLayoutCount = 1;
+    tonemapLayoutInfo.pSetLayouts = &setLayout;
+    VkPipelineLayout tonemapLayout = VK_NULL_HANDLE;
+    check(vkCreatePipelineLayout(g.device, &tonemapLayoutInfo, nullptr, &tonemapLayout), "layout");
+    const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &poolSize;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    check(vkCreateDescriptorPool(g.device, &poolInfo, nullptr, &pool), "pool");
+    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocInfo.descriptorPool = pool;
+    allocInfo.descriptorSetCount = 1;
+    allocInfo.pSetLayouts = &setLayout;
+    VkDescriptorSet hdrSet = VK_NULL_HANDLE;
+    check(vkAllocateDescriptorSets(g.device, &allocInfo, &hdrSet), "set");
+    const VkDescriptorImageInfo hdrImage{sampler, hdr.view,
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet writeSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writeSet.dstSet = hdrSet;
+    writeSet.descriptorCount = 1;
+    writeSet.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writeSet.pImageInfo = &hdrImage;
+    vkUpdateDescriptorSets(g.device, 1, &writeSet, 0, nullptr);
+
+    namespace s = embed_vk_shaders;
+    const VkShaderModule sceneVert = shader(g, s::scene_vert, sizeof s::scene_vert),
+                         sceneFrag = shader(g, s::scene_frag, sizeof s::scene_frag),
+                         fullVert = shader(g, s::fullscreen_vert, sizeof s::fullscreen_vert),
+                         skyFrag = shader(g, s::sky_frag, sizeof s::sky_frag),
+                         toneFrag = shader(g, s::tonemap_frag, sizeof s::tonemap_frag);
+    const VkPipeline scenePipeline =
+        pipeline(g, sceneLayout, sceneVert, sceneFrag, true, kHdr, kDepth, kMsaa);
+    const VkPipeline skyPipeline =
+        pipeline(g, sceneLayout, fullVert, skyFrag, false, kHdr, kDepth, kMsaa);
+    const VkPipeline tonePipeline = pipeline(g, tonemapLayout, fullVert, toneFrag, false, kLdr,
+                                             VK_FORMAT_UNDEFINED, VK_SAMPLE_COUNT_1_BIT);
+
+    // flarekit on the application's device: the sun and every lamp.
+    fk_vulkan_device device{};
+    device.instance = g.instance;
+    device.physical_device = g.physical;
+    device.device = g.device;
+    device.queue_family_index = g.family;
+    device.get_instance_proc_addr = &vkGetInstanceProcAddr;
+    device.frames_in_flight = kFramesInFlight;
+    fk_engine* flares = fk_engine_create_vulkan(&device, int(city.lamps.size()) + 1);
+    if (!flares) return std::fprintf(stderr, "embed-vk: %s\n", fk_error(nullptr)), 1;
+    const int sunPreset = fk_engine_load_preset(flares, "tanczos-classic");
+    const int lampPreset = fk_engine_load_preset(flares, "subtle");
+    if (sunPreset < 0 || lampPreset < 0)
+        return std::fprintf(stderr, "embed-vk: %s\n", fk_error(flares)), 1;
+    const float sl = std::sqrt(city.sunDirection.x * city.sunDirection.x +
+                               city.sunDirection.y * city.sunDirection.y +
+                               city.sunDirection.z * city.sunDirection.z);
+    const V3 sun{city.sunDirection.x / sl, city.sunDirection.y / sl, city.sunDirection.z / sl};
+    std::vector<fk_light> lights;
+    fk_light sunLight{};
+    sunLight.type = FK_LIGHT_DIRECTIONAL;
+    sunLight.direction[0] = sun.x, sunLight.direction[1] = sun.y, sunLight.direction[2] = sun.z;
+    sunLight.radius = city.sunRadiusDeg;
+    sunLight.color[0] = 1.f, sunLight.color[1] = 0.87f, sunLight.color[2] = 0.67f;
+    sunLight.intensity = 3000.f;
+    sunLight.preset = sunPreset;
+    lights.push_back(sunLight);
+    for (const Lamp& l : city.lamps) {
+        fk_light p{};
+        p.type = FK_LIGHT_POINT;
+        p.position[0] = l.position.x, p.position[1] = l.position.y, p.position[2] = l.position.z;
+        p.radius = l.radius;
+        p.color[0] = 1.f, p.color[1] = 0.75f, p.color[2] = 0.45f;
+        p.intensity = 2500.f;
+        p.preset = lampPreset;
+        lights.push_back(p);
+    }
+
+    // Frames in flight: a command buffer and a fence each.
+    VkCommandPoolCreateInfo commandPoolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    commandPoolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    commandPoolInfo.queueFamilyIndex = g.family;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    check(vkCreateCommandPool(g.device, &commandPoolInfo, nullptr, &commandPool), "command pool");
+    std::array<VkCommandBuffer, kFramesInFlight> commands{};
+    VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cmdInfo.commandPool = commandPool;
+    cmdInfo.commandBufferCount = kFramesInFlight;
+    check(vkAllocateCommandBuffers(g.device, &cmdInfo, commands.data()), "command buffers");
+    std::array<VkFence, kFramesInFlight> fences{};
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+    for (VkFence& f : fences) check(vkCreateFence(g.device, &fenceInfo, nullptr, &f), "fence");
+
+    // The targets are reused by consecutive frames; one queue orders them (and the barriers
+    // below make each frame's writes wait for the last frame's reads).
+    City view = city;
+    for (int frame = 0; frame < o.frames; ++frame) {
+        const int slot = frame % kFramesInFlight;
+        // Frame N may reuse what frame N - kFramesInFlight used: wait for it (flarekit's
+        // frames_in_flight contract).
+        vkWaitForFences(g.device, 1, &fences[slot], VK_TRUE, UINT64_MAX);
+        vkResetFences(g.device, 1, &fences[slot]);
+        VkCommandBuffer cmd = commands[slot];
+        vkResetCommandBuffer(cmd, 0);
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        vkBeginCommandBuffer(cmd, &begin);
+
+        view.eye.z = city.eye.z - 0.15f * float(frame);  // walking down the street
+        const Mat v = lookAt(view.eye, view.target);
+        const Mat p =
+            reversedInfinitePerspective(view.fovYDeg, float(w) / float(h), view.nearPlane);
+        const Mat vp = multiply(p, v);
+        const VkPipelineStageFlags everything = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+        transition(cmd, msColor.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, everything, 0,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        transition(cmd, hdr.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, everything, 0,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        transition(cmd, msDepth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, everything, 0,
+                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+        VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        color.imageView = msColor.view;
+        color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        color.resolveImageView = hdr.view;
+        color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the sky covers every pixel
+        color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = msDepth.view;
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;  // flarekit reads it
+        depth.clearValue.depthStencil = {0.f, 0};      // reversed Z: infinity
+        VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        rendering.renderArea = {{0, 0}, {uint32_t(w), uint32_t(h)}};
+        rendering.layerCount = 1;
+        rendering.colorAttachmentCount = 1;
+        rendering.pColorAttachments = &color;
+        rendering.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &rendering);
+        const VkViewport viewport{0, 0, float(w), float(h), 0, 1};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+        const float tanHalfY = std::tan(view.fovYDeg * 3.14159265f / 360.f);
+        const float sky[20] = {v[0],
+                               v[4],
+                               v[8],
+                               0,
+                               v[1],
+                               v[5],
+                               v[9],
+                               0,
+                               -v[2],
+                               -v[6],
+                               -v[10],
+                               0,
+                               sun.x,
+                               sun.y,
+                               sun.z,
+                               std::cos(city.sunRadiusDeg * 3.14159265f / 180.f),
+                               tanHalfY * float(w) / float(h),
+                               tanHalfY,
+                               0,
+                               0};
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, skyPipeline);
+        vkCmdPushConstants(cmd, sceneLayout, push.stageFlags, 0, sizeof sky, sky);
+        vkCmdDraw(cmd, 3, 1, 0, 0);
+        float camera[20];
+        std::memcpy(camera, vp.data(), 64);
+        camera[16] = sun.x, camera[17] = sun.y, camera[18] = sun.z, camera[19] = 0;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scenePipeline);
+        vkCmdPushConstants(cmd, sceneLayout, push.stageFlags, 0, sizeof camera, camera);
+        const VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vertices.buffer, &offset);
+        vkCmdDraw(cmd, uint32_t(mesh.size()), 1, 0, 0);
+        vkCmdEndRendering(cmd);
+
+        // flarekit: its depth read by a compute pass, its flares added to the resolved colour.
+        transition(cmd, msDepth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+        transition(
+            cmd, hdr.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        fk_frame f{};
+        f.width = w, f.height = h;
+        f.viewport[2] = w, f.viewport[3] = h;
+        f.depth_convention = FK_DEPTH_REVERSED_Z;
+        std::memcpy(f.view, v.data(), sizeof f.view);
+        std::memcpy(f.projection, p.data(), sizeof f.projection);
+        f.dt_seconds = 1.f / 60.f;
+        fk_vulkan_frame vf{};
+        vf.command_buffer = cmd;
+        vf.frame_index = uint64_t(frame);
+        vf.depth_view = msDepth.view;
+        vf.depth_layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+        vf.depth_samples = kMsaa;
+        vf.color_view = hdr.view;
+        vf.color_format = kHdr;
+        vf.color_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        if (fk_engine_record_occlusion(flares, &vf, &f, lights.data(), int(lights.size())) < 0 ||
+            fk_engine_record_draw(flares, &vf, &f, lights.data(), int(lights.size())) < 0)
+            return std::fprintf(stderr, "embed-vk: %s\n", fk_error(flares)), 1;
+
+        // The application's tone map.
+        transition(
+            cmd, hdr.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_SHADER_READ_BIT);
+        transition(cmd, ldr.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, everything, 0,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        VkRenderingAttachmentInfo out{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        out.imageView = ldr.view;
+        out.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        out.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        out.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        VkRenderingInfo toneRendering = rendering;
+        toneRendering.pColorAttachments = &out;
+        toneRendering.pDepthAttachment = nullptr;
+        vkCmdBeginRendering(cmd, &toneRendering);
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tonePipeline);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemapLayout, 0, 1, &hdrSet,
+                                0, nullptr);
+        vkCmdDraw(cmd, 3, 1, 0, 0);
+        vkCmdEndRendering(cmd);
+        if (frame == o.frames - 1) {  // the last frame to the host
+            transition(
+                cmd, ldr.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT);
+            VkBufferImageCopy region{};
+            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.imageExtent = {uint32_t(w), uint32_t(h), 1};
+            vkCmdCopyImageToBuffer(cmd, ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                   readback.buffer, 1, &region);
+            VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+            host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+            host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
+                                 1, &host, 0, nullptr, 0, nullptr);
+        }
+        check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.commandBufferCount = 1;
+        submit.pCommandBuffers = &cmd;
+        check(vkQueueSubmit(g.queue, 1, &submit, fences[slot]), "vkQueueSubmit");
+    }
+    vkDeviceWaitIdle(g.device);
+
+    std::vector<float> coverage(lights.size());
+    const int n = fk_engine_read_coverage(flares, coverage.data(), int(coverage.size()));
+    int seen = 0;
+    for (int i = 0; i < n; ++i) seen += coverage[size_t(i)] > 0.f ? 1 : 0;
+    std::ofstream ppm(o.out, std::ios::binary);
+    ppm << "P6\n" << w << " " << h << "\n255\n";
+    const auto* rgba = static_cast<const unsigned char*>(readback.mapped);
+    for (size_t i = 0; i < size_t(w) * size_t(h); ++i)
+        ppm.write(reinterpret_cast<const char*>(rgba + 4 * i), 3);
+    if (!ppm.flush()) return std::fprintf(stderr, "embed-vk: cannot write %s\n", o.out.c_str()), 1;
+    std::printf("embed-vk: %d frames %dx%d, %zu lights (%d seen), last frame in %s\n", o.frames, w,
+                h, lights.size(), seen, o.out.c_str());
+    if (!o.sceneJson.empty() && !writeSceneJson(view, w, h, o.sceneJson)) return 1;
+    if (!o.coverageJson.empty()) {
+        std::ofstream c(o.coverageJson);
+        c << "{\"coverage\": [";
+        for (int i = 0; i < n; ++i) c << (i ? ", " : "") << coverage[size_t(i)];
+        c << "]}\n";
+        if (!c.flush()) return 1;
+    }
+
+    fk_engine_destroy(flares);
+    for (VkFence f : fences) vkDestroyFence(g.device, f, nullptr);
+    vkDestroyCommandPool(g.device, commandPool, nullptr);
+    for (VkPipeline pl : {scenePipeline, skyPipeline, tonePipeline})
+        vkDestroyPipeline(g.device, pl, nullptr);
+    for (VkShaderModule m : {sceneVert, sceneFrag, fullVert, skyFrag, toneFrag})
+        vkDestroyShaderModule(g.device, m, nullptr);
+    vkDestroyDescriptorPool(g.device, pool, nullptr);
+    vkDestroyPipelineLayout(g.device, sceneLayout, nullptr);
+    vkDestroyPipelineLayout(g.device, tonemapLayout, nullptr);
+    vkDestroyDescriptorSetLayout(g.device, setLayout, nullptr);
+    vkDestroySampler(g.device, sampler, nullptr);
+    for (Target* t : {&msColor, &msDepth, &hdr, &ldr}) destroy(g, *t);
+    destroy(g, vertices);
+    destroy(g, readback);
+    if (o.validate && g_validationMessages > 0) {
+        std::fprintf(stderr, "embed-vk: %d validation messages\n", g_validationMessages);
+        return 1;
+    }
+    return 0;
+}
