@@ -34,7 +34,12 @@ namespace {
     X(vkQueueWaitIdle)             \
     X(vkCmdCopyImageToBuffer)      \
     X(vkCmdBindVertexBuffers)      \
-    X(vkCmdPushConstants)
+    X(vkCmdPushConstants)          \
+    X(vkCreateQueryPool)           \
+    X(vkDestroyQueryPool)          \
+    X(vkCmdResetQueryPool)         \
+    X(vkCmdWriteTimestamp)         \
+    X(vkGetQueryPoolResults)
 
 struct HostApi {
 #define FLAREKIT_VK_MEMBER(name) PFN_##name name = nullptr;
@@ -254,6 +259,33 @@ Status VulkanHost::submit(const std::function<void(VkCommandBuffer)>& record) {
     }
     h.vkFreeCommandBuffers(m->d.device, m->pool, 1, &cmd);
     return s;
+}
+
+Result<double> VulkanHost::submitTimed(const std::function<void(VkCommandBuffer)>& record) {
+    const HostApi& h = m->h;
+    auto info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = 2;
+    VkQueryPool pool = VK_NULL_HANDLE;
+    if (Status s =
+            check(h.vkCreateQueryPool(m->d.device, &info, nullptr, &pool), "vkCreateQueryPool");
+        !s)
+        return s.error();
+    Status s = submit([&](VkCommandBuffer cmd) {
+        h.vkCmdResetQueryPool(cmd, pool, 0, 2);
+        h.vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool, 0);
+        record(cmd);
+        h.vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool, 1);
+    });
+    std::uint64_t ticks[2] = {0, 0};
+    if (s)
+        s = check(
+            h.vkGetQueryPoolResults(m->d.device, pool, 0, 2, sizeof ticks, ticks, sizeof ticks[0],
+                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+            "vkGetQueryPoolResults");
+    h.vkDestroyQueryPool(m->d.device, pool, nullptr);
+    if (!s) return s.error();
+    return double(ticks[1] - ticks[0]) * double(m->d.properties.limits.timestampPeriod) * 1e-6;
 }
 
 namespace {

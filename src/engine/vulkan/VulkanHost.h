@@ -40,6 +40,8 @@ class VulkanHost {
     const Device& device() const { return *m_device; }
     //! Records with `record` into a fresh command buffer, submits it and waits.
     Status submit(const std::function<void(VkCommandBuffer)>& record);
+    //! As submit, with timestamps before and after `record`'s commands: their GPU time in ms.
+    Result<double> submitTimed(const std::function<void(VkCommandBuffer)>& record);
     //! A colour image in COLOR_ATTACHMENT_OPTIMAL usable as attachment, transfer source and
     //! destination, holding `rgba` (width x height x 4 floats, rows from the top).
     Result<Image> colorImage(VkFormat format, int width, int height, const float* rgba);
