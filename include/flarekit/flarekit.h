@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 /* flarekit's embedding API: lens flares for any OpenGL renderer, measured on the application's
- * own depth buffer. A C ABI, so C#, Rust, Python ctypes and engine plug-ins can call it;
- * flarekit/flarekit.hpp wraps it in a C++ class. Every call needs a current OpenGL 4.5 core
- * context (the application's own) and leaves the application's GL state as it found it.
+ * own depth buffer (flarekit_vulkan.h: the same engine on a Vulkan device; fk_flare_set below:
+ * instance data and shaders for any other renderer). A C ABI, so C#, Rust, Python ctypes and engine
+ * plug-ins can call it; flarekit/flarekit.hpp wraps it in a C++ class. Every call needs a current
+ * OpenGL 4.5 core context (the application's own) and leaves the application's GL state as it found
+ * it.
  *
  * A frame: fk_engine_occlusion measures every light's coverage (the visible share of its disc
  * or sphere, uniform over solid angle, as `flarekit visibility --method raycast` defines it) in

@@ -6,8 +6,9 @@
  *
  * The settings calls of flarekit.h work on a Vulkan engine too (fk_engine_load_preset,
  * fk_engine_load_preset_json, fk_engine_set_samples, fk_engine_set_temporal,
- * fk_engine_set_guard_band, fk_engine_reset, fk_engine_read_view, fk_error); the GL calls
- * (fk_engine_occlusion, fk_engine_draw, textures) return an error on it.
+ * fk_engine_set_guard_band, fk_engine_set_tile_threshold, fk_engine_reset,
+ * fk_engine_read_view, fk_error); the GL calls (fk_engine_occlusion, fk_engine_draw, textures,
+ * the GL occluder callback) return an error on it.
  *
  * Synchronisation, which the docs (docs/engine-api.md, "Vulkan") state in full:
  * - Before fk_engine_record_occlusion's commands the depth image must be in depth_layout with
@@ -82,6 +83,22 @@ FK_API int fk_engine_record_occlusion(fk_engine* e, const fk_vulkan_frame* vk,
  * own rendering). 0 ok, < 0 error. */
 FK_API int fk_engine_record_draw(fk_engine* e, const fk_vulkan_frame* vk, const fk_frame* frame,
                                  const fk_light* lights, int count);
+
+/* Small lights on Vulkan, as fk_engine_set_occluder_callback on GL: with a callback set, the
+ * lights under fk_engine_set_tile_threshold's depth samples are measured from sun maps. Inside
+ * fk_engine_record_occlusion the engine begins rendering into its sun-map atlas (dynamic
+ * rendering: one colour attachment of FK_VULKAN_SUN_MAP_FORMAT cleared to white, no depth, one
+ * sample), and for each such light sets the viewport and scissor to the light's tile and calls
+ * this. Bind a pipeline made for that rendering and draw every occluder with
+ * `view_projection` (column-major, the frame's depth convention, y up as GL's: the sums are
+ * symmetric, so the flip is free) in black, or a translucent one multiplying the tile by
+ * 1 - opacity (blend ZERO, SRC_COLOR; closed objects by their front faces). Leave the
+ * rendering open; bind what you like (the engine binds its own after). */
+#define FK_VULKAN_SUN_MAP_FORMAT VK_FORMAT_R8G8B8A8_UNORM
+typedef void (*fk_vulkan_occluder_callback)(void* user, VkCommandBuffer command_buffer, int view,
+                                            int light, const float view_projection[16]);
+FK_API int fk_engine_set_vulkan_occluder_callback(fk_engine* e,
+                                                  fk_vulkan_occluder_callback callback, void* user);
 
 /* The filtered coverage image (R32_SFLOAT, max_lights x FK_MAX_VIEWS, GENERAL layout) for
  * the application's own shaders, as fk_engine_coverage_texture is on GL. */

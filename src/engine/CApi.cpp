@@ -305,9 +305,10 @@ int fk_engine_set_guard_band(fk_engine* e, int view, int enabled) {
 }
 
 int fk_engine_set_tile_threshold(fk_engine* e, int depth_samples) {
-    return guarded(
+    return either(
         e, "fk_engine_set_tile_threshold",
-        [&](flarekit::engine::Engine& en) { return en.setTileThreshold(depth_samples); }, false);
+        [&](flarekit::engine::Engine& en) { return en.setTileThreshold(depth_samples); },
+        [&](flarekit::vk::VulkanEngine& v) { return v.setTileThreshold(depth_samples); });
 }
 
 int fk_engine_set_samples(fk_engine* e, int samples_per_side) {
@@ -369,6 +370,13 @@ int fk_engine_record_draw(fk_engine* e, const fk_vulkan_frame* vk, const fk_fram
     return vulkanOnly(e, "fk_engine_record_draw", [&](flarekit::vk::VulkanEngine& v) {
         return v.recordDraw(0, vk, frame, lights, count);
     });
+}
+
+int fk_engine_set_vulkan_occluder_callback(fk_engine* e, fk_vulkan_occluder_callback callback,
+                                           void* user) {
+    return vulkanOnly(
+        e, "fk_engine_set_vulkan_occluder_callback",
+        [&](flarekit::vk::VulkanEngine& v) { return v.setOccluderCallback(callback, user); });
 }
 
 VkImageView fk_engine_coverage_view(const fk_engine* e) {

@@ -2,45 +2,18 @@
 // Sun maps through the engine: the application's occluder callback draws the tile of each
 // light they measure (SunMapAtlas: every light with texture-mask, the small ones with
 // compute), and one dispatch of sunmap_coverage.comp reduces them all.
-#include <algorithm>
-#include <cmath>
-#include <numbers>
-
 #include "engine/EngineImpl.h"
 #include "engine/GlStateGuard.h"
+#include "engine/TileChoice.h"
 
 namespace flarekit::engine {
 
-namespace {
-//! The light's radius on screen in pixels of the frame's viewport, as light_coverage.comp
-//! reckons it (tan of its half-angle, at most 1.4 rad, times the projection's y scale), or
-//! -1 when the camera is inside a sphere light (which every method counts as fully seen).
-double radiusPixels(const fk_frame& f, const fk_light& l) {
-    double half = double(l.radius) * std::numbers::pi / 180.0;
-    if (l.type == FK_LIGHT_POINT) {
-        double centre[3];
-        for (int r = 0; r < 3; ++r)
-            centre[r] = double(f.view[r]) * l.position[0] + double(f.view[4 + r]) * l.position[1] +
-                        double(f.view[8 + r]) * l.position[2] + double(f.view[12 + r]);
-        const double distance = std::hypot(centre[0], centre[1], centre[2]);
-        if (distance <= l.radius) return -1;
-        half = std::asin(double(l.radius) / distance);
-    }
-    return std::tan(std::min(half, 1.4)) * std::abs(f.projection[5]) * 0.5 * f.viewport[3];
-}
-}  // namespace
-
 int Engine::Impl::assignTiles(int view, const fk_frame& f, int depthSamples, const fk_light* lights,
                               int count) {
-    tileOf.assign(std::size_t(count), -1);
-    int tiled = 0;
-    if (occluders && (textureMask || tileBelow > 0)) {
-        for (int i = 0; i < count; ++i) {
-            const double r = radiusPixels(f, lights[i]);
-            const double footprint = std::numbers::pi * r * r * depthSamples;
-            if (textureMask || (r >= 0 && footprint < tileBelow)) tileOf[std::size_t(i)] = tiled++;
-        }
-    }
+    const int tiled =
+        occluders && (textureMask || tileBelow > 0)
+            ? chooseTiles(f, depthSamples, lights, count, textureMask, tileBelow, tileOf)
+            : chooseTiles(f, depthSamples, lights, count, false, 0, tileOf);
     glNamedBufferSubData(tiles.get(), GLintptr(view) * maxLights * GLintptr(sizeof(int)),
                          GLsizeiptr(count * sizeof(int)), tileOf.data());
     return tiled;

@@ -20,9 +20,9 @@ constexpr double kMaxSunMapHalfAngle = 1.4;
 //! Column-major view-projection of the camera at `eye` looking along unit `axis` whose field of
 //! view is the cone of half-angle `half`, to distance `farPlane`, in the clip space of the
 //! frame's depth convention (so the application's clip control draws it unchanged).
-std::array<float, 16> sunMapCamera(const double eye[3], const double axis[3], double half,
-                                   double nearPlane, double farPlane,
-                                   fk_depth_convention convention) {
+std::array<float, 16> coneCamera(const double eye[3], const double axis[3], double half,
+                                 double nearPlane, double farPlane,
+                                 fk_depth_convention convention) {
     const double up[3] = {std::abs(axis[1]) < 0.99 ? 0.0 : 1.0,
                           std::abs(axis[1]) < 0.99 ? 1.0 : 0.0, 0.0};
     double side[3] = {axis[1] * up[2] - axis[2] * up[1], axis[2] * up[0] - axis[0] * up[2],
@@ -75,10 +75,46 @@ double nearPlaneOf(const fk_frame& f) {
 
 }  // namespace
 
+TileLayout tileLayout(int maxLights) {
+    TileLayout t;
+    t.tilesPerRow = int(std::ceil(std::sqrt(double(maxLights))));
+    t.tileSize = std::min(kMaxTileSize, kMaxAtlasSide / t.tilesPerRow);
+    return t;
+}
+
+bool sunMapCamera(const fk_frame& f, const fk_light& l, float viewProjection[16]) {
+    // The eye: view = [R | t] is rigid, so the eye is -R^T t.
+    double eye[3];
+    for (int i = 0; i < 3; ++i)
+        eye[i] = -(double(f.view[i * 4 + 0]) * f.view[12] + double(f.view[i * 4 + 1]) * f.view[13] +
+                   double(f.view[i * 4 + 2]) * f.view[14]);
+    double axis[3], half = 0, farPlane = 1e7;
+    if (l.type == FK_LIGHT_POINT) {
+        double d[3] = {l.position[0] - eye[0], l.position[1] - eye[1], l.position[2] - eye[2]};
+        const double dist = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (dist <= l.radius) return false;  // inside the light: the reduction says 1
+        for (int k = 0; k < 3; ++k) axis[k] = d[k] / dist;
+        half = std::asin(double(l.radius) / dist);
+        // Only what lies before the light hides it (kNearSide of light_view.glsl).
+        farPlane = (dist - l.radius) * 0.999;
+    } else {
+        const double dl = std::sqrt(double(l.direction[0]) * l.direction[0] +
+                                    double(l.direction[1]) * l.direction[1] +
+                                    double(l.direction[2]) * l.direction[2]);
+        for (int k = 0; k < 3; ++k) axis[k] = l.direction[k] / dl;
+        half = double(l.radius) * 3.14159265358979323846 / 180.0;
+    }
+    const std::array<float, 16> vp =
+        coneCamera(eye, axis, half, nearPlaneOf(f), farPlane, f.depth_convention);
+    std::copy(vp.begin(), vp.end(), viewProjection);
+    return true;
+}
+
 Result<SunMapAtlas> SunMapAtlas::create(int maxLights) {
     SunMapAtlas a;
-    a.m_tilesPerRow = int(std::ceil(std::sqrt(double(maxLights))));
-    a.m_tileSize = std::min(kMaxTileSize, kMaxAtlasSide / a.m_tilesPerRow);
+    const TileLayout layout = tileLayout(maxLights);
+    a.m_tilesPerRow = layout.tilesPerRow;
+    a.m_tileSize = layout.tileSize;
     const int side = a.m_tilesPerRow * a.m_tileSize;
     a.m_atlas = gl::makeTexture2D(GL_RGBA8, side, side);
     auto target = gl::makeFramebuffer(a.m_atlas.get());
@@ -89,41 +125,17 @@ Result<SunMapAtlas> SunMapAtlas::create(int maxLights) {
 
 void SunMapAtlas::draw(int view, const fk_frame& f, const fk_light* lights, const int* tileOf,
                        int count, fk_occluder_callback occluders, void* user) const {
-    // The eye: view = [R | t] is rigid, so the eye is -R^T t.
-    double eye[3];
-    for (int i = 0; i < 3; ++i)
-        eye[i] = -(double(f.view[i * 4 + 0]) * f.view[12] + double(f.view[i * 4 + 1]) * f.view[13] +
-                   double(f.view[i * 4 + 2]) * f.view[14]);
     const float white[4] = {1, 1, 1, 1};
     glClearNamedFramebufferfv(m_target.get(), GL_COLOR, 0, white);
-    const double nearPlane = nearPlaneOf(f);
     for (int i = 0; i < count; ++i) {
         const int at = tileOf[i];
-        if (at < 0) continue;  // measured on the frame's depth
-        const fk_light& l = lights[i];
-        double axis[3], half = 0, farPlane = 1e7;
-        if (l.type == FK_LIGHT_POINT) {
-            double d[3] = {l.position[0] - eye[0], l.position[1] - eye[1], l.position[2] - eye[2]};
-            const double dist = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (dist <= l.radius) continue;  // inside the light: the reduction says 1
-            for (int k = 0; k < 3; ++k) axis[k] = d[k] / dist;
-            half = std::asin(double(l.radius) / dist);
-            // Only what lies before the light hides it (kNearSide of light_view.glsl).
-            farPlane = (dist - l.radius) * 0.999;
-        } else {
-            const double dl = std::sqrt(double(l.direction[0]) * l.direction[0] +
-                                        double(l.direction[1]) * l.direction[1] +
-                                        double(l.direction[2]) * l.direction[2]);
-            for (int k = 0; k < 3; ++k) axis[k] = l.direction[k] / dl;
-            half = double(l.radius) * 3.14159265358979323846 / 180.0;
-        }
-        const std::array<float, 16> vp =
-            sunMapCamera(eye, axis, half, nearPlane, farPlane, f.depth_convention);
+        float vp[16];
+        if (at < 0 || !sunMapCamera(f, lights[i], vp)) continue;  // on the depth, or inside it
         const int tile[4] = {(at % m_tilesPerRow) * m_tileSize, (at / m_tilesPerRow) * m_tileSize,
                              m_tileSize, m_tileSize};
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_target.get());
         glViewport(tile[0], tile[1], tile[2], tile[3]);
-        occluders(user, view, i, vp.data(), m_target.get(), tile);
+        occluders(user, view, i, vp, m_target.get(), tile);
     }
 }
 

@@ -13,6 +13,18 @@
 
 namespace flarekit::engine {
 
+//! The atlas's tiles for `maxLights` lights: texels a side, and tiles a row (64 texels up to
+//! 4,096 lights, smaller beyond, the atlas within 4096 x 4096).
+struct TileLayout {
+    int tileSize = 0, tilesPerRow = 0;
+};
+TileLayout tileLayout(int maxLights);
+
+//! Light `l`'s sun-map camera for frame `f`: at the eye, looking along the light, its field of
+//! view the light's cone, in the clip space of the frame's depth convention, column-major.
+//! False (nothing to draw) when the camera is inside a sphere light.
+bool sunMapCamera(const fk_frame& f, const fk_light& l, float viewProjection[16]);
+
 class SunMapAtlas {
   public:
     //! Tiles for `maxLights` lights (a current GL context is needed).

@@ -338,3 +338,63 @@ TEST(EngineVulkan, BadArgumentsAreRefusedByNameAndGlCallsToo) {
     EXPECT_NE(error().find("vulkan frame.color_view"), std::string::npos) << error();
     expectSilentValidation();
 }
+
+TEST(EngineVulkan, SmallLightsAreMeasuredFromSunMapsTheOccluderCallbackDraws) {
+    // 256 lamps of 0.5-40 px radius under both [0, 1] conventions at 1x and 4x MSAA: with the
+    // occluder callback, the small ones from sun maps, every lamp within 0.02 of the ray caster.
+    const Scene scene = lampScene(256, 31, false, 1280, 720, {0.5, 40});
+    const VisibilityResult rays = truth(scene);
+    const std::vector<fk_light> lights = engineLights(scene, -1);
+    EnginePtr v = makeVulkanEngine(256);
+    ASSERT_TRUE(v);
+    auto occluders = vk::VulkanOccluders::create(host(), scene);
+    ASSERT_TRUE(occluders.ok()) << occluders.error().message;
+    std::uint64_t frameIndex = 0;
+    for (int samples : {1, 4}) {
+        for (fk_depth_convention c : {FK_DEPTH_ZERO_TO_ONE, FK_DEPTH_REVERSED_Z}) {
+            const fk_frame f = vulkanFrame(scene, c);
+            auto depth = drawVulkanDepth(scene, f, samples);
+            ASSERT_EQ(fk_engine_set_vulkan_occluder_callback(v.get(), nullptr, nullptr), 0);
+            measure(v.get(), depth->frame, frameIndex++, f, lights);
+            int partial = 0;
+            const double depthOnly = worstError(readCoverage(v.get(), 256), rays, &partial);
+            EXPECT_GT(depthOnly, 0.03);  // the depth's sample grid shows on the smallest lamps
+            (*occluders)->calls = 0;
+            ASSERT_EQ(fk_engine_set_vulkan_occluder_callback(v.get(), &vk::VulkanOccluders::draw,
+                                                             occluders->get()),
+                      0);
+            measure(v.get(), depth->frame, frameIndex++, f, lights);
+            EXPECT_LE(worstError(readCoverage(v.get(), 256), rays, &partial), kTolerance)
+                << "msaa " << samples << ", convention " << c;
+            EXPECT_GE(partial, 25);
+            EXPECT_GT((*occluders)->calls, 40);  // the small lamps, and only they
+            EXPECT_LT((*occluders)->calls, 216);
+        }
+    }
+    expectSilentValidation();
+}
+
+TEST(EngineVulkan, SunMapsSeeTranslucentCardsThroughTheCallback) {
+    // Every lamp tiled (the threshold past any lamp's footprint): texture masking on Vulkan,
+    // glass and fog cards multiplying the tiles, against the ray caster.
+    const Scene scene = lampScene(128, 5, true, 960, 540, {1, 30});
+    const VisibilityResult rays = truth(scene);
+    const std::vector<fk_light> lights = engineLights(scene, -1);
+    EnginePtr v = makeVulkanEngine(128);
+    ASSERT_TRUE(v);
+    auto occluders = vk::VulkanOccluders::create(host(), scene);
+    ASSERT_TRUE(occluders.ok()) << occluders.error().message;
+    ASSERT_EQ(fk_engine_set_vulkan_occluder_callback(v.get(), &vk::VulkanOccluders::draw,
+                                                     occluders->get()),
+              0);
+    ASSERT_EQ(fk_engine_set_tile_threshold(v.get(), 1 << 20), 0);
+    EXPECT_LT(fk_engine_set_tile_threshold(v.get(), -1), 0);
+    const fk_frame f = vulkanFrame(scene, FK_DEPTH_REVERSED_Z);
+    auto depth = drawVulkanDepth(scene, f, 1);
+    measure(v.get(), depth->frame, 0, f, lights);
+    EXPECT_EQ((*occluders)->calls, 128);
+    int partial = 0;
+    EXPECT_LE(worstError(readCoverage(v.get(), 128), rays, &partial), kTolerance);
+    EXPECT_GE(partial, 10);
+    expectSilentValidation();
+}

@@ -14,6 +14,8 @@
 #include "core/HalfFloat.h"
 #include "engine/Engine.h"
 #include "engine/EngineInput.h"
+#include "engine/SunMaps.h"
+#include "engine/TileChoice.h"
 #include "engine/vulkan/VulkanParams.h"
 #include "engine/vulkan/VulkanResources.h"
 #include "flare/SpriteImages.h"
@@ -121,6 +123,15 @@ struct VulkanEngine::Impl {
     VkDescriptorSetLayout computeLayout = VK_NULL_HANDLE, drawLayout = VK_NULL_HANDLE;
     VkPipelineLayout computePipelineLayout = VK_NULL_HANDLE, drawPipelineLayout = VK_NULL_HANDLE;
     VkPipeline coverage[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  //!< single-sample, multisampled
+    VkDescriptorSetLayout sunMapLayout = VK_NULL_HANDLE;
+    VkPipelineLayout sunMapPipelineLayout = VK_NULL_HANDLE;
+    VkPipeline sunMap = VK_NULL_HANDLE;  //!< the sun maps' reduction (sunmap_coverage.comp)
+    fk_vulkan_occluder_callback occluders = nullptr;
+    void* occludersUser = nullptr;
+    int tileBelow = engine::kDefaultTileBelow;
+    engine::TileLayout tiling;
+    Image atlas;  //!< FK_VULKAN_SUN_MAP_FORMAT, made with the first tile
+    std::vector<int> tileOf;
     VkShaderModule flareVert = VK_NULL_HANDLE, flareFrag = VK_NULL_HANDLE;
     std::vector<std::pair<VkFormat, VkPipeline>> drawPipelines;  //!< one per colour format
     Buffer lights, state, tiles, params;
@@ -165,6 +176,11 @@ struct VulkanEngine::Impl {
     void uploadLights(VkCommandBuffer cmd, const fk_light* lights, int count);
     Status ensureSprites(LoadedPreset& p, int presetId, int height, VkCommandBuffer cmd);
     Result<VkDescriptorSetLayout> makeLayout(std::initializer_list<Binding> bindings);
+    //! The small lights' sun maps: the atlas drawn by the occluder callback, then reduced.
+    //! `shared` holds the occlusion pass's descriptor writes (its buffers and images).
+    Status measureSunMaps(VkCommandBuffer cmd, int view, const fk_frame& f,
+                          const fk_light* lightArray, int count,
+                          const VkWriteDescriptorSet* shared);
     Result<VkDescriptorPool> makePool(std::uint32_t sets, std::uint32_t ubos, std::uint32_t ssbos,
                                       std::uint32_t images, std::uint32_t samplers);
 };
@@ -182,13 +198,14 @@ VulkanEngine::Impl::~Impl() {
     }
     for (auto& [format, pipeline] : drawPipelines)
         a.vkDestroyPipeline(d.device, pipeline, d.allocator);
-    for (VkPipeline p : coverage)
+    for (VkPipeline p : {coverage[0], coverage[1], sunMap})
         if (p) a.vkDestroyPipeline(d.device, p, d.allocator);
+    d.destroy(atlas);
     for (VkShaderModule m : {flareVert, flareFrag})
         if (m) a.vkDestroyShaderModule(d.device, m, d.allocator);
-    for (VkPipelineLayout l : {computePipelineLayout, drawPipelineLayout})
+    for (VkPipelineLayout l : {computePipelineLayout, drawPipelineLayout, sunMapPipelineLayout})
         if (l) a.vkDestroyPipelineLayout(d.device, l, d.allocator);
-    for (VkDescriptorSetLayout l : {computeLayout, drawLayout})
+    for (VkDescriptorSetLayout l : {computeLayout, drawLayout, sunMapLayout})
         if (l) a.vkDestroyDescriptorSetLayout(d.device, l, d.allocator);
     for (VkSampler s : {nearest, linear})
         if (s) a.vkDestroySampler(d.device, s, d.allocator);
@@ -255,8 +272,19 @@ Status VulkanEngine::Impl::createLayouts() {
         {{0, UBO, V}, {1, SSBO, V}, {7, SAMPLED, V}, {8, SAMPLED, F}, {12, UBO, V}, {13, UBO, V}});
     if (!draw) return draw.error();
     drawLayout = *draw;
+    auto sunMaps = makeLayout({{0, UBO, C},
+                               {1, SSBO, C},
+                               {2, SSBO, C},
+                               {3, SSBO, C},
+                               {4, IMAGE, C},
+                               {9, SAMPLED, C},
+                               {10, UBO, C},
+                               {11, UBO, C}});
+    if (!sunMaps) return sunMaps.error();
+    sunMapLayout = *sunMaps;
     for (auto [set, out] : {std::pair{computeLayout, &computePipelineLayout},
-                            std::pair{drawLayout, &drawPipelineLayout}}) {
+                            std::pair{drawLayout, &drawPipelineLayout},
+                            std::pair{sunMapLayout, &sunMapPipelineLayout}}) {
         auto info = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
         info.setLayoutCount = 1;
         info.pSetLayouts = &set;
@@ -270,10 +298,12 @@ Status VulkanEngine::Impl::createLayouts() {
 
 Status VulkanEngine::Impl::createComputePipelines() {
     namespace x = exported;
-    const std::pair<const unsigned char*, std::size_t> code[2] = {
+    const std::pair<const unsigned char*, std::size_t> code[3] = {
         {x::vk_coverage_comp_spv, x::vk_coverage_comp_spv_size},
-        {x::vk_coverage_ms_comp_spv, x::vk_coverage_ms_comp_spv_size}};
-    for (int i = 0; i < 2; ++i) {
+        {x::vk_coverage_ms_comp_spv, x::vk_coverage_ms_comp_spv_size},
+        {x::vk_sunmap_comp_spv, x::vk_sunmap_comp_spv_size}};
+    VkPipeline* out[3] = {&coverage[0], &coverage[1], &sunMap};
+    for (int i = 0; i < 3; ++i) {
         auto module = d.makeShader(code[i].first, code[i].second);
         if (!module) return module.error();
         auto info =
@@ -283,9 +313,9 @@ Status VulkanEngine::Impl::createComputePipelines() {
         info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
         info.stage.module = *module;
         info.stage.pName = "main";
-        info.layout = computePipelineLayout;
-        const VkResult r = d.api.vkCreateComputePipelines(d.device, VK_NULL_HANDLE, 1, &info,
-                                                          d.allocator, &coverage[i]);
+        info.layout = i < 2 ? computePipelineLayout : sunMapPipelineLayout;
+        const VkResult r =
+            d.api.vkCreateComputePipelines(d.device, VK_NULL_HANDLE, 1, &info, d.allocator, out[i]);
         d.api.vkDestroyShaderModule(d.device, *module, d.allocator);
         if (Status s = check(r, "vkCreateComputePipelines"); !s) return s;
     }
@@ -498,6 +528,84 @@ Status VulkanEngine::Impl::ensureSprites(LoadedPreset& p, int presetId, int heig
     return Ok{};
 }
 
+Status VulkanEngine::Impl::measureSunMaps(VkCommandBuffer cmd, int view, const fk_frame& f,
+                                          const fk_light* lightArray, int count,
+                                          const VkWriteDescriptorSet* shared) {
+    const Api& a = d.api;
+    const int side = tiling.tileSize * tiling.tilesPerRow;
+    if (!atlas.image) {
+        auto made = d.makeImage(FK_VULKAN_SUN_MAP_FORMAT, std::uint32_t(side), std::uint32_t(side),
+                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+        if (!made) return made.error();
+        atlas = *made;
+    }
+    auto alloc = make<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    alloc.descriptorPool = slots[std::size_t(slot)].pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &sunMapLayout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    if (a.vkAllocateDescriptorSets(d.device, &alloc, &set) != VK_SUCCESS)
+        return invalidInput("vulkan frame.frame_index: too many occlusion calls in one frame");
+    // The previous reduction's reads of the atlas end before it is drawn again.
+    imageBarrier(a, cmd, atlas.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    auto target = make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    target.imageView = atlas.view;
+    target.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    target.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    target.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    target.clearValue.color = {{1.f, 1.f, 1.f, 1.f}};  // white: nothing hides the light
+    auto rendering = make<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    rendering.renderArea = {{0, 0}, {std::uint32_t(side), std::uint32_t(side)}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &target;
+    a.vkCmdBeginRendering(cmd, &rendering);
+    for (int i = 0; i < count; ++i) {
+        const int tile = tileOf[std::size_t(i)];
+        float vp[16];
+        if (tile < 0 || !engine::sunMapCamera(f, lightArray[i], vp)) continue;
+        const int x = (tile % tiling.tilesPerRow) * tiling.tileSize,
+                  y = (tile / tiling.tilesPerRow) * tiling.tileSize;
+        const VkViewport viewport{
+            float(x), float(y), float(tiling.tileSize), float(tiling.tileSize), 0.f, 1.f};
+        const VkRect2D scissor{{x, y},
+                               {std::uint32_t(tiling.tileSize), std::uint32_t(tiling.tileSize)}};
+        a.vkCmdSetViewport(cmd, 0, 1, &viewport);
+        a.vkCmdSetScissor(cmd, 0, 1, &scissor);
+        occluders(occludersUser, cmd, view, i, vp);
+    }
+    a.vkCmdEndRendering(cmd);
+    imageBarrier(a, cmd, atlas.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_SHADER_READ_BIT);
+    // The occlusion pass's buffers and coverage image (writes 0-4 and 7: bindings 0-4, 10),
+    // the atlas at 9 and the tile layout at 11.
+    const VkDescriptorImageInfo atlasInfo{nearest, atlas.view,
+                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkDescriptorBufferInfo tilingInfo{
+        params.buffer, VkDeviceSize(view) * kParamsPerView + kSunMapParamsAt, sizeof(SunMapParams)};
+    VkWriteDescriptorSet w[8];
+    for (int i = 0; i < 5; ++i) w[i] = shared[i], w[i].dstSet = set;
+    w[5] = shared[7], w[5].dstSet = set;
+    w[6] = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w[6].dstSet = set, w[6].dstBinding = 9, w[6].descriptorCount = 1;
+    w[6].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, w[6].pImageInfo = &atlasInfo;
+    w[7] = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w[7].dstSet = set, w[7].dstBinding = 11, w[7].descriptorCount = 1;
+    w[7].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, w[7].pBufferInfo = &tilingInfo;
+    a.vkUpdateDescriptorSets(d.device, 8, w, 0, nullptr);
+    a.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunMap);
+    a.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunMapPipelineLayout, 0, 1, &set,
+                              0, nullptr);
+    a.vkCmdDispatch(cmd, std::uint32_t(count), 1, 1);
+    return Ok{};
+}
+
 VulkanEngine::VulkanEngine(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
 VulkanEngine::~VulkanEngine() = default;
 
@@ -553,12 +661,12 @@ Result<std::unique_ptr<VulkanEngine>> VulkanEngine::create(const fk_vulkan_devic
     if (!state) return state.error();
     m->state = *state;
     std::memset(m->state.mapped, 0, stateBytes);
-    // Sun-map tiles are a GL method: on Vulkan every light is measured on the depth (-1).
+    // Each call's tiles (-1: on the depth) travel in its command buffer.
     const VkDeviceSize tileBytes = VkDeviceSize(maxLights) * FK_MAX_VIEWS * sizeof(std::int32_t);
-    auto tiles = d.makeBuffer(tileBytes, kStorage, true);
+    auto tiles = d.makeBuffer(tileBytes, kStorage | kUpdated, false);
     if (!tiles) return tiles.error();
     m->tiles = *tiles;
-    std::memset(m->tiles.mapped, 0xff, tileBytes);
+    m->tiling = engine::tileLayout(maxLights);
     auto params = d.makeBuffer(kParamsPerView * FK_MAX_VIEWS,
                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | kUpdated, false);
     if (!params) return params.error();
@@ -604,6 +712,21 @@ Status VulkanEngine::setTemporal(float attackSeconds, float releaseSeconds, floa
 Status VulkanEngine::setGuardBand(int view, bool enabled) {
     if (Status s = engine::checkView(view); !s) return s;
     m->guardBand[std::size_t(view)] = enabled;
+    return Ok{};
+}
+
+Status VulkanEngine::setTileThreshold(int depthSamples) {
+    if (depthSamples < 0 || depthSamples > engine::kMaxTileBelow) {
+        return invalidInput("tile-below: expected 0.." + std::to_string(engine::kMaxTileBelow) +
+                            " depth samples, got " + std::to_string(depthSamples));
+    }
+    m->tileBelow = depthSamples;
+    return Ok{};
+}
+
+Status VulkanEngine::setOccluderCallback(fk_vulkan_occluder_callback callback, void* user) {
+    m->occluders = callback;
+    m->occludersUser = user;
     return Ok{};
 }
 
@@ -706,6 +829,14 @@ Status VulkanEngine::recordOcclusion(int view, const fk_vulkan_frame* vk, const 
     update(a, cmd, m->params.buffer, at + kViewParamsAt, &vp, sizeof vp);
     update(a, cmd, m->params.buffer, at + kStateParamsAt, &sp, sizeof sp);
     update(a, cmd, m->params.buffer, at + kCoverageParamsAt, &cp, sizeof cp);
+    // Which lights sun maps measure (none without an occluder callback).
+    const int tiled = engine::chooseTiles(f, samples, lights, count, false,
+                                          m->occluders ? m->tileBelow : 0, m->tileOf);
+    update(a, cmd, m->tiles.buffer,
+           VkDeviceSize(view) * VkDeviceSize(m->maxLights) * sizeof(std::int32_t), m->tileOf.data(),
+           VkDeviceSize(count) * sizeof(std::int32_t));
+    const SunMapParams tp{m->tiling.tileSize, m->tiling.tilesPerRow};
+    update(a, cmd, m->params.buffer, at + kSunMapParamsAt, &tp, sizeof tp);
     // The uploads, and the previous pass's state writes, before this pass reads them.
     barrier(a, cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
             VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT,
@@ -750,6 +881,9 @@ Status VulkanEngine::recordOcclusion(int view, const fk_vulkan_frame* vk, const 
     write(7, 10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &stateParams, nullptr);
     write(8, 11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &coverageParams, nullptr);
     a.vkUpdateDescriptorSets(m->d.device, 9, w, 0, nullptr);
+    if (tiled > 0) {
+        if (Status s = m->measureSunMaps(cmd, view, f, lights, count, w); !s) return s;
+    }
     a.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m->coverage[samples > 1 ? 1 : 0]);
     a.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m->computePipelineLayout, 0, 1,
                               &set, 0, nullptr);

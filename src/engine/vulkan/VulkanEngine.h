@@ -28,6 +28,8 @@ class VulkanEngine {
     Status setSamples(int perSide);
     Status setTemporal(float attackSeconds, float releaseSeconds, float guardBand);
     Status setGuardBand(int view, bool enabled);
+    Status setTileThreshold(int depthSamples);
+    Status setOccluderCallback(fk_vulkan_occluder_callback callback, void* user);
     Status reset();
     Status recordOcclusion(int view, const fk_vulkan_frame* vk, const fk_frame* frame,
                            const fk_light* lights, int count);

@@ -4,9 +4,11 @@
 #include <atomic>
 #include <cstring>
 #include <mutex>
+#include <tuple>
 
 #include "core/HalfFloat.h"
 #include "flarekit_exported_shaders.h"
+#include "scene/SceneMesh.h"
 
 namespace flarekit::vk {
 
@@ -618,6 +620,189 @@ std::string VulkanHost::firstValidationMessage() const {
 
 std::string VulkanHost::deviceName() const {
     return m->d.properties.deviceName;
+}
+
+}  // namespace flarekit::vk
+
+namespace flarekit::vk {
+
+struct VulkanOccluders::Impl {
+    const VulkanHost* host = nullptr;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline opaque = VK_NULL_HANDLE, closed = VK_NULL_HANDLE, open = VK_NULL_HANDLE;
+    Buffer opaqueMesh, translucentMesh;
+    std::uint32_t opaqueCount = 0;
+    std::vector<TranslucentRange> ranges;
+
+    const Device& d() const { return host->device(); }
+    Result<VkPipeline> pipeline(VkShaderModule vert, VkShaderModule frag, bool multiply,
+                                bool frontFacesOnly) const;
+};
+
+VulkanOccluders::VulkanOccluders(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
+
+VulkanOccluders::~VulkanOccluders() {
+    const Device& d = m->d();
+    for (VkPipeline p : {m->opaque, m->closed, m->open})
+        if (p) d.api.vkDestroyPipeline(d.device, p, nullptr);
+    if (m->layout) d.api.vkDestroyPipelineLayout(d.device, m->layout, nullptr);
+    d.destroy(m->opaqueMesh);
+    d.destroy(m->translucentMesh);
+}
+
+Result<VkPipeline> VulkanOccluders::Impl::pipeline(VkShaderModule vert, VkShaderModule frag,
+                                                   bool multiply, bool frontFacesOnly) const {
+    const Device& dev = d();
+    VkPipelineShaderStageCreateInfo stages[2] = {
+        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO),
+        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO)};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT, stages[0].module = vert, stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, stages[1].module = frag;
+    stages[1].pName = "main";
+    const VkVertexInputBindingDescription binding{0, 12, VK_VERTEX_INPUT_RATE_VERTEX};
+    const VkVertexInputAttributeDescription attribute{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+    auto input = make<VkPipelineVertexInputStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    input.vertexBindingDescriptionCount = input.vertexAttributeDescriptionCount = 1;
+    input.pVertexBindingDescriptions = &binding;
+    input.pVertexAttributeDescriptions = &attribute;
+    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    auto viewport = make<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = viewport.scissorCount = 1;
+    auto raster = make<VkPipelineRasterizationStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    // The same clip-space triangle faces the same way in GL and Vulkan (Vulkan's facing sum
+    // carries a sign for its y-down framebuffer): counter-clockwise fronts, as the mesh has.
+    raster.cullMode = frontFacesOnly ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.f;
+    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineColorBlendAttachmentState blendState{};
+    blendState.blendEnable = multiply ? VK_TRUE : VK_FALSE;
+    blendState.srcColorBlendFactor = blendState.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+    blendState.dstColorBlendFactor = blendState.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC_COLOR;
+    blendState.colorBlendOp = blendState.alphaBlendOp = VK_BLEND_OP_ADD;
+    blendState.colorWriteMask = 0xf;
+    auto blend = make<VkPipelineColorBlendStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    blend.attachmentCount = 1;
+    blend.pAttachments = &blendState;
+    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    auto dynamicState = make<VkPipelineDynamicStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+    dynamicState.dynamicStateCount = 2;
+    dynamicState.pDynamicStates = dynamic;
+    const VkFormat format = FK_VULKAN_SUN_MAP_FORMAT;
+    auto rendering =
+        make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &format;
+    auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+    info.pNext = &rendering;
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamicState;
+    info.layout = layout;
+    VkPipeline p = VK_NULL_HANDLE;
+    if (Status s = check(
+            dev.api.vkCreateGraphicsPipelines(dev.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
+            "vkCreateGraphicsPipelines");
+        !s)
+        return s.error();
+    return p;
+}
+
+Result<std::unique_ptr<VulkanOccluders>> VulkanOccluders::create(const VulkanHost& host,
+                                                                 const Scene& scene) {
+    auto m = std::make_unique<Impl>();
+    m->host = &host;
+    const Device& d = host.device();
+    const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                    68};
+    auto layoutInfo =
+        make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &range;
+    if (Status s = check(d.api.vkCreatePipelineLayout(d.device, &layoutInfo, nullptr, &m->layout),
+                         "vkCreatePipelineLayout");
+        !s)
+        return s.error();
+    auto vert = d.makeShader(exported::vk_occluder_vert_spv, exported::vk_occluder_vert_spv_size);
+    if (!vert) return vert.error();
+    auto frag = d.makeShader(exported::vk_occluder_frag_spv, exported::vk_occluder_frag_spv_size);
+    if (!frag) {
+        d.api.vkDestroyShaderModule(d.device, *vert, nullptr);
+        return frag.error();
+    }
+    auto opaque = m->pipeline(*vert, *frag, false, false);
+    auto closed = m->pipeline(*vert, *frag, true, true);
+    auto open = m->pipeline(*vert, *frag, true, false);
+    d.api.vkDestroyShaderModule(d.device, *vert, nullptr);
+    d.api.vkDestroyShaderModule(d.device, *frag, nullptr);
+    for (auto [made, out] : {std::pair{&opaque, &m->opaque}, std::pair{&closed, &m->closed},
+                             std::pair{&open, &m->open}}) {
+        if (!*made) return made->error();
+        *out = **made;
+    }
+    const Scene clear = translucentObjects(scene);
+    m->ranges = translucentRanges(clear);
+    for (auto [objects, out, count] :
+         {std::tuple{opaqueObjects(scene), &m->opaqueMesh, &m->opaqueCount},
+          std::tuple{clear, &m->translucentMesh, static_cast<std::uint32_t*>(nullptr)}}) {
+        std::vector<float> xyz;
+        for (const MeshVertex& v : buildSceneMesh(objects))
+            xyz.insert(xyz.end(), v.position, v.position + 3);
+        if (count) *count = std::uint32_t(xyz.size() / 3);
+        if (xyz.empty()) continue;
+        auto b = d.makeBuffer(VkDeviceSize(xyz.size() * sizeof(float)),
+                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true);
+        if (!b) return b.error();
+        *out = *b;
+        std::memcpy(out->mapped, xyz.data(), xyz.size() * sizeof(float));
+    }
+    return std::unique_ptr<VulkanOccluders>(new VulkanOccluders(std::move(m)));
+}
+
+void VulkanOccluders::draw(void* user, VkCommandBuffer cmd, int, int, const float* viewProjection) {
+    auto* self = static_cast<VulkanOccluders*>(user);
+    ++self->calls;
+    const Impl& m = *self->m;
+    const Api& a = m.d().api;
+    const HostApi& h = m.host->m->h;
+    struct {
+        float viewProjection[16];
+        float keep;
+    } push{};
+    std::memcpy(push.viewProjection, viewProjection, sizeof push.viewProjection);
+    constexpr VkShaderStageFlags kStages =
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkDeviceSize offset = 0;
+    if (m.opaqueCount > 0) {
+        a.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m.opaque);
+        h.vkCmdPushConstants(cmd, m.layout, kStages, 0, sizeof push, &push);
+        h.vkCmdBindVertexBuffers(cmd, 0, 1, &m.opaqueMesh.buffer, &offset);
+        a.vkCmdDraw(cmd, m.opaqueCount, 1, 0, 0);
+    }
+    if (m.ranges.empty()) return;
+    h.vkCmdBindVertexBuffers(cmd, 0, 1, &m.translucentMesh.buffer, &offset);
+    for (const TranslucentRange& r : m.ranges) {
+        a.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.closed ? m.closed : m.open);
+        push.keep = 1.f - r.opacity;
+        h.vkCmdPushConstants(cmd, m.layout, kStages, 0, sizeof push, &push);
+        a.vkCmdDraw(cmd, std::uint32_t(r.count), 1, std::uint32_t(r.first), 0);
+    }
 }
 
 }  // namespace flarekit::vk

@@ -28,6 +28,27 @@ struct DepthImage {
     int width = 0, height = 0;
 };
 
+class VulkanHost;
+
+//! A scene's objects as the Vulkan occluder callback draws them into sun-map tiles (as
+//! SceneOccluders does on GL): opaque ones black, translucent ones multiplying the tile by
+//! 1 - opacity, closed ones by their front faces. The host must outlive it.
+class VulkanOccluders {
+  public:
+    static Result<std::unique_ptr<VulkanOccluders>> create(const VulkanHost& host,
+                                                           const Scene& scene);
+    ~VulkanOccluders();
+    //! The callback (fk_vulkan_occluder_callback); `user` is the VulkanOccluders.
+    static void draw(void* user, VkCommandBuffer cmd, int view, int light,
+                     const float viewProjection[16]);
+    int calls = 0;  //!< how many tiles it drew
+
+  private:
+    struct Impl;
+    explicit VulkanOccluders(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m;
+};
+
 class VulkanHost {
   public:
     //! `validation`: enable VK_LAYER_KHRONOS_validation and count its messages (an error if
@@ -64,6 +85,7 @@ class VulkanHost {
     std::string deviceName() const;
 
   private:
+    friend class VulkanOccluders;
     struct Impl;
     explicit VulkanHost(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;

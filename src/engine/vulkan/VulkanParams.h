@@ -52,9 +52,13 @@ struct ElementParams {  // light_flare.vert, binding 13
 };
 static_assert(offsetof(ElementParams, presetId) == 8 && sizeof(ElementParams) == 24);
 
+struct SunMapParams {  // sunmap_coverage.comp, binding 11
+    std::int32_t tileSize, tilesPerRow;
+};
+
 //! Where each view's blocks sit in the engine's parameter buffer: 256-byte aligned, the
 //! largest minUniformBufferOffsetAlignment Vulkan allows.
 inline constexpr VkDeviceSize kViewParamsAt = 0, kStateParamsAt = 256, kCoverageParamsAt = 512,
-                              kFlareParamsAt = 1024, kParamsPerView = 2048;
+                              kFlareParamsAt = 1024, kSunMapParamsAt = 1536, kParamsPerView = 2048;
 
 }  // namespace flarekit::vk

@@ -69,7 +69,13 @@ Result<EngineRun> runEngineSceneOnVulkan(const Scene& scene, const EngineRunOpti
     std::unique_ptr<fk_engine, EngineDeleter> engine(fk_engine_create_vulkan(&device, count));
     if (!engine) return internalError(fk_error(nullptr));
     fk_engine* e = engine.get();
-    if (fk_engine_set_samples(e, o.measure.samplesPerSide) < 0) return invalidInput(fk_error(e));
+    if (fk_engine_set_samples(e, o.measure.samplesPerSide) < 0 ||
+        fk_engine_set_tile_threshold(e, o.measure.tileBelowSamples) < 0)
+        return invalidInput(fk_error(e));
+    // Small lights from sun maps, drawn with the scene's objects as an application's would.
+    auto occluders = VulkanOccluders::create(host, scene);
+    if (!occluders) return occluders.error();
+    fk_engine_set_vulkan_occluder_callback(e, &VulkanOccluders::draw, occluders->get());
     auto lights = sceneEngineLights(e, scene, o);
     if (!lights) return lights.error();
     const fk_frame frame = vulkanFrame(engineFrame(scene, renderer));

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `--backend vulkan` of `flarekit lights` and `flarekit visibility --method compute`: the
 // scene rendered by flarekit's GL renderer (its colour and transmittance), its depth drawn
-// again by a Vulkan host as a Vulkan application's depth pass, and every light measured and
-// drawn through fk_engine_record_occlusion and fk_engine_record_draw.
+// again by a Vulkan host as a Vulkan application's depth pass (and its objects into the small
+// lights' sun maps by the Vulkan occluder callback), and every light measured and drawn through
+// fk_engine_record_occlusion and fk_engine_record_draw.
 #pragma once
 
 #include "flarekit/gl/EngineRun.h"
