@@ -5,12 +5,17 @@
 // pass on its depth image (fk_engine_record_occlusion) and every light's flare into its HDR
 // colour (fk_engine_record_draw) into its own command buffer, then its own tone map.
 //   embed-vk [--frames N] [--size WxH] [--out frame.ppm] [--scene-json S] [--coverage-json C]
-//            [--validate]
-// Headless: it renders N frames (default 3) and writes the last to --out (and the last frame's
-// world as a flarekit scene, and flarekit's coverage of each light, for `flarekit visibility`
-// to judge). --validate turns on the Khronos validation layer and fails (exit 1) on any
-// message it reports.
+//            [--validate] [--window | --headless]
+// With a display (and GLFW) it opens a window and presents each frame until the window is
+// closed (or --frames N frames); --headless, or no display, renders N frames (default 3) off
+// screen. Either way the last frame goes to --out (and the last frame's world as a flarekit
+// scene, and flarekit's coverage of each light, for `flarekit visibility` to judge).
+// --validate turns on the Khronos validation layer and fails (exit 1) on any message.
 #include <vulkan/vulkan.h>
+#if EMBED_HAS_GLFW
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+#endif
 
 #include <array>
 #include <cmath>
@@ -119,7 +124,7 @@ void pushBulb(std::vector<Vertex>& out, const Lamp& l) {
 struct Options {
     int frames = 3, width = 1280, height = 720;
     std::string out = "embed-vk.ppm", sceneJson, coverageJson;
-    bool validate = false;
+    bool validate = false, window = false, headless = false, framesGiven = false;
 };
 
 bool parse(int argc, char** argv, Options& o) {
@@ -127,7 +132,11 @@ bool parse(int argc, char** argv, Options& o) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
         if (a == "--frames" && more)
-            o.frames = std::atoi(argv[++i]);
+            o.frames = std::atoi(argv[++i]), o.framesGiven = true;
+        else if (a == "--window")
+            o.window = true;
+        else if (a == "--headless")
+            o.headless = true;
         else if (a == "--size" && more) {
             if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2) return false;
         } else if (a == "--out" && more)
@@ -141,7 +150,8 @@ bool parse(int argc, char** argv, Options& o) {
         else
             return false;
     }
-    return o.frames >= 1 && o.width >= 16 && o.height >= 16 && o.width <= 8192 && o.height <= 8192;
+    return !(o.window && o.headless) && o.frames >= 1 && o.width >= 16 && o.height >= 16 &&
+           o.width <= 8192 && o.height <= 8192;
 }
 
 int g_validationMessages = 0;
@@ -166,7 +176,8 @@ struct Gpu {
     VkQueue queue = VK_NULL_HANDLE;
     VkPhysicalDeviceMemoryProperties memory{};
 
-    explicit Gpu(bool validate) {
+    //! The instance, with `extensions` (a window system's surface extensions, if any).
+    Gpu(bool validate, std::vector<const char*> extensions) {
         VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
         app.pApplicationName = "embed-vk";
         app.apiVersion = VK_API_VERSION_1_3;
@@ -178,15 +189,15 @@ struct Gpu {
                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
         messages.pfnUserCallback = &onValidation;
         const char* layer = "VK_LAYER_KHRONOS_validation";
-        const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+        if (validate) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
         info.pApplicationInfo = &app;
+        info.enabledExtensionCount = uint32_t(extensions.size());
+        info.ppEnabledExtensionNames = extensions.data();
         if (validate) {
             info.pNext = &messages;
             info.enabledLayerCount = 1;
             info.ppEnabledLayerNames = &layer;
-            info.enabledExtensionCount = 1;
-            info.ppEnabledExtensionNames = &extension;
         }
         check(vkCreateInstance(&info, nullptr, &instance), "no Vulkan 1.3 instance");
         if (validate) {
@@ -194,6 +205,11 @@ struct Gpu {
                 vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
             if (create) create(instance, &messages, nullptr, &messenger);
         }
+    }
+
+    //! The first device with a graphics-and-compute queue (that presents to `surface`, if
+    //! any), Vulkan 1.3's dynamic rendering on (flarekit's draw begins its own rendering).
+    void open(VkSurfaceKHR surface) {
         uint32_t count = 0;
         vkEnumeratePhysicalDevices(instance, &count, nullptr);
         std::vector<VkPhysicalDevice> devices(count);
@@ -203,10 +219,14 @@ struct Gpu {
             vkGetPhysicalDeviceQueueFamilyProperties(p, &n, nullptr);
             std::vector<VkQueueFamilyProperties> families(n);
             vkGetPhysicalDeviceQueueFamilyProperties(p, &n, families.data());
-            for (uint32_t f = 0; f < n && !physical; ++f)
+            for (uint32_t f = 0; f < n && !physical; ++f) {
+                VkBool32 presents = VK_TRUE;
+                if (surface) vkGetPhysicalDeviceSurfaceSupportKHR(p, f, surface, &presents);
                 if ((families[f].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
-                    (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT))
+                        (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT) &&
+                    presents)
                     physical = p, family = f;
+            }
         }
         if (!physical) fail("no Vulkan device with a graphics queue");
         vkGetPhysicalDeviceMemoryProperties(physical, &memory);
@@ -221,11 +241,14 @@ struct Gpu {
         deviceInfo.pNext = &v13;
         deviceInfo.queueCreateInfoCount = 1;
         deviceInfo.pQueueCreateInfos = &queueInfo;
+        const char* swapchain = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+        if (surface)
+            deviceInfo.enabledExtensionCount = 1, deviceInfo.ppEnabledExtensionNames = &swapchain;
         check(vkCreateDevice(physical, &deviceInfo, nullptr, &device), "no Vulkan 1.3 device");
         vkGetDeviceQueue(device, family, 0, &queue);
     }
     ~Gpu() {
-        vkDestroyDevice(device, nullptr);
+        if (device) vkDestroyDevice(device, nullptr);
         if (messenger) {
             auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
                 vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
@@ -418,10 +441,37 @@ int main(int argc, char** argv) {
     if (!parse(argc, argv, o)) {
         std::fprintf(stderr,
                      "usage: embed-vk [--frames N] [--size WxH] [--out F.ppm] [--scene-json S] "
-                     "[--coverage-json C] [--validate]\n");
+                     "[--coverage-json C] [--validate] [--window | --headless]\n");
         return 2;
     }
-    Gpu g(o.validate);
+    std::vector<const char*> extensions;
+#if EMBED_HAS_GLFW
+    GLFWwindow* window = nullptr;
+    const bool display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
+    const bool asked = o.window;
+    if (!o.headless && display) o.window = true;
+    if (o.window && (!glfwInit() || !glfwVulkanSupported())) {
+        if (asked) return std::fprintf(stderr, "embed-vk: no display for --window\n"), 2;
+        o.window = false;  // a display that does not answer: off screen instead
+    }
+    if (o.window) {
+        uint32_t n = 0;
+        const char** required = glfwGetRequiredInstanceExtensions(&n);
+        extensions.assign(required, required + n);
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+        glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
+        window = glfwCreateWindow(o.width, o.height, "flarekit embed-vk", nullptr, nullptr);
+        if (!window) return std::fprintf(stderr, "embed-vk: no window\n"), 1;
+    }
+#else
+    if (o.window) return std::fprintf(stderr, "embed-vk: built without GLFW\n"), 2;
+#endif
+    Gpu g(o.validate, extensions);
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+#if EMBED_HAS_GLFW
+    if (window) check(glfwCreateWindowSurface(g.instance, window, nullptr, &surface), "no surface");
+#endif
+    g.open(surface);
     const int w = o.width, h = o.height;
     constexpr int kFramesInFlight = 2;
     constexpr VkSampleCountFlagBits kMsaa = VK_SAMPLE_COUNT_4_BIT;
@@ -453,6 +503,52 @@ int main(int argc, char** argv) {
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                             VK_IMAGE_ASPECT_COLOR_BIT);
     Buffer readback = hostBuffer(g, VkDeviceSize(w) * h * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+
+    // With a window: a swapchain the tone-mapped frame is blitted to and presented from.
+    VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+    std::vector<VkImage> swapImages;
+    VkExtent2D swapExtent{uint32_t(w), uint32_t(h)};
+    if (surface) {
+        VkSurfaceCapabilitiesKHR caps{};
+        vkGetPhysicalDeviceSurfaceCapabilitiesKHR(g.physical, surface, &caps);
+        uint32_t n = 0;
+        vkGetPhysicalDeviceSurfaceFormatsKHR(g.physical, surface, &n, nullptr);
+        std::vector<VkSurfaceFormatKHR> formats(n);
+        vkGetPhysicalDeviceSurfaceFormatsKHR(g.physical, surface, &n, formats.data());
+        VkSurfaceFormatKHR format = formats.at(0);
+        for (const VkSurfaceFormatKHR& f : formats)
+            if (f.format == VK_FORMAT_B8G8R8A8_UNORM) format = f;
+        if (caps.currentExtent.width != UINT32_MAX) swapExtent = caps.currentExtent;
+        VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+        info.surface = surface;
+        info.minImageCount = caps.maxImageCount
+                                 ? std::min(caps.minImageCount + 1, caps.maxImageCount)
+                                 : caps.minImageCount + 1;
+        info.imageFormat = format.format;
+        info.imageColorSpace = format.colorSpace;
+        info.imageExtent = swapExtent;
+        info.imageArrayLayers = 1;
+        info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        info.preTransform = caps.currentTransform;
+        info.compositeAlpha =
+            (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
+                ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+                : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha &
+                                              (~caps.supportedCompositeAlpha + 1));
+        info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // every driver has it
+        info.clipped = VK_TRUE;
+        check(vkCreateSwapchainKHR(g.device, &info, nullptr, &swapchain), "vkCreateSwapchainKHR");
+        vkGetSwapchainImagesKHR(g.device, swapchain, &n, nullptr);
+        swapImages.resize(n);
+        vkGetSwapchainImagesKHR(g.device, swapchain, &n, swapImages.data());
+        std::printf("embed-vk: a %dx%d window (GLFW, %u swapchain images)\n", w, h, n);
+    }
+    VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    std::vector<VkSemaphore> acquired(2), presentable(swapImages.size());
+    for (VkSemaphore& sem : acquired)
+        check(vkCreateSemaphore(g.device, &semaphoreInfo, nullptr, &sem), "semaphore");
+    for (VkSemaphore& sem : presentable)
+        check(vkCreateSemaphore(g.device, &semaphoreInfo, nullptr, &sem), "semaphore");
 
     // Pipelines: the sky and the city into the MSAA targets, the tone map into the 8-bit frame.
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -572,12 +668,24 @@ int main(int argc, char** argv) {
     // The targets are reused by consecutive frames; one queue orders them (and the barriers
     // below make each frame's writes wait for the last frame's reads).
     City view = city;
-    for (int frame = 0; frame < o.frames; ++frame) {
+    int frames = 0;
+    for (int frame = 0; frame < o.frames || (swapchain && !o.framesGiven); ++frame) {
+#if EMBED_HAS_GLFW
+        if (window) {
+            glfwPollEvents();
+            if (glfwWindowShouldClose(window)) break;
+        }
+#endif
         const int slot = frame % kFramesInFlight;
         // Frame N may reuse what frame N - kFramesInFlight used: wait for it (flarekit's
         // frames_in_flight contract).
         vkWaitForFences(g.device, 1, &fences[slot], VK_TRUE, UINT64_MAX);
         vkResetFences(g.device, 1, &fences[slot]);
+        uint32_t image = 0;
+        if (swapchain)
+            check(vkAcquireNextImageKHR(g.device, swapchain, UINT64_MAX, acquired[size_t(slot)],
+                                        VK_NULL_HANDLE, &image),
+                  "vkAcquireNextImageKHR");
         VkCommandBuffer cmd = commands[slot];
         vkResetCommandBuffer(cmd, 0);
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -719,12 +827,27 @@ int main(int argc, char** argv) {
                                 0, nullptr);
         vkCmdDraw(cmd, 3, 1, 0, 0);
         vkCmdEndRendering(cmd);
-        if (frame == o.frames - 1) {  // the last frame to the host
-            transition(
-                cmd, ldr.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT);
+        transition(cmd, ldr.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_TRANSFER_READ_BIT);
+        if (swapchain) {  // the frame to the window
+            const VkImage target = swapImages[image];
+            transition(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+            VkImageBlit blit{};
+            blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            blit.srcOffsets[1] = {w, h, 1};
+            blit.dstOffsets[1] = {int32_t(swapExtent.width), int32_t(swapExtent.height), 1};
+            vkCmdBlitImage(cmd, ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+            transition(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+        }
+        {  // every frame to the host buffer (a window may close any time); the last is written
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {uint32_t(w), uint32_t(h), 1};
@@ -740,7 +863,25 @@ int main(int argc, char** argv) {
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = &cmd;
+        const VkPipelineStageFlags waitAt = VK_PIPELINE_STAGE_TRANSFER_BIT;
+        if (swapchain) {
+            submit.waitSemaphoreCount = 1;
+            submit.pWaitSemaphores = &acquired[size_t(slot)];
+            submit.pWaitDstStageMask = &waitAt;
+            submit.signalSemaphoreCount = 1;
+            submit.pSignalSemaphores = &presentable[image];
+        }
         check(vkQueueSubmit(g.queue, 1, &submit, fences[slot]), "vkQueueSubmit");
+        if (swapchain) {
+            VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+            present.waitSemaphoreCount = 1;
+            present.pWaitSemaphores = &presentable[image];
+            present.swapchainCount = 1;
+            present.pSwapchains = &swapchain;
+            present.pImageIndices = &image;
+            check(vkQueuePresentKHR(g.queue, &present), "vkQueuePresentKHR");
+        }
+        frames = frame + 1;
     }
     vkDeviceWaitIdle(g.device);
 
@@ -754,8 +895,8 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < size_t(w) * size_t(h); ++i)
         ppm.write(reinterpret_cast<const char*>(rgba + 4 * i), 3);
     if (!ppm.flush()) return std::fprintf(stderr, "embed-vk: cannot write %s\n", o.out.c_str()), 1;
-    std::printf("embed-vk: %d frames %dx%d, %zu lights (%d seen), last frame in %s\n", o.frames, w,
-                h, lights.size(), seen, o.out.c_str());
+    std::printf("embed-vk: %d frames %dx%d, %zu lights (%d seen), last frame in %s\n", frames, w, h,
+                lights.size(), seen, o.out.c_str());
     if (!o.sceneJson.empty() && !writeSceneJson(view, w, h, o.sceneJson)) return 1;
     if (!o.coverageJson.empty()) {
         std::ofstream c(o.coverageJson);
@@ -780,6 +921,13 @@ int main(int argc, char** argv) {
     for (Target* t : {&msColor, &msDepth, &hdr, &ldr}) destroy(g, *t);
     destroy(g, vertices);
     destroy(g, readback);
+    for (VkSemaphore sem : acquired) vkDestroySemaphore(g.device, sem, nullptr);
+    for (VkSemaphore sem : presentable) vkDestroySemaphore(g.device, sem, nullptr);
+    if (swapchain) vkDestroySwapchainKHR(g.device, swapchain, nullptr);
+    if (surface) vkDestroySurfaceKHR(g.instance, surface, nullptr);
+#if EMBED_HAS_GLFW
+    if (window) glfwDestroyWindow(window), glfwTerminate();
+#endif
     if (o.validate && g_validationMessages > 0) {
         std::fprintf(stderr, "embed-vk: %d validation messages\n", g_validationMessages);
         return 1;

@@ -142,6 +142,24 @@ TEST(Package, AVulkanApplicationBuildsAgainstThePackageAndMatchesTheRayCasterUnd
     }
     EXPECT_GE(compared, 40);
     EXPECT_GE(hidden, 10);
+
+    // With a display it opens a window (GLFW, a swapchain it presents to) and measures the same.
+    const Xvfb x;
+    ASSERT_FALSE(x.display().empty()) << "Xvfb did not start";
+    const std::string windowed = dir.file("windowed.json");
+    ASSERT_EQ(
+        run("DISPLAY=" + x.display() + " " + build + "/embed-vk --validate --frames 3 --out " +
+                dir.file("window.ppm") + " --coverage-json " + windowed,
+            log),
+        0)
+        << slurp(log);
+    EXPECT_NE(slurp(log).find("a 1280x720 window (GLFW"), std::string::npos) << slurp(log);
+    EXPECT_EQ(slurp(log).find("validation"), std::string::npos) << slurp(log);
+    const auto inWindow = nlohmann::json::parse(slurp(windowed))["coverage"];
+    ASSERT_EQ(inWindow.size(), engine.size());
+    for (std::size_t i = 0; i < engine.size(); ++i)
+        EXPECT_NEAR(double(inWindow[i]), double(engine[i]), 1e-4) << "light " << i;
+    EXPECT_EQ(slurp(dir.file("window.ppm")), slurp(frame));  // the same frames, off screen or not
 }
 
 TEST(Package, AnOutsideProjectBuildsAgainstTheInstalledPackageAndMatchesTheRayCaster) {
