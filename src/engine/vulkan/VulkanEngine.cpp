@@ -331,75 +331,17 @@ Status VulkanEngine::Impl::createComputePipelines() {
 Result<VkPipeline> VulkanEngine::Impl::drawPipeline(VkFormat format) {
     for (auto& [f, p] : drawPipelines)
         if (f == format) return p;
-    VkPipelineShaderStageCreateInfo stages[2] = {
-        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO),
-        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO)};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = flareVert;
-    stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = flareFrag;
-    stages[1].pName = "main";
-    auto vertexInput = make<VkPipelineVertexInputStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-    auto viewport = make<VkPipelineViewportStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewport.viewportCount = viewport.scissorCount = 1;
-    auto raster = make<VkPipelineRasterizationStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.f;
-    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    // Premultiplied sprites added to the HDR colour, its alpha kept (the GL engine's blend).
-    VkPipelineColorBlendAttachmentState add{};
-    add.blendEnable = VK_TRUE;
-    add.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
-    add.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-    add.colorBlendOp = VK_BLEND_OP_ADD;
-    add.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-    add.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-    add.alphaBlendOp = VK_BLEND_OP_ADD;
-    add.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                         VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    auto blend = make<VkPipelineColorBlendStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    blend.attachmentCount = 1;
-    blend.pAttachments = &add;
-    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    auto dynamicState = make<VkPipelineDynamicStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dynamicState.dynamicStateCount = 2;
-    dynamicState.pDynamicStates = dynamic;
-    auto rendering =
-        make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &format;
-    auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-    info.pNext = &rendering;
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &vertexInput;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamicState;
-    info.layout = drawPipelineLayout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status s = check(d.api.vkCreateGraphicsPipelines(d.device, VK_NULL_HANDLE, 1, &info,
-                                                         d.allocator, &pipeline),
-                         "vkCreateGraphicsPipelines");
-        !s)
-        return s.error();
-    drawPipelines.push_back({format, pipeline});
-    return pipeline;
+    PipelineDesc desc;
+    desc.vertex = flareVert;
+    desc.fragment = flareFrag;
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;  // four vertices a quad, instanced
+    desc.blend = PipelineDesc::Blend::Add;
+    desc.color = format;
+    desc.layout = drawPipelineLayout;
+    auto pipeline = d.makePipeline(desc);
+    if (!pipeline) return pipeline.error();
+    drawPipelines.push_back({format, *pipeline});
+    return *pipeline;
 }
 
 void VulkanEngine::Impl::beginFrame(std::uint64_t frame) {

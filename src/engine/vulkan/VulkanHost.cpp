@@ -487,64 +487,17 @@ Result<VkPipeline> VulkanHost::Impl::depthPipeline(VkFormat format, int samples,
         if (k == key) return p;
     auto module = d.makeShader(exported::vk_depth_vert_spv, exported::vk_depth_vert_spv_size);
     if (!module) return module.error();
-    auto stage =
-        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stage.module = *module;
-    stage.pName = "main";
-    const VkVertexInputBindingDescription binding{0, 12, VK_VERTEX_INPUT_RATE_VERTEX};
-    const VkVertexInputAttributeDescription attribute{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
-    auto input = make<VkPipelineVertexInputStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    input.vertexBindingDescriptionCount = input.vertexAttributeDescriptionCount = 1;
-    input.pVertexBindingDescriptions = &binding;
-    input.pVertexAttributeDescriptions = &attribute;
-    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    auto viewport = make<VkPipelineViewportStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewport.viewportCount = viewport.scissorCount = 1;
-    auto raster = make<VkPipelineRasterizationStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.f;
-    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
-    auto depthState = make<VkPipelineDepthStencilStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
-    depthState.depthTestEnable = depthState.depthWriteEnable = VK_TRUE;
-    depthState.depthCompareOp = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
-    auto blend = make<VkPipelineColorBlendStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    auto dynamicState = make<VkPipelineDynamicStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dynamicState.dynamicStateCount = 2;
-    dynamicState.pDynamicStates = dynamic;
-    auto rendering =
-        make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.depthAttachmentFormat = format;
-    auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-    info.pNext = &rendering;
-    info.stageCount = 1;
-    info.pStages = &stage;
-    info.pVertexInputState = &input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depthState;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamicState;
-    info.layout = depthLayout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    const VkResult r =
-        d.api.vkCreateGraphicsPipelines(d.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    PipelineDesc desc;
+    desc.vertex = *module;
+    desc.vertexStride = 12;
+    desc.samples = VkSampleCountFlagBits(samples);
+    desc.depth = format;
+    desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+    desc.layout = depthLayout;
+    auto made = d.makePipeline(desc);
     d.api.vkDestroyShaderModule(d.device, *module, nullptr);
-    if (Status s = check(r, "vkCreateGraphicsPipelines"); !s) return s.error();
+    if (!made) return made.error();
+    const VkPipeline pipeline = *made;
     depthPipelines.push_back({key, pipeline});
     return pipeline;
 }
@@ -652,76 +605,15 @@ VulkanOccluders::~VulkanOccluders() {
 
 Result<VkPipeline> VulkanOccluders::Impl::pipeline(VkShaderModule vert, VkShaderModule frag,
                                                    bool multiply, bool frontFacesOnly) const {
-    const Device& dev = d();
-    VkPipelineShaderStageCreateInfo stages[2] = {
-        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO),
-        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO)};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT, stages[0].module = vert, stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, stages[1].module = frag;
-    stages[1].pName = "main";
-    const VkVertexInputBindingDescription binding{0, 12, VK_VERTEX_INPUT_RATE_VERTEX};
-    const VkVertexInputAttributeDescription attribute{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
-    auto input = make<VkPipelineVertexInputStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    input.vertexBindingDescriptionCount = input.vertexAttributeDescriptionCount = 1;
-    input.pVertexBindingDescriptions = &binding;
-    input.pVertexAttributeDescriptions = &attribute;
-    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    auto viewport = make<VkPipelineViewportStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewport.viewportCount = viewport.scissorCount = 1;
-    auto raster = make<VkPipelineRasterizationStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    // The same clip-space triangle faces the same way in GL and Vulkan (Vulkan's facing sum
-    // carries a sign for its y-down framebuffer): counter-clockwise fronts, as the mesh has.
-    raster.cullMode = frontFacesOnly ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.f;
-    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineColorBlendAttachmentState blendState{};
-    blendState.blendEnable = multiply ? VK_TRUE : VK_FALSE;
-    blendState.srcColorBlendFactor = blendState.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-    blendState.dstColorBlendFactor = blendState.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC_COLOR;
-    blendState.colorBlendOp = blendState.alphaBlendOp = VK_BLEND_OP_ADD;
-    blendState.colorWriteMask = 0xf;
-    auto blend = make<VkPipelineColorBlendStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    blend.attachmentCount = 1;
-    blend.pAttachments = &blendState;
-    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    auto dynamicState = make<VkPipelineDynamicStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dynamicState.dynamicStateCount = 2;
-    dynamicState.pDynamicStates = dynamic;
-    const VkFormat format = FK_VULKAN_SUN_MAP_FORMAT;
-    auto rendering =
-        make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &format;
-    auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-    info.pNext = &rendering;
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamicState;
-    info.layout = layout;
-    VkPipeline p = VK_NULL_HANDLE;
-    if (Status s = check(
-            dev.api.vkCreateGraphicsPipelines(dev.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
-            "vkCreateGraphicsPipelines");
-        !s)
-        return s.error();
-    return p;
+    PipelineDesc desc;
+    desc.vertex = vert;
+    desc.fragment = frag;
+    desc.vertexStride = 12;
+    desc.cull = frontFacesOnly ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    desc.blend = multiply ? PipelineDesc::Blend::Multiply : PipelineDesc::Blend::None;
+    desc.color = FK_VULKAN_SUN_MAP_FORMAT;
+    desc.layout = layout;
+    return d().makePipeline(desc);
 }
 
 Result<std::unique_ptr<VulkanOccluders>> VulkanOccluders::create(const VulkanHost& host,

@@ -131,6 +131,98 @@ Result<VkSampler> Device::makeSampler(VkFilter filter) const {
     return s;
 }
 
+Result<VkPipeline> Device::makePipeline(const PipelineDesc& p) const {
+    VkPipelineShaderStageCreateInfo stages[2] = {
+        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO),
+        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO)};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = p.vertex;
+    stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = p.fragment;
+    stages[1].pName = "main";
+    const VkVertexInputBindingDescription binding{0, p.vertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
+    const VkVertexInputAttributeDescription position{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+    auto input = make<VkPipelineVertexInputStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    if (p.vertexStride) {
+        input.vertexBindingDescriptionCount = input.vertexAttributeDescriptionCount = 1;
+        input.pVertexBindingDescriptions = &binding;
+        input.pVertexAttributeDescriptions = &position;
+    }
+    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = p.topology;
+    auto viewport = make<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = viewport.scissorCount = 1;
+    auto raster = make<VkPipelineRasterizationStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    // The same clip-space triangle faces the same way in GL and Vulkan (Vulkan's facing sum
+    // carries a sign for its y-down framebuffer): counter-clockwise fronts, as the meshes have.
+    raster.cullMode = p.cull;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.f;
+    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = p.samples;
+    auto depthState = make<VkPipelineDepthStencilStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+    depthState.depthTestEnable = depthState.depthWriteEnable =
+        p.depth != VK_FORMAT_UNDEFINED ? VK_TRUE : VK_FALSE;
+    depthState.depthCompareOp = p.depthCompare;
+    VkPipelineColorBlendAttachmentState blendState{};
+    blendState.blendEnable = p.blend != PipelineDesc::Blend::None ? VK_TRUE : VK_FALSE;
+    if (p.blend == PipelineDesc::Blend::Add) {
+        // Premultiplied sprites added to the HDR colour, its alpha kept (the GL engine's blend).
+        blendState.srcColorBlendFactor = blendState.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+        blendState.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        blendState.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    } else {
+        // Multiply: the tile x the source (a translucent occluder's 1 - opacity).
+        blendState.srcColorBlendFactor = blendState.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        blendState.dstColorBlendFactor = blendState.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC_COLOR;
+    }
+    blendState.colorBlendOp = blendState.alphaBlendOp = VK_BLEND_OP_ADD;
+    blendState.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    auto blend = make<VkPipelineColorBlendStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    blend.attachmentCount = p.color != VK_FORMAT_UNDEFINED ? 1 : 0;
+    blend.pAttachments = &blendState;
+    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    auto dynamicState = make<VkPipelineDynamicStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+    dynamicState.dynamicStateCount = 2;
+    dynamicState.pDynamicStates = dynamic;
+    auto rendering =
+        make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    rendering.colorAttachmentCount = blend.attachmentCount;
+    rendering.pColorAttachmentFormats = &p.color;
+    rendering.depthAttachmentFormat = p.depth;
+    auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+    info.pNext = &rendering;
+    info.stageCount = p.fragment ? 2 : 1;
+    info.pStages = stages;
+    info.pVertexInputState = &input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depthState;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamicState;
+    info.layout = p.layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    if (Status s = check(
+            api.vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, allocator, &pipeline),
+            "vkCreateGraphicsPipelines");
+        !s)
+        return s.error();
+    return pipeline;
+}
+
 void Device::destroy(Buffer& b) const {
     if (b.buffer) api.vkDestroyBuffer(device, b.buffer, allocator);
     if (b.memory) api.vkFreeMemory(device, b.memory, allocator);  // unmaps too

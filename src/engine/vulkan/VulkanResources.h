@@ -26,6 +26,20 @@ struct Image {
     VkImageView view = VK_NULL_HANDLE;
 };
 
+//! A graphics pipeline for dynamic rendering, with viewport and scissor dynamic: the few
+//! things the backend's and its host's pipelines differ in.
+struct PipelineDesc {
+    VkShaderModule vertex = VK_NULL_HANDLE, fragment = VK_NULL_HANDLE;  //!< fragment optional
+    std::uint32_t vertexStride = 0;  //!< a vec3 position at location 0 of this stride (0: none)
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkCullModeFlags cull = VK_CULL_MODE_NONE;  //!< counter-clockwise fronts
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    enum class Blend { None, Add, Multiply } blend = Blend::None;  //!< Add: rgb ONE+ONE, alpha kept
+    VkFormat color = VK_FORMAT_UNDEFINED, depth = VK_FORMAT_UNDEFINED;
+    VkCompareOp depthCompare = VK_COMPARE_OP_LESS;  //!< with a depth format: test and write
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+};
+
 //! The device and what creating objects on it needs.
 struct Device {
     Api api;
@@ -43,6 +57,7 @@ struct Device {
                             VkImageUsageFlags usage) const;
     Result<VkShaderModule> makeShader(const unsigned char* spirv, std::size_t size) const;
     Result<VkSampler> makeSampler(VkFilter filter) const;
+    Result<VkPipeline> makePipeline(const PipelineDesc& desc) const;
     void destroy(Buffer& b) const;
     void destroy(Image& i) const;
 
