@@ -15,6 +15,7 @@
 
 #include "LightScenes.h"
 #include "engine/vulkan/VulkanHost.h"
+#include "engine/vulkan/VulkanRun.h"
 #include "flarekit/flarekit_vulkan.h"
 #include "flarekit/gl/EngineScene.h"
 #include "scene/SceneMesh.h"
@@ -69,11 +70,7 @@ void setUp(Bench& b) {
     fr.projection[10] = float(far / (n - far));
     fr.projection[11] = -1.f;
     fr.projection[14] = float(far * n / (n - far));
-    std::array<float, 16> vp{};
-    for (int col = 0; col < 4; ++col)
-        for (int r = 0; r < 4; ++r)
-            for (int k = 0; k < 4; ++k)
-                vp[std::size_t(4 * col + r)] += fr.projection[4 * k + r] * fr.view[4 * col + k];
+    const std::array<float, 16> vp = vk::viewProjection(fr);
     auto depth = b.host->depthImage(kWidth, kHeight, 4, VK_FORMAT_D32_SFLOAT);
     if (!depth) {
         b.error = depth.error().message;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The city as a triangle mesh, and the camera maths both embedding examples (embed-gl, embed-vk)
-// share: each application still owns its own renderer; only the world and its matrices are
-// common, so the two draw the same frame.
+// The city as a triangle mesh, its lights as flarekit sees them, and the camera maths both
+// embedding examples (embed-gl, embed-vk) share: each application still owns its renderer;
+// only the world and its matrices are common, so the two draw the same frame.
 #pragma once
 
 #include <array>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "City.h"
+#include "flarekit/flarekit.h"
 
 using Mat = std::array<float, 16>;  // column-major
 
@@ -83,4 +84,36 @@ inline void pushBulb(std::vector<Vertex>& out, const Lamp& l) {
                          d = at(sl, st + 1);
             for (const Vertex& v : {a, b, c, a, c, d}) out.push_back(v);
         }
+}
+
+//! The unit vector toward the sun.
+inline V3 sunToward(const City& city) {
+    const V3& d = city.sunDirection;
+    const float l = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    return {d.x / l, d.y / l, d.z / l};
+}
+
+//! The sun, then every lamp, as flarekit lights with these presets.
+inline std::vector<fk_light> cityLights(const City& city, int sunPreset, int lampPreset) {
+    const V3 sun = sunToward(city);
+    std::vector<fk_light> lights;
+    fk_light s{};
+    s.type = FK_LIGHT_DIRECTIONAL;
+    s.direction[0] = sun.x, s.direction[1] = sun.y, s.direction[2] = sun.z;
+    s.radius = city.sunRadiusDeg;
+    s.color[0] = 1.f, s.color[1] = 0.87f, s.color[2] = 0.67f;
+    s.intensity = 3000.f;
+    s.preset = sunPreset;
+    lights.push_back(s);
+    for (const Lamp& l : city.lamps) {
+        fk_light p{};
+        p.type = FK_LIGHT_POINT;
+        p.position[0] = l.position.x, p.position[1] = l.position.y, p.position[2] = l.position.z;
+        p.radius = l.radius;
+        p.color[0] = 1.f, p.color[1] = 0.75f, p.color[2] = 0.45f;
+        p.intensity = 2500.f;  // sodium-bright against the dusk: flares a fifth of the sun's
+        p.preset = lampPreset;
+        lights.push_back(p);
+    }
+    return lights;
 }

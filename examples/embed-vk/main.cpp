@@ -553,29 +553,8 @@ int main(int argc, char** argv) {
     const int lampPreset = fk_engine_load_preset(flares, "subtle");
     if (sunPreset < 0 || lampPreset < 0)
         return std::fprintf(stderr, "embed-vk: %s\n", fk_error(flares)), 1;
-    const float sl = std::sqrt(city.sunDirection.x * city.sunDirection.x +
-                               city.sunDirection.y * city.sunDirection.y +
-                               city.sunDirection.z * city.sunDirection.z);
-    const V3 sun{city.sunDirection.x / sl, city.sunDirection.y / sl, city.sunDirection.z / sl};
-    std::vector<fk_light> lights;
-    fk_light sunLight{};
-    sunLight.type = FK_LIGHT_DIRECTIONAL;
-    sunLight.direction[0] = sun.x, sunLight.direction[1] = sun.y, sunLight.direction[2] = sun.z;
-    sunLight.radius = city.sunRadiusDeg;
-    sunLight.color[0] = 1.f, sunLight.color[1] = 0.87f, sunLight.color[2] = 0.67f;
-    sunLight.intensity = 3000.f;
-    sunLight.preset = sunPreset;
-    lights.push_back(sunLight);
-    for (const Lamp& l : city.lamps) {
-        fk_light p{};
-        p.type = FK_LIGHT_POINT;
-        p.position[0] = l.position.x, p.position[1] = l.position.y, p.position[2] = l.position.z;
-        p.radius = l.radius;
-        p.color[0] = 1.f, p.color[1] = 0.75f, p.color[2] = 0.45f;
-        p.intensity = 2500.f;
-        p.preset = lampPreset;
-        lights.push_back(p);
-    }
+    const V3 sun = sunToward(city);
+    const std::vector<fk_light> lights = cityLights(city, sunPreset, lampPreset);
 
     // Frames in flight: a command buffer and a fence each.
     VkCommandPoolCreateInfo commandPoolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -16,6 +16,7 @@
 #include "EngineTesting.h"
 #include "LightScenes.h"
 #include "engine/vulkan/VulkanHost.h"
+#include "engine/vulkan/VulkanRun.h"
 #include "flarekit/Temporal.h"
 #include "flarekit/flarekit_vulkan.h"
 #include "gl/GlObjects.h"
@@ -60,15 +61,6 @@ fk_frame vulkanFrame(const Scene& scene, fk_depth_convention convention) {
     return f;
 }
 
-std::array<float, 16> viewProjection(const fk_frame& f) {
-    std::array<float, 16> vp{};
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            for (int k = 0; k < 4; ++k)
-                vp[std::size_t(4 * c + r)] += f.projection[4 * k + r] * f.view[4 * c + k];
-    return vp;
-}
-
 //! The depth of `scene` drawn by the host, and what an fk_vulkan_frame says of it.
 struct VulkanDepth {
     vk::DepthImage image;
@@ -83,7 +75,7 @@ std::unique_ptr<VulkanDepth> drawVulkanDepth(const Scene& scene, const fk_frame&
     EXPECT_TRUE(image.ok()) << image.error().message;
     if (!image.ok()) return d;
     d->image = *image;
-    const auto vp = viewProjection(f);
+    const auto vp = vk::viewProjection(f);
     const Status drawn = host().drawDepth(d->image, opaqueMesh(scene), vp.data(),
                                           f.depth_convention == FK_DEPTH_REVERSED_Z);
     EXPECT_TRUE(drawn.ok()) << drawn.error().message;

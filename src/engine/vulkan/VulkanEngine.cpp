@@ -71,20 +71,6 @@ void barrier(const Api& api, VkCommandBuffer cmd, VkPipelineStageFlags srcStage,
     api.vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 1, &b, 0, nullptr, 0, nullptr);
 }
 
-void imageBarrier(const Api& api, VkCommandBuffer cmd, VkImage image, VkImageLayout from,
-                  VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-    auto b = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    api.vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
-
 //! `bytes` into `buffer` at `offset` from the command buffer, in vkCmdUpdateBuffer's pieces.
 void update(const Api& api, VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset,
             const void* bytes, VkDeviceSize size) {
@@ -397,18 +383,19 @@ Status VulkanEngine::Impl::ensureSprites(LoadedPreset& p, int presetId, int heig
         }
         floatsToHalf(s.image.data(), std::size_t(w) * std::size_t(h), 4,
                      static_cast<std::uint16_t*>(staging->mapped));
-        imageBarrier(d.api, cmd, sprite.image.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        imageBarrier(d.api, cmd, sprite.image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {std::uint32_t(w), std::uint32_t(h), 1};
         d.api.vkCmdCopyBufferToImage(cmd, staging->buffer, sprite.image.image,
                                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        imageBarrier(d.api, cmd, sprite.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                     VK_ACCESS_SHADER_READ_BIT);
+        imageBarrier(d.api, cmd, sprite.image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
         Buffer used = *staging;
         retire([this, used]() mutable { d.destroy(used); });
         auto element =
@@ -489,7 +476,7 @@ Status VulkanEngine::Impl::measureSunMaps(VkCommandBuffer cmd, int view, const f
     if (a.vkAllocateDescriptorSets(d.device, &alloc, &set) != VK_SUCCESS)
         return invalidInput("vulkan frame.frame_index: too many occlusion calls in one frame");
     // The previous reduction's reads of the atlas end before it is drawn again.
-    imageBarrier(a, cmd, atlas.image, VK_IMAGE_LAYOUT_UNDEFINED,
+    imageBarrier(a, cmd, atlas.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                  VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
@@ -520,8 +507,8 @@ Status VulkanEngine::Impl::measureSunMaps(VkCommandBuffer cmd, int view, const f
         occluders(occludersUser, cmd, view, i, vp);
     }
     a.vkCmdEndRendering(cmd);
-    imageBarrier(a, cmd, atlas.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    imageBarrier(a, cmd, atlas.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                  VK_ACCESS_SHADER_READ_BIT);
@@ -745,9 +732,10 @@ Status VulkanEngine::recordOcclusion(int view, const fk_vulkan_frame* vk, const 
                             " (is frame_index counting frames?)");
     }
     if (!m->coverageReady) {
-        imageBarrier(a, cmd, m->coverageImage.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+        imageBarrier(a, cmd, m->coverageImage.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_SHADER_WRITE_BIT);
         m->coverageReady = true;
     }
     // Earlier passes' reads of the lights and parameters end before they are rewritten.

@@ -290,54 +290,42 @@ Result<double> VulkanHost::submitTimed(const std::function<void(VkCommandBuffer)
     return double(ticks[1] - ticks[0]) * double(m->d.properties.limits.timestampPeriod) * 1e-6;
 }
 
-namespace {
-void layoutBarrier(const Api& a, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
-                   VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
-                   VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                   VkAccessFlags dstAccess) {
-    auto b = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {aspect, 0, 1, 0, 1};
-    a.vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
-}  // namespace
-
-Result<Image> VulkanHost::colorImage(VkFormat format, int width, int height, const float* rgba) {
+Result<Image> VulkanHost::upload(VkFormat format, int width, int height, const float* rgba,
+                                 VkImageUsageFlags usage, VkImageLayout layout,
+                                 VkPipelineStageFlags stage, VkAccessFlags access) {
     const Device& d = m->d;
+    const bool half = format == VK_FORMAT_R16G16B16A16_SFLOAT;
+    if (!half && format != VK_FORMAT_R32G32B32A32_SFLOAT)
+        return internalError("VulkanHost: expected an RGBA16F or RGBA32F image");
     auto image = d.makeImage(format, std::uint32_t(width), std::uint32_t(height),
-                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+                             usage | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     if (!image) return image.error();
-    const VkDeviceSize bytes = VkDeviceSize(width) * VkDeviceSize(height) * 16;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    const VkDeviceSize bytes = VkDeviceSize(pixels) * (half ? 8 : 16);
     auto staging = d.makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
     if (!staging) {
         d.destroy(*image);
         return staging.error();
     }
-    if (rgba)
-        std::memcpy(staging->mapped, rgba, bytes);
-    else
+    if (!rgba)
         std::memset(staging->mapped, 0, bytes);
+    else if (half)
+        floatsToHalf(rgba, pixels, 4, static_cast<std::uint16_t*>(staging->mapped));
+    else
+        std::memcpy(staging->mapped, rgba, bytes);
     const VkImage target = image->image;
     Status s = submit([&](VkCommandBuffer cmd) {
-        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        imageBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {std::uint32_t(width), std::uint32_t(height), 1};
         d.api.vkCmdCopyBufferToImage(cmd, staging->buffer, target,
                                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                      VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        imageBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT, stage, access);
     });
     d.destroy(*staging);
     if (!s) {
@@ -347,41 +335,18 @@ Result<Image> VulkanHost::colorImage(VkFormat format, int width, int height, con
     return *image;
 }
 
+Result<Image> VulkanHost::colorImage(VkFormat format, int width, int height, const float* rgba) {
+    return upload(format, width, height, rgba,
+                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
 Result<Image> VulkanHost::sampledImage(int width, int height, const float* rgba) {
-    const Device& d = m->d;
-    auto image =
-        d.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, std::uint32_t(width), std::uint32_t(height),
-                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    if (!image) return image.error();
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    auto staging = d.makeBuffer(VkDeviceSize(pixels) * 8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-    if (!staging) {
-        d.destroy(*image);
-        return staging.error();
-    }
-    floatsToHalf(rgba, pixels, 4, static_cast<std::uint16_t*>(staging->mapped));
-    const VkImage target = image->image;
-    Status s = submit([&](VkCommandBuffer cmd) {
-        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {std::uint32_t(width), std::uint32_t(height), 1};
-        d.api.vkCmdCopyBufferToImage(cmd, staging->buffer, target,
-                                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        layoutBarrier(d.api, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_SHADER_READ_BIT);
-    });
-    d.destroy(*staging);
-    if (!s) {
-        d.destroy(*image);
-        return s.error();
-    }
-    return *image;
+    return upload(VK_FORMAT_R16G16B16A16_SFLOAT, width, height, rgba, VK_IMAGE_USAGE_SAMPLED_BIT,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT);
 }
 
 Result<std::vector<float>> VulkanHost::readColor(const Image& image, int width, int height) {
@@ -390,21 +355,21 @@ Result<std::vector<float>> VulkanHost::readColor(const Image& image, int width, 
     auto staging = d.makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     if (!staging) return staging.error();
     Status s = submit([&](VkCommandBuffer cmd) {
-        layoutBarrier(
-            d.api, cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
-            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-            VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        imageBarrier(d.api, cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {std::uint32_t(width), std::uint32_t(height), 1};
         m->h.vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                     staging->buffer, 1, &region);
-        layoutBarrier(d.api, cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                      VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        imageBarrier(d.api, cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
         auto host = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
         host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -521,12 +486,12 @@ Status VulkanHost::drawDepth(const DepthImage& depth, const std::vector<float>& 
     const VkImageAspectFlags aspect =
         VK_IMAGE_ASPECT_DEPTH_BIT | (stencil ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
     Status s = submit([&](VkCommandBuffer cmd) {
-        layoutBarrier(d.api, cmd, depth.image, aspect, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                      VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+        imageBarrier(d.api, cmd, depth.image, aspect, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
         auto attachment =
             make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
         attachment.imageView = depth.view;
@@ -551,7 +516,7 @@ Status VulkanHost::drawDepth(const DepthImage& depth, const std::vector<float>& 
             d.api.vkCmdDraw(cmd, std::uint32_t(mesh.size() / 3), 1, 0, 0);
         }
         d.api.vkCmdEndRendering(cmd);
-        layoutBarrier(
+        imageBarrier(
             d.api, cmd, depth.image, aspect, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
             VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
             VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,

@@ -63,8 +63,9 @@ class VulkanHost {
     Status submit(const std::function<void(VkCommandBuffer)>& record);
     //! As submit, with timestamps before and after `record`'s commands: their GPU time in ms.
     Result<double> submitTimed(const std::function<void(VkCommandBuffer)>& record);
-    //! A colour image in COLOR_ATTACHMENT_OPTIMAL usable as attachment, transfer source and
-    //! destination, holding `rgba` (width x height x 4 floats, rows from the top).
+    //! A colour image (RGBA16F or RGBA32F) in COLOR_ATTACHMENT_OPTIMAL usable as attachment,
+    //! transfer source and destination, holding `rgba` (width x height x 4 floats, rows from the
+    //! top; null: zero).
     Result<Image> colorImage(VkFormat format, int width, int height, const float* rgba);
     //! A sampled RGBA16F image in SHADER_READ_ONLY_OPTIMAL holding `rgba` (rows from the top),
     //! visible to compute shaders: the application's transmittance, say.
@@ -86,6 +87,11 @@ class VulkanHost {
 
   private:
     friend class VulkanOccluders;
+    //! An RGBA16F or RGBA32F image holding `rgba` (zero if null), left in `layout` for
+    //! `stage`'s `access`.
+    Result<Image> upload(VkFormat format, int width, int height, const float* rgba,
+                         VkImageUsageFlags usage, VkImageLayout layout, VkPipelineStageFlags stage,
+                         VkAccessFlags access);
     struct Impl;
     explicit VulkanHost(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m;

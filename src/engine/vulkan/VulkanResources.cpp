@@ -10,6 +10,20 @@ Status check(VkResult result, const char* call) {
     return internalError(std::string(call) + " failed: " + resultName(result));
 }
 
+void imageBarrier(const Api& api, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
+                  VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    auto b = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+    b.srcAccessMask = srcAccess;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
+    api.vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
 Result<VkDeviceMemory> Device::allocate(const VkMemoryRequirements& r,
                                         VkMemoryPropertyFlags wanted) const {
     for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {

@@ -74,6 +74,12 @@ T make(VkStructureType type) {
     return v;
 }
 
+//! One image's layout change (aspect `aspect`, its only level and layer), ordered after what
+//! `srcStage` did with `srcAccess` and before `dstStage`'s `dstAccess`.
+void imageBarrier(const Api& api, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
+                  VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
 //! `call`'s name and result as an internal error (a driver refusal), or Ok.
 Status check(VkResult result, const char* call);
 

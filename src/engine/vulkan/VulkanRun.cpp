@@ -34,15 +34,6 @@ fk_frame vulkanFrame(fk_frame f) {
     return f;
 }
 
-std::array<float, 16> viewProjection(const fk_frame& f) {
-    std::array<float, 16> vp{};
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            for (int k = 0; k < 4; ++k)
-                vp[std::size_t(4 * c + r)] += f.projection[4 * k + r] * f.view[4 * c + k];
-    return vp;
-}
-
 std::vector<float> opaqueTriangles(const Scene& scene) {
     std::vector<float> xyz;
     for (const MeshVertex& v : buildSceneMesh(opaqueObjects(scene)))
@@ -51,6 +42,15 @@ std::vector<float> opaqueTriangles(const Scene& scene) {
 }
 
 }  // namespace
+
+std::array<float, 16> viewProjection(const fk_frame& f) {
+    std::array<float, 16> vp{};
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            for (int k = 0; k < 4; ++k)
+                vp[std::size_t(4 * c + r)] += f.projection[4 * k + r] * f.view[4 * c + k];
+    return vp;
+}
 
 Result<EngineRun> runEngineSceneOnVulkan(const Scene& scene, const EngineRunOptions& o,
                                          const SceneRenderer& renderer) {

@@ -6,9 +6,14 @@
 // fk_engine_record_occlusion and fk_engine_record_draw.
 #pragma once
 
+#include <array>
+
 #include "flarekit/gl/EngineRun.h"
 
 namespace flarekit::vk {
+
+//! projection x view of a frame, column-major (what a depth pass draws with).
+std::array<float, 16> viewProjection(const fk_frame& f);
 
 //! runEngineScene's Vulkan half: `renderer` has drawn `scene` (its GL context current).
 Result<EngineRun> runEngineSceneOnVulkan(const Scene& scene, const EngineRunOptions& options,
