@@ -119,22 +119,13 @@ Result<int> Engine::loadPresetJson(const char* json, std::size_t length) {
 }
 
 Status Engine::setSamples(int perSide) {
-    if (perSide < 1 || perSide > kMaxSamplesPerSide) {
-        return invalidInput("samples_per_side: expected 1.." + std::to_string(kMaxSamplesPerSide) +
-                            ", got " + std::to_string(perSide));
-    }
+    if (Status s = checkSamplesPerSide(perSide); !s) return s;
     m->samplesPerSide = perSide;
     return Ok{};
 }
 
 Status Engine::setTemporal(float attackSeconds, float releaseSeconds, float guardBand) {
-    TemporalParams t = m->temporal;
-    t.attackSeconds = attackSeconds;
-    t.releaseSeconds = releaseSeconds;
-    t.guardBand = guardBand;
-    if (Status s = validateTemporalParams(t); !s) return s;
-    m->temporal = t;
-    return Ok{};
+    return setTemporalParams(m->temporal, attackSeconds, releaseSeconds, guardBand);
 }
 
 Status Engine::setTransmittance(int view, unsigned texture) {

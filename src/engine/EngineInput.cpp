@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "engine/EngineInput.h"
 
+#include "engine/Engine.h"
+
 #include <epoxy/gl.h>
 
 #include <cmath>
@@ -102,6 +104,25 @@ Result<DepthTextureInfo> checkFrame(const fk_frame* frame, const std::string& at
         return invalidInput(texture + "expected at most 16 samples, got " +
                             std::to_string(samples));
     return info;
+}
+
+Status checkSamplesPerSide(int perSide) {
+    if (perSide < 1 || perSide > kMaxSamplesPerSide) {
+        return invalidInput("samples_per_side: expected 1.." + std::to_string(kMaxSamplesPerSide) +
+                            ", got " + std::to_string(perSide));
+    }
+    return Ok{};
+}
+
+Status setTemporalParams(TemporalParams& t, float attackSeconds, float releaseSeconds,
+                         float guardBand) {
+    TemporalParams next = t;
+    next.attackSeconds = attackSeconds;
+    next.releaseSeconds = releaseSeconds;
+    next.guardBand = guardBand;
+    if (Status s = validateTemporalParams(next); !s) return s;
+    t = next;
+    return Ok{};
 }
 
 Status checkLights(const fk_light* lights, int count, int maxLights, int presetCount) {

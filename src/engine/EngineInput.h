@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "flarekit/Result.h"
+#include "flarekit/Temporal.h"
 #include "flarekit/flarekit.h"
 
 namespace flarekit::engine {
@@ -33,6 +34,14 @@ Status checkLights(const fk_light* lights, int count, int maxLights, int presetC
 //! The lights as the shaders' Light records (light_view.glsl): 16 floats each, directional
 //! radii turned into radians. `packed` is resized to count x 16.
 void packLights(const fk_light* lights, int count, std::vector<float>& packed);
+
+//! samples_per_side in 1..kMaxSamplesPerSide (fk_engine_set_samples).
+Status checkSamplesPerSide(int perSide);
+
+//! `t` with the filter's time constants and edge-fade width replaced, if they are valid
+//! (fk_engine_set_temporal); `t` is left as it was otherwise.
+Status setTemporalParams(TemporalParams& t, float attackSeconds, float releaseSeconds,
+                         float guardBand);
 
 //! A view index: 0..FK_MAX_VIEWS - 1.
 Status checkView(int view);

@@ -619,23 +619,13 @@ Result<int> VulkanEngine::addPreset(Preset preset) {
 }
 
 Status VulkanEngine::setSamples(int perSide) {
-    if (perSide < 1 || perSide > engine::kMaxSamplesPerSide) {
-        return invalidInput("samples_per_side: expected 1.." +
-                            std::to_string(engine::kMaxSamplesPerSide) + ", got " +
-                            std::to_string(perSide));
-    }
+    if (Status s = engine::checkSamplesPerSide(perSide); !s) return s;
     m->samplesPerSide = perSide;
     return Ok{};
 }
 
 Status VulkanEngine::setTemporal(float attackSeconds, float releaseSeconds, float guardBand) {
-    TemporalParams t = m->temporal;
-    t.attackSeconds = attackSeconds;
-    t.releaseSeconds = releaseSeconds;
-    t.guardBand = guardBand;
-    if (Status s = validateTemporalParams(t); !s) return s;
-    m->temporal = t;
-    return Ok{};
+    return engine::setTemporalParams(m->temporal, attackSeconds, releaseSeconds, guardBand);
 }
 
 Status VulkanEngine::setGuardBand(int view, bool enabled) {
