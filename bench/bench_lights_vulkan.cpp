@@ -80,7 +80,7 @@ void setUp(Bench& b) {
     std::vector<float> mesh;
     for (const MeshVertex& v : buildSceneMesh(opaqueObjects(b.scene)))
         mesh.insert(mesh.end(), v.position, v.position + 3);
-    if (Status s = b.host->drawDepth(b.depth, mesh, vp.data(), false); !s) {
+    if (Status s = b.host->drawDepth(b.depth, mesh, vp.data(), FK_DEPTH_ZERO_TO_ONE); !s) {
         b.error = s.error().message;
         return;
     }

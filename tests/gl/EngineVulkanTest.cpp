@@ -76,8 +76,8 @@ std::unique_ptr<VulkanDepth> drawVulkanDepth(const Scene& scene, const fk_frame&
     if (!image.ok()) return d;
     d->image = *image;
     const auto vp = vk::viewProjection(f);
-    const Status drawn = host().drawDepth(d->image, opaqueMesh(scene), vp.data(),
-                                          f.depth_convention == FK_DEPTH_REVERSED_Z);
+    const Status drawn =
+        host().drawDepth(d->image, opaqueMesh(scene), vp.data(), f.depth_convention);
     EXPECT_TRUE(drawn.ok()) << drawn.error().message;
     d->frame.depth_view = d->image.view;
     d->frame.depth_layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
@@ -121,7 +121,8 @@ TEST(EngineVulkan, CoverageMatchesTheGlBackendAndTheRayCasterUnderEachConvention
     const DepthPass pass(scene);
     std::uint64_t frameIndex = 0;
     for (int samples : {1, 4}) {
-        for (fk_depth_convention c : {FK_DEPTH_ZERO_TO_ONE, FK_DEPTH_REVERSED_Z}) {
+        for (fk_depth_convention c :  // [-1, 1] through VK_EXT_depth_clip_control
+             {FK_DEPTH_MINUS_ONE_TO_ONE, FK_DEPTH_ZERO_TO_ONE, FK_DEPTH_REVERSED_Z}) {
             const DepthTarget target =
                 makeDepthTarget(scene.width, scene.height, samples, GL_DEPTH_COMPONENT32F);
             const fk_frame glFrame = frameFor(scene, target, {0, 0, scene.width, scene.height}, c);

@@ -22,7 +22,8 @@ namespace {
     X(vkDestroyInstance)                        \
     X(vkEnumeratePhysicalDevices)               \
     X(vkGetPhysicalDeviceQueueFamilyProperties) \
-    X(vkCreateDevice)
+    X(vkCreateDevice)                           \
+    X(vkEnumerateDeviceExtensionProperties)
 #define FLAREKIT_VK_HOST_DEVICE(X) \
     X(vkDestroyDevice)             \
     X(vkGetDeviceQueue)            \
@@ -81,6 +82,7 @@ struct VulkanHost::Impl {
     VkCommandPool pool = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
     Messages messages;
+    bool clipControl = false;  //!< VK_EXT_depth_clip_control is on
     VkPipelineLayout depthLayout = VK_NULL_HANDLE;
     std::vector<std::pair<std::uint64_t, VkPipeline>> depthPipelines;  //!< by format, samples, Z
 
@@ -93,7 +95,7 @@ struct VulkanHost::Impl {
             h.vkDestroyDebugUtilsMessengerEXT(d.instance, messenger, nullptr);
         if (d.instance) h.vkDestroyInstance(d.instance, nullptr);
     }
-    Result<VkPipeline> depthPipeline(VkFormat format, int samples, bool reversedZ);
+    Result<VkPipeline> depthPipeline(VkFormat format, int samples, fk_depth_convention convention);
 };
 
 VulkanHost::VulkanHost(std::unique_ptr<Impl> impl) : m(std::move(impl)), m_device(&m->d) {}
@@ -185,8 +187,26 @@ Result<std::unique_ptr<VulkanHost>> VulkanHost::create(bool validation) {
     auto features13 = make<VkPhysicalDeviceVulkan13Features>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
     features13.dynamicRendering = VK_TRUE;
+    // Classic GL depth ([-1, 1] clip z) for FK_DEPTH_MINUS_ONE_TO_ONE frames, where the device
+    // has it (VK_EXT_depth_clip_control).
+    std::uint32_t extensionCount = 0;
+    h.vkEnumerateDeviceExtensionProperties(m->d.physical, nullptr, &extensionCount, nullptr);
+    std::vector<VkExtensionProperties> extensions(extensionCount);
+    h.vkEnumerateDeviceExtensionProperties(m->d.physical, nullptr, &extensionCount,
+                                           extensions.data());
+    const char* clipControlName = VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME;
+    for (const VkExtensionProperties& e : extensions)
+        m->clipControl |= std::strcmp(e.extensionName, clipControlName) == 0;
+    auto clipControl = make<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT);
+    clipControl.depthClipControl = VK_TRUE;
+    if (m->clipControl) features13.pNext = &clipControl;
     auto deviceInfo = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
     deviceInfo.pNext = &features13;
+    if (m->clipControl) {
+        deviceInfo.enabledExtensionCount = 1;
+        deviceInfo.ppEnabledExtensionNames = &clipControlName;
+    }
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
     if (Status s = check(h.vkCreateDevice(m->d.physical, &deviceInfo, nullptr, &m->d.device),
@@ -445,9 +465,10 @@ void VulkanHost::destroy(DepthImage& depth) const {
     depth = DepthImage{};
 }
 
-Result<VkPipeline> VulkanHost::Impl::depthPipeline(VkFormat format, int samples, bool reversedZ) {
+Result<VkPipeline> VulkanHost::Impl::depthPipeline(VkFormat format, int samples,
+                                                   fk_depth_convention convention) {
     const std::uint64_t key =
-        (std::uint64_t(format) << 8) | (std::uint64_t(samples) << 1) | (reversedZ ? 1u : 0u);
+        (std::uint64_t(format) << 8) | (std::uint64_t(samples) << 2) | std::uint64_t(convention);
     for (auto& [k, p] : depthPipelines)
         if (k == key) return p;
     auto module = d.makeShader(exported::vk_depth_vert_spv, exported::vk_depth_vert_spv_size);
@@ -457,7 +478,9 @@ Result<VkPipeline> VulkanHost::Impl::depthPipeline(VkFormat format, int samples,
     desc.vertexStride = 12;
     desc.samples = VkSampleCountFlagBits(samples);
     desc.depth = format;
-    desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+    desc.depthCompare =
+        convention == FK_DEPTH_REVERSED_Z ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+    desc.negativeOneToOne = convention == FK_DEPTH_MINUS_ONE_TO_ONE;
     desc.layout = depthLayout;
     auto made = d.makePipeline(desc);
     d.api.vkDestroyShaderModule(d.device, *module, nullptr);
@@ -468,9 +491,12 @@ Result<VkPipeline> VulkanHost::Impl::depthPipeline(VkFormat format, int samples,
 }
 
 Status VulkanHost::drawDepth(const DepthImage& depth, const std::vector<float>& mesh,
-                             const float viewProjection[16], bool reversedZ) {
+                             const float viewProjection[16], fk_depth_convention convention) {
     const Device& d = m->d;
-    auto pipeline = m->depthPipeline(depth.format, depth.samples, reversedZ);
+    if (convention == FK_DEPTH_MINUS_ONE_TO_ONE && !m->clipControl)
+        return invalidInput("depth_convention: [-1, 1] depth needs VK_EXT_depth_clip_control");
+    const bool reversedZ = convention == FK_DEPTH_REVERSED_Z;
+    auto pipeline = m->depthPipeline(depth.format, depth.samples, convention);
     if (!pipeline) return pipeline.error();
     Buffer vertices;
     if (!mesh.empty()) {

@@ -75,10 +75,11 @@ class VulkanHost {
     Result<DepthImage> depthImage(int width, int height, int samples, VkFormat format);
     void destroy(DepthImage& d) const;
     //! Draws `mesh` (triangle positions, xyz each) with `viewProjection` (column-major) into
-    //! `depth` (cleared to `clearDepth`, compared LESS or GREATER for reversed Z), and leaves
-    //! it in DEPTH_STENCIL_READ_ONLY_OPTIMAL, its writes visible to compute shaders.
+    //! `depth` under `convention` (cleared to the far value, compared LESS, or GREATER for
+    //! reversed Z; [-1, 1] clip z through VK_EXT_depth_clip_control), and leaves it in
+    //! DEPTH_STENCIL_READ_ONLY_OPTIMAL, its writes visible to compute shaders.
     Status drawDepth(const DepthImage& depth, const std::vector<float>& mesh,
-                     const float viewProjection[16], bool reversedZ);
+                     const float viewProjection[16], fk_depth_convention convention);
 
     //! Validation messages of warning or error severity so far, and the first one's text.
     int validationMessages() const;

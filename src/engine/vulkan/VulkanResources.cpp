@@ -170,6 +170,10 @@ Result<VkPipeline> Device::makePipeline(const PipelineDesc& p) const {
     auto viewport = make<VkPipelineViewportStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
     viewport.viewportCount = viewport.scissorCount = 1;
+    auto clipControl = make<VkPipelineViewportDepthClipControlCreateInfoEXT>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_DEPTH_CLIP_CONTROL_CREATE_INFO_EXT);
+    clipControl.negativeOneToOne = VK_TRUE;
+    if (p.negativeOneToOne) viewport.pNext = &clipControl;
     auto raster = make<VkPipelineRasterizationStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
     raster.polygonMode = VK_POLYGON_MODE_FILL;

@@ -37,6 +37,8 @@ struct PipelineDesc {
     enum class Blend { None, Add, Multiply } blend = Blend::None;  //!< Add: rgb ONE+ONE, alpha kept
     VkFormat color = VK_FORMAT_UNDEFINED, depth = VK_FORMAT_UNDEFINED;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS;  //!< with a depth format: test and write
+    //! Clip z in [-1, 1], as classic GL (VK_EXT_depth_clip_control, enabled on the device).
+    bool negativeOneToOne = false;
     VkPipelineLayout layout = VK_NULL_HANDLE;
 };
 

@@ -86,7 +86,8 @@ Result<EngineRun> runEngineSceneOnVulkan(const Scene& scene, const EngineRunOpti
     const std::unique_ptr<DepthImage, std::function<void(DepthImage*)>> depthOwner(
         &*depth, [&host](DepthImage* d) { host.destroy(*d); });
     const auto vp = viewProjection(frame);
-    if (Status s = host.drawDepth(*depth, opaqueTriangles(scene), vp.data(), false); !s)
+    if (Status s = host.drawDepth(*depth, opaqueTriangles(scene), vp.data(), FK_DEPTH_ZERO_TO_ONE);
+        !s)
         return s.error();
     fk_vulkan_frame vf{};
     vf.depth_view = depth->view;
