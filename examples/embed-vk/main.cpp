@@ -27,20 +27,12 @@
 #include <vector>
 
 #include "../embed-gl/CityMesh.h"  // the same city as embed-gl
-#include "embed_vk_shaders.h"      // the SPIR-V of shaders/ (glslc at build time)
+#include "Gpu.h"
+#include "Passes.h"
+#include "Swapchain.h"
 #include "flarekit/flarekit_vulkan.h"
 
 namespace {
-
-int fail(const char* what, VkResult r = VK_SUCCESS) {
-    std::fprintf(stderr, "embed-vk: %s%s%d%s\n", what, r ? " (VkResult " : "", int(r),
-                 r ? ")" : "");
-    std::exit(1);
-}
-
-void check(VkResult r, const char* what) {
-    if (r != VK_SUCCESS) fail(what, r);
-}
 
 //! Reversed-Z with an infinite far plane (near at depth 1, infinity at 0) and Vulkan's clip
 //! space (y down: the y scale is negative).
@@ -80,286 +72,6 @@ bool parse(int argc, char** argv, Options& o) {
     }
     return !(o.window && o.headless) && o.frames >= 1 && o.width >= 16 && o.height >= 16 &&
            o.width <= 8192 && o.height <= 8192;
-}
-
-int g_validationMessages = 0;
-
-VKAPI_ATTR VkBool32 VKAPI_CALL onValidation(VkDebugUtilsMessageSeverityFlagBitsEXT,
-                                            VkDebugUtilsMessageTypeFlagsEXT,
-                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                            void*) {
-    ++g_validationMessages;
-    std::fprintf(stderr, "embed-vk: validation: %s\n", data->pMessage);
-    return VK_FALSE;
-}
-
-//! The application's device: instance, the first device with a graphics queue, Vulkan 1.3's
-//! dynamic rendering on.
-struct Gpu {
-    VkInstance instance = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    uint32_t family = 0;
-    VkQueue queue = VK_NULL_HANDLE;
-    VkPhysicalDeviceMemoryProperties memory{};
-
-    //! The instance, with `extensions` (a window system's surface extensions, if any).
-    Gpu(bool validate, std::vector<const char*> extensions) {
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.pApplicationName = "embed-vk";
-        app.apiVersion = VK_API_VERSION_1_3;
-        VkDebugUtilsMessengerCreateInfoEXT messages{
-            VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        messages.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        messages.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
-        messages.pfnUserCallback = &onValidation;
-        const char* layer = "VK_LAYER_KHRONOS_validation";
-        if (validate) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        info.pApplicationInfo = &app;
-        info.enabledExtensionCount = uint32_t(extensions.size());
-        info.ppEnabledExtensionNames = extensions.data();
-        if (validate) {
-            info.pNext = &messages;
-            info.enabledLayerCount = 1;
-            info.ppEnabledLayerNames = &layer;
-        }
-        check(vkCreateInstance(&info, nullptr, &instance), "no Vulkan 1.3 instance");
-        if (validate) {
-            auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-            if (create) create(instance, &messages, nullptr, &messenger);
-        }
-    }
-
-    //! The first device with a graphics-and-compute queue (that presents to `surface`, if
-    //! any), Vulkan 1.3's dynamic rendering on (flarekit's draw begins its own rendering).
-    void open(VkSurfaceKHR surface) {
-        uint32_t count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        std::vector<VkPhysicalDevice> devices(count);
-        vkEnumeratePhysicalDevices(instance, &count, devices.data());
-        for (VkPhysicalDevice p : devices) {
-            uint32_t n = 0;
-            vkGetPhysicalDeviceQueueFamilyProperties(p, &n, nullptr);
-            std::vector<VkQueueFamilyProperties> families(n);
-            vkGetPhysicalDeviceQueueFamilyProperties(p, &n, families.data());
-            for (uint32_t f = 0; f < n && !physical; ++f) {
-                VkBool32 presents = VK_TRUE;
-                if (surface) vkGetPhysicalDeviceSurfaceSupportKHR(p, f, surface, &presents);
-                if ((families[f].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
-                        (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT) &&
-                    presents)
-                    physical = p, family = f;
-            }
-        }
-        if (!physical) fail("no Vulkan device with a graphics queue");
-        vkGetPhysicalDeviceMemoryProperties(physical, &memory);
-        const float priority = 1.f;
-        VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        queueInfo.queueFamilyIndex = family;
-        queueInfo.queueCount = 1;
-        queueInfo.pQueuePriorities = &priority;
-        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        v13.dynamicRendering = VK_TRUE;  // flarekit's draw begins its own rendering
-        VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        deviceInfo.pNext = &v13;
-        deviceInfo.queueCreateInfoCount = 1;
-        deviceInfo.pQueueCreateInfos = &queueInfo;
-        const char* swapchain = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
-        if (surface)
-            deviceInfo.enabledExtensionCount = 1, deviceInfo.ppEnabledExtensionNames = &swapchain;
-        check(vkCreateDevice(physical, &deviceInfo, nullptr, &device), "no Vulkan 1.3 device");
-        vkGetDeviceQueue(device, family, 0, &queue);
-    }
-    ~Gpu() {
-        if (device) vkDestroyDevice(device, nullptr);
-        if (messenger) {
-            auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-            if (destroy) destroy(instance, messenger, nullptr);
-        }
-        vkDestroyInstance(instance, nullptr);
-    }
-
-    VkDeviceMemory allocate(VkMemoryRequirements r, VkMemoryPropertyFlags wanted) const {
-        for (uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
-            if (!(r.memoryTypeBits & (1u << i)) ||
-                (memory.memoryTypes[i].propertyFlags & wanted) != wanted)
-                continue;
-            VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-            info.allocationSize = r.size;
-            info.memoryTypeIndex = i;
-            VkDeviceMemory m = VK_NULL_HANDLE;
-            check(vkAllocateMemory(device, &info, nullptr, &m), "vkAllocateMemory");
-            return m;
-        }
-        fail("no memory type");
-        return VK_NULL_HANDLE;
-    }
-};
-
-struct Target {
-    VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-};
-
-Target makeTarget(const Gpu& g, VkFormat format, int w, int h, VkSampleCountFlagBits samples,
-                  VkImageUsageFlags usage, VkImageAspectFlags aspect) {
-    Target t;
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {uint32_t(w), uint32_t(h), 1};
-    info.mipLevels = info.arrayLayers = 1;
-    info.samples = samples;
-    info.usage = usage;
-    check(vkCreateImage(g.device, &info, nullptr, &t.image), "vkCreateImage");
-    VkMemoryRequirements r;
-    vkGetImageMemoryRequirements(g.device, t.image, &r);
-    t.memory = g.allocate(r, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    vkBindImageMemory(g.device, t.image, t.memory, 0);
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = t.image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, 1, 0, 1};
-    check(vkCreateImageView(g.device, &view, nullptr, &t.view), "vkCreateImageView");
-    return t;
-}
-
-void destroy(const Gpu& g, Target& t) {
-    vkDestroyImageView(g.device, t.view, nullptr);
-    vkDestroyImage(g.device, t.image, nullptr);
-    vkFreeMemory(g.device, t.memory, nullptr);
-}
-
-void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {aspect, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
-
-VkShaderModule shader(const Gpu& g, const unsigned char* code, size_t size) {
-    std::vector<uint32_t> words(size / 4);
-    std::memcpy(words.data(), code, size);
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = size;
-    info.pCode = words.data();
-    VkShaderModule m = VK_NULL_HANDLE;
-    check(vkCreateShaderModule(g.device, &info, nullptr, &m), "vkCreateShaderModule");
-    return m;
-}
-
-//! A graphics pipeline for dynamic rendering: `vert` + `frag`, the scene's vertex layout or
-//! none, one colour attachment of `color` and optionally a depth one (reversed-Z GREATER).
-VkPipeline pipeline(const Gpu& g, VkPipelineLayout layout, VkShaderModule vert, VkShaderModule frag,
-                    bool sceneVertices, VkFormat color, VkFormat depth,
-                    VkSampleCountFlagBits samples) {
-    VkPipelineShaderStageCreateInfo stages[2] = {
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT, stages[0].module = vert, stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, stages[1].module = frag,
-    stages[1].pName = "main";
-    const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-    const VkVertexInputAttributeDescription attributes[3] = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12},
-        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 24}};
-    VkPipelineVertexInputStateCreateInfo input{
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    if (sceneVertices) {
-        input.vertexBindingDescriptionCount = 1, input.pVertexBindingDescriptions = &binding;
-        input.vertexAttributeDescriptionCount = 3, input.pVertexAttributeDescriptions = attributes;
-    }
-    VkPipelineInputAssemblyStateCreateInfo assembly{
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.f;
-    VkPipelineMultisampleStateCreateInfo multisample{
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = samples;
-    VkPipelineDepthStencilStateCreateInfo depthState{
-        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depthState.depthTestEnable = depthState.depthWriteEnable = sceneVertices;
-    depthState.depthCompareOp = VK_COMPARE_OP_GREATER;  // reversed Z
-    VkPipelineColorBlendAttachmentState write{};
-    write.colorWriteMask = 0xf;
-    VkPipelineColorBlendStateCreateInfo blend{
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
-    blend.pAttachments = &write;
-    const VkDynamicState dynamic[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamicState{
-        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamicState.dynamicStateCount = 2;
-    dynamicState.pDynamicStates = dynamic;
-    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &color;
-    rendering.depthAttachmentFormat = depth;
-    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.pNext = &rendering;
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depthState;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamicState;
-    info.layout = layout;
-    VkPipeline p = VK_NULL_HANDLE;
-    check(vkCreateGraphicsPipelines(g.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
-          "vkCreateGraphicsPipelines");
-    return p;
-}
-
-struct Buffer {
-    VkBuffer buffer = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    void* mapped = nullptr;
-};
-
-Buffer hostBuffer(const Gpu& g, VkDeviceSize size, VkBufferUsageFlags usage) {
-    Buffer b;
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = size;
-    info.usage = usage;
-    check(vkCreateBuffer(g.device, &info, nullptr, &b.buffer), "vkCreateBuffer");
-    VkMemoryRequirements r;
-    vkGetBufferMemoryRequirements(g.device, b.buffer, &r);
-    b.memory =
-        g.allocate(r, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    vkBindBufferMemory(g.device, b.buffer, b.memory, 0);
-    vkMapMemory(g.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
-    return b;
-}
-
-void destroy(const Gpu& g, Buffer& b) {
-    vkDestroyBuffer(g.device, b.buffer, nullptr);
-    vkFreeMemory(g.device, b.memory, nullptr);
 }
 
 }  // namespace
@@ -433,111 +145,19 @@ int main(int argc, char** argv) {
     Buffer readback = hostBuffer(g, VkDeviceSize(w) * h * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
     // With a window: a swapchain the tone-mapped frame is blitted to and presented from.
-    VkSwapchainKHR swapchain = VK_NULL_HANDLE;
-    std::vector<VkImage> swapImages;
-    VkExtent2D swapExtent{uint32_t(w), uint32_t(h)};
-    if (surface) {
-        VkSurfaceCapabilitiesKHR caps{};
-        vkGetPhysicalDeviceSurfaceCapabilitiesKHR(g.physical, surface, &caps);
-        uint32_t n = 0;
-        vkGetPhysicalDeviceSurfaceFormatsKHR(g.physical, surface, &n, nullptr);
-        std::vector<VkSurfaceFormatKHR> formats(n);
-        vkGetPhysicalDeviceSurfaceFormatsKHR(g.physical, surface, &n, formats.data());
-        VkSurfaceFormatKHR format = formats.at(0);
-        for (const VkSurfaceFormatKHR& f : formats)
-            if (f.format == VK_FORMAT_B8G8R8A8_UNORM) format = f;
-        if (caps.currentExtent.width != UINT32_MAX) swapExtent = caps.currentExtent;
-        VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
-        info.surface = surface;
-        info.minImageCount = caps.maxImageCount
-                                 ? std::min(caps.minImageCount + 1, caps.maxImageCount)
-                                 : caps.minImageCount + 1;
-        info.imageFormat = format.format;
-        info.imageColorSpace = format.colorSpace;
-        info.imageExtent = swapExtent;
-        info.imageArrayLayers = 1;
-        info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-        info.preTransform = caps.currentTransform;
-        info.compositeAlpha =
-            (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
-                ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
-                : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha &
-                                              (~caps.supportedCompositeAlpha + 1));
-        info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // every driver has it
-        info.clipped = VK_TRUE;
-        check(vkCreateSwapchainKHR(g.device, &info, nullptr, &swapchain), "vkCreateSwapchainKHR");
-        vkGetSwapchainImagesKHR(g.device, swapchain, &n, nullptr);
-        swapImages.resize(n);
-        vkGetSwapchainImagesKHR(g.device, swapchain, &n, swapImages.data());
-        std::printf("embed-vk: a %dx%d window (GLFW, %u swapchain images)\n", w, h, n);
-    }
+    const Swapchain swapchain = makeSwapchain(g, surface, w, h);
+    if (surface)
+        std::printf("embed-vk: a %dx%d window (GLFW, %zu swapchain images)\n", w, h,
+                    swapchain.images.size());
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    std::vector<VkSemaphore> acquired(2), presentable(swapImages.size());
+    std::vector<VkSemaphore> acquired(2), presentable(swapchain.images.size());
     for (VkSemaphore& sem : acquired)
         check(vkCreateSemaphore(g.device, &semaphoreInfo, nullptr, &sem), "semaphore");
     for (VkSemaphore& sem : presentable)
         check(vkCreateSemaphore(g.device, &semaphoreInfo, nullptr, &sem), "semaphore");
 
     // Pipelines: the sky and the city into the MSAA targets, the tone map into the 8-bit frame.
-    const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                                   80};
-    VkPipelineLayoutCreateInfo pushLayout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pushLayout.pushConstantRangeCount = 1;
-    pushLayout.pPushConstantRanges = &push;
-    VkPipelineLayout sceneLayout = VK_NULL_HANDLE;
-    check(vkCreatePipelineLayout(g.device, &pushLayout, nullptr, &sceneLayout), "layout");
-    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_LINEAR;
-    samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VkSampler sampler = VK_NULL_HANDLE;
-    check(vkCreateSampler(g.device, &samplerInfo, nullptr, &sampler), "sampler");
-    const VkDescriptorSetLayoutBinding hdrBinding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                                  VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = 1;
-    setInfo.pBindings = &hdrBinding;
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    check(vkCreateDescriptorSetLayout(g.device, &setInfo, nullptr, &setLayout), "set layout");
-    VkPipelineLayoutCreateInfo tonemapLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    tonemapLayoutInfo.setLayoutCount = 1;
-    tonemapLayoutInfo.pSetLayouts = &setLayout;
-    VkPipelineLayout tonemapLayout = VK_NULL_HANDLE;
-    check(vkCreatePipelineLayout(g.device, &tonemapLayoutInfo, nullptr, &tonemapLayout), "layout");
-    const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    check(vkCreateDescriptorPool(g.device, &poolInfo, nullptr, &pool), "pool");
-    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocInfo.descriptorPool = pool;
-    allocInfo.descriptorSetCount = 1;
-    allocInfo.pSetLayouts = &setLayout;
-    VkDescriptorSet hdrSet = VK_NULL_HANDLE;
-    check(vkAllocateDescriptorSets(g.device, &allocInfo, &hdrSet), "set");
-    const VkDescriptorImageInfo hdrImage{sampler, hdr.view,
-                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet writeSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writeSet.dstSet = hdrSet;
-    writeSet.descriptorCount = 1;
-    writeSet.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writeSet.pImageInfo = &hdrImage;
-    vkUpdateDescriptorSets(g.device, 1, &writeSet, 0, nullptr);
-
-    namespace s = embed_vk_shaders;
-    const VkShaderModule sceneVert = shader(g, s::scene_vert, sizeof s::scene_vert),
-                         sceneFrag = shader(g, s::scene_frag, sizeof s::scene_frag),
-                         fullVert = shader(g, s::fullscreen_vert, sizeof s::fullscreen_vert),
-                         skyFrag = shader(g, s::sky_frag, sizeof s::sky_frag),
-                         toneFrag = shader(g, s::tonemap_frag, sizeof s::tonemap_frag);
-    const VkPipeline scenePipeline =
-        pipeline(g, sceneLayout, sceneVert, sceneFrag, true, kHdr, kDepth, kMsaa);
-    const VkPipeline skyPipeline =
-        pipeline(g, sceneLayout, fullVert, skyFrag, false, kHdr, kDepth, kMsaa);
-    const VkPipeline tonePipeline = pipeline(g, tonemapLayout, fullVert, toneFrag, false, kLdr,
-                                             VK_FORMAT_UNDEFINED, VK_SAMPLE_COUNT_1_BIT);
+    const Passes passes = makePasses(g, hdr.view, kHdr, kDepth, kMsaa, kLdr);
 
     // flarekit on the application's device: the sun and every lamp.
     fk_vulkan_device device{};
@@ -576,7 +196,7 @@ int main(int argc, char** argv) {
     // below make each frame's writes wait for the last frame's reads).
     City view = city;
     int frames = 0;
-    for (int frame = 0; frame < o.frames || (swapchain && !o.framesGiven); ++frame) {
+    for (int frame = 0; frame < o.frames || (swapchain.chain && !o.framesGiven); ++frame) {
 #if EMBED_HAS_GLFW
         if (window) {
             glfwPollEvents();
@@ -589,9 +209,9 @@ int main(int argc, char** argv) {
         vkWaitForFences(g.device, 1, &fences[slot], VK_TRUE, UINT64_MAX);
         vkResetFences(g.device, 1, &fences[slot]);
         uint32_t image = 0;
-        if (swapchain)
-            check(vkAcquireNextImageKHR(g.device, swapchain, UINT64_MAX, acquired[size_t(slot)],
-                                        VK_NULL_HANDLE, &image),
+        if (swapchain.chain)
+            check(vkAcquireNextImageKHR(g.device, swapchain.chain, UINT64_MAX,
+                                        acquired[size_t(slot)], VK_NULL_HANDLE, &image),
                   "vkAcquireNextImageKHR");
         VkCommandBuffer cmd = commands[slot];
         vkResetCommandBuffer(cmd, 0);
@@ -663,14 +283,15 @@ int main(int argc, char** argv) {
                                tanHalfY,
                                0,
                                0};
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, skyPipeline);
-        vkCmdPushConstants(cmd, sceneLayout, push.stageFlags, 0, sizeof sky, sky);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, passes.sky);
+        vkCmdPushConstants(cmd, passes.sceneLayout, passes.push.stageFlags, 0, sizeof sky, sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);
         float camera[20];
         std::memcpy(camera, vp.data(), 64);
         camera[16] = sun.x, camera[17] = sun.y, camera[18] = sun.z, camera[19] = 0;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scenePipeline);
-        vkCmdPushConstants(cmd, sceneLayout, push.stageFlags, 0, sizeof camera, camera);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, passes.scene);
+        vkCmdPushConstants(cmd, passes.sceneLayout, passes.push.stageFlags, 0, sizeof camera,
+                           camera);
         const VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertices.buffer, &offset);
         vkCmdDraw(cmd, uint32_t(mesh.size()), 1, 0, 0);
@@ -729,9 +350,9 @@ int main(int argc, char** argv) {
         vkCmdBeginRendering(cmd, &toneRendering);
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tonePipeline);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemapLayout, 0, 1, &hdrSet,
-                                0, nullptr);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, passes.tonemap);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, passes.tonemapLayout, 0, 1,
+                                &passes.hdrSet, 0, nullptr);
         vkCmdDraw(cmd, 3, 1, 0, 0);
         vkCmdEndRendering(cmd);
         transition(cmd, ldr.image, VK_IMAGE_ASPECT_COLOR_BIT,
@@ -739,15 +360,16 @@ int main(int argc, char** argv) {
                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_READ_BIT);
-        if (swapchain) {  // the frame to the window
-            const VkImage target = swapImages[image];
+        if (swapchain.chain) {  // the frame to the window
+            const VkImage target = swapchain.images[image];
             transition(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
             VkImageBlit blit{};
             blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             blit.srcOffsets[1] = {w, h, 1};
-            blit.dstOffsets[1] = {int32_t(swapExtent.width), int32_t(swapExtent.height), 1};
+            blit.dstOffsets[1] = {int32_t(swapchain.extent.width), int32_t(swapchain.extent.height),
+                                  1};
             vkCmdBlitImage(cmd, ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
             transition(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -771,7 +393,7 @@ int main(int argc, char** argv) {
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = &cmd;
         const VkPipelineStageFlags waitAt = VK_PIPELINE_STAGE_TRANSFER_BIT;
-        if (swapchain) {
+        if (swapchain.chain) {
             submit.waitSemaphoreCount = 1;
             submit.pWaitSemaphores = &acquired[size_t(slot)];
             submit.pWaitDstStageMask = &waitAt;
@@ -779,12 +401,12 @@ int main(int argc, char** argv) {
             submit.pSignalSemaphores = &presentable[image];
         }
         check(vkQueueSubmit(g.queue, 1, &submit, fences[slot]), "vkQueueSubmit");
-        if (swapchain) {
+        if (swapchain.chain) {
             VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
             present.waitSemaphoreCount = 1;
             present.pWaitSemaphores = &presentable[image];
             present.swapchainCount = 1;
-            present.pSwapchains = &swapchain;
+            present.pSwapchains = &swapchain.chain;
             present.pImageIndices = &image;
             check(vkQueuePresentKHR(g.queue, &present), "vkQueuePresentKHR");
         }
@@ -816,21 +438,13 @@ int main(int argc, char** argv) {
     fk_engine_destroy(flares);
     for (VkFence f : fences) vkDestroyFence(g.device, f, nullptr);
     vkDestroyCommandPool(g.device, commandPool, nullptr);
-    for (VkPipeline pl : {scenePipeline, skyPipeline, tonePipeline})
-        vkDestroyPipeline(g.device, pl, nullptr);
-    for (VkShaderModule m : {sceneVert, sceneFrag, fullVert, skyFrag, toneFrag})
-        vkDestroyShaderModule(g.device, m, nullptr);
-    vkDestroyDescriptorPool(g.device, pool, nullptr);
-    vkDestroyPipelineLayout(g.device, sceneLayout, nullptr);
-    vkDestroyPipelineLayout(g.device, tonemapLayout, nullptr);
-    vkDestroyDescriptorSetLayout(g.device, setLayout, nullptr);
-    vkDestroySampler(g.device, sampler, nullptr);
+    destroy(g, passes);
     for (Target* t : {&msColor, &msDepth, &hdr, &ldr}) destroy(g, *t);
     destroy(g, vertices);
     destroy(g, readback);
     for (VkSemaphore sem : acquired) vkDestroySemaphore(g.device, sem, nullptr);
     for (VkSemaphore sem : presentable) vkDestroySemaphore(g.device, sem, nullptr);
-    if (swapchain) vkDestroySwapchainKHR(g.device, swapchain, nullptr);
+    if (swapchain.chain) vkDestroySwapchainKHR(g.device, swapchain.chain, nullptr);
     if (surface) vkDestroySurfaceKHR(g.instance, surface, nullptr);
 #if EMBED_HAS_GLFW
     if (window) glfwDestroyWindow(window), glfwTerminate();
