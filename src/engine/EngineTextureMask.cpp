@@ -10,10 +10,9 @@ namespace flarekit::engine {
 
 int Engine::Impl::assignTiles(int view, const fk_frame& f, int depthSamples, const fk_light* lights,
                               int count) {
-    const int tiled =
-        occluders && (textureMask || tileBelow > 0)
-            ? chooseTiles(f, depthSamples, lights, count, textureMask, tileBelow, tileOf)
-            : chooseTiles(f, depthSamples, lights, count, false, 0, tileOf);
+    // Without an occluder callback nothing can draw a tile: every light on the depth.
+    const int tiled = chooseTiles(f, depthSamples, lights, count, occluders && textureMask,
+                                  occluders ? tileBelow : 0, tileOf);
     glNamedBufferSubData(tiles.get(), GLintptr(view) * maxLights * GLintptr(sizeof(int)),
                          GLsizeiptr(count * sizeof(int)), tileOf.data());
     return tiled;

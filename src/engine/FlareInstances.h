@@ -8,16 +8,14 @@
 #include <span>
 #include <vector>
 
+#include "flare/SpriteImages.h"
 #include "flarekit/flarekit.h"
 
 namespace flarekit::engine {
 
-//! What an element's quad needs of its sprite (SpriteImage without the image).
-struct InstanceSprite {
-    float t = 0;                 //!< position on the flare vector
-    float halfW = 0, halfH = 0;  //!< quad half size, pixels
-    bool edgeStreak = false;
-    float reach = 0;  //!< edge streak: its reach, viewport heights
+//! What an element's quad needs of its sprite (SpriteImage without the image), and where the
+//! renderer finds the image.
+struct InstanceSprite : SpriteShape {
     int slot = 0;     //!< its texture slot in the set
     int element = 0;  //!< its index among the preset's sprites
 };

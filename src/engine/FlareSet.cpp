@@ -40,8 +40,7 @@ Result<int> FlareSet::prepare(int height) {
         p.sprites.clear();
         for (std::size_t e = 0; e < images.size(); ++e) {
             const SpriteImage& s = images[e];
-            p.sprites.push_back(
-                {s.t, s.halfW, s.halfH, s.edgeStreak, s.reach, int(slots.size()), int(e)});
+            p.sprites.push_back({s, int(slots.size()), int(e)});
             slots.push_back(std::move(images[e]));
         }
     }

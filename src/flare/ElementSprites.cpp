@@ -7,13 +7,7 @@ Result<std::vector<ElementSprite>> buildElementSprites(const Preset& preset, int
     std::vector<ElementSprite> sprites;
     for (const SpriteImage& s : renderSpriteImages(preset, height)) {
         const Image& image = s.image;
-        ElementSprite sprite{s.t,
-                             s.halfW,
-                             s.halfH,
-                             s.blend,
-                             s.edgeStreak,
-                             s.reach,
-                             gl::makeTexture2D(GL_RGBA16F, image.width(), image.height())};
+        ElementSprite sprite{s, gl::makeTexture2D(GL_RGBA16F, image.width(), image.height())};
         const GLuint tex = sprite.texture.get();
         glTextureSubImage2D(tex, 0, 0, 0, image.width(), image.height(), GL_RGBA, GL_FLOAT,
                             image.data());

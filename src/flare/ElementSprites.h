@@ -11,12 +11,7 @@
 
 namespace flarekit {
 
-struct ElementSprite {
-    float t;             //!< position on the flare vector
-    float halfW, halfH;  //!< quad half size, frame pixels
-    BlendMode blend;
-    bool edgeStreak;      //!< placed by edgeStreakPlacement instead of on the flare vector
-    float reach;          //!< edge streak: its reach (ElementParams::reach)
+struct ElementSprite : SpriteShape {
     gl::Texture texture;  //!< RGBA16F premultiplied, top row first, clamped to a clear border
 };
 

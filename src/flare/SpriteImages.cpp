@@ -24,9 +24,10 @@ std::vector<SpriteImage> renderSpriteImages(const Preset& preset, int height) {
         const float extent = 2.f * radius * std::max(1.f, e.aspect) + 8.f;
         const float texScale = std::min(1.f, float(kMaxTextureSide) / extent);
         Image image = renderElement(scaled, radius * texScale);
-        sprites.push_back({e.t, 0.5f * float(image.width()) / texScale,
-                           0.5f * float(image.height()) / texScale, e.blend,
-                           e.type == ElementType::EdgeStreak, e.reach, std::move(image)});
+        sprites.push_back(
+            {{e.t, 0.5f * float(image.width()) / texScale, 0.5f * float(image.height()) / texScale,
+              e.blend, e.type == ElementType::EdgeStreak, e.reach},
+             std::move(image)});
     }
     return sprites;
 }

@@ -14,13 +14,18 @@ namespace flarekit {
 //! renderFlare skips elements below half a pixel in radius (FlareRenderer.cpp); so do sprites.
 inline constexpr float kMinSpriteRadiusPx = 0.5f;
 
-struct SpriteImage {
-    float t;             //!< position on the flare vector
-    float halfW, halfH;  //!< quad half size, frame pixels
-    BlendMode blend;
-    bool edgeStreak;  //!< placed by edgeStreakPlacement instead of on the flare vector
-    float reach;      //!< edge streak: its reach (ElementParams::reach)
-    Image image;      //!< RGBA premultiplied, top row first, with a clear border
+//! Where and how an element's sprite is drawn: what every sprite kind shares (the CPU image
+//! here, the GL texture of ElementSprites.h, the instance records of the any-renderer API).
+struct SpriteShape {
+    float t = 0;                 //!< position on the flare vector
+    float halfW = 0, halfH = 0;  //!< quad half size, frame pixels
+    BlendMode blend = BlendMode::Add;
+    bool edgeStreak = false;  //!< placed by edgeStreakPlacement instead of on the flare vector
+    float reach = 0;          //!< edge streak: its reach (ElementParams::reach)
+};
+
+struct SpriteImage : SpriteShape {
+    Image image;  //!< RGBA premultiplied, top row first, with a clear border
 };
 
 //! The sprites of `preset` for frames `height` pixels tall (element sizes are fractions of the
