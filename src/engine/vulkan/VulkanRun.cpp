@@ -122,16 +122,28 @@ Result<EngineRun> runEngineSceneOnVulkan(const Scene& scene, const EngineRunOpti
     run.renderer = "Vulkan: " + host.deviceName();
     int occluded = 0, drawn = 0;
     double recordMs = 0;
-    const Status submitted = host.submit([&](VkCommandBuffer cmd) {
-        vf.command_buffer = cmd;
-        const auto start = std::chrono::steady_clock::now();
-        occluded = fk_engine_record_occlusion(e, &vf, &frame, lights->data(), count);
-        if (occluded == 0 && o.flares)
-            drawn = fk_engine_record_draw(e, &vf, &frame, lights->data(), count);
-        recordMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-    });
+    // Each pass in its own timed submission (one frame: the draw reads the occlusion's
+    // coverage), so the GPU times are the two passes' as the GL path reports them.
+    const auto timed = [&](auto record, double& gpuMs) -> Status {
+        auto ms = host.submitTimed([&](VkCommandBuffer cmd) {
+            vf.command_buffer = cmd;
+            const auto start = std::chrono::steady_clock::now();
+            record();
+            recordMs +=
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+        });
+        if (!ms) return ms.error();
+        gpuMs = *ms;
+        return Ok{};
+    };
+    Status submitted =
+        timed([&] { occluded = fk_engine_record_occlusion(e, &vf, &frame, lights->data(), count); },
+              run.occlusionGpuMs);
+    if (submitted && occluded == 0 && o.flares)
+        submitted =
+            timed([&] { drawn = fk_engine_record_draw(e, &vf, &frame, lights->data(), count); },
+                  run.drawGpuMs);
     if (!submitted) return release(), submitted.error();
     if (occluded < 0 || drawn < 0) return release(), invalidInput(o.source + ": " + fk_error(e));
     run.cpuMs = recordMs;
