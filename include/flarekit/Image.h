@@ -49,6 +49,11 @@ class Image {
   public:
     Image() = default;
     Image(int width, int height);  //!< zero-filled (transparent black)
+    //! Tag of the constructor below.
+    struct Uncleared {};
+    //! An image whose every pixel the caller is about to write: its buffer is not cleared, so a
+    //! recycled one still holds an earlier image's pixels until then.
+    Image(int width, int height, Uncleared);
 
     int width() const { return m_width; }
     int height() const { return m_height; }

@@ -52,6 +52,10 @@ struct PostFxOptions {
     //! GL: the result is only kept as half floats (a half-float EXR), so it comes back as
     //! halves: half the bytes, the same file (each value rounded to half once either way).
     bool halfReadback = false;
+    //! CPU: false stops at the lens buffer (keepLayers gives it; result.final is left as it
+    //! was), for callers that add the flare to an image of their own, as the flare-data
+    //! generator does: the full-resolution composite is then not drawn at all.
+    bool composite = true;
 };
 
 //! The CPU chain (oneTBB threads, 4-wide SIMD per pixel), one run with fresh buffers.

@@ -80,13 +80,16 @@ void recycle(void* p, std::size_t bytes) {
     for (const auto& [q, n] : dropped) ::munmap(q, n);
 }
 
+//! Set while an Image(w, h, Uncleared) takes its buffer: a recycled one is then not cleared.
+thread_local bool t_uncleared = false;
+
 }  // namespace
 
 void* PixelMemory::allocate(std::size_t bytes) {
     if (bytes < kMappedBytes) return ::operator new(bytes);
     if (kRecycle && bytes <= kLargestRecycled) {
         if (void* p = takeRecycled(bytes)) {
-            std::memset(p, 0, bytes);  // as a fresh mapping arrives
+            if (!t_uncleared) std::memset(p, 0, bytes);  // as a fresh mapping arrives
             return p;
         }
     }
@@ -118,6 +121,15 @@ Image::Image(int width, int height) : m_width(width), m_height(height) {
     // has no buffer at all: memset may not be handed its null pointer).
     if (n > 0 && n * sizeof(float) < PixelMemory::kMappedBytes)
         std::memset(static_cast<void*>(m_data.data()), 0, n * sizeof(float));
+}
+
+Image::Image(int width, int height, Uncleared) : m_width(width), m_height(height) {
+    FK_CHECK(width >= 0 && height >= 0, "width=" << width << " height=" << height);
+    struct Flag {  // cleared again however resize leaves (bad_alloc included)
+        Flag() { t_uncleared = true; }
+        ~Flag() { t_uncleared = false; }
+    } flag;
+    m_data.resize(std::size_t(width) * std::size_t(height) * 4);  // default-initialised
 }
 
 void Image::scale(float k) {

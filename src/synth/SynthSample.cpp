@@ -95,29 +95,40 @@ std::vector<SynthLight> drawLights(const SynthConfig& cfg, std::uint64_t seed, s
 
 //! A sky over ground, colours and horizon drawn per sample: cheap, smooth, plausible.
 Image proceduralBackground(SampleRandom& r, int w, int h) {
-    Image bg(w, h);
+    Image bg(w, h, Image::Uncleared{});
     const double horizon = r.range(0.45, 0.9) * h, level = r.logRange(0.05, 0.8);
     const Rgb zenith{float(r.range(0.2, 0.5)), float(r.range(0.35, 0.6)), float(r.range(0.6, 1))};
     const Rgb haze{float(r.range(0.7, 1)), float(r.range(0.6, 0.9)), float(r.range(0.5, 0.9))};
     const Rgb ground{float(r.range(0.05, 0.3)), float(r.range(0.05, 0.25)),
                      float(r.range(0.03, 0.2))};
     const double tilt = r.range(-0.15, 0.15);
-    for (int y = 0; y < h; ++y) {
-        float* row = bg.row(y);
-        for (int x = 0; x < w; ++x) {
-            const double edge = horizon + tilt * (x - w * 0.5);
-            float* px = row + 4 * x;
-            if (y < edge) {
-                const double t = std::clamp(y / std::max(edge, 1.0), 0.0, 1.0);
-                for (int k = 0; k < 3; ++k)
-                    px[k] = float(level * (zenith[k] + (haze[k] - zenith[k]) * t * t));
-            } else {
-                const double t = std::clamp((y - edge) / std::max(h - edge, 1.0), 0.0, 1.0);
-                for (int k = 0; k < 3; ++k) px[k] = float(level * ground[k] * (1.0 - 0.5 * t));
-            }
-            px[3] = 1;
-        }
+    // The horizon's height in each column and the two gradients' scales there, once per column.
+    struct Column {
+        double edge, skyScale, groundScale;
+    };
+    std::vector<Column> columns(static_cast<std::size_t>(w));
+    for (int x = 0; x < w; ++x) {
+        const double edge = horizon + tilt * (x - w * 0.5);
+        columns[std::size_t(x)] = {edge, 1.0 / std::max(edge, 1.0), 1.0 / std::max(h - edge, 1.0)};
     }
+    parallelFor(0, h, std::max(1, 16384 / w), [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* row = bg.row(y);
+            for (int x = 0; x < w; ++x) {
+                const Column& c = columns[std::size_t(x)];
+                float* px = row + 4 * x;
+                if (y < c.edge) {
+                    const double t = std::clamp(y * c.skyScale, 0.0, 1.0);
+                    for (int k = 0; k < 3; ++k)
+                        px[k] = float(level * (zenith[k] + (haze[k] - zenith[k]) * t * t));
+                } else {
+                    const double t = std::clamp((y - c.edge) * c.groundScale, 0.0, 1.0);
+                    for (int k = 0; k < 3; ++k) px[k] = float(level * ground[k] * (1.0 - 0.5 * t));
+                }
+                px[3] = 1;
+            }
+        }
+    });
     return bg;
 }
 
@@ -202,19 +213,23 @@ Image lightSources(int w, int h, const std::vector<SynthLight>& lights, const Im
         const double reach = 24 * l.radius + 2;
         const int x0 = std::max(0, int(l.at.x - reach)), x1 = std::min(w, int(l.at.x + reach) + 1);
         const int y0 = std::max(0, int(l.at.y - reach)), y1 = std::min(h, int(l.at.y + reach) + 1);
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                const double d = std::hypot(x + 0.5 - l.at.x, y + 0.5 - l.at.y);
-                const double disc = std::clamp(l.radius + 0.5 - d, 0.0, 1.0);
-                const double fade = std::max(0.0, 1.0 - (d / reach) * (d / reach));
-                const double glare =
-                    0.02 * std::pow(l.radius / std::max(d, l.radius), 3.0) * fade * fade;
-                double v = l.radiance * (disc + glare);
-                if (matte) v *= 1.0 - matte->at(x, y).a;
-                Rgba& px = out.at(x, y);
-                px.r += float(v * l.color[0]), px.g += float(v * l.color[1]);
-                px.b += float(v * l.color[2]);
-            }
+        if (y0 >= y1 || x0 >= x1) continue;
+        parallelFor(y0, y1, std::max(1, 16384 / (x1 - x0)), [&](int rowBegin, int rowEnd) {
+            for (int y = rowBegin; y < rowEnd; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const double dx = x + 0.5 - l.at.x, dy = y + 0.5 - l.at.y;
+                    const double d = std::sqrt(dx * dx + dy * dy);
+                    const double disc = std::clamp(l.radius + 0.5 - d, 0.0, 1.0);
+                    const double fade = std::max(0.0, 1.0 - (d / reach) * (d / reach));
+                    const double q = l.radius / std::max(d, l.radius);
+                    const double glare = 0.02 * q * q * q * fade * fade;
+                    double v = l.radiance * (disc + glare);
+                    if (matte) v *= 1.0 - matte->at(x, y).a;
+                    Rgba& px = out.at(x, y);
+                    px.r += float(v * l.color[0]), px.g += float(v * l.color[1]);
+                    px.b += float(v * l.color[2]);
+                }
+        });
     }
     for (std::size_t i = 0; i < out.pixelCount(); ++i) out.data()[4 * i + 3] = 1;
     return out;
@@ -262,18 +277,32 @@ Result<DrawnFlare> postFxFlare(SampleRandom& r, const Image& sources) {
     // the quarter-resolution buffer, and a training set's ghosts must lie on it.
     for (GhostParams& ghost : params->ghosts)
         ghost.centered = true, ghost.linearFilter = true, ghost.borderFade = 0;
+    // The flare is the chain's lens buffer at full size, which its composite would add to the
+    // sources: the composite is not drawn (the sample adds the flare itself). Up to a megapixel
+    // (training sizes) one chain per thread keeps its buffers and lens dirt between the samples
+    // that thread makes, a fifth of a post-process sample's time at 512x512; its buffers hold
+    // less than one full-size layer (16 bytes a pixel), inside the sample's memory estimate.
     PostFxOptions options;
-    options.keepLayers = true;
-    auto result = postFxCpu(sources, *params, options);
-    if (!result) return result.error();
-    d.flare = std::move(result->final);
-    for (std::size_t i = 0; i < d.flare.pixelCount() * 4; ++i)
-        d.flare.data()[i] = i % 4 == 3 ? 1.f : std::max(0.f, d.flare.data()[i] - sources.data()[i]);
+    options.keepLayers = true, options.composite = false;
     const int w = sources.width(), h = sources.height();
-    d.components = {{"bloom", resizeBilinear(result->bloom, w, h)},
-                    {"ghosts", resizeBilinear(result->ghosts, w, h)},
-                    {"halo", resizeBilinear(result->halo, w, h)},
-                    {"streaks", resizeBilinear(result->streaks, w, h)}};
+    constexpr std::size_t kKeptChainPixels = std::size_t(1) << 20;
+    thread_local CpuPostFx kept;
+    CpuPostFx fresh;
+    CpuPostFx& chain = sources.pixelCount() <= kKeptChainPixels ? kept : fresh;
+    PostFxResult result;
+    if (Status s = chain.run(sources, *params, result, options); !s) return s.error();
+    d.flare = resizeBilinear(result.lens, w, h);
+    parallelFor(0, h, std::max(1, 16384 / w), [&d, w](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* row = d.flare.row(y);
+            for (int i = 0; i < 4 * w; ++i) row[i] = i % 4 == 3 ? 1.f : std::max(0.f, row[i]);
+        }
+    });
+    for (auto [name, layer] : {std::pair{"bloom", &result.bloom},
+                               {"ghosts", &result.ghosts},
+                               {"halo", &result.halo},
+                               {"streaks", &result.streaks}})
+        d.components.emplace_back(name, resizeBilinear(*layer, w, h));
     return d;
 }
 
@@ -394,13 +423,26 @@ Status jpegRoundTrip(Image& image, int quality) {
     return Ok{};
 }
 
-Image sum(const Image& a, const Image& b) {
-    Image out = a;
-    float* o = out.data();
-    const float* add = b.data();
-    for (std::size_t i = 0; i < out.pixelCount() * 4; ++i) o[i] += add[i];
-    for (std::size_t i = 0; i < out.pixelCount(); ++i) o[4 * i + 3] = 1.f;
-    return out;
+//! The clean plate and the flared frame in one pass over rows: gt = background + sources and
+//! composite = gt + flare, both opaque.
+void compose(const Image& background, const Image& sources, const Image& flare, Image& gt,
+             Image& composite) {
+    const int w = background.width();
+    gt = Image(w, background.height(), Image::Uncleared{});
+    composite = Image(w, background.height(), Image::Uncleared{});
+    parallelFor(0, background.height(), std::max(1, 16384 / w), [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            const float *b = background.row(y), *s = sources.row(y), *f = flare.row(y);
+            float *g = gt.row(y), *c = composite.row(y);
+            for (int i = 0; i < 4 * w; i += 4) {
+                for (int k = 0; k < 3; ++k) {
+                    g[i + k] = b[i + k] + s[i + k];
+                    c[i + k] = g[i + k] + f[i + k];
+                }
+                g[i + 3] = c[i + 3] = 1.f;
+            }
+        }
+    });
 }
 
 }  // namespace
@@ -463,8 +505,8 @@ Result<SynthSample> synthSample(std::uint64_t index, std::uint64_t seed, int wid
     if (!drawn) return drawn.error();
 
     SynthSample sample;
-    Image gt = sum(background, sources);
-    Image composite = sum(gt, drawn->flare);
+    Image gt, composite;
+    compose(background, sources, drawn->flare, gt, composite);
     json camera = nullptr;
     if (cfg.camera) {
         SampleRandom cameraRandom(seed, index, kCamera);

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "flarekit/PostFx.h"
+#include "postfx/HotTexels.h"
 #include "postfx/Kernel.h"
 
 namespace flarekit::postfx {
@@ -104,6 +105,55 @@ inline F4 ghostsPixel(const GhostsUniforms& u, const Tex& bloom, int x, int y) {
 inline F4 passPixel(const GhostsUniforms& u, const Tex* in, int x, int y) {
     return ghostsPixel(u, in[0], x, y);
 }
+
+//! The CPU's draw of the pass: ghostsPixel at every pixel, bit for bit (tested), leaving out a
+//! ghost at a pixel where none of its taps can read light above its threshold (HotTexels), as
+//! such a ghost adds exactly +0 there. Its taps lie within `reach` texels of its unblurred
+//! point n on each axis: offsets up to `widest` steps of |unit| <= sourceTexel x blur x samples
+//! (toward is a unit vector), halved from [-1, 1] to [0, 1] and scaled to the bloom's texels.
+inline void drawPass(const GhostsUniforms& u, const Tex* in, Image& out) {
+    const Tex bloom = in[0];
+    struct Reach {
+        HotTexels hot;
+        Vec2 half;
+    };
+    std::vector<Reach> reaches;
+    for (std::size_t i = 0; i < u.ghosts.size(); ++i) {
+        const GhostParams& g = u.ghosts[i];
+        const float first = g.centered ? float(g.samples - 1) : 1.f;
+        const float widest =
+            std::max(std::abs(first), std::abs(first - 2.f * float(g.samples - 1)));
+        const float steps = 0.5f * std::abs(g.blur * float(g.samples)) * widest;
+        const bool sameThreshold = i > 0 && u.ghosts[i - 1].threshold == g.threshold;
+        reaches.push_back({sameThreshold ? reaches.back().hot : HotTexels(bloom, g.threshold),
+                           {steps * u.sourceTexel.x * float(bloom.width),
+                            steps * u.sourceTexel.y * float(bloom.height)}});
+    }
+    const int width = out.width();
+    parallelFor(0, out.height(), rowGrain(width), [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float* row = out.row(y);
+            for (int x = 0; x < width; ++x) {
+                const Vec2 uv = pixelUv(x, y, u.invOutSize);
+                F4 total = splat(0.f);
+                for (std::size_t i = 0; i < u.ghosts.size(); ++i) {
+                    const GhostParams& g = u.ghosts[i];
+                    const Reach& r = reaches[i];
+                    const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale,
+                                 ((1.f - uv.y) * 2.f - 1.f) * g.scale};
+                    const Vec2 at = texelCoord(bloom, {n.x * 0.5f + 0.5f, n.y * 0.5f + 0.5f});
+                    if (r.hot.misses({at.x - r.half.x, at.y - r.half.y},
+                                     {at.x + r.half.x, at.y + r.half.y}))
+                        continue;
+                    total += ghostPixel(g, u.tints[i], u.sourceTexel, bloom, uv);
+                }
+                *reinterpret_cast<F4Unaligned*>(row + std::size_t(x) * 4) =
+                    rgbOnly(total * u.intensity);
+            }
+        }
+    });
+}
+
 template <class Sink>
 void bindUniforms(const GhostsUniforms& u, Sink& s) {
     s.set("invOutSize", u.invOutSize), s.set("sourceTexel", u.sourceTexel),
