@@ -5,10 +5,12 @@
 // (a lamp inside, one on an edge, one in a corner), on dense light and on none.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
 #include "flarekit/PostFx.h"
+#include "flarekit/PostFxParams.h"
 #include "postfx/ghosts/Ghosts.h"
 #include "postfx/halo/Halo.h"
 
@@ -132,6 +134,29 @@ TEST(SparseDraws, ResizeBilinearIsTheBilinearKernelAtEveryPixel) {
         EXPECT_TRUE(sameBits(expected, resizeBilinear(source, dst.first, dst.second)))
             << src.first << "x" << src.second << " -> " << dst.first << "x" << dst.second;
     }
+}
+
+// A caller that adds the flare itself (the flare-data generator) stops the chain at the lens
+// buffer: the layers are those of a full run, and no composite is drawn.
+TEST(SparseDraws, AChainWithoutItsCompositeGivesTheSameLayersAndNoFinal) {
+    Image input = bloomBuffer(160, 90, {{40, 30}}, false);
+    for (int i = 0; i < 160 * 90; ++i) input.data()[4 * i + 3] = 1.f;
+    auto params = loadPostFxPreset("modern");
+    ASSERT_TRUE(params.ok());
+    PostFxOptions full, layersOnly;
+    full.keepLayers = layersOnly.keepLayers = true;
+    layersOnly.composite = false;
+    auto a = postFxCpu(input, *params, full), b = postFxCpu(input, *params, layersOnly);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->final.width(), 160);
+    EXPECT_TRUE(b->final.empty());
+    EXPECT_TRUE(sameBits(a->lens, b->lens));
+    EXPECT_TRUE(sameBits(a->ghosts, b->ghosts));
+    EXPECT_TRUE(sameBits(a->halo, b->halo));
+    float peak = 0.f;
+    for (std::size_t i = 0; i < b->lens.pixelCount() * 4; ++i)
+        peak = std::max(peak, b->lens.data()[i]);
+    EXPECT_GT(peak, 0.f);  // the lamp flared
 }
 
 }  // namespace
