@@ -9,6 +9,7 @@
 // Read from the JSON FJsonObjectConverter writes (keys in any case) or from the text Unreal
 // copies and its .ini files hold: `Key=Value` lines, or one `(Key=Value,...)` struct, colours as
 // (R=..,G=..,B=..,A=..).
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <sstream>
@@ -26,10 +27,20 @@ constexpr double kDefaultBokehSize = 3.0;
 constexpr int kUnrealFlares = 8;
 //! flarekit's |scale| range (kMinGhostScale to 16) as Unreal positions A = 1 / scale.
 constexpr double kMaxPosition = 1.0 / kMinGhostScale, kMinPosition = 1.0 / 16.0;
+//! The source block's key for the .ini section the settings were read under.
+constexpr const char* kSectionKey = "__section";
+//! The section an exported .ini is written under when the source had none: where a project's
+//! DefaultEngine.ini or a copied PostProcessSettings block keeps these keys.
+constexpr const char* kDefaultSection = "[/Script/Engine.PostProcessSettings]";
+//! The source block's key for the positions A outside that range, by flare index.
+constexpr const char* kClampedPositions = "__clamped_positions";
 
 std::string lower(std::string s) {
     for (char& c : s) c = char(std::tolower((unsigned char)c));
     return s;
+}
+std::string ext(const std::string& path) {
+    return lower(fs::path(path).extension().string());
 }
 std::string trim(const std::string& s) {
     const auto a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
@@ -86,6 +97,10 @@ Result<json> parseUnrealText(const std::string& text, const std::string& path) {
         std::istringstream in(body);
         for (std::string line; std::getline(in, line);) {
             line = trim(line);
+            // The .ini section is kept (for the way back), as the first one seen.
+            if (line.size() > 1 && line.front() == '[' && line.back() == ']' &&
+                !out.contains(kSectionKey))
+                out[kSectionKey] = line;
             if (line.empty() || line[0] == ';' || line[0] == '#' || line[0] == '[') continue;
             items.push_back(line);
         }
@@ -175,6 +190,7 @@ Result<FlareAsset> readUnreal(const std::string& text, ImportContext& ctx) {
     p.bright.threshold = float(*threshold);
     p.bright.knee = 0.f;      // Unreal subtracts the threshold: no soft knee
     p.bloom.intensity = 0.f;  // Unreal's bloom has its own settings; the flare is ghosts only
+    json clampedPositions = json::object();  //!< flare index -> its own A, where clamped
     for (int i = 0; i < kUnrealFlares; ++i) {
         const std::string key = "LensFlareTints[" + std::to_string(i) + "]";
         const json* v =
@@ -187,14 +203,22 @@ Result<FlareAsset> readUnreal(const std::string& text, ImportContext& ctx) {
             if (!rgb) return rgb.error();
             c = *rgb;
         }
-        if (std::abs(a) < kMinPosition || std::abs(a) > kMaxPosition)
-            return (top / key).fail(
-                "expected A (the flare's position) with |A| in [0.0625, 20], "
-                "got " +
-                formatParamNumber(a));
+        // A flare nearer the centre than flarekit's largest ghost scale (A = 0 is on the centre)
+        // or beyond its smallest is drawn at the nearest position flarekit has, and its own
+        // position is kept for the way back.
+        double drawnAt = a;
+        if (!(std::abs(a) >= kMinPosition && std::abs(a) <= kMaxPosition)) {
+            drawnAt = std::copysign(std::clamp(std::abs(a), kMinPosition, kMaxPosition),
+                                    a == 0 ? 1.0 : a);
+            ctx.warn(key + ".A " + formatParamNumber(a) +
+                     ": flarekit's ghosts lie at |A| from 0.0625 to 20 (scale 16 to 0.05); drawn "
+                     "at " +
+                     formatParamNumber(drawnAt) + ", kept in source");
+            clampedPositions[std::to_string(i)] = a;
+        }
         GhostParams g;
         g.tint = {c[0] * tint[0], c[1] * tint[1], c[2] * tint[2]};
-        g.scale = float(1.0 / a);
+        g.scale = float(1.0 / drawnAt);
         g.threshold = 0.f;
         g.saturation = 1.f;  // Unreal's tints are the flare's colour as given
         g.conserveArea = false;
@@ -216,6 +240,7 @@ Result<FlareAsset> readUnreal(const std::string& text, ImportContext& ctx) {
                  "in source");
     if (findKey(doc, "LensFlareBokehShape"))
         ctx.warn("LensFlareBokehShape: flarekit has no bokeh texture; kept in source");
+    if (!clampedPositions.empty()) kept[kClampedPositions] = clampedPositions;
     // FJsonObjectConverter's lower camel case ("lensFlareIntensity") is written back as read.
     if (findKey(doc, "LensFlareIntensity", &spelled) && spelled[0] == 'l')
         kept["__key_case"] = "lower";
@@ -233,6 +258,16 @@ Result<std::string> writeUnreal(const PostFxParams& p, ExportContext& ctx) {
         if (auto c = unrealColor(*v, JsonPlace(ctx.path, "source.LensFlareTint"), a)) tint = *c;
     }
     const auto divide = [](float x, float by) { return by > 0.f ? x / by : 0.f; };
+    std::string section = ext(ctx.path) == ".ini" ? kDefaultSection : "";
+    if (auto it = kept.find(kSectionKey); it != kept.end()) {
+        if (it->is_string()) section = it->get<std::string>();
+        kept.erase(it);
+    }
+    json clamped = json::object();
+    if (auto it = kept.find(kClampedPositions); it != kept.end()) {
+        if (it->is_object()) clamped = *it;
+        kept.erase(it);
+    }
     json out = json::object();
     out["LensFlareIntensity"] = p.flareIntensity;
     out["LensFlareThreshold"] = p.bright.threshold;
@@ -243,10 +278,21 @@ Result<std::string> writeUnreal(const PostFxParams& p, ExportContext& ctx) {
             continue;
         }
         const GhostParams& g = p.ghosts[std::size_t(i)];
+        double a = tidy(1.0 / double(g.scale));
+        // A position the import clamped comes back as it was, unless the ghost was moved since.
+        if (const json* own =
+                clamped.contains(std::to_string(i)) ? &clamped[std::to_string(i)] : nullptr;
+            own && own->is_number()) {
+            const double original = own->get<double>();
+            const double drawnAt =
+                std::copysign(std::clamp(std::abs(original), kMinPosition, kMaxPosition),
+                              original == 0 ? 1.0 : original);
+            if (std::abs(1.0 / double(g.scale) - drawnAt) <= 1e-6 * std::abs(drawnAt)) a = original;
+        }
         tints.push_back({{"R", divide(g.tint[0], tint[0])},
                          {"G", divide(g.tint[1], tint[1])},
                          {"B", divide(g.tint[2], tint[2])},
-                         {"A", tidy(1.0 / double(g.scale))}});
+                         {"A", a}});
     }
     if (p.ghosts.size() > std::size_t(kUnrealFlares))
         ctx.warn("ghosts " + std::to_string(p.ghosts.size()) +
@@ -287,13 +333,13 @@ Result<std::string> writeUnreal(const PostFxParams& p, ExportContext& ctx) {
             c = l;
         }
     }
-    const std::string ext = lower(fs::path(ctx.path).extension().string());
     const std::string tintsKey = lowerCase ? "lensFlareTints" : "LensFlareTints";
     out[tintsKey] = tints;
-    if (ext == ".json") return dumpByLine(out, tintsKey.c_str());
-    // Text: one Key=Value per line, as a [/Script/Engine.PostProcessSettings]-style block.
+    if (ext(ctx.path) == ".json") return dumpByLine(out, tintsKey.c_str());
+    // Text: one Key=Value per line under the section read (an .ini: Unreal's by default).
     std::ostringstream os;
     os.precision(9);
+    if (!section.empty()) os << section << "\n";
     const auto value = [&](const json& v) -> std::string {
         if (v.is_object()) {
             std::string s = "(";

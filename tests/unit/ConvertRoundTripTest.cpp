@@ -156,6 +156,47 @@ TEST(Convert, TextFormatsRoundTripEveryValue) {
     }
 }
 
+// Unreal accepts any flare position; flarekit's ghost scales end at 16 and 0.05 (|A| from
+// 0.0625 to 20). A flare on the centre (A = 0) or beyond is drawn at the nearest position with
+// one warning, and comes back as written, under the .ini's own section.
+TEST(Convert, UnrealFlaresBeyondFlarekitsGhostScalesAreDrawnAtTheEndAndComeBackAsWritten) {
+    TempDir dir;
+    const std::string ini = dir.file("PostProcess.ini");
+    spit(ini,
+         "[/Script/MyGame.Settings]\nLensFlareIntensity=0.8\n"
+         "LensFlareTints[0]=(R=1,G=0.6,B=0.3,A=0)\nLensFlareTints[1]=(R=1,G=1,B=1,A=-0.03)\n"
+         "LensFlareTints[2]=(R=1,G=1,B=1,A=25)\nLensFlareTints[3]=(R=1,G=1,B=1,A=0.5)\n");
+    auto imported = importFlare(ini);
+    ASSERT_TRUE(imported.ok()) << imported.error().message;
+    const auto& ghosts = imported->chain.ghosts;
+    ASSERT_EQ(ghosts.size(), 8u);
+    EXPECT_FLOAT_EQ(ghosts[0].scale, 16.f);
+    EXPECT_FLOAT_EQ(ghosts[1].scale, -16.f);
+    EXPECT_FLOAT_EQ(ghosts[2].scale, 0.05f);
+    EXPECT_FLOAT_EQ(ghosts[3].scale, 2.f);
+    int positionWarnings = 0;
+    for (const std::string& w : imported->warnings)
+        positionWarnings += w.find(".A ") != std::string::npos;
+    EXPECT_EQ(positionWarnings, 3);
+
+    const std::string back = roundTrip(ini, "Back.ini", FlareFormat::Unreal, dir);
+    const std::string text = slurp(back);
+    EXPECT_EQ(text.rfind("[/Script/MyGame.Settings]\n", 0), 0u) << text;
+    for (const char* line : {"LensFlareTints[0]=(R=1.0,G=0.6,B=0.3,A=0.0)",
+                             "LensFlareTints[1]=(R=1.0,G=1.0,B=1.0,A=-0.03)",
+                             "LensFlareTints[2]=(R=1.0,G=1.0,B=1.0,A=25.0)",
+                             "LensFlareTints[3]=(R=1.0,G=1.0,B=1.0,A=0.5)"})
+        EXPECT_NE(text.find(line), std::string::npos) << line << " not in\n" << text;
+
+    // Moved in flarekit, the ghost's own position is written instead of the kept one.
+    FlareAsset moved = *imported;
+    moved.chain.ghosts[0].scale = 4.f;
+    ASSERT_TRUE(exportFlare(moved, dir.file("moved.ini"), FlareFormat::Unreal).ok());
+    EXPECT_NE(slurp(dir.file("moved.ini")).find("LensFlareTints[0]=(R=1.0,G=0.6,B=0.3,A=0.25)"),
+              std::string::npos)
+        << slurp(dir.file("moved.ini"));
+}
+
 TEST(Convert, AnEditMadeInFlarekitReachesTheEnginesFile) {
     TempDir dir;
     auto asset = importFlare(kInterop + "/babylon/sun-flares.json");
