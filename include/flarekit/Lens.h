@@ -120,6 +120,21 @@ inline constexpr Param<LensSensor> kLensSensorParams[] = {
     aboveMin(param<&LensSensor::height>("height", 0, 1e4, "mm", "sensor height")),
 };
 
+//! An artist's look for one ghost, the light reflected at surface `first` and then at `second`
+//! (< first): its traced intensity times `gain`, and times `tint` per channel. FlareSim's
+//! per-surface gain and tint; the trace is unchanged. A lens file's "ghost_pairs", as
+//! {"surfaces": [first, second], "gain": ..., "tint": [r, g, b]}.
+struct GhostPairLook {
+    int first = 1, second = 0;
+    double gain = 1.0;
+    Rgb tint{1.f, 1.f, 1.f};
+};
+
+inline constexpr Param<GhostPairLook> kGhostPairParams[] = {
+    param<&GhostPairLook::gain>("gain", 0, 1e6, "", "multiplies the ghost's traced intensity"),
+    param<&GhostPairLook::tint>("tint", 0, 1000, "linear RGB", "multiplies the ghost per channel"),
+};
+
 struct Lens {
     std::string name, source;
     double fNumber = 0.0;            //!< the patent's (recorded, not used)
@@ -130,7 +145,11 @@ struct Lens {
     std::vector<LensSurface> surfaces;
     LensAperture aperture;
     LensSensor sensor;
+    std::vector<GhostPairLook> ghostPairs;  //!< at most one per pair of surfaces
     int stopIndex() const;
+    //! The look of the ghost of surfaces (first, second): gain x tint per channel (1 when the
+    //! lens gives that pair none).
+    std::array<double, 3> ghostPairFactor(int first, int second) const;
 };
 
 //! Lens prescriptions shipped in presets/lenses (names without .json).
@@ -140,6 +159,13 @@ std::vector<std::string> lensNames();
 //! radii no larger than the sphere, a sensor behind the last surface).
 Result<Lens> loadLens(const std::string& nameOrPath);
 Result<Lens> parseLens(const std::string& text, const std::string& source);
+//! The lens as the JSON parseLens reads back to the same lens (surfaces, coatings as layers,
+//! iris, sensor, ghost pairs): what the studio saves.
+std::string lensToJson(const Lens& lens);
+//! The checks parseLens makes of a prescription in memory (ranges, one stop, surfaces that do
+//! not cross within their clear apertures, the sensor behind the last surface, ghost pairs of
+//! real surfaces): an edited lens is refused as its file would be. `what` names it in errors.
+Status validateLens(const Lens& lens, const std::string& what = "lens");
 //! The lens with its stop scaled so that the paraxial working f-number is `fNumber`; refused
 //! when that is wider than the stop as written.
 Result<Lens> stopDown(const Lens& lens, double fNumber);

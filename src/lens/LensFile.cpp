@@ -140,7 +140,71 @@ Status checkPhysics(const Lens& lens, const JsonPlace& place) {
     if (stops != 1)
         return surfaces.fail("expected exactly one surface with \"stop\": true, found " +
                              std::to_string(stops));
+    const int n = int(lens.surfaces.size());
+    for (std::size_t i = 0; i < lens.ghostPairs.size(); ++i) {
+        const GhostPairLook& g = lens.ghostPairs[i];
+        const JsonPlace at = (place / "ghost_pairs").index(i) / "surfaces";
+        if (!(g.second >= 0 && g.second < g.first && g.first < n))
+            return at.fail("expected [first, second] with " + std::to_string(n) +
+                           " > first > second >= 0 (the light reflects at first, then at "
+                           "second), got [" +
+                           std::to_string(g.first) + ", " + std::to_string(g.second) + "]");
+        if (lens.surfaces[std::size_t(g.first)].stop || lens.surfaces[std::size_t(g.second)].stop)
+            return at.fail("surface " + std::to_string(lens.stopIndex()) +
+                           " is the stop, which never reflects");
+        for (std::size_t k = 0; k < i; ++k)
+            if (lens.ghostPairs[k].first == g.first && lens.ghostPairs[k].second == g.second)
+                return at.fail("the pair [" + std::to_string(g.first) + ", " +
+                               std::to_string(g.second) + "] is already given at ghost_pairs[" +
+                               std::to_string(k) + "]");
+    }
     return Ok{};
+}
+
+//! {"surfaces": [first, second], "gain": ..., "tint": [r, g, b]}.
+Result<GhostPairLook> readGhostPair(const nlohmann::json& v, const JsonPlace& place) {
+    if (!v.is_object() || !v.contains("surfaces"))
+        return place.fail(
+            "expected {\"surfaces\": [first, second], \"gain\": ..., \"tint\": [r, g, b]}, "
+            "got " +
+            jsonExcerpt(v));
+    const nlohmann::json& sv = v["surfaces"];
+    const auto index = [](const nlohmann::json& x) {
+        return x.is_number_integer() && x.get<long long>() >= 0 && x.get<long long>() < 4096;
+    };
+    if (!sv.is_array() || sv.size() != 2 || !index(sv[0]) || !index(sv[1]))
+        return (place / "surfaces")
+            .fail("expected [first, second], the surfaces' indices, got " + jsonExcerpt(sv));
+    GhostPairLook g;
+    g.first = int(sv[0].get<long long>()), g.second = int(sv[1].get<long long>());
+    if (auto e = readParams(v, std::span<const Param<GhostPairLook>>(kGhostPairParams), g, place,
+                            {"surfaces"}))
+        return *e;
+    return g;
+}
+
+bool sameCoating(const LensCoating& a, const LensCoating& b) {
+    if (a.layers.size() != b.layers.size()) return false;
+    for (std::size_t i = 0; i < a.layers.size(); ++i)
+        if (a.layers[i].n != b.layers[i].n || a.layers[i].thicknessNm != b.layers[i].thicknessNm)
+            return false;
+    return true;
+}
+
+//! Whether parseLens gives surface i the lens's coating when it states none: a glass-air
+//! surface that is not the stop (cemented glass-glass surfaces stay bare).
+bool takesLensCoating(const Lens& lens, std::size_t i) {
+    const LensSurface& s = lens.surfaces[i];
+    const bool airBefore = i == 0 || lens.surfaces[i - 1].nd == 1.0;
+    return !s.stop && airBefore != (s.nd == 1.0);
+}
+
+nlohmann::json coatingJson(const LensCoating& c) {
+    if (c.layers.empty()) return "none";
+    nlohmann::json layers = nlohmann::json::array();
+    for (const CoatingLayer& l : c.layers)
+        layers.push_back({{"n", l.n}, {"thickness_nm", l.thicknessNm}});
+    return {{"layers", layers}};
 }
 
 }  // namespace
@@ -204,6 +268,15 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
                     readParams(value, std::span<const Param<LensAperture>>(kLensApertureParams),
                                lens.aperture, at))
                 return *e;
+        } else if (key == "ghost_pairs") {
+            if (!value.is_array() || value.size() > 4096)
+                return at.fail("expected an array of at most 4096 pairs, got " +
+                               jsonExcerpt(value));
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                auto g = readGhostPair(value[i], at.index(i));
+                if (!g) return g.error();
+                lens.ghostPairs.push_back(*g);
+            }
         } else if (key == "sensor") {
             if (auto e = readParams(value, std::span<const Param<LensSensor>>(kLensSensorParams),
                                     lens.sensor, at))
@@ -211,20 +284,84 @@ Result<Lens> parseLens(const std::string& text, const std::string& source) {
         } else {
             return at.fail(
                 "unknown key (expected one of: name, source, f_number, patent_focal_length_mm, "
-                "coating, surfaces, aperture, sensor)");
+                "coating, surfaces, aperture, sensor, ghost_pairs)");
         }
     }
     // The lens's coating goes on every glass-air surface that states none of its own; cemented
     // (glass-glass) surfaces and the stop stay bare.
-    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
-        LensSurface& s = lens.surfaces[i];
-        const bool airBefore = i == 0 || lens.surfaces[i - 1].nd == 1.0;
-        if (!ownCoating[i] && !s.stop && airBefore != (s.nd == 1.0)) s.coating = lens.coating;
-    }
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i)
+        if (!ownCoating[i] && takesLensCoating(lens, i)) lens.surfaces[i].coating = lens.coating;
     if (!j.contains("surfaces")) return (place / "surfaces").fail("missing; expected an array");
     if (auto s = checkPhysics(lens, place); !s) return s.error();
     if (lens.name.empty()) lens.name = source;
     return lens;
+}
+
+Status validateLens(const Lens& lens, const std::string& what) {
+    // Through the file itself: a lens in memory passes exactly when its file would.
+    auto read = parseLens(lensToJson(lens), what);
+    if (!read) return read.error();
+    return Ok{};
+}
+
+std::string lensToJson(const Lens& lens) {
+    using nlohmann::json;
+    std::string out = "{\n";
+    const auto line = [&out](const std::string& key, const json& v, bool last = false) {
+        out += ' ';
+        out += json(key).dump();
+        out += ": ";
+        out += v.dump();
+        out += last ? "\n" : ",\n";
+    };
+    line("name", lens.name);
+    if (!lens.source.empty()) line("source", lens.source);
+    if (lens.fNumber > 0) line("f_number", lens.fNumber);
+    if (lens.patentFocalLength > 0) line("patent_focal_length_mm", lens.patentFocalLength);
+    line("coating", coatingJson(lens.coating));
+    out += " \"surfaces\": [\n";
+    for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+        const LensSurface& s = lens.surfaces[i];
+        json j =
+            writeParams(s, std::span<const Param<LensSurface>>(kLensSurfaceParams), LensSurface{});
+        if (s.vd != 0.0) j["n_d"] = s.nd;  // v_d is read only beside n_d
+        const LensCoating expected = takesLensCoating(lens, i) ? lens.coating : LensCoating{};
+        if (!sameCoating(s.coating, expected)) j["coating"] = coatingJson(s.coating);
+        out += "  ";
+        out += j.dump();
+        out += i + 1 < lens.surfaces.size() ? ",\n" : "\n";
+    }
+    out += " ],\n";
+    line("aperture",
+         writeParams(lens.aperture, std::span<const Param<LensAperture>>(kLensApertureParams),
+                     LensAperture{}));
+    const bool pairs = !lens.ghostPairs.empty();
+    line("sensor",
+         writeParams(lens.sensor, std::span<const Param<LensSensor>>(kLensSensorParams),
+                     LensSensor{}),
+         !pairs);
+    if (pairs) {
+        out += " \"ghost_pairs\": [\n";
+        for (std::size_t i = 0; i < lens.ghostPairs.size(); ++i) {
+            const GhostPairLook& g = lens.ghostPairs[i];
+            json j = {{"surfaces", {g.first, g.second}}};
+            j.update(writeParams(g, std::span<const Param<GhostPairLook>>(kGhostPairParams),
+                                 GhostPairLook{}));
+            out += "  ";
+            out += j.dump();
+            out += i + 1 < lens.ghostPairs.size() ? ",\n" : "\n";
+        }
+        out += " ]\n";
+    }
+    out += "}\n";
+    return out;
+}
+
+std::array<double, 3> Lens::ghostPairFactor(int first, int second) const {
+    for (const GhostPairLook& g : ghostPairs)
+        if (g.first == first && g.second == second)
+            return {g.gain * g.tint[0], g.gain * g.tint[1], g.gain * g.tint[2]};
+    return {1.0, 1.0, 1.0};
 }
 
 Result<Lens> loadLens(const std::string& nameOrPath) {

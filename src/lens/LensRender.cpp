@@ -451,9 +451,12 @@ Result<LensFlareLayers> lens::renderLensFlareWith(const Lens& lens, int width, i
                     lens::ghostPath(int(lens.surfaces.size()), ghosts[g][0], ghosts[g][1]);
                 Mesh& m = meshes[std::size_t(k)];
                 traceMesh(traces[w], path, dir, side, map, m);
+                // The lens's look for this pair of surfaces (ghost_pairs) on top of the trace.
+                const auto look = lens.ghostPairFactor(ghosts[g][0], ghosts[g][1]);
                 for (int c = 0; c < 3; ++c)
                     m.weight[std::size_t(c)] = ghostGain * light.energy[std::size_t(c)] *
-                                               samples[w].weight[std::size_t(c)] * triangleShare;
+                                               samples[w].weight[std::size_t(c)] * triangleShare *
+                                               look[std::size_t(c)];
             }
         });
         if (interrupted()) return stopped(done);
