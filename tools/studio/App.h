@@ -62,6 +62,8 @@ class App {
     void drawElementList();
     void drawPostFxPanel();
     void drawLensPanel();
+    void drawGhostLook();     //!< the picked ghost's gain and tint
+    void drawLensSurfaces();  //!< the coatings and each surface's numbers
     //! Names the ghost nearest `at` (image pixels) among the lens's drawn ghosts: its pair of
     //! surfaces, shown on the view and in the status line (and on stdout for a script).
     Status pickGhost(Point at);

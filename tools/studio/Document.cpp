@@ -60,13 +60,13 @@ Document::Document() {
 
 namespace {
 
-//! A lens setting's text for undo and change checks: the name, the f-number, the render
-//! settings and the iris that differ from their defaults.
+//! A lens setting's text for undo and change checks: the lens as its file (surfaces, coatings,
+//! iris, ghost looks), then the job's flags that differ from their defaults.
 std::string lensText(const Lens& lens, const LensJobOptions& job) {
-    return job.lens + writeParams<LensJobOptions>(job, kLensJobParams, LensJobOptions{}).dump() +
+    return lensToJson(lens) + job.lens +
+           writeParams<LensJobOptions>(job, kLensJobParams, LensJobOptions{}).dump() +
            writeParams<LensRenderOptions>(job.render, kLensRenderParams, LensRenderOptions{})
-               .dump() +
-           writeParams<LensAperture>(lens.aperture, kLensApertureParams, LensAperture{}).dump();
+               .dump();
 }
 
 }  // namespace
@@ -200,10 +200,7 @@ void Document::finishLoad(const Design& before, const std::string& path) {
 
 Status Document::savePreset(const std::string& path) {
     commit();
-    if (kind == FlareKind::Lens)
-        return invalidInput(path +
-                            ": not saved: saving a lens is not in the studio yet (its "
-                            "f-number and render settings are `flarekit lens render` flags)");
+    if (kind == FlareKind::Lens) return saveLens(path);
     // Never a file the CLI would refuse: the edits are checked as the reader checks them.
     const Status valid =
         kind == FlareKind::Sprite ? validatePreset(m_preset) : validatePostFxParams(m_post);
@@ -320,6 +317,96 @@ Status Document::setPostFxParam(const std::string& section, const std::string& k
         if (name == section) status = setByKey<Owner>(table, owner, key, value, ~0u, section + ".");
     });
     return status;
+}
+
+Status Document::saveLens(const std::string& path) {
+    // A lens file is flarekit's own JSON; no engine holds a prescription.
+    if (std::filesystem::path(path).extension() != ".json")
+        return invalidInput(path +
+                            ": not saved: a lens is saved as .json (the format of "
+                            "docs/lens.md); no engine format holds a prescription");
+    if (Status s = validateLens(m_lens, path); !s)
+        return invalidInput(path + ": not saved: " + s.error().message);
+    if (Status s = writeFileSafely(path, lensToJson(m_lens)); !s) return s;
+    warnings = {
+        "saved the prescription, iris and ghost looks; the f-number and render settings "
+        "are `flarekit lens render` flags"};
+    m_savedJson[int(kind)] = currentJson();
+    m_presetPath[int(kind)] = path;
+    return Ok{};
+}
+
+Status Document::setLensSurfaceParam(int surface, const std::string& key, const ParamValue& value) {
+    if (surface < 0 || surface >= int(m_lens.surfaces.size()))
+        return invalidInput("surface " + std::to_string(surface) + ": the lens has " +
+                            std::to_string(m_lens.surfaces.size()) + " surfaces");
+    Lens edited = m_lens;
+    if (Status s =
+            setByKey<LensSurface>(kLensSurfaceParams, edited.surfaces[std::size_t(surface)], key,
+                                  value, ~0u, "surfaces[" + std::to_string(surface) + "].");
+        !s)
+        return s;
+    if (Status s = validateLens(edited, m_lens.name); !s) return s;
+    m_lens = std::move(edited);
+    return Ok{};
+}
+
+Status Document::setLensCoating(int surface, const std::string& design, double designNm) {
+    LensCoating coating;
+    if (design != "none") {
+        int index = -1;
+        for (std::size_t i = 0; i < std::size(kCoatingDesignNames); ++i)
+            if (kCoatingDesignNames[i] == design) index = int(i);
+        if (index < 0)
+            return invalidInput("coating: expected \"none\", \"mgf2\" or \"broadband\", got \"" +
+                                design + "\"");
+        if (!(designNm >= 380 && designNm <= 780))
+            return invalidInput("design_nm: expected a wavelength in [380, 780] nm");
+        coating = coatingDesign(CoatingDesign(index), designNm);
+    }
+    Lens edited = m_lens;
+    if (surface < 0) {
+        edited.coating = coating;
+        for (std::size_t i = 0; i < edited.surfaces.size(); ++i) {
+            const LensSurface& s = edited.surfaces[i];
+            const bool airBefore = i == 0 || edited.surfaces[i - 1].nd == 1.0;
+            if (!s.stop && airBefore != (s.nd == 1.0)) edited.surfaces[i].coating = coating;
+        }
+    } else if (surface < int(edited.surfaces.size())) {
+        edited.surfaces[std::size_t(surface)].coating = coating;
+    } else {
+        return invalidInput("surface " + std::to_string(surface) + ": the lens has " +
+                            std::to_string(m_lens.surfaces.size()) + " surfaces");
+    }
+    if (Status s = validateLens(edited, m_lens.name); !s) return s;
+    m_lens = std::move(edited);
+    return Ok{};
+}
+
+GhostPairLook Document::ghostPair(int first, int second) const {
+    for (const GhostPairLook& g : m_lens.ghostPairs)
+        if (g.first == first && g.second == second) return g;
+    return {first, second, 1.0, {1.f, 1.f, 1.f}};
+}
+
+Status Document::setGhostPairParam(int first, int second, const std::string& key,
+                                   const ParamValue& value) {
+    Lens edited = m_lens;
+    auto it = std::find_if(
+        edited.ghostPairs.begin(), edited.ghostPairs.end(),
+        [&](const GhostPairLook& g) { return g.first == first && g.second == second; });
+    if (it == edited.ghostPairs.end()) {
+        edited.ghostPairs.push_back(ghostPair(first, second));
+        it = edited.ghostPairs.end() - 1;
+    }
+    if (Status s = setByKey<GhostPairLook>(
+            kGhostPairParams, *it, key, value, ~0u,
+            "ghost_pairs[" + std::to_string(first) + ", " + std::to_string(second) + "].");
+        !s)
+        return s;
+    if (Status s = validateLens(edited, m_lens.name); !s) return s;
+    m_lens = std::move(edited);
+    return Ok{};
 }
 
 Status Document::setGhostParam(int ghost, const std::string& key, const ParamValue& value) {

@@ -92,10 +92,21 @@ class Document {
     Status setGhostParam(int ghost, const std::string& key, const ParamValue& value);
     void addGhost();  //!< a copy of the last ghost (or a default one), at the end
     void removeGhost(int ghost);
-    // The lens: a shipped prescription, its iris (aperture), f-number and render settings.
-    // Its surfaces are shown, not edited, and a lens is not saved (not in the studio yet).
+    // The lens: a prescription (its surfaces, glasses and coatings), its iris, a look per
+    // ghost, and the f-number and render settings of `flarekit lens render` (flags, not saved).
     const Lens& lens() const { return m_lens; }
     LensAperture& aperture() { return m_lens.aperture; }
+    //! Sets a parameter of surface `surface` (radius, thickness, n_d, v_d, semi_aperture);
+    //! refused, the lens unchanged, when the lens would be refused as a file.
+    Status setLensSurfaceParam(int surface, const std::string& key, const ParamValue& value);
+    //! Puts a coating ("none", "mgf2", "broadband", or a design at `designNm`) on surface
+    //! `surface`, or with surface -1 on every glass-air surface (the lens's own coating).
+    Status setLensCoating(int surface, const std::string& design, double designNm);
+    //! Sets gain or tint of the ghost of surfaces (first, second), adding its look when new.
+    Status setGhostPairParam(int first, int second, const std::string& key,
+                             const ParamValue& value);
+    //! The look of the ghost of surfaces (first, second) (gain 1, white when it has none).
+    GhostPairLook ghostPair(int first, int second) const;
     LensJobOptions& lensJob() { return m_lensJob; }
     const LensJobOptions& lensJob() const { return m_lensJob; }
     //! The lens job's options: the lens in memory, the light at `scale` x the document's;
@@ -139,6 +150,7 @@ class Document {
     PostFxJobOptions postFxOptions(bool display) const;
 
   private:
+    Status saveLens(const std::string& path);  //!< the lens as its JSON file (savePreset)
     //! Both presets: what an undo step restores.
     struct Design {
         Preset sprite;

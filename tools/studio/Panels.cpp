@@ -206,13 +206,12 @@ void App::drawLensPanel() {
                      ImVec2(w, w * float(m_diagram.height()) / float(m_diagram.width())));
     ImGui::TextWrapped("%s: %zu surfaces. Right-click a ghost on the view to name its surfaces.",
                        m_doc.lens().name.c_str(), m_doc.lens().surfaces.size());
-    if (m_picked)
-        ImGui::TextColored(ImVec4(0.4f, 1.f, 0.8f, 1.f), "picked: surfaces %d and %d",
-                           m_picked->first, m_picked->second);
     ImGui::PushItemWidth(-150);
+    if (m_picked) drawGhostLook();
     ImGui::Separator();
     ImGui::TextDisabled("iris");
     paramTable<LensAperture>(kLensApertureParams, m_doc.aperture(), LensAperture{});
+    drawLensSurfaces();
     ImGui::Separator();
     ImGui::TextDisabled("stop and sources");
     for (const Param<LensJobOptions>& p : kLensJobParams) {
@@ -225,6 +224,77 @@ void App::drawLensPanel() {
     ImGui::TextDisabled("render");
     paramTable<LensRenderOptions>(kLensRenderParams, m_doc.lensJob().render, LensRenderOptions{});
     ImGui::PopItemWidth();
+}
+
+void App::drawGhostLook() {
+    // The picked ghost's look (the lens file's ghost_pairs): its gain and tint over the trace.
+    const int first = m_picked->first, second = m_picked->second;
+    ImGui::TextColored(ImVec4(0.4f, 1.f, 0.8f, 1.f), "picked: the ghost of surfaces %d and %d",
+                       first, second);
+    GhostPairLook look = m_doc.ghostPair(first, second);
+    const GhostPairLook defaults{first, second, 1.0, {1.f, 1.f, 1.f}};
+    for (const Param<GhostPairLook>& p : kGhostPairParams) {
+        ImGui::PushID(p.key.data());
+        if (paramWidget(p, look, defaults)) {
+            if (Status s = m_doc.setGhostPairParam(first, second, std::string(p.key), p.get(look));
+                !s)
+                say(s.error().message, true);
+        }
+        ImGui::PopID();
+    }
+}
+
+void App::drawLensSurfaces() {
+    // The prescription: the lens's coating on every glass-air surface, then each surface's
+    // numbers, typed (a radius or thickness has no useful slider range) and applied when the
+    // field is left; an edit the lens file would refuse is not applied and says why.
+    ImGui::Separator();
+    ImGui::TextDisabled("coatings and surfaces");
+    static constexpr const char* kDesigns[] = {"none", "mgf2", "broadband"};
+    static int design = 1;
+    static double designNm = kMgF2DesignNm;
+    ImGui::Combo("coating", &design, kDesigns, int(std::size(kDesigns)));
+    ImGui::InputDouble("design nm", &designNm, 10, 50, "%.0f");
+    if (ImGui::Button("coat every glass-air surface")) {
+        if (Status s = m_doc.setLensCoating(-1, kDesigns[design], designNm); !s)
+            say(s.error().message, true);
+    }
+    const Lens& lens = m_doc.lens();
+    for (int i = 0; i < int(lens.surfaces.size()); ++i) {
+        const LensSurface& surface = lens.surfaces[std::size_t(i)];
+        ImGui::PushID(i);
+        const std::string title =
+            surface.stop
+                ? "surface " + std::to_string(i) + ": the stop"
+                : "surface " + std::to_string(i) + ": radius " + formatParamNumber(surface.radius) +
+                      (surface.nd != 1.0 ? ", glass n_d " + formatParamNumber(surface.nd)
+                                         : ", air") +
+                      (surface.coating.layers.empty()
+                           ? ", bare"
+                           : ", " + std::to_string(surface.coating.layers.size()) +
+                                 "-layer coating");
+        if (ImGui::TreeNode(title.c_str())) {
+            for (const Param<LensSurface>& p : kLensSurfaceParams) {
+                if (p.type != ParamType::Number) continue;  // `stop` is the prescription's
+                double v = p.get(surface).number;
+                ImGui::InputDouble(std::string(p.key).c_str(), &v, 0, 0, "%.6g");
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s", paramTooltip(p, LensSurface{}).c_str());
+                if (ImGui::IsItemDeactivatedAfterEdit()) {
+                    ParamValue value;
+                    value.number = v;
+                    if (Status s = m_doc.setLensSurfaceParam(i, std::string(p.key), value); !s)
+                        say(s.error().message, true);
+                }
+            }
+            if (!surface.stop && ImGui::Button("coat this surface")) {
+                if (Status s = m_doc.setLensCoating(i, kDesigns[design], designNm); !s)
+                    say(s.error().message, true);
+            }
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
 }
 
 void App::drawElementList() {

@@ -18,7 +18,7 @@ using nlohmann::json;
 //! An action's kind, its fields (required first, `?` marks an optional one) and what it does.
 struct ActionSpec {
     std::string_view kind;
-    std::array<std::string_view, 5> fields;
+    std::array<std::string_view, 8> fields;
     std::string_view help;
 };
 
@@ -39,10 +39,13 @@ constexpr ActionSpec kActions[] = {
      "edits and shows the sprite preset (\"sprite\", `flarekit apply`), the post-process "
      "preset (\"postfx\", `flarekit postfx`) or the lens (\"lens\", `flarekit lens render`)"},
     {"set",
-     {"key", "value", "?element", "?section", "?ghost"},
+     {"key", "value", "?element", "?section", "?ghost", "?surface", "?pair", "?design_nm"},
      "sets a parameter: of element `element` (sprite, docs/presets.md), of a post-process "
      "`section` (bloom, ...) or `ghost` (docs/postfx.md), of the lens's `section` (render, "
-     "aperture, job), or of the preset without them"},
+     "aperture, job; `surface` with its index; `coating` with key `design`, a value \"none\", "
+     "\"mgf2\" or \"broadband\", `design_nm` and a `surface` or all glass-air ones; "
+     "`ghost_pair` with `pair` [first, second], key gain or tint: docs/lens.md), or of the "
+     "preset without them"},
     {"add_ghost", {}, "post-process: adds a copy of the last ghost"},
     {"remove_ghost", {"ghost"}, "post-process: removes a ghost"},
     {"view", {"key", "value"}, "sets a view setting: exposure, tonemap, flux_mode, intensity"},
@@ -57,7 +60,10 @@ constexpr ActionSpec kActions[] = {
     {"undo", {}, "undoes the last edit"},
     {"redo", {}, "redoes it"},
     {"split", {"at"}, "before/after split: the before half's share of the view, 0 to 1"},
-    {"save", {"path"}, "saves the preset as JSON the CLI reads"},
+    {"save",
+     {"path"},
+     "saves the preset (or the lens) as the JSON the CLI reads, or as an engine's file by its "
+     "extension"},
     {"export",
      {"path", "?depth"},
      "renders at full size: EXR linear (float), PNG (8-bit) and TIFF (16-bit) through the view's "
@@ -267,6 +273,61 @@ Status runDocumentAction(Document& doc, const Action& a) {
             doc.commit();
             return Ok{};
         };
+        const std::string key = a.args["key"].is_string() ? a.args["key"].get<std::string>() : "";
+        const int surfaces = int(doc.lens().surfaces.size());
+        const auto surfaceOf = [&]() -> Result<int> {
+            const json& v = a.args["surface"];
+            if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= surfaces)
+                return failAt(a, "surface: expected a surface index in [0, " +
+                                     std::to_string(surfaces - 1) + "], got " + jsonExcerpt(v));
+            return int(v.get<long long>());
+        };
+        if (section == "surface") {
+            auto i = surfaceOf();
+            if (!i) return i.error();
+            auto value = valueOf<LensSurface>(
+                std::span<const Param<LensSurface>>(kLensSurfaceParams), a, ~0u, "a lens surface");
+            if (!value) return value.error();
+            Status s = doc.setLensSurfaceParam(*i, key, *value);
+            doc.commit();
+            return withWhere(s);
+        }
+        if (section == "coating") {
+            const json& v = a.args["value"];
+            if (key != "design" || !v.is_string())
+                return failAt(a,
+                              "coating: expected key \"design\" and a value \"none\", \"mgf2\" "
+                              "or \"broadband\", got " +
+                                  jsonExcerpt(a.args["key"]) + " " + jsonExcerpt(v));
+            const json& nm = a.args.contains("design_nm") ? a.args["design_nm"] : json(550);
+            if (!nm.is_number())
+                return failAt(a, "design_nm: expected a wavelength in nm, got " + jsonExcerpt(nm));
+            int surface = -1;
+            if (a.args.contains("surface")) {
+                auto i = surfaceOf();
+                if (!i) return i.error();
+                surface = *i;
+            }
+            Status s = doc.setLensCoating(surface, v.get<std::string>(), nm.get<double>());
+            doc.commit();
+            return withWhere(s);
+        }
+        if (section == "ghost_pair") {
+            const json& v = a.args["pair"];
+            if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() ||
+                !v[1].is_number_integer())
+                return failAt(a,
+                              "pair: expected [first, second], the surfaces the ghost reflects "
+                              "at, got " +
+                                  jsonExcerpt(v));
+            auto value = valueOf<GhostPairLook>(
+                std::span<const Param<GhostPairLook>>(kGhostPairParams), a, ~0u, "a ghost's look");
+            if (!value) return value.error();
+            Status s = doc.setGhostPairParam(int(v[0].get<long long>()), int(v[1].get<long long>()),
+                                             key, *value);
+            doc.commit();
+            return withWhere(s);
+        }
         if (section == "render")
             return apply(std::span<const Param<LensRenderOptions>>(kLensRenderParams),
                          doc.lensJob().render);
@@ -275,8 +336,8 @@ Status runDocumentAction(Document& doc, const Action& a) {
         if (section == "job")
             return apply(std::span<const Param<LensJobOptions>>(kLensJobParams), doc.lensJob());
         return failAt(a,
-                      "section: expected \"render\", \"aperture\" or \"job\" for a lens, "
-                      "got " +
+                      "section: expected \"render\", \"aperture\", \"job\", \"surface\", "
+                      "\"coating\" or \"ghost_pair\" for a lens, got " +
                           jsonExcerpt(a.args["section"]));
     }
     if (k == "set" && a.args.contains("section")) {
