@@ -387,3 +387,45 @@ def test_a_lens_is_edited_per_surface_and_per_ghost_and_saved_for_the_cli(studio
                            {"action": "save", "path": "never.json"}], ok=False)
     assert done.returncode == 2 and "surfaces[3].thickness" in done.stderr
     assert not (tmp_path / "never.json").exists()
+
+
+def test_an_image_sequence_is_scrubbed_frame_by_frame_as_the_cli_renders_each(studio, cli,
+                                                                             tmp_path):
+    # Four frames of the HDR sunset, the sun 40 px further right in each.
+    image, _ = flarekit.read_image(str(SUNSET_HDR))
+    small = np.ascontiguousarray(image[::2, ::2])
+    for k in range(4):
+        flarekit.write_image(str(tmp_path / f"sh.{1001 + k:04d}.exr"),
+                             np.ascontiguousarray(np.roll(small, 40 * k, axis=1)), depth="float")
+
+    def light_of(done):
+        return [float(v) for v in done.stderr.split("light at ")[1].split()[0].split(",")]
+
+    first = light_of(studio([{"action": "open", "path": "sh.####.exr"}], "--stats"))
+    done = studio([{"action": "open", "path": "sh.####.exr"},
+                   {"action": "load", "preset": "sun-wide"},
+                   {"action": "frame", "frame": 1003},
+                   {"action": "export", "path": "f3.exr"}], "--stats")
+    third = light_of(done)
+    # The light followed the sun to the frame shown.
+    assert abs(third[0] - first[0] - 80) <= 1 and abs(third[1] - first[1]) <= 1
+    cli("apply", tmp_path / "sh.1003.exr", "-o", tmp_path / "cli3.exr", "--preset", "sun-wide",
+        "--light", f"{third[0]},{third[1]}", "--flux-mode", "fixed", "--depth", "float")
+    np.testing.assert_allclose(read(tmp_path / "f3.exr")[..., :3],
+                               read(tmp_path / "cli3.exr")[..., :3], rtol=1e-3, atol=1e-4)
+    # A light placed by hand stays where it was put on every frame.
+    done = studio([{"action": "open", "path": "sh.%04d.exr"},
+                   {"action": "load", "preset": "sun-wide"},
+                   {"action": "light", "at": [300, 90]},
+                   {"action": "frame", "frame": 1004},
+                   {"action": "export", "path": "f4.exr"}], "--stats")
+    assert light_of(done) == [300.0, 90.0]
+    cli("apply", tmp_path / "sh.1004.exr", "-o", tmp_path / "cli4.exr", "--preset", "sun-wide",
+        "--light", "300,90", "--flux-mode", "fixed", "--depth", "float")
+    np.testing.assert_allclose(read(tmp_path / "f4.exr")[..., :3],
+                               read(tmp_path / "cli4.exr")[..., :3], rtol=1e-3, atol=1e-4)
+    # A frame that is not on disk: one line, exit 2.
+    done = studio([{"action": "open", "path": "sh.####.exr"},
+                   {"action": "frame", "frame": 1009}], ok=False)
+    assert done.returncode == 2 and "frame 1009: not on disk (the sequence has 1001-1004)" in \
+        done.stderr

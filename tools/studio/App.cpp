@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +17,7 @@
 
 #include "flarekit/ImageIO.h"
 #include "flarekit/Lens.h"
+#include "flarekit/Shot.h"
 
 namespace flarekit::studio {
 
@@ -127,7 +129,24 @@ void App::openAny(const std::string& path) {
         return;
     }
     if (Status s = m_doc.openImage(path); !s) return say(s.error().message, true);
-    say(std::string("opened ") + path);
+    say(m_doc.isSequence() ? "opened " + path + ": " + std::to_string(m_doc.frames().size()) +
+                                 " frames (" + describeFrames(m_doc.frames()) + ")"
+                           : "opened " + path);
+}
+
+void App::openSequenceOf(const std::string& frameFile) {
+    // The frame number is the last run of digits in the file's name: shot.1001.exr becomes
+    // shot.####.exr, padded as the file is.
+    const std::filesystem::path path(frameFile);
+    const std::string stem = path.stem().string();
+    const std::size_t end = stem.find_last_of("0123456789");
+    if (end == std::string::npos)
+        return say(frameFile + ": not a frame of a sequence (no frame number in its name)", true);
+    std::size_t begin = end;
+    while (begin > 0 && std::isdigit(static_cast<unsigned char>(stem[begin - 1]))) --begin;
+    const std::string pattern = stem.substr(0, begin) + std::string(end + 1 - begin, '#') +
+                                stem.substr(end + 1) + path.extension().string();
+    openAny((path.parent_path() / pattern).string());
 }
 
 void App::say(const std::string& line, bool error) {

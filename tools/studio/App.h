@@ -62,8 +62,10 @@ class App {
     void drawElementList();
     void drawPostFxPanel();
     void drawLensPanel();
-    void drawGhostLook();     //!< the picked ghost's gain and tint
-    void drawLensSurfaces();  //!< the coatings and each surface's numbers
+    void drawGhostLook();                               //!< the picked ghost's gain and tint
+    void drawTimeline();                                //!< a sequence's frames, scrubbed
+    void openSequenceOf(const std::string& frameFile);  //!< the sequence one frame is of
+    void drawLensSurfaces();                            //!< the coatings and each surface's numbers
     //! Names the ghost nearest `at` (image pixels) among the lens's drawn ghosts: its pair of
     //! surfaces, shown on the view and in the status line (and on stdout for a script).
     Status pickGhost(Point at);

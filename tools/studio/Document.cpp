@@ -8,6 +8,7 @@
 #include "core/ParamJson.h"
 #include "core/SafeWrite.h"
 #include "flarekit/ImageIO.h"
+#include "flarekit/Shot.h"
 #include "flarekit/Tonemap.h"
 #include "flarekit/job/Job.h"
 #include "flarekit/job/PixelJob.h"
@@ -121,14 +122,48 @@ LensJobOptions Document::lensOptions(double scale, bool coarse) const {
 }
 
 Status Document::openImage(const std::string& path) {
+    if (!isFramePattern(path)) {
+        if (Status s = loadImageFile(path, true); !s) return s;
+        m_sequence.clear(), m_frames.clear();
+        return Ok{};
+    }
+    auto pattern = parseFramePattern(path);
+    if (!pattern) return pattern.error();
+    std::vector<int> frames = framesOnDisk(*pattern);
+    if (frames.empty())
+        return invalidInput(path +
+                            ": no frame of the sequence is on disk (expected files such as " +
+                            pattern->path(1001) + ")");
+    if (Status s = loadImageFile(pattern->path(frames.front()), true); !s) return s;
+    m_sequence = path, m_frames = std::move(frames), m_frame = m_frames.front();
+    return Ok{};
+}
+
+Status Document::showFrame(int frame) {
+    if (!std::binary_search(m_frames.begin(), m_frames.end(), frame))
+        return invalidInput("frame " + std::to_string(frame) + ": not on disk (the sequence has " +
+                            describeFrames(m_frames) + ")");
+    auto pattern = parseFramePattern(m_sequence);
+    if (!pattern) return pattern.error();
+    const Point kept = light;
+    if (Status s = loadImageFile(pattern->path(frame), false); !s) return s;
+    if (lightPlacedByHand) light = kept;
+    m_frame = frame;
+    return Ok{};
+}
+
+Status Document::loadImageFile(const std::string& path, bool fresh) {
     auto loaded = readImage(path);
     if (!loaded) return loaded.error();
     m_source = PixelInput{std::move(loaded->image), !loaded->wasFloat, loaded->hasAlpha, path};
     m_imagePath = path;
     ++m_imageVersion;
-    // As the CLI writes this image to an 8/16-bit file: filmic for HDR data, none for 8-bit.
-    view.curve = defaultDisplayCurve(loaded->wasFloat, "view.png");
-    view.exposure = 1.f;
+    if (fresh) {
+        // As the CLI writes this image to an 8/16-bit file: filmic for HDR data, none for 8-bit.
+        view.curve = defaultDisplayCurve(loaded->wasFloat, "view.png");
+        view.exposure = 1.f;
+        lightPlacedByHand = false;
+    }
     const LightSearch found = findLights(m_source.image);
     if (!found.lights.empty()) {
         light = found.lights.front().position;

@@ -136,6 +136,16 @@ class Document {
 
     // The image and the light.
     bool hasImage() const { return !m_source.image.empty(); }
+    // An image sequence (a pattern such as shot.####.exr or shot.%04d.exr, as the CLI reads
+    // one): its frames on disk and the one shown. A single image has none.
+    bool isSequence() const { return !m_frames.empty(); }
+    const std::vector<int>& frames() const { return m_frames; }
+    int frame() const { return m_frame; }
+    const std::string& sequencePattern() const { return m_sequence; }
+    //! Shows frame `frame` (a frame number on disk) of the sequence. The light moves to that
+    //! frame's own light, as `--light auto` finds it, unless it was placed by hand.
+    Status showFrame(int frame);
+    bool lightPlacedByHand = false;  //!< set by a drag or a typed light; a new image clears it
     const PixelInput& source() const { return m_source; }
     const std::string& imagePath() const { return m_imagePath; }
     //! Changes each time an image is opened (previews made from the old one are stale).
@@ -166,7 +176,12 @@ class Document {
     void markCommitted();
     bool changedSinceCommit() const;
     void clampSelection();
+    //! Reads `path` as the image shown; `fresh`: a new image (its view curve, its light).
+    Status loadImageFile(const std::string& path, bool fresh);
     PixelInput m_source;
+    std::string m_sequence;     //!< the pattern, when a sequence is open
+    std::vector<int> m_frames;  //!< its frames on disk, ascending
+    int m_frame = 0;
     unsigned m_imageVersion = 0;
     std::string m_imagePath;
     Preset m_preset;

@@ -69,6 +69,9 @@ void App::drawMenu() {
         if (ImGui::MenuItem("Open image...", "Ctrl+O"))
             m_dialog.open("Open image", kImageExtensions, false,
                           [this](const std::string& p) { openAny(p); });
+        if (ImGui::MenuItem("Open sequence..."))
+            m_dialog.open("Open sequence (any one of its frames)", kImageExtensions, false,
+                          [this](const std::string& p) { openSequenceOf(p); });
         if (ImGui::MenuItem("Open preset..."))
             m_dialog.open("Open preset (flarekit, or an engine's flare)", kFlareExtensions, false,
                           [this](const std::string& p) { choosePreset(p); });
@@ -226,6 +229,30 @@ void App::drawLensPanel() {
     ImGui::PopItemWidth();
 }
 
+void App::drawTimeline() {
+    // The sequence's frames on disk, scrubbed by index (a gap in the numbers is no dead zone);
+    // the arrow keys step a frame when the view has the focus.
+    const std::vector<int>& frames = m_doc.frames();
+    int index = int(std::lower_bound(frames.begin(), frames.end(), m_doc.frame()) - frames.begin());
+    int wanted = index;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(std::max(120.f, ImGui::GetContentRegionAvail().x - 220.f));
+    ImGui::SliderInt("##frame", &wanted, 0, int(frames.size()) - 1,
+                     ("frame " + std::to_string(frames[std::size_t(wanted)])).c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu frames%s", frames.size(),
+                        m_doc.lightPlacedByHand ? ", light placed" : ", light found per frame");
+    if (!ImGui::GetIO().WantTextInput) {
+        if (ImGui::IsKeyPressed(ImGuiKey_RightArrow)) ++wanted;
+        if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) --wanted;
+    }
+    wanted = std::clamp(wanted, 0, int(frames.size()) - 1);
+    if (wanted != index) {
+        if (Status s = m_doc.showFrame(frames[std::size_t(wanted)]); !s)
+            say(s.error().message, true);
+    }
+}
+
 void App::drawGhostLook() {
     // The picked ghost's look (the lens file's ghost_pairs): its gain and tint over the trace.
     const int first = m_picked->first, second = m_picked->second;
@@ -380,8 +407,9 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     ImGui::SetNextItemWidth(200);
     ImGui::BeginDisabled(postFx);
     if (ImGui::DragFloat2("light (image pixels)", light, 1.f, -1e5f, 1e5f, "%.1f"))
-        m_doc.light = {light[0], light[1]};
+        m_doc.light = {light[0], light[1]}, m_doc.lightPlacedByHand = true;
     ImGui::EndDisabled();
+    if (m_doc.isSequence()) drawTimeline();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -408,6 +436,7 @@ void App::drawViewPanel(float x, float y, float w, float h) {
         if (!postFx && ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
             const ImVec2 m = ImGui::GetIO().MousePos;
             m_doc.light = m_view.toImage(m.x, m.y);
+            m_doc.lightPlacedByHand = true;
             m_dragging = true;
         }
         const ImVec2 p0(m_view.x, m_view.y), p1(m_view.x + m_view.w, m_view.y + m_view.h);

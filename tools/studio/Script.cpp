@@ -23,13 +23,20 @@ struct ActionSpec {
 };
 
 constexpr ActionSpec kActions[] = {
-    {"open", {"path"}, "opens an image (any format the CLI reads); the light goes to its light"},
+    {"open",
+     {"path"},
+     "opens an image (any format the CLI reads) or a sequence (shot.####.exr, shot.%04d.exr: "
+     "its first frame on disk); the light goes to its light"},
     {"load", {"preset"}, "loads a shipped preset by name or a JSON file (no question asked)"},
     {"choose",
      {"preset"},
      "picks a preset in the browser, as a click does: with unsaved edits the studio asks first"},
     {"answer", {"choice"}, "answers the open question: \"discard\" (the edits) or \"cancel\""},
     {"light", {"at"}, "puts the light at [x, y] image pixels (outside the frame is allowed)"},
+    {"frame",
+     {"frame"},
+     "shows frame `frame` of the open sequence (a frame number on disk); the light moves to "
+     "that frame's own light unless it was placed"},
     {"drag",
      {"from", "to", "?frames"},
      "drags the light with the pointer from [x, y] to [x, y] (image pixels) over `frames` "
@@ -225,8 +232,16 @@ Status runDocumentAction(Document& doc, const Action& a) {
     if (k == "light") {
         auto at = actionPoint(a, "at");
         if (!at) return at.error();
-        doc.light = *at;
+        doc.light = *at, doc.lightPlacedByHand = true;
         return Ok{};
+    }
+    if (k == "frame") {
+        const json& v = a.args["frame"];
+        if (!doc.isSequence()) return failAt(a, "no image sequence is open");
+        if (!v.is_number_integer())
+            return failAt(a, "frame: expected a frame number, got " + jsonExcerpt(v));
+        return withWhere(
+            doc.showFrame(int(std::clamp<long long>(v.get<long long>(), -1, 1LL << 30))));
     }
     if (k == "mode") {
         const json& v = a.args["kind"];
