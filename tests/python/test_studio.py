@@ -429,3 +429,27 @@ def test_an_image_sequence_is_scrubbed_frame_by_frame_as_the_cli_renders_each(st
                    {"action": "frame", "frame": 1009}], ok=False)
     assert done.returncode == 2 and "frame 1009: not on disk (the sequence has 1001-1004)" in \
         done.stderr
+
+
+@pytest.mark.parametrize("method", ["raycast", "texture-mask"])
+def test_the_demo_drive_plays_with_its_coverage_as_the_cli_logs_it(studio, cli, tmp_path, method):
+    done = studio([{"action": "drive", "method": method, "frames": 12},
+                   {"action": "frame", "frame": 6},
+                   {"action": "export", "path": "f6.png"},
+                   {"action": "coverage", "path": "coverage.csv"},
+                   {"action": "screenshot", "path": "drive.png"},
+                   {"action": "frame", "frame": 13}], ok=False)
+    # Past the drive's last frame: one line, exit 2, after everything before it was done.
+    assert done.returncode == 2 and "frame: expected a frame of the drive in [1, 12]" in done.stderr
+    cli("demo", "-o", tmp_path / "demo", "--frames", 12, "--size", "480x270", "--method", method,
+        "--no-video")
+
+    def columns(path):
+        lines = path.read_text().splitlines()
+        return [line.split(",")[:5] for line in lines]
+
+    logged = columns(tmp_path / "demo" / "coverage.csv")
+    assert logged[0] == ["frame", "time_s", "coverage_raw", "coverage_smoothed", "in_frame"]
+    assert columns(tmp_path / "coverage.csv") == logged  # every frame, to the log's digits
+    assert levels(read(tmp_path / "f6.png"), read(tmp_path / "demo" / "frame_0006.png")) == 0
+    assert (tmp_path / "drive.png").exists()

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/SafeWrite.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Lens.h"
 #include "flarekit/Shot.h"
@@ -261,15 +262,22 @@ Status App::stepScript() {
     }
     // Each action waits for the view, its passes and the browser's thumbnails to show what the
     // actions before it made (a screenshot is then of a settled window).
-    if (m_next > 0 && m_doc.hasImage() &&
+    if (m_next > 0 && m_doc.hasImage() && !m_drive &&
         (!m_layersFresh || m_browser.busy() || m_browserKey.empty()))
         return Ok{};
+    // A drive's actions wait for all its frames (its timeline and graph are then whole).
+    if (m_drive && !m_drive->finished()) return Ok{};
+    if (m_drive && !m_drive->error().empty()) return invalidInput("drive: " + m_drive->error());
     if (m_next >= m_script.size()) {
         // The last screenshot has been drawn and written; leave after it.
         if (m_pendingShot.empty()) m_exitCode = 0;
         return Ok{};
     }
     const Action& a = m_script[m_next++];
+    if (a.kind == "drive" || (m_drive && (a.kind == "frame" || a.kind == "export")) ||
+        a.kind == "coverage")
+        return runDriveAction(a);
+    if (a.kind == "open") m_drive.reset();  // an image (or sequence) ends the drive
     if (!isWindowAction(a.kind)) {
         Status s = runDocumentAction(m_doc, a);
         if (s) say(a.kind + " done");
@@ -344,6 +352,50 @@ Status App::stepScript() {
             return invalidInput(a.where + ": " + s.error().message);
         return Ok{};
     }
+    return Ok{};
+}
+
+Status App::runDriveAction(const Action& a) {
+    const auto fail = [&](const std::string& what) { return invalidInput(a.where + ": " + what); };
+    if (a.kind == "drive") {
+        DemoSettings settings;
+        settings.width = kDriveWidth, settings.height = kDriveHeight;
+        if (a.args.contains("method")) {
+            if (!a.args["method"].is_string()) return fail("method: expected a method's name");
+            settings.method = a.args["method"].get<std::string>();
+        }
+        if (a.args.contains("frames")) {
+            auto frames = actionFrames(a, settings.frames);
+            if (!frames) return frames.error();
+            settings.frames = *frames;
+        }
+        if (Status s = startDrive(settings); !s) return fail(s.error().message);
+        return Ok{};
+    }
+    if (!m_drive) return fail(a.kind + ": no drive is open (the \"drive\" action opens one)");
+    if (a.kind == "frame") {
+        const nlohmann::json& v = a.args["frame"];
+        if (!v.is_number_integer() || v.get<long long>() < 1 ||
+            v.get<long long>() > m_drive->ready())
+            return fail("frame: expected a frame of the drive in [1, " +
+                        std::to_string(m_drive->ready()) + "], got " + v.dump().substr(0, 40));
+        m_driveFrame = int(v.get<long long>()) - 1;
+        return Ok{};
+    }
+    if (!a.args["path"].is_string()) return fail("path: expected a file name");
+    const std::string path = a.args["path"].get<std::string>();
+    if (a.kind == "coverage") return writeFileSafely(path, m_drive->coverageCsv());
+    // export: the frame shown, as `flarekit demo` writes it.
+    return writeImage8(path, m_drive->frame(m_driveFrame).image);
+}
+
+Status App::startDrive(const DemoSettings& settings) {
+    m_drive.reset();  // the old worker stops first: one GL drive at a time
+    auto drive = DrivePlayback::start(settings, m_doc.preset());
+    if (!drive) return drive.error();
+    m_drive = std::move(*drive);
+    m_driveFrame = 0, m_driveShown = -1;
+    say("drive: " + std::to_string(settings.frames) + " frames, " + settings.method);
     return Ok{};
 }
 

@@ -5,11 +5,13 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "Document.h"
+#include "DrivePlayback.h"
 #include "FileDialog.h"
 #include "GlTexture.h"
 #include "Preview.h"
@@ -65,7 +67,13 @@ class App {
     void drawGhostLook();                               //!< the picked ghost's gain and tint
     void drawTimeline();                                //!< a sequence's frames, scrubbed
     void openSequenceOf(const std::string& frameFile);  //!< the sequence one frame is of
-    void drawLensSurfaces();                            //!< the coatings and each surface's numbers
+    // The demo drive (DrivePlayback): opened by the menu or the script's "drive" action; the
+    // view shows its frame, the left panel its method, timeline and coverage graph.
+    Status startDrive(const DemoSettings& settings);
+    Status runDriveAction(const Action& a);
+    void drawDriveView(float x, float y, float w, float h);
+    void drawDrivePanel();
+    void drawLensSurfaces();  //!< the coatings and each surface's numbers
     //! Names the ghost nearest `at` (image pixels) among the lens's drawn ghosts: its pair of
     //! surfaces, shown on the view and in the status line (and on stdout for a script).
     Status pickGhost(Point at);
@@ -140,6 +148,11 @@ class App {
     GlTexture m_diagram;
     std::string m_diagramKey;
     std::optional<GhostOnImage> m_picked;
+    std::unique_ptr<DrivePlayback> m_drive;
+    int m_driveFrame = 0, m_driveShown = -1;  //!< the frame on the timeline; the one uploaded
+    GlTexture m_driveTexture;
+    //! The drive's size in the studio: a 16:9 preview (480x270 x 240 frames keeps 124 MiB).
+    static constexpr int kDriveWidth = 480, kDriveHeight = 270;
     std::string m_status;
     bool m_statusError = false;
     long m_frames = 0, m_renders = 0, m_dragFrames = 0;

@@ -11,6 +11,7 @@
 #include "App.h"
 #include "ParamWidgets.h"
 #include "flarekit/Lens.h"
+#include "flarekit/Visibility.h"
 
 namespace flarekit::studio {
 
@@ -72,6 +73,12 @@ void App::drawMenu() {
         if (ImGui::MenuItem("Open sequence..."))
             m_dialog.open("Open sequence (any one of its frames)", kImageExtensions, false,
                           [this](const std::string& p) { openSequenceOf(p); });
+        if (ImGui::MenuItem("Play the demo drive")) {
+            DemoSettings settings;
+            settings.width = kDriveWidth, settings.height = kDriveHeight;
+            if (Status st = startDrive(settings); !st) say(st.error().message, true);
+        }
+        if (ImGui::MenuItem("Close the drive", nullptr, false, bool(m_drive))) m_drive.reset();
         if (ImGui::MenuItem("Open preset..."))
             m_dialog.open("Open preset (flarekit, or an engine's flare)", kFlareExtensions, false,
                           [this](const std::string& p) { choosePreset(p); });
@@ -115,6 +122,11 @@ void App::handleShortcuts() {
 
 void App::drawPresetPanel(float x, float y, float w, float h) {
     beginPanel("Preset", x, y, w, h);
+    if (m_drive) {
+        drawDrivePanel();
+        ImGui::End();
+        return;
+    }
     int kind = int(m_doc.kind);
     ImGui::RadioButton("sprite (apply)", &kind, int(FlareKind::Sprite));
     ImGui::SameLine();
@@ -227,6 +239,81 @@ void App::drawLensPanel() {
     ImGui::TextDisabled("render");
     paramTable<LensRenderOptions>(kLensRenderParams, m_doc.lensJob().render, LensRenderOptions{});
     ImGui::PopItemWidth();
+}
+
+void App::drawDrivePanel() {
+    // The drive: its visibility method (switching renders it again), its frames so far, the
+    // timeline, and the sun's coverage per frame, raw (the method's) and filtered (what the
+    // flare weighs), with the frame shown marked.
+    const DemoSettings& settings = m_drive->settings();
+    ImGui::TextDisabled("the demo drive, %dx%d", settings.width, settings.height);
+    static const std::vector<std::string> methods = [] {
+        std::vector<std::string> names;
+        std::string list = visibilityMethodList() + " ";
+        for (std::size_t at = 0, space; (space = list.find(' ', at)) != std::string::npos;
+             at = space + 1)
+            if (space > at) names.push_back(list.substr(at, space - at));
+        return names;
+    }();
+    if (ImGui::BeginCombo("method", settings.method.c_str())) {
+        for (const std::string& name : methods)
+            if (ImGui::Selectable(name.c_str(), name == settings.method)) {
+                DemoSettings next = settings;
+                next.method = name;
+                if (Status st = startDrive(next); !st) say(st.error().message, true);
+                break;
+            }
+        ImGui::EndCombo();
+    }
+    if (!m_drive) return;
+    if (const std::string e = m_drive->error(); !e.empty())
+        ImGui::TextColored(ImVec4(1.f, 0.4f, 0.4f, 1.f), "%s", e.c_str());
+    const int ready = m_drive->ready();
+    ImGui::Text("%d of %d frames made", ready, m_drive->frameCount());
+    if (ready == 0) return;
+    int shown = std::clamp(m_driveFrame, 0, ready - 1) + 1;
+    if (ImGui::SliderInt("frame", &shown, 1, ready)) m_driveFrame = shown - 1;
+    std::vector<float> raw, filtered;
+    m_drive->coverage(raw, filtered);
+    const DriveFrame f = m_drive->frame(m_driveFrame = shown - 1);
+    ImGui::Text("t %.2f s: coverage %.3f raw, %.3f filtered, %.2f of the disc in frame", f.time,
+                f.rawCoverage, f.filteredCoverage, f.inFrame);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float w = ImGui::GetContentRegionAvail().x, h = 140.f;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(at, ImVec2(at.x + w, at.y + h), IM_COL32(20, 20, 24, 255));
+    const int total = m_drive->frameCount();
+    const auto point = [&](int i, float v) {
+        return ImVec2(at.x + w * (float(i) + 0.5f) / float(total), at.y + h * (1.f - v));
+    };
+    for (const auto& [series, colour] :
+         {std::pair{&raw, IM_COL32(255, 170, 60, 255)}, {&filtered, IM_COL32(90, 200, 255, 255)}})
+        for (int i = 1; i < int(series->size()); ++i)
+            draw->AddLine(point(i - 1, (*series)[std::size_t(i - 1)]),
+                          point(i, (*series)[std::size_t(i)]), colour, 1.5f);
+    const float markX = point(m_driveFrame, 0).x;
+    draw->AddLine(ImVec2(markX, at.y), ImVec2(markX, at.y + h), IM_COL32(255, 255, 255, 120));
+    ImGui::Dummy(ImVec2(w, h));
+    ImGui::TextColored(ImVec4(1.f, 0.67f, 0.24f, 1.f), "raw");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.35f, 0.78f, 1.f, 1.f), "filtered (the flare's weight)");
+}
+
+void App::drawDriveView(float x, float y, float w, float h) {
+    if (!m_drive || m_drive->ready() == 0) return;
+    m_driveFrame = std::clamp(m_driveFrame, 0, m_drive->ready() - 1);
+    if (m_driveShown != m_driveFrame) {
+        m_driveTexture.upload(m_drive->frame(m_driveFrame).image);
+        m_driveShown = m_driveFrame;
+    }
+    if (!ImGui::GetIO().WantTextInput) {
+        if (ImGui::IsKeyPressed(ImGuiKey_RightArrow)) ++m_driveFrame;
+        if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) --m_driveFrame;
+    }
+    const float k = std::min(w / float(m_driveTexture.width()), h / float(m_driveTexture.height()));
+    const float dw = k * float(m_driveTexture.width()), dh = k * float(m_driveTexture.height());
+    const ImVec2 p0(x + 0.5f * (w - dw), y + 0.5f * (h - dh));
+    ImGui::GetWindowDrawList()->AddImage(m_driveTexture.id(), p0, ImVec2(p0.x + dw, p0.y + dh));
 }
 
 void App::drawTimeline() {
@@ -415,6 +502,11 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y),
                         IM_COL32(30, 30, 34, 255));
+    if (m_drive) {
+        drawDriveView(origin.x, origin.y, avail.x, avail.y);
+        ImGui::End();
+        return;
+    }
     ImGui::InvisibleButton("canvas", ImVec2(std::max(avail.x, 1.f), std::max(avail.y, 1.f)));
     if (m_doc.hasImage()) {
         const Image& img = m_doc.source().image;

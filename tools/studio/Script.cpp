@@ -33,10 +33,18 @@ constexpr ActionSpec kActions[] = {
      "picks a preset in the browser, as a click does: with unsaved edits the studio asks first"},
     {"answer", {"choice"}, "answers the open question: \"discard\" (the edits) or \"cancel\""},
     {"light", {"at"}, "puts the light at [x, y] image pixels (outside the frame is allowed)"},
+    {"drive",
+     {"?method", "?frames"},
+     "plays the demo drive (480x270) with a visibility `method` (default raycast) over its "
+     "first `frames` frames (default 240); the next action waits for every frame"},
+    {"coverage",
+     {"path"},
+     "writes the drive's coverage per frame as CSV (frame, time_s, coverage_raw, "
+     "coverage_smoothed, in_frame: `flarekit demo`'s columns)"},
     {"frame",
      {"frame"},
-     "shows frame `frame` of the open sequence (a frame number on disk); the light moves to "
-     "that frame's own light unless it was placed"},
+     "shows frame `frame` of the open sequence (a frame number on disk; the light moves to "
+     "that frame's own light unless it was placed) or of the drive (from 1)"},
     {"drag",
      {"from", "to", "?frames"},
      "drags the light with the pointer from [x, y] to [x, y] (image pixels) over `frames` "
@@ -193,7 +201,8 @@ Result<int> actionFrames(const Action& a, int fallback) {
 
 bool isWindowAction(const std::string& kind) {
     return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
-           kind == "wait" || kind == "split" || kind == "panel" || kind == "pick";
+           kind == "drive" || kind == "coverage" || kind == "wait" || kind == "split" ||
+           kind == "panel" || kind == "pick";
 }
 
 Status runDocumentAction(Document& doc, const Action& a) {
