@@ -124,23 +124,11 @@ Result<PostFxResult> postFxCpu(const Image& input, const PostFxParams& params,
 Image resizeBilinear(const Image& image, int width, int height) {
     if (image.empty()) return Image(std::max(1, width), std::max(1, height));
     Image out(std::max(1, width), std::max(1, height), Image::Uncleared{});
-    // bilinear(image, pixelUv(x, y)) at every pixel, filtered separably (BilinearRows gives
-    // the same values bit for bit): an upsample by 4 filters each source row across once for
-    // the four output rows it feeds, instead of four taps per output pixel.
+    // bilinear(image, pixelUv(x, y)) at every pixel, filtered separably: an upsample by 4
+    // filters each source row across once for the four output rows it feeds, instead of four
+    // taps per output pixel.
     const BilinearColumns columns(Tex(image), out.width(), inverseSize(out.width(), out.height()));
-    const int columnCount = out.width();
-    parallelFor(0, out.height(), rowGrain(columnCount), [&](int y0, int y1) {
-        BilinearRows rows(columns);
-        for (int y = y0; y < y1; ++y) {
-            const BilinearRows::Pair p = rows.at(y);
-            float* row = out.row(y);
-            for (int x = 0; x < columnCount; ++x) {
-                const F4 top = p.top[x], bottom = p.bottom[x];
-                *reinterpret_cast<F4Unaligned*>(row + std::size_t(x) * 4) =
-                    top + (bottom - top) * p.fy;
-            }
-        }
-    });
+    runUpsamplePass(out, columns, [](int, int, F4 up) { return up; });
     return out;
 }
 

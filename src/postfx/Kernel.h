@@ -201,6 +201,26 @@ void runPass(Image& out, const Kernel& kernel) {
     });
 }
 
+//! Runs kernel(x, y, up) -> F4 for every pixel of `out`, rows in parallel, where `up` is
+//! bilinear(columns.source, pixelUv(x, y)) filtered separably (BilinearRows: the same value bit
+//! for bit), for passes that upsample a smaller buffer to every output pixel.
+template <typename Kernel>
+void runUpsamplePass(Image& out, const BilinearColumns& columns, const Kernel& kernel) {
+    const int width = out.width();
+    parallelFor(0, out.height(), rowGrain(width), [&](int y0, int y1) {
+        BilinearRows rows(columns);
+        for (int y = y0; y < y1; ++y) {
+            const BilinearRows::Pair p = rows.at(y);
+            float* row = out.row(y);
+            for (int x = 0; x < width; ++x) {
+                const F4 top = p.top[x], bottom = p.bottom[x];
+                *reinterpret_cast<F4Unaligned*>(row + std::size_t(x) * 4) =
+                    kernel(x, y, top + (bottom - top) * p.fy);
+            }
+        }
+    });
+}
+
 //! 1 / sqrt(2): the distance from the centre to a corner in [-1, 1] coordinates is sqrt(2).
 inline constexpr float kInvCornerDistance = 0.70710678f;
 

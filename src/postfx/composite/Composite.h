@@ -32,19 +32,8 @@ inline F4 passPixel(const CompositeUniforms& u, const Tex* in, int x, int y) {
 inline void drawPass(const CompositeUniforms& u, const Tex* in, Image& out) {
     const Tex input = in[0];
     const BilinearColumns columns(in[1], out.width(), u.invOutSize);
-    const int width = out.width();
-    parallelFor(0, out.height(), rowGrain(width), [&](int y0, int y1) {
-        BilinearRows lens(columns);
-        for (int y = y0; y < y1; ++y) {
-            const BilinearRows::Pair p = lens.at(y);
-            float* row = out.row(y);
-            for (int x = 0; x < width; ++x) {
-                const F4 top = p.top[x], bottom = p.bottom[x];
-                const F4 color = input.texel(x, y) + rgbOnly(top + (bottom - top) * p.fy);
-                *reinterpret_cast<F4Unaligned*>(row + std::size_t(x) * 4) =
-                    toneMap(color, u.toneOperator, u.exposure);
-            }
-        }
+    runUpsamplePass(out, columns, [&](int x, int y, F4 lens) {
+        return toneMap(input.texel(x, y) + rgbOnly(lens), u.toneOperator, u.exposure);
     });
 }
 template <class Sink>

@@ -129,28 +129,21 @@ inline void drawPass(const GhostsUniforms& u, const Tex* in, Image& out) {
                            {steps * u.sourceTexel.x * float(bloom.width),
                             steps * u.sourceTexel.y * float(bloom.height)}});
     }
-    const int width = out.width();
-    parallelFor(0, out.height(), rowGrain(width), [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            float* row = out.row(y);
-            for (int x = 0; x < width; ++x) {
-                const Vec2 uv = pixelUv(x, y, u.invOutSize);
-                F4 total = splat(0.f);
-                for (std::size_t i = 0; i < u.ghosts.size(); ++i) {
-                    const GhostParams& g = u.ghosts[i];
-                    const Reach& r = reaches[i];
-                    const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale,
-                                 ((1.f - uv.y) * 2.f - 1.f) * g.scale};
-                    const Vec2 at = texelCoord(bloom, {n.x * 0.5f + 0.5f, n.y * 0.5f + 0.5f});
-                    if (r.hot.misses({at.x - r.half.x, at.y - r.half.y},
-                                     {at.x + r.half.x, at.y + r.half.y}))
-                        continue;
-                    total += ghostPixel(g, u.tints[i], u.sourceTexel, bloom, uv);
-                }
-                *reinterpret_cast<F4Unaligned*>(row + std::size_t(x) * 4) =
-                    rgbOnly(total * u.intensity);
-            }
+    runPass(out, [&](int x, int y) {
+        const Vec2 uv = pixelUv(x, y, u.invOutSize);
+        F4 total = splat(0.f);
+        for (std::size_t i = 0; i < u.ghosts.size(); ++i) {
+            const GhostParams& g = u.ghosts[i];
+            const Reach& r = reaches[i];
+            const Vec2 n{((1.f - uv.x) * 2.f - 1.f) * g.scale,
+                         ((1.f - uv.y) * 2.f - 1.f) * g.scale};
+            const Vec2 at = texelCoord(bloom, {n.x * 0.5f + 0.5f, n.y * 0.5f + 0.5f});
+            if (r.hot.misses({at.x - r.half.x, at.y - r.half.y},
+                             {at.x + r.half.x, at.y + r.half.y}))
+                continue;
+            total += ghostPixel(g, u.tints[i], u.sourceTexel, bloom, uv);
         }
+        return rgbOnly(total * u.intensity);
     });
 }
 

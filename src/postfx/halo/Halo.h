@@ -66,26 +66,19 @@ inline void drawPass(const HaloUniforms& u, const Tex* in, Image& out) {
     const Rgb& t = u.halo.tint;
     const F4 dark =
         rgbOnly(splat(0.f) * F4{t[0], t[1], t[2], 0.f} * (u.intensity / float(kHaloSamples)));
-    const int width = out.width();
-    parallelFor(0, out.height(), rowGrain(width), [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            float* row = out.row(y);
-            for (int x = 0; x < width; ++x) {
-                const Vec2 uv = pixelUv(x, y, u.invOutSize);
-                const Vec2 m{(1.f - 2.f * uv.x) * u.aspect, 1.f - 2.f * uv.y};
-                const float len = std::sqrt(m.x * m.x + m.y * m.y);
-                const Vec2 dir = len > 0.f ? Vec2{m.x / len, m.y / len} : Vec2{0.f, 0.f};
-                const auto tap = [&](float r) {
-                    const Vec2 p{(m.x - dir.x * r) / u.aspect, m.y - dir.y * r};
-                    return texelCoord(bloom, {p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f});
-                };
-                const Vec2 a = tap(inner), b = tap(outer);
-                const bool misses = hot.misses({std::min(a.x, b.x), std::min(a.y, b.y)},
-                                               {std::max(a.x, b.x), std::max(a.y, b.y)});
-                *reinterpret_cast<F4Unaligned*>(row + std::size_t(x) * 4) =
-                    misses ? dark : haloPixel(u, bloom, x, y);
-            }
-        }
+    runPass(out, [&](int x, int y) {
+        const Vec2 uv = pixelUv(x, y, u.invOutSize);
+        const Vec2 m{(1.f - 2.f * uv.x) * u.aspect, 1.f - 2.f * uv.y};
+        const float len = std::sqrt(m.x * m.x + m.y * m.y);
+        const Vec2 dir = len > 0.f ? Vec2{m.x / len, m.y / len} : Vec2{0.f, 0.f};
+        const auto tap = [&](float r) {
+            const Vec2 p{(m.x - dir.x * r) / u.aspect, m.y - dir.y * r};
+            return texelCoord(bloom, {p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f});
+        };
+        const Vec2 a = tap(inner), b = tap(outer);
+        const bool misses = hot.misses({std::min(a.x, b.x), std::min(a.y, b.y)},
+                                       {std::max(a.x, b.x), std::max(a.y, b.y)});
+        return misses ? dark : haloPixel(u, bloom, x, y);
     });
 }
 
