@@ -481,7 +481,8 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     for (const Param<ViewSettings>& p : kViewParams) {
         const bool lightOnly = p.key == "flux_mode" || p.key == "intensity";
         ImGui::PushID(p.key.data());
-        ImGui::BeginDisabled(postFx && lightOnly);
+        // The drive's frames are tone-mapped by its pipeline: no view setting applies to them.
+        ImGui::BeginDisabled((postFx && lightOnly) || m_drive);
         paramWidget(p, m_doc.view, ViewSettings{});
         ImGui::EndDisabled();
         ImGui::PopID();
@@ -492,7 +493,7 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     // The light typed in exactly (the pointer places it to the nearest screen pixel).
     float light[2] = {m_doc.light.x, m_doc.light.y};
     ImGui::SetNextItemWidth(200);
-    ImGui::BeginDisabled(postFx);
+    ImGui::BeginDisabled(postFx || m_drive);
     if (ImGui::DragFloat2("light (image pixels)", light, 1.f, -1e5f, 1e5f, "%.1f"))
         m_doc.light = {light[0], light[1]}, m_doc.lightPlacedByHand = true;
     ImGui::EndDisabled();
