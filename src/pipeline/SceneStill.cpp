@@ -6,6 +6,18 @@
 
 namespace flarekit::gl {
 
+FramePipelineSettings sceneStillSettings(const SceneStillOptions& o) {
+    FramePipelineSettings settings;
+    settings.method = o.method;
+    settings.raycastSamplesPerSide = RaycastOptions{}.samplesPerSide;
+    settings.render = o.render;
+    settings.methodOptions.textureMaskVariant = o.variant;
+    settings.temporal = false;
+    settings.flare = o.flare;
+    settings.toneMap = false;
+    return settings;
+}
+
 Result<SceneStill> renderSceneStill(const SceneStillOptions& o) {
     if (o.method != "raycast" && !isGpuVisibilityMethod(o.method)) {
         return invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" +
@@ -20,16 +32,7 @@ Result<SceneStill> renderSceneStill(const SceneStillOptions& o) {
     auto gl =
         createFrameContext(scene->width, scene->height, o.render.msaaSamples, o.scene + ": image");
     if (!gl) return gl.error();
-    // A still: no temporal filter, linear HDR out, raycast at its ground-truth sample count.
-    FramePipelineSettings settings;
-    settings.method = o.method;
-    settings.raycastSamplesPerSide = RaycastOptions{}.samplesPerSide;
-    settings.render = o.render;
-    settings.methodOptions.textureMaskVariant = o.variant;
-    settings.temporal = false;
-    settings.flare = o.flare;
-    settings.toneMap = false;
-    auto pipeline = FramePipeline::create(*scene, *preset, settings);
+    auto pipeline = FramePipeline::create(*scene, *preset, sceneStillSettings(o));
     if (!pipeline) return pipeline.error();
     auto frame = pipeline->run(*scene, 0.0);
     if (!frame) return frame.error();

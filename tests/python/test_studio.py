@@ -453,3 +453,28 @@ def test_the_demo_drive_plays_with_its_coverage_as_the_cli_logs_it(studio, cli, 
     assert columns(tmp_path / "coverage.csv") == logged  # every frame, to the log's digits
     assert levels(read(tmp_path / "f6.png"), read(tmp_path / "demo" / "frame_0006.png")) == 0
     assert (tmp_path / "drive.png").exists()
+
+
+def test_a_scenes_sun_follows_the_pointer_and_renders_as_the_cli_does(studio, cli, tmp_path):
+    scene = SOURCE / "samples" / "scenes" / "sun-behind-trees.json"
+    done = studio([{"action": "scene", "path": str(scene)},
+                   {"action": "light", "at": [300, 150]},
+                   {"action": "export", "path": "moved.png"},
+                   {"action": "export", "path": "moved.exr"}])
+    line = [l for l in done.stdout.splitlines() if l.startswith("scene: sun direction")][-1]
+    words = line.split()
+    direction = [float(v) for v in words[3].split(",")]
+    # The sun lands under the pointer.
+    assert [float(v) for v in words[5].rstrip(",").split(",")] == [300.0, 150.0]
+    moved = json.loads(scene.read_text())
+    moved["sun"]["direction"] = direction
+    (tmp_path / "moved.json").write_text(json.dumps(moved))
+    cli("render", tmp_path / "moved.json", "-o", tmp_path / "cli.png")
+    cli("render", tmp_path / "moved.json", "-o", tmp_path / "cli.exr")
+    assert levels(read(tmp_path / "moved.png"), read(tmp_path / "cli.png")) <= 1
+    np.testing.assert_allclose(read(tmp_path / "moved.exr")[..., :3],
+                               read(tmp_path / "cli.exr")[..., :3], rtol=1e-3, atol=1e-4)
+    # A scene file that does not parse: one line naming it, exit 2.
+    (tmp_path / "bad.json").write_text('{"camera": 1}')
+    done = studio([{"action": "scene", "path": "bad.json"}], ok=False)
+    assert done.returncode == 2 and "bad.json" in done.stderr

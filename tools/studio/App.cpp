@@ -265,8 +265,11 @@ Status App::stepScript() {
     if (m_next > 0 && m_doc.hasImage() && !m_drive &&
         (!m_layersFresh || m_browser.busy() || m_browserKey.empty()))
         return Ok{};
-    // A drive's actions wait for all its frames (its timeline and graph are then whole).
+    // A drive's actions wait for all its frames (its timeline and graph are then whole), a
+    // scene's for the still of its newest sun.
     if (m_drive && !m_drive->finished()) return Ok{};
+    if (m_scene && !m_scene->upToDate()) return Ok{};
+    if (m_scene && !m_scene->error().empty()) return invalidInput("scene: " + m_scene->error());
     if (m_drive && !m_drive->error().empty()) return invalidInput("drive: " + m_drive->error());
     if (m_next >= m_script.size()) {
         // The last screenshot has been drawn and written; leave after it.
@@ -274,10 +277,12 @@ Status App::stepScript() {
         return Ok{};
     }
     const Action& a = m_script[m_next++];
+    if (a.kind == "scene" || (m_scene && (a.kind == "light" || a.kind == "export")))
+        return runSceneAction(a);
     if (a.kind == "drive" || (m_drive && (a.kind == "frame" || a.kind == "export")) ||
         a.kind == "coverage")
         return runDriveAction(a);
-    if (a.kind == "open") m_drive.reset();  // an image (or sequence) ends the drive
+    if (a.kind == "open") m_drive.reset(), m_scene.reset();  // an image ends a drive or scene
     if (!isWindowAction(a.kind)) {
         Status s = runDocumentAction(m_doc, a);
         if (s) say(a.kind + " done");
@@ -389,8 +394,55 @@ Status App::runDriveAction(const Action& a) {
     return writeImage8(path, m_drive->frame(m_driveFrame).image);
 }
 
+Status App::runSceneAction(const Action& a) {
+    const auto fail = [&](const std::string& what) { return invalidInput(a.where + ": " + what); };
+    if (a.kind == "scene") {
+        if (!a.args["path"].is_string()) return fail("path: expected a Scene JSON file");
+        std::string method = "raycast";
+        if (a.args.contains("method")) {
+            if (!a.args["method"].is_string()) return fail("method: expected a method's name");
+            method = a.args["method"].get<std::string>();
+        }
+        if (Status s = openScene(a.args["path"].get<std::string>(), method); !s)
+            return fail(s.error().message);
+        return Ok{};
+    }
+    if (a.kind == "light") {
+        auto at = actionPoint(a, "at");
+        if (!at) return at.error();
+        m_scene->aimSunAt(*at);
+        return Ok{};
+    }
+    // export: the still, linear HDR to a float file or through the view's curve to 8/16-bit.
+    if (!a.args["path"].is_string()) return fail("path: expected a file name");
+    const std::string path = a.args["path"].get<std::string>();
+    const std::optional<SceneFrame> still = m_scene->latest();
+    if (!still) return fail("the scene's still is not made yet");
+    std::printf("scene: sun direction %.9g,%.9g,%.9g at %.3f,%.3f, coverage %.5f\n",
+                still->direction.x, still->direction.y, still->direction.z, double(still->sun.x),
+                double(still->sun.y), still->coverage);
+    std::fflush(stdout);
+    Image out = still->hdr;
+    if (!isFloatFormat(outputSampleFormat(path)))
+        toneMapImage(out, m_doc.view.curve, m_doc.view.exposure);
+    if (Status s = writeImage(path, out); !s) return fail(s.error().message);
+    return Ok{};
+}
+
+Status App::openScene(const std::string& path, const std::string& method) {
+    m_drive.reset(), m_scene.reset();
+    auto scene = ScenePlayback::open(path, method, m_doc.preset());
+    if (!scene) return scene.error();
+    m_scene = std::move(*scene);
+    m_sceneShown = 0;
+    // As `flarekit render` writes 8-bit: ACES at exposure 1.
+    m_doc.view.curve = ToneOperator::Aces, m_doc.view.exposure = 1.f;
+    say("scene " + path);
+    return Ok{};
+}
+
 Status App::startDrive(const DemoSettings& settings) {
-    m_drive.reset();  // the old worker stops first: one GL drive at a time
+    m_drive.reset(), m_scene.reset();  // the old worker stops first: one GL view at a time
     auto drive = DrivePlayback::start(settings, m_doc.preset());
     if (!drive) return drive.error();
     m_drive = std::move(*drive);

@@ -15,6 +15,7 @@
 #include "FileDialog.h"
 #include "GlTexture.h"
 #include "Preview.h"
+#include "ScenePlayback.h"
 #include "Script.h"
 #include "Thumbnails.h"
 
@@ -73,6 +74,12 @@ class App {
     Status runDriveAction(const Action& a);
     void drawDriveView(float x, float y, float w, float h);
     void drawDrivePanel();
+    // A Scene JSON (ScenePlayback): opened by the script's "scene" action or `flarekit studio
+    // scene.json`; the pointer aims its sun, the view shows its still.
+    Status runSceneAction(const Action& a);
+    Status openScene(const std::string& path, const std::string& method);
+    void drawSceneView(float x, float y, float w, float h);
+    void drawScenePanel();
     void drawLensSurfaces();  //!< the coatings and each surface's numbers
     //! Names the ghost nearest `at` (image pixels) among the lens's drawn ghosts: its pair of
     //! surfaces, shown on the view and in the status line (and on stdout for a script).
@@ -149,6 +156,10 @@ class App {
     std::string m_diagramKey;
     std::optional<GhostOnImage> m_picked;
     std::unique_ptr<DrivePlayback> m_drive;
+    std::unique_ptr<ScenePlayback> m_scene;
+    unsigned m_sceneShown = 0;  //!< the generation of the still uploaded
+    GlTexture m_sceneTexture;
+    ViewRect m_sceneRect;                     //!< where the still is drawn, for the pointer
     int m_driveFrame = 0, m_driveShown = -1;  //!< the frame on the timeline; the one uploaded
     GlTexture m_driveTexture;
     //! The drive's size in the studio: a 16:9 preview (480x270 x 240 frames keeps 124 MiB).

@@ -73,12 +73,19 @@ void App::drawMenu() {
         if (ImGui::MenuItem("Open sequence..."))
             m_dialog.open("Open sequence (any one of its frames)", kImageExtensions, false,
                           [this](const std::string& p) { openSequenceOf(p); });
+        if (ImGui::MenuItem("Open scene..."))
+            m_dialog.open("Open a Scene JSON (samples/scenes)", {".json"}, false,
+                          [this](const std::string& p) {
+                              if (Status st = openScene(p, "raycast"); !st)
+                                  say(st.error().message, true);
+                          });
         if (ImGui::MenuItem("Play the demo drive")) {
             DemoSettings settings;
             settings.width = kDriveWidth, settings.height = kDriveHeight;
             if (Status st = startDrive(settings); !st) say(st.error().message, true);
         }
-        if (ImGui::MenuItem("Close the drive", nullptr, false, bool(m_drive))) m_drive.reset();
+        if (ImGui::MenuItem("Close the drive or scene", nullptr, false, m_drive || m_scene))
+            m_drive.reset(), m_scene.reset();
         if (ImGui::MenuItem("Open preset..."))
             m_dialog.open("Open preset (flarekit, or an engine's flare)", kFlareExtensions, false,
                           [this](const std::string& p) { choosePreset(p); });
@@ -122,8 +129,8 @@ void App::handleShortcuts() {
 
 void App::drawPresetPanel(float x, float y, float w, float h) {
     beginPanel("Preset", x, y, w, h);
-    if (m_drive) {
-        drawDrivePanel();
+    if (m_drive || m_scene) {
+        m_drive ? drawDrivePanel() : drawScenePanel();
         ImGui::End();
         return;
     }
@@ -316,6 +323,44 @@ void App::drawDriveView(float x, float y, float w, float h) {
     ImGui::GetWindowDrawList()->AddImage(m_driveTexture.id(), p0, ImVec2(p0.x + dw, p0.y + dh));
 }
 
+void App::drawScenePanel() {
+    ImGui::TextWrapped("scene %s, %dx%d, method %s", m_scene->path().c_str(),
+                       m_scene->scene().width, m_scene->scene().height, m_scene->method().c_str());
+    if (const std::string e = m_scene->error(); !e.empty())
+        ImGui::TextColored(ImVec4(1.f, 0.4f, 0.4f, 1.f), "%s", e.c_str());
+    if (const auto still = m_scene->latest()) {
+        ImGui::Text("sun at %.1f, %.1f: coverage %.4f", double(still->sun.x), double(still->sun.y),
+                    still->coverage);
+        ImGui::Text("direction %.4f, %.4f, %.4f", still->direction.x, still->direction.y,
+                    still->direction.z);
+    }
+    ImGui::TextDisabled("drag on the view to move the sun; `flarekit render` draws the same still");
+}
+
+void App::drawSceneView(float x, float y, float w, float h) {
+    ImGui::InvisibleButton("scene", ImVec2(std::max(w, 1.f), std::max(h, 1.f)));
+    const std::optional<SceneFrame> still = m_scene->latest();
+    if (!still) return;
+    if (m_sceneShown != still->generation) {
+        m_sceneTexture.upload(toDisplay(still->hdr, m_doc.view.curve, m_doc.view.exposure));
+        m_sceneShown = still->generation;
+    }
+    const float k = std::min(w / float(still->hdr.width()), h / float(still->hdr.height()));
+    m_sceneRect = {x + 0.5f * (w - k * float(still->hdr.width())),
+                   y + 0.5f * (h - k * float(still->hdr.height())),
+                   k * float(still->hdr.width()),
+                   k * float(still->hdr.height()),
+                   float(still->hdr.width()),
+                   float(still->hdr.height())};
+    if (ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        m_scene->aimSunAt(m_sceneRect.toImage(m.x, m.y));
+    }
+    const ImVec2 p0(m_sceneRect.x, m_sceneRect.y);
+    ImGui::GetWindowDrawList()->AddImage(m_sceneTexture.id(), p0,
+                                         ImVec2(p0.x + m_sceneRect.w, p0.y + m_sceneRect.h));
+}
+
 void App::drawTimeline() {
     // The sequence's frames on disk, scrubbed by index (a gap in the numbers is no dead zone);
     // the arrow keys step a frame when the view has the focus.
@@ -503,8 +548,9 @@ void App::drawViewPanel(float x, float y, float w, float h) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y),
                         IM_COL32(30, 30, 34, 255));
-    if (m_drive) {
-        drawDriveView(origin.x, origin.y, avail.x, avail.y);
+    if (m_drive || m_scene) {
+        m_drive ? drawDriveView(origin.x, origin.y, avail.x, avail.y)
+                : drawSceneView(origin.x, origin.y, avail.x, avail.y);
         ImGui::End();
         return;
     }

@@ -33,6 +33,11 @@ constexpr ActionSpec kActions[] = {
      "picks a preset in the browser, as a click does: with unsaved edits the studio asks first"},
     {"answer", {"choice"}, "answers the open question: \"discard\" (the edits) or \"cancel\""},
     {"light", {"at"}, "puts the light at [x, y] image pixels (outside the frame is allowed)"},
+    {"scene",
+     {"path", "?method"},
+     "opens a Scene JSON and renders its still as `flarekit render` does (visibility `method`, "
+     "default raycast); then `light` aims its sun through a pixel and `export` writes the still "
+     "(linear to EXR, through the view's curve to 8/16-bit) and prints the sun's direction"},
     {"drive",
      {"?method", "?frames"},
      "plays the demo drive (480x270) with a visibility `method` (default raycast) over its "
@@ -201,8 +206,8 @@ Result<int> actionFrames(const Action& a, int fallback) {
 
 bool isWindowAction(const std::string& kind) {
     return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
-           kind == "drive" || kind == "coverage" || kind == "wait" || kind == "split" ||
-           kind == "panel" || kind == "pick";
+           kind == "drive" || kind == "coverage" || kind == "scene" || kind == "wait" ||
+           kind == "split" || kind == "panel" || kind == "pick";
 }
 
 Status runDocumentAction(Document& doc, const Action& a) {

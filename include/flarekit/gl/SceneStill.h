@@ -29,6 +29,10 @@ struct SceneStill {
     std::string renderer, platform;  //!< GL_RENDERER and the EGL platform it ran on
 };
 
+//! The frame pipeline's settings of a still: no temporal filter, linear HDR out, raycast at its
+//! ground-truth sample count (what `flarekit render` and the studio's scene view run).
+FramePipelineSettings sceneStillSettings(const SceneStillOptions& options);
+
 //! Loads the scene and the preset, checks the work and the frame against the GL limits, then
 //! renders one still (no temporal filter, linear HDR out). Errors name the file or the option
 //! by its table name.
