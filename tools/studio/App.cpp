@@ -15,7 +15,6 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "core/SafeWrite.h"
 #include "flarekit/ImageIO.h"
 #include "flarekit/Lens.h"
 #include "flarekit/Shot.h"
@@ -360,97 +359,6 @@ Status App::stepScript() {
     return Ok{};
 }
 
-Status App::runDriveAction(const Action& a) {
-    const auto fail = [&](const std::string& what) { return invalidInput(a.where + ": " + what); };
-    if (a.kind == "drive") {
-        DemoSettings settings;
-        settings.width = kDriveWidth, settings.height = kDriveHeight;
-        if (a.args.contains("method")) {
-            if (!a.args["method"].is_string()) return fail("method: expected a method's name");
-            settings.method = a.args["method"].get<std::string>();
-        }
-        if (a.args.contains("frames")) {
-            auto frames = actionFrames(a, settings.frames);
-            if (!frames) return frames.error();
-            settings.frames = *frames;
-        }
-        if (Status s = startDrive(settings); !s) return fail(s.error().message);
-        return Ok{};
-    }
-    if (!m_drive) return fail(a.kind + ": no drive is open (the \"drive\" action opens one)");
-    if (a.kind == "frame") {
-        const nlohmann::json& v = a.args["frame"];
-        if (!v.is_number_integer() || v.get<long long>() < 1 ||
-            v.get<long long>() > m_drive->ready())
-            return fail("frame: expected a frame of the drive in [1, " +
-                        std::to_string(m_drive->ready()) + "], got " + v.dump().substr(0, 40));
-        m_driveFrame = int(v.get<long long>()) - 1;
-        return Ok{};
-    }
-    if (!a.args["path"].is_string()) return fail("path: expected a file name");
-    const std::string path = a.args["path"].get<std::string>();
-    if (a.kind == "coverage") return writeFileSafely(path, m_drive->coverageCsv());
-    // export: the frame shown, as `flarekit demo` writes it.
-    return writeImage8(path, m_drive->frame(m_driveFrame).image);
-}
-
-Status App::runSceneAction(const Action& a) {
-    const auto fail = [&](const std::string& what) { return invalidInput(a.where + ": " + what); };
-    if (a.kind == "scene") {
-        if (!a.args["path"].is_string()) return fail("path: expected a Scene JSON file");
-        std::string method = "raycast";
-        if (a.args.contains("method")) {
-            if (!a.args["method"].is_string()) return fail("method: expected a method's name");
-            method = a.args["method"].get<std::string>();
-        }
-        if (Status s = openScene(a.args["path"].get<std::string>(), method); !s)
-            return fail(s.error().message);
-        return Ok{};
-    }
-    if (a.kind == "light") {
-        auto at = actionPoint(a, "at");
-        if (!at) return at.error();
-        m_scene->aimSunAt(*at);
-        return Ok{};
-    }
-    // export: the still, linear HDR to a float file or through the view's curve to 8/16-bit.
-    if (!a.args["path"].is_string()) return fail("path: expected a file name");
-    const std::string path = a.args["path"].get<std::string>();
-    const std::optional<SceneFrame> still = m_scene->latest();
-    if (!still) return fail("the scene's still is not made yet");
-    std::printf("scene: sun direction %.9g,%.9g,%.9g at %.3f,%.3f, coverage %.5f\n",
-                still->direction.x, still->direction.y, still->direction.z, double(still->sun.x),
-                double(still->sun.y), still->coverage);
-    std::fflush(stdout);
-    Image out = still->hdr;
-    if (!isFloatFormat(outputSampleFormat(path)))
-        toneMapImage(out, m_doc.view.curve, m_doc.view.exposure);
-    if (Status s = writeImage(path, out); !s) return fail(s.error().message);
-    return Ok{};
-}
-
-Status App::openScene(const std::string& path, const std::string& method) {
-    m_drive.reset(), m_scene.reset();
-    auto scene = ScenePlayback::open(path, method, m_doc.preset());
-    if (!scene) return scene.error();
-    m_scene = std::move(*scene);
-    m_sceneShown = 0;
-    // As `flarekit render` writes 8-bit: ACES at exposure 1.
-    m_doc.view.curve = ToneOperator::Aces, m_doc.view.exposure = 1.f;
-    say("scene " + path);
-    return Ok{};
-}
-
-Status App::startDrive(const DemoSettings& settings) {
-    m_drive.reset(), m_scene.reset();  // the old worker stops first: one GL view at a time
-    auto drive = DrivePlayback::start(settings, m_doc.preset());
-    if (!drive) return drive.error();
-    m_drive = std::move(*drive);
-    m_driveFrame = 0, m_driveShown = -1;
-    say("drive: " + std::to_string(settings.frames) + " frames, " + settings.method);
-    return Ok{};
-}
-
 void App::choosePreset(const std::string& name) {
     if (m_doc.isDirty()) {
         m_pendingPreset = name;  // drawQuestion asks before the edits are lost
@@ -543,42 +451,6 @@ void App::updateThumbnails() {
     m_browserKind = m_doc.kind;
     m_browser.request(m_doc.kind, m_preview.small(),
                       {float(m_doc.light.x * s), float(m_doc.light.y * s)}, m_doc.view, shipped());
-}
-
-Status App::pickGhost(Point at) {
-    if (m_doc.kind != FlareKind::Lens) return invalidInput("pick: ghosts are picked in lens mode");
-    if (!m_doc.hasImage()) return invalidInput("pick: no image is open");
-    const LensJobOptions& job = m_doc.lensJob();
-    auto lens = job.fNumber > 0 ? stopDown(m_doc.lens(), job.fNumber) : Result<Lens>(m_doc.lens());
-    if (!lens) return lens.error();
-    const Image& image = m_doc.source().image;
-    auto ghosts =
-        ghostsOnImage(*lens, image.width(), image.height(), m_doc.light, job.render.ghosts);
-    if (!ghosts) return ghosts.error();
-    m_picked.reset();
-    // The ghost that shows there: of those whose disc holds the point, the brightest per area
-    // (a small bright ghost over a large faint one); else the one whose edge is nearest.
-    double best = 0;
-    bool inside = false;
-    for (const GhostOnImage& g : *ghosts) {
-        const double d = std::hypot(g.x - at.x, g.y - at.y), r = std::max(g.radius, 1.0);
-        const double brightness = (g.intensity[0] + g.intensity[1] + g.intensity[2]) / (r * r);
-        if (d <= r) {
-            if (!inside || brightness > best) m_picked = g, best = brightness, inside = true;
-        } else if (!inside && (!m_picked || d - r < best)) {
-            m_picked = g, best = d - r;
-        }
-    }
-    if (!m_picked) return invalidInput("pick: this light draws no ghost");
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "ghost of surfaces %d and %d (reflected at %d, then %d) at %.1f,%.1f, radius "
-                  "%.1f px",
-                  m_picked->first, m_picked->second, m_picked->first, m_picked->second, m_picked->x,
-                  m_picked->y, m_picked->radius);
-    say(line);
-    if (!m_script.empty()) std::printf("picked %s\n", line);
-    return Ok{};
 }
 
 Status App::writeScreenshot(const std::string& path) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The studio's panels: the menu, the preset (browser, element list, parameters), the view (the
-// image, the light, the before/after split, the view settings) and the component previews.
+// image, the light, the before/after split, the view settings, a sequence's timeline) and the
+// component previews. The lens mode is LensPanel.cpp; the drive and scenes, GlViews.cpp.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -11,7 +12,6 @@
 #include "App.h"
 #include "ParamWidgets.h"
 #include "flarekit/Lens.h"
-#include "flarekit/Visibility.h"
 
 namespace flarekit::studio {
 
@@ -214,153 +214,6 @@ void App::drawPostFxPanel() {
     ImGui::PopItemWidth();
 }
 
-void App::drawLensPanel() {
-    // The cross-section with its direct and brightest ghost rays, made when the iris changes.
-    const std::string key = m_doc.currentJson();
-    if (key != m_diagramKey) {
-        auto sheet = renderLensSheet(m_doc.lens(), 720);
-        if (sheet) m_diagram.upload(toDisplay(std::move(*sheet), ToneOperator::None, 1.f));
-        m_diagramKey = key;
-    }
-    const float w = ImGui::GetContentRegionAvail().x;
-    if (m_diagram.valid())
-        ImGui::Image(m_diagram.id(),
-                     ImVec2(w, w * float(m_diagram.height()) / float(m_diagram.width())));
-    ImGui::TextWrapped("%s: %zu surfaces. Right-click a ghost on the view to name its surfaces.",
-                       m_doc.lens().name.c_str(), m_doc.lens().surfaces.size());
-    ImGui::PushItemWidth(-150);
-    if (m_picked) drawGhostLook();
-    ImGui::Separator();
-    ImGui::TextDisabled("iris");
-    paramTable<LensAperture>(kLensApertureParams, m_doc.aperture(), LensAperture{});
-    drawLensSurfaces();
-    ImGui::Separator();
-    ImGui::TextDisabled("stop and sources");
-    for (const Param<LensJobOptions>& p : kLensJobParams) {
-        if (p.key != "f_number" && p.key != "expand_highlights") continue;  // one placed light
-        ImGui::PushID(p.key.data());
-        paramWidget(p, m_doc.lensJob(), LensJobOptions{});
-        ImGui::PopID();
-    }
-    ImGui::Separator();
-    ImGui::TextDisabled("render");
-    paramTable<LensRenderOptions>(kLensRenderParams, m_doc.lensJob().render, LensRenderOptions{});
-    ImGui::PopItemWidth();
-}
-
-void App::drawDrivePanel() {
-    // The drive: its visibility method (switching renders it again), its frames so far, the
-    // timeline, and the sun's coverage per frame, raw (the method's) and filtered (what the
-    // flare weighs), with the frame shown marked.
-    const DemoSettings& settings = m_drive->settings();
-    ImGui::TextDisabled("the demo drive, %dx%d", settings.width, settings.height);
-    static const std::vector<std::string> methods = [] {
-        std::vector<std::string> names;
-        std::string list = visibilityMethodList() + " ";
-        for (std::size_t at = 0, space; (space = list.find(' ', at)) != std::string::npos;
-             at = space + 1)
-            if (space > at) names.push_back(list.substr(at, space - at));
-        return names;
-    }();
-    if (ImGui::BeginCombo("method", settings.method.c_str())) {
-        for (const std::string& name : methods)
-            if (ImGui::Selectable(name.c_str(), name == settings.method)) {
-                DemoSettings next = settings;
-                next.method = name;
-                if (Status st = startDrive(next); !st) say(st.error().message, true);
-                break;
-            }
-        ImGui::EndCombo();
-    }
-    if (!m_drive) return;
-    if (const std::string e = m_drive->error(); !e.empty())
-        ImGui::TextColored(ImVec4(1.f, 0.4f, 0.4f, 1.f), "%s", e.c_str());
-    const int ready = m_drive->ready();
-    ImGui::Text("%d of %d frames made", ready, m_drive->frameCount());
-    if (ready == 0) return;
-    int shown = std::clamp(m_driveFrame, 0, ready - 1) + 1;
-    if (ImGui::SliderInt("frame", &shown, 1, ready)) m_driveFrame = shown - 1;
-    std::vector<float> raw, filtered;
-    m_drive->coverage(raw, filtered);
-    const DriveFrame f = m_drive->frame(m_driveFrame = shown - 1);
-    ImGui::Text("t %.2f s: coverage %.3f raw, %.3f filtered, %.2f of the disc in frame", f.time,
-                f.rawCoverage, f.filteredCoverage, f.inFrame);
-    const ImVec2 at = ImGui::GetCursorScreenPos();
-    const float w = ImGui::GetContentRegionAvail().x, h = 140.f;
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddRectFilled(at, ImVec2(at.x + w, at.y + h), IM_COL32(20, 20, 24, 255));
-    const int total = m_drive->frameCount();
-    const auto point = [&](int i, float v) {
-        return ImVec2(at.x + w * (float(i) + 0.5f) / float(total), at.y + h * (1.f - v));
-    };
-    for (const auto& [series, colour] :
-         {std::pair{&raw, IM_COL32(255, 170, 60, 255)}, {&filtered, IM_COL32(90, 200, 255, 255)}})
-        for (int i = 1; i < int(series->size()); ++i)
-            draw->AddLine(point(i - 1, (*series)[std::size_t(i - 1)]),
-                          point(i, (*series)[std::size_t(i)]), colour, 1.5f);
-    const float markX = point(m_driveFrame, 0).x;
-    draw->AddLine(ImVec2(markX, at.y), ImVec2(markX, at.y + h), IM_COL32(255, 255, 255, 120));
-    ImGui::Dummy(ImVec2(w, h));
-    ImGui::TextColored(ImVec4(1.f, 0.67f, 0.24f, 1.f), "raw");
-    ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.35f, 0.78f, 1.f, 1.f), "filtered (the flare's weight)");
-}
-
-void App::drawDriveView(float x, float y, float w, float h) {
-    if (!m_drive || m_drive->ready() == 0) return;
-    m_driveFrame = std::clamp(m_driveFrame, 0, m_drive->ready() - 1);
-    if (m_driveShown != m_driveFrame) {
-        m_driveTexture.upload(m_drive->frame(m_driveFrame).image);
-        m_driveShown = m_driveFrame;
-    }
-    if (!ImGui::GetIO().WantTextInput) {
-        if (ImGui::IsKeyPressed(ImGuiKey_RightArrow)) ++m_driveFrame;
-        if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) --m_driveFrame;
-    }
-    const float k = std::min(w / float(m_driveTexture.width()), h / float(m_driveTexture.height()));
-    const float dw = k * float(m_driveTexture.width()), dh = k * float(m_driveTexture.height());
-    const ImVec2 p0(x + 0.5f * (w - dw), y + 0.5f * (h - dh));
-    ImGui::GetWindowDrawList()->AddImage(m_driveTexture.id(), p0, ImVec2(p0.x + dw, p0.y + dh));
-}
-
-void App::drawScenePanel() {
-    ImGui::TextWrapped("scene %s, %dx%d, method %s", m_scene->path().c_str(),
-                       m_scene->scene().width, m_scene->scene().height, m_scene->method().c_str());
-    if (const std::string e = m_scene->error(); !e.empty())
-        ImGui::TextColored(ImVec4(1.f, 0.4f, 0.4f, 1.f), "%s", e.c_str());
-    if (const auto still = m_scene->latest()) {
-        ImGui::Text("sun at %.1f, %.1f: coverage %.4f", double(still->sun.x), double(still->sun.y),
-                    still->coverage);
-        ImGui::Text("direction %.4f, %.4f, %.4f", still->direction.x, still->direction.y,
-                    still->direction.z);
-    }
-    ImGui::TextDisabled("drag on the view to move the sun; `flarekit render` draws the same still");
-}
-
-void App::drawSceneView(float x, float y, float w, float h) {
-    ImGui::InvisibleButton("scene", ImVec2(std::max(w, 1.f), std::max(h, 1.f)));
-    const std::optional<SceneFrame> still = m_scene->latest();
-    if (!still) return;
-    if (m_sceneShown != still->generation) {
-        m_sceneTexture.upload(toDisplay(still->hdr, m_doc.view.curve, m_doc.view.exposure));
-        m_sceneShown = still->generation;
-    }
-    const float k = std::min(w / float(still->hdr.width()), h / float(still->hdr.height()));
-    m_sceneRect = {x + 0.5f * (w - k * float(still->hdr.width())),
-                   y + 0.5f * (h - k * float(still->hdr.height())),
-                   k * float(still->hdr.width()),
-                   k * float(still->hdr.height()),
-                   float(still->hdr.width()),
-                   float(still->hdr.height())};
-    if (ImGui::IsItemActive() && ImGui::IsMouseDown(0)) {
-        const ImVec2 m = ImGui::GetIO().MousePos;
-        m_scene->aimSunAt(m_sceneRect.toImage(m.x, m.y));
-    }
-    const ImVec2 p0(m_sceneRect.x, m_sceneRect.y);
-    ImGui::GetWindowDrawList()->AddImage(m_sceneTexture.id(), p0,
-                                         ImVec2(p0.x + m_sceneRect.w, p0.y + m_sceneRect.h));
-}
-
 void App::drawTimeline() {
     // The sequence's frames on disk, scrubbed by index (a gap in the numbers is no dead zone);
     // the arrow keys step a frame when the view has the focus.
@@ -382,77 +235,6 @@ void App::drawTimeline() {
     if (wanted != index) {
         if (Status s = m_doc.showFrame(frames[std::size_t(wanted)]); !s)
             say(s.error().message, true);
-    }
-}
-
-void App::drawGhostLook() {
-    // The picked ghost's look (the lens file's ghost_pairs): its gain and tint over the trace.
-    const int first = m_picked->first, second = m_picked->second;
-    ImGui::TextColored(ImVec4(0.4f, 1.f, 0.8f, 1.f), "picked: the ghost of surfaces %d and %d",
-                       first, second);
-    GhostPairLook look = m_doc.ghostPair(first, second);
-    const GhostPairLook defaults{first, second, 1.0, {1.f, 1.f, 1.f}};
-    for (const Param<GhostPairLook>& p : kGhostPairParams) {
-        ImGui::PushID(p.key.data());
-        if (paramWidget(p, look, defaults)) {
-            if (Status s = m_doc.setGhostPairParam(first, second, std::string(p.key), p.get(look));
-                !s)
-                say(s.error().message, true);
-        }
-        ImGui::PopID();
-    }
-}
-
-void App::drawLensSurfaces() {
-    // The prescription: the lens's coating on every glass-air surface, then each surface's
-    // numbers, typed (a radius or thickness has no useful slider range) and applied when the
-    // field is left; an edit the lens file would refuse is not applied and says why.
-    ImGui::Separator();
-    ImGui::TextDisabled("coatings and surfaces");
-    static constexpr const char* kDesigns[] = {"none", "mgf2", "broadband"};
-    static int design = 1;
-    static double designNm = kMgF2DesignNm;
-    ImGui::Combo("coating", &design, kDesigns, int(std::size(kDesigns)));
-    ImGui::InputDouble("design nm", &designNm, 10, 50, "%.0f");
-    if (ImGui::Button("coat every glass-air surface")) {
-        if (Status s = m_doc.setLensCoating(-1, kDesigns[design], designNm); !s)
-            say(s.error().message, true);
-    }
-    const Lens& lens = m_doc.lens();
-    for (int i = 0; i < int(lens.surfaces.size()); ++i) {
-        const LensSurface& surface = lens.surfaces[std::size_t(i)];
-        ImGui::PushID(i);
-        const std::string title =
-            surface.stop
-                ? "surface " + std::to_string(i) + ": the stop"
-                : "surface " + std::to_string(i) + ": radius " + formatParamNumber(surface.radius) +
-                      (surface.nd != 1.0 ? ", glass n_d " + formatParamNumber(surface.nd)
-                                         : ", air") +
-                      (surface.coating.layers.empty()
-                           ? ", bare"
-                           : ", " + std::to_string(surface.coating.layers.size()) +
-                                 "-layer coating");
-        if (ImGui::TreeNode(title.c_str())) {
-            for (const Param<LensSurface>& p : kLensSurfaceParams) {
-                if (p.type != ParamType::Number) continue;  // `stop` is the prescription's
-                double v = p.get(surface).number;
-                ImGui::InputDouble(std::string(p.key).c_str(), &v, 0, 0, "%.6g");
-                if (ImGui::IsItemHovered())
-                    ImGui::SetTooltip("%s", paramTooltip(p, LensSurface{}).c_str());
-                if (ImGui::IsItemDeactivatedAfterEdit()) {
-                    ParamValue value;
-                    value.number = v;
-                    if (Status s = m_doc.setLensSurfaceParam(i, std::string(p.key), value); !s)
-                        say(s.error().message, true);
-                }
-            }
-            if (!surface.stop && ImGui::Button("coat this surface")) {
-                if (Status s = m_doc.setLensCoating(i, kDesigns[design], designNm); !s)
-                    say(s.error().message, true);
-            }
-            ImGui::TreePop();
-        }
-        ImGui::PopID();
     }
 }
 
