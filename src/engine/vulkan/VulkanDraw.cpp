@@ -115,13 +115,7 @@ Status VulkanEngine::Impl::ensureSprites(LoadedPreset& p, int presetId, int heig
             const auto write = [&](int i, std::uint32_t binding, VkDescriptorType type,
                                    const VkDescriptorBufferInfo* b,
                                    const VkDescriptorImageInfo* im) {
-                writes[i] = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-                writes[i].dstSet = set;
-                writes[i].dstBinding = binding;
-                writes[i].descriptorCount = 1;
-                writes[i].descriptorType = type;
-                writes[i].pBufferInfo = b;
-                writes[i].pImageInfo = im;
+                writes[i] = descriptorWrite(set, binding, type, b, im);
             };
             write(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &view, nullptr);
             write(1, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &lightInfo, nullptr);

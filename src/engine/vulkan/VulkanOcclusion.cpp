@@ -115,12 +115,8 @@ Status VulkanEngine::Impl::measureSunMaps(VkCommandBuffer cmd, int view, const f
     VkWriteDescriptorSet w[8];
     for (int i = 0; i < 5; ++i) w[i] = shared[i], w[i].dstSet = set;
     w[5] = shared[7], w[5].dstSet = set;
-    w[6] = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    w[6].dstSet = set, w[6].dstBinding = 9, w[6].descriptorCount = 1;
-    w[6].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, w[6].pImageInfo = &atlasInfo;
-    w[7] = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    w[7].dstSet = set, w[7].dstBinding = 11, w[7].descriptorCount = 1;
-    w[7].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, w[7].pBufferInfo = &tilingInfo;
+    w[6] = descriptorWrite(set, 9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &atlasInfo);
+    w[7] = descriptorWrite(set, 11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tilingInfo, nullptr);
     a.vkUpdateDescriptorSets(d.device, 8, w, 0, nullptr);
     a.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunMap);
     a.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunMapPipelineLayout, 0, 1, &set,
@@ -230,13 +226,7 @@ Status VulkanEngine::recordOcclusion(int view, const fk_vulkan_frame* vk, const 
     VkWriteDescriptorSet w[9];
     const auto write = [&](int i, std::uint32_t binding, VkDescriptorType type,
                            const VkDescriptorBufferInfo* b, const VkDescriptorImageInfo* im) {
-        w[i] = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-        w[i].dstSet = set;
-        w[i].dstBinding = binding;
-        w[i].descriptorCount = 1;
-        w[i].descriptorType = type;
-        w[i].pBufferInfo = b;
-        w[i].pImageInfo = im;
+        w[i] = descriptorWrite(set, binding, type, b, im);
     };
     write(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &viewInfo, nullptr);
     write(1, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &lightInfo, nullptr);

@@ -76,6 +76,22 @@ T make(VkStructureType type) {
     return v;
 }
 
+//! One descriptor of `set` at `binding`: a buffer (`buffer`) or an image (`image`), the other
+//! null.
+inline VkWriteDescriptorSet descriptorWrite(VkDescriptorSet set, std::uint32_t binding,
+                                            VkDescriptorType type,
+                                            const VkDescriptorBufferInfo* buffer,
+                                            const VkDescriptorImageInfo* image) {
+    auto w = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w.dstSet = set;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    w.pBufferInfo = buffer;
+    w.pImageInfo = image;
+    return w;
+}
+
 //! One image's layout change (aspect `aspect`, its only level and layer), ordered after what
 //! `srcStage` did with `srcAccess` and before `dstStage`'s `dstAccess`.
 void imageBarrier(const Api& api, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
