@@ -159,6 +159,9 @@ std::vector<std::string> lensNames();
 //! radii no larger than the sphere, a sensor behind the last surface).
 Result<Lens> loadLens(const std::string& nameOrPath);
 Result<Lens> parseLens(const std::string& text, const std::string& source);
+//! Whether surface `i` takes the lens's own coating when it states none: a glass-air surface
+//! that is not the stop (cemented glass-glass surfaces stay bare).
+bool takesLensCoating(const Lens& lens, std::size_t i);
 //! The lens as the JSON parseLens reads back to the same lens (surfaces, coatings as layers,
 //! iris, sensor, ghost pairs): what the studio saves.
 std::string lensToJson(const Lens& lens);

@@ -27,6 +27,11 @@ constexpr double kDefaultBokehSize = 3.0;
 constexpr int kUnrealFlares = 8;
 //! flarekit's |scale| range (kMinGhostScale to 16) as Unreal positions A = 1 / scale.
 constexpr double kMaxPosition = 1.0 / kMinGhostScale, kMinPosition = 1.0 / 16.0;
+//! Where flarekit draws a flare of position `a`: `a` itself within its ghost scales, else the
+//! nearest end on the same side (A = 0, on the centre, counts as positive).
+double drawnPosition(double a) {
+    return std::copysign(std::clamp(std::abs(a), kMinPosition, kMaxPosition), a == 0 ? 1.0 : a);
+}
 //! The source block's key for the .ini section the settings were read under.
 constexpr const char* kSectionKey = "__section";
 //! The section an exported .ini is written under when the source had none: where a project's
@@ -206,10 +211,8 @@ Result<FlareAsset> readUnreal(const std::string& text, ImportContext& ctx) {
         // A flare nearer the centre than flarekit's largest ghost scale (A = 0 is on the centre)
         // or beyond its smallest is drawn at the nearest position flarekit has, and its own
         // position is kept for the way back.
-        double drawnAt = a;
-        if (!(std::abs(a) >= kMinPosition && std::abs(a) <= kMaxPosition)) {
-            drawnAt = std::copysign(std::clamp(std::abs(a), kMinPosition, kMaxPosition),
-                                    a == 0 ? 1.0 : a);
+        const double drawnAt = drawnPosition(a);
+        if (drawnAt != a) {
             ctx.warn(key + ".A " + formatParamNumber(a) +
                      ": flarekit's ghosts lie at |A| from 0.0625 to 20 (scale 16 to 0.05); drawn "
                      "at " +
@@ -284,9 +287,7 @@ Result<std::string> writeUnreal(const PostFxParams& p, ExportContext& ctx) {
                 clamped.contains(std::to_string(i)) ? &clamped[std::to_string(i)] : nullptr;
             own && own->is_number()) {
             const double original = own->get<double>();
-            const double drawnAt =
-                std::copysign(std::clamp(std::abs(original), kMinPosition, kMaxPosition),
-                              original == 0 ? 1.0 : original);
+            const double drawnAt = drawnPosition(original);
             if (std::abs(1.0 / double(g.scale) - drawnAt) <= 1e-6 * std::abs(drawnAt)) a = original;
         }
         tints.push_back({{"R", divide(g.tint[0], tint[0])},

@@ -191,14 +191,6 @@ bool sameCoating(const LensCoating& a, const LensCoating& b) {
     return true;
 }
 
-//! Whether parseLens gives surface i the lens's coating when it states none: a glass-air
-//! surface that is not the stop (cemented glass-glass surfaces stay bare).
-bool takesLensCoating(const Lens& lens, std::size_t i) {
-    const LensSurface& s = lens.surfaces[i];
-    const bool airBefore = i == 0 || lens.surfaces[i - 1].nd == 1.0;
-    return !s.stop && airBefore != (s.nd == 1.0);
-}
-
 nlohmann::json coatingJson(const LensCoating& c) {
     if (c.layers.empty()) return "none";
     nlohmann::json layers = nlohmann::json::array();
@@ -208,6 +200,12 @@ nlohmann::json coatingJson(const LensCoating& c) {
 }
 
 }  // namespace
+
+bool takesLensCoating(const Lens& lens, std::size_t i) {
+    const LensSurface& s = lens.surfaces[i];
+    const bool airBefore = i == 0 || lens.surfaces[i - 1].nd == 1.0;
+    return !s.stop && airBefore != (s.nd == 1.0);
+}
 
 int Lens::stopIndex() const {
     for (std::size_t i = 0; i < surfaces.size(); ++i) {

@@ -402,11 +402,8 @@ Status Document::setLensCoating(int surface, const std::string& design, double d
     Lens edited = m_lens;
     if (surface < 0) {
         edited.coating = coating;
-        for (std::size_t i = 0; i < edited.surfaces.size(); ++i) {
-            const LensSurface& s = edited.surfaces[i];
-            const bool airBefore = i == 0 || edited.surfaces[i - 1].nd == 1.0;
-            if (!s.stop && airBefore != (s.nd == 1.0)) edited.surfaces[i].coating = coating;
-        }
+        for (std::size_t i = 0; i < edited.surfaces.size(); ++i)
+            if (takesLensCoating(edited, i)) edited.surfaces[i].coating = coating;
     } else if (surface < int(edited.surfaces.size())) {
         edited.surfaces[std::size_t(surface)].coating = coating;
     } else {
