@@ -56,6 +56,8 @@ const std::vector<std::string>& gpuVisibilityMethods();
 bool isGpuVisibilityMethod(const std::string& name);
 //! "raycast readback pbo ...": every method name, for error messages.
 std::string visibilityMethodList();
+//! Ok for raycast or a GPU method; else "method: expected one of raycast ..., got 'NAME'".
+Status checkVisibilityMethod(const std::string& name);
 
 Result<VisibilityResult> raycastVisibility(const Scene& scene, const RaycastOptions& options = {});
 

@@ -25,10 +25,7 @@ Status validateDemoSettings(const DemoSettings& settings) {
                             std::to_string(settings.height));
     }
     if (Status s = validateParams<DemoSettings>(settings, kDemoParams, ""); !s) return s;
-    if (settings.method != "raycast" && !isGpuVisibilityMethod(settings.method)) {
-        return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" +
-                            settings.method + "'");
-    }
+    if (Status s = checkVisibilityMethod(settings.method); !s) return s;
     if (settings.conditionalRender && settings.method != "query") {
         return invalidInput(
             "conditional-render: needs --method query (the only method with an occlusion query), "

@@ -26,4 +26,10 @@ std::string visibilityMethodList() {
     return list;
 }
 
+Status checkVisibilityMethod(const std::string& name) {
+    if (name == "raycast" || isGpuVisibilityMethod(name)) return Ok{};
+    return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" + name +
+                        "'");
+}
+
 }  // namespace flarekit

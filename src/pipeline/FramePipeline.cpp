@@ -53,10 +53,7 @@ struct FramePipeline::Impl {
 
 Result<FramePipeline> FramePipeline::create(const Scene& world, const Preset& preset,
                                             const FramePipelineSettings& settings) {
-    if (settings.method != "raycast" && !isGpuVisibilityMethod(settings.method)) {
-        return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" +
-                            settings.method + "'");
-    }
+    if (Status s = checkVisibilityMethod(settings.method); !s) return s.error();
     if (Status s = validateTemporalParams(settings.temporalParams); !s) return s.error();
     if (Status s = validateScene(world); !s) return invalidInput("scene: " + s.error().message);
     auto renderer = SceneRenderer::create(world, settings.render);

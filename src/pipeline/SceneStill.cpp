@@ -19,10 +19,8 @@ FramePipelineSettings sceneStillSettings(const SceneStillOptions& o) {
 }
 
 Result<SceneStill> renderSceneStill(const SceneStillOptions& o) {
-    if (o.method != "raycast" && !isGpuVisibilityMethod(o.method)) {
-        return invalidInput("--method: expected one of " + visibilityMethodList() + ", got '" +
-                            o.method + "'");
-    }
+    if (Status s = checkVisibilityMethod(o.method); !s)
+        return invalidInput("--" + s.error().message);  // `render`'s flag
     auto scene = loadScene(o.scene);
     if (!scene) return scene.error();
     auto preset = loadPreset(o.preset);

@@ -116,11 +116,8 @@ void App::drawDrivePanel() {
     const DemoSettings& settings = m_drive->settings();
     ImGui::TextDisabled("the demo drive, %dx%d", settings.width, settings.height);
     static const std::vector<std::string> methods = [] {
-        std::vector<std::string> names;
-        std::string list = visibilityMethodList() + " ";
-        for (std::size_t at = 0, space; (space = list.find(' ', at)) != std::string::npos;
-             at = space + 1)
-            if (space > at) names.push_back(list.substr(at, space - at));
+        std::vector<std::string> names{"raycast"};
+        for (const std::string& name : gpuVisibilityMethods()) names.push_back(name);
         return names;
     }();
     if (ImGui::BeginCombo("method", settings.method.c_str())) {

@@ -29,9 +29,7 @@ Vec3 directionThrough(const Scene& scene, Point pixel) {
 Result<std::unique_ptr<ScenePlayback>> ScenePlayback::open(const std::string& path,
                                                            const std::string& method,
                                                            const Preset& preset) {
-    if (method != "raycast" && !isGpuVisibilityMethod(method))
-        return invalidInput("method: expected one of " + visibilityMethodList() + ", got '" +
-                            method + "'");
+    if (Status s = checkVisibilityMethod(method); !s) return s.error();
     auto scene = loadScene(path);
     if (!scene) return scene.error();
     if (Status s = checkFlareWork(preset, scene->width, scene->height, 1, "preset"); !s)
