@@ -34,6 +34,9 @@ struct DemoSettings {
     //! (glBeginConditionalRender), so the GPU skips them when the sun is hidden.
     bool conditionalRender = false;
     TemporalParams temporal;
+    //! Read back the GPU method's working textures with every frame (DemoFrame's methodViews:
+    //! the studio's diagnostic panels); a wait per frame.
+    bool methodViews = false;
 };
 inline constexpr Param<DemoSettings> kDemoParams[] = {
     param<&DemoSettings::frames>("frames", 1, 100000, "",

@@ -38,6 +38,7 @@ Result<DemoAnimation> DemoAnimation::create(const DemoSettings& settings, const 
     frames.render.msaaSamples = settings.msaaSamples;
     frames.temporalParams = settings.temporal;
     frames.conditionalRender = settings.conditionalRender;
+    frames.methodViews = settings.methodViews;
     auto pipeline = FramePipeline::create(world, preset, frames);
     if (!pipeline) return pipeline.error();
     Scene view;

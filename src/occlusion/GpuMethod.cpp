@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "occlusion/GpuMethod.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "flarekit_shaders.h"
 
 namespace flarekit::occlusion {
@@ -23,6 +26,18 @@ std::optional<double> GpuMethod::latestCoverage() {
     float value = 0;
     glGetTextureImage(m_coverage.get(), 0, GL_RED, GL_FLOAT, sizeof value, &value);
     return double(value);
+}
+
+MethodView readMethodView(GLuint texture, int width, int height, std::string name) {
+    std::vector<float> texels(std::size_t(width) * std::size_t(height) * 4);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
+                      texels.data());
+    MethodView view{std::move(name), Image(width, height)};
+    const std::size_t rowFloats = std::size_t(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(texels.data() + std::size_t(height - 1 - y) * rowFloats, rowFloats,
+                    view.image.row(y));
+    return view;
 }
 
 namespace {

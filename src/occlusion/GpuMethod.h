@@ -31,6 +31,10 @@ class GpuMethod : public GpuVisibility {
     bool m_hasResult = false;
 };
 
+//! A width x height texture's level 0 read back as RGBA floats, its top row first (GL's rows
+//! run bottom-up), named `name`: a MethodView.
+MethodView readMethodView(GLuint texture, int width, int height, std::string name);
+
 //! Links a program whose shaders get "#version 450 core", `defines` (e.g. "#define X\n") and
 //! the sun_disc.glsl prelude.
 Result<gl::Program> linkWithDisc(std::initializer_list<gl::ShaderSource> sources,

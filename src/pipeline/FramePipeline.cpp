@@ -184,6 +184,7 @@ Status FramePipeline::Impl::gpuHalf(const Scene& view, PipelineFrame& frame, dou
         frame.temporal = stillState(frame.rawCoverage);
     }
     frame.flareIntensity *= float(frame.temporal.flareWeight);
+    if (settings.methodViews) frame.methodViews = g.method->views();
     frame.visibilityMs = ms(t0, t1);
     frame.flareMs = ms(t1, t2);
     return Ok{};

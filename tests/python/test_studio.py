@@ -296,6 +296,41 @@ def test_post_process_presets_are_edited_saved_and_rendered_as_the_cli_does(stud
                                read(tmp_path / "cli.exr")[..., :3], rtol=1e-3, atol=1e-3)
 
 
+def test_the_gl_backend_draws_the_view_and_exports_as_the_clis_backend_gl(studio, cli, tmp_path):
+    image, _ = flarekit.read_image(str(SUNSET_HDR))
+    small = np.ascontiguousarray(image[::4, ::4])  # 320x180: a lens render in seconds
+    flarekit.write_image(str(tmp_path / "small.exr"), small, depth="float")
+    done = studio([{"action": "open", "path": "small.exr"},
+                   {"action": "view", "key": "backend", "value": "gl"},
+                   {"action": "mode", "kind": "postfx"},
+                   {"action": "load", "preset": "modern"},
+                   {"action": "export", "path": "post.exr"},
+                   {"action": "export", "path": "post.png"},
+                   {"action": "mode", "kind": "lens"},
+                   {"action": "load", "preset": "asahi-takumar-50"},
+                   {"action": "light", "at": [232.5, 62.5]},
+                   {"action": "set", "section": "render", "key": "ghosts", "value": 24},
+                   {"action": "drag", "from": [200, 60], "to": [232.5, 62.5], "frames": 4},
+                   {"action": "light", "at": [232.5, 62.5]},
+                   {"action": "export", "path": "lens.exr"}])
+    # Every view update of the post-process preset and the lens was drawn by GL: all but the
+    # sprite preset's views before the mode changed (the image, then the setting).
+    total = int(done.stderr.split(" previews (")[0].split()[-1])
+    by_gl = int(done.stderr.split(" previews (")[1].split(" by gl")[0])
+    assert by_gl >= 6 and total - by_gl == 2
+    cli("postfx", tmp_path / "small.exr", "-o", tmp_path / "cli.exr", "--preset", "modern",
+        "--backend", "gl")
+    cli("postfx", tmp_path / "small.exr", "-o", tmp_path / "cli.png", "--preset", "modern",
+        "--backend", "gl")
+    np.testing.assert_allclose(read(tmp_path / "post.exr")[..., :3],
+                               read(tmp_path / "cli.exr")[..., :3], rtol=1e-5, atol=1e-5)
+    assert levels(read(tmp_path / "post.png"), read(tmp_path / "cli.png")) <= 1
+    cli("lens", "render", "asahi-takumar-50", tmp_path / "small.exr", "--light", "232.5,62.5",
+        "--ghosts", 24, "--backend", "gl", "-o", tmp_path / "cli-lens.exr")
+    np.testing.assert_allclose(read(tmp_path / "lens.exr")[..., :3],
+                               read(tmp_path / "cli-lens.exr")[..., :3], rtol=1e-5, atol=1e-5)
+
+
 def test_an_invalid_post_process_edit_is_not_saved(studio, tmp_path):
     done = studio([{"action": "mode", "kind": "postfx"},
                    {"action": "set", "ghost": 0, "key": "scale", "value": 0.01},
@@ -453,6 +488,49 @@ def test_the_demo_drive_plays_with_its_coverage_as_the_cli_logs_it(studio, cli, 
     assert columns(tmp_path / "coverage.csv") == logged  # every frame, to the log's digits
     assert levels(read(tmp_path / "f6.png"), read(tmp_path / "demo" / "frame_0006.png")) == 0
     assert (tmp_path / "drive.png").exists()
+
+
+def test_the_drives_diagnostic_views_are_the_methods_own_and_the_psp_emulators(studio, cli,
+                                                                              tmp_path):
+    # Frame 2 of the drive: the sun a third behind the trees (coverage about 0.36).
+    studio([{"action": "drive", "method": "texture-mask", "frames": 6},
+            {"action": "frame", "frame": 2},
+            {"action": "diagnostics", "dir": "tm"},
+            {"action": "coverage", "path": "tm.csv"},
+            {"action": "drive", "method": "burnout", "frames": 6},
+            {"action": "frame", "frame": 2},
+            {"action": "diagnostics", "dir": "bo"},
+            {"action": "coverage", "path": "bo.csv"}])
+
+    def raw_coverage(csv):
+        return float((tmp_path / csv).read_text().splitlines()[2].split(",")[2])
+
+    def codes(path):
+        return srgb8(read(tmp_path / path))
+
+    # GPG2: the intensity map is the sum the coverage is resolved from (visible / disc), and
+    # the sun map is what was summed (the 255 points of the circle variant: within a point).
+    intensity = codes("tm/method-intensity-map-1x1.png")[0, 0]
+    assert abs(intensity[0] / intensity[1] - raw_coverage("tm.csv")) < 1e-5
+    sun_map = codes("tm/method-sun-map-18x18.png") / 255
+    in_disc = sun_map[..., 1] > 0
+    assert 240 <= in_disc.sum() <= 260
+    assert abs(sun_map[..., 0][in_disc].mean() - raw_coverage("tm.csv")) < 2 / 255
+    assert 0.2 < raw_coverage("tm.csv") < 0.6
+    # Burnout: the chain's last level is the coverage (8-bit pictures: within two levels).
+    last = codes("bo/method-chain-1x1.png")[0, 0]
+    assert abs(last[0] / last[1] - raw_coverage("bo.csv")) < 2 / 255
+    assert codes("bo/method-grid-14x14.png").shape == (14, 14, 3)
+    # The PSP panel is `flarekit psp burnout` on the same moment, step for step.
+    info = {key: value for key, _, value in
+            (line.partition(" ") for line in (tmp_path / "bo" / "psp.txt").read_text().splitlines())}
+    cli("psp", "burnout", "--occluders", tmp_path / "bo" / "psp-occluders.png", "--sun",
+        info["sun"].replace(" ", ","), "-o", tmp_path / "psp.png", "--dump", tmp_path / "steps")
+    steps = sorted(p.name for p in (tmp_path / "steps").iterdir())
+    assert "09-clut-after.png" in steps and "02-mask.png" in steps
+    for name in steps:
+        assert np.array_equal(codes(f"steps/{name}"), codes(f"bo/psp-{name}")), name
+    assert int(info["coverage_byte"]) > 0 and info["visible"].endswith("of 196")
 
 
 def test_a_scenes_sun_follows_the_pointer_and_renders_as_the_cli_does(studio, cli, tmp_path):

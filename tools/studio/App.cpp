@@ -176,11 +176,13 @@ int App::run() {
     }
     if (m_options.stats && m_exitCode <= 0)
         std::fprintf(stderr,
-                     "studio: %ld frames, %ld previews, %.1f ms each on average; drags %ld "
+                     "studio: %ld frames, %ld previews (%ld by gl), %.1f ms each on average; "
+                     "drags %ld "
                      "frames at %.1f frames/s; longest frame beside the browser's work %.1f ms; "
                      "light at %.3f,%.3f\n",
-                     m_frames, m_renders, m_renders ? m_renderMsTotal / double(m_renders) : 0.0,
-                     m_dragFrames, m_dragSeconds > 0 ? double(m_dragFrames) / m_dragSeconds : 0.0,
+                     m_frames, m_renders, m_glRenders,
+                     m_renders ? m_renderMsTotal / double(m_renders) : 0.0, m_dragFrames,
+                     m_dragSeconds > 0 ? double(m_dragFrames) / m_dragSeconds : 0.0,
                      m_longestBrowserFrame * 1000.0, double(m_doc.light.x), double(m_doc.light.y));
     return std::max(m_exitCode, 0);
 }
@@ -267,6 +269,10 @@ Status App::stepScript() {
     // A drive's actions wait for all its frames (its timeline and graph are then whole), a
     // scene's for the still of its newest sun.
     if (m_drive && !m_drive->finished()) return Ok{};
+    // ... and for the diagnostic strip's PSP frame of the frame shown.
+    if (m_drive && m_drive->ready() > 0 &&
+        m_pspViewsShown != std::clamp(m_driveFrame, 0, m_drive->ready() - 1))
+        return Ok{};
     if (m_scene && !m_scene->upToDate()) return Ok{};
     if (m_scene && !m_scene->error().empty()) return invalidInput("scene: " + m_scene->error());
     if (m_drive && !m_drive->error().empty()) return invalidInput("drive: " + m_drive->error());
@@ -279,7 +285,7 @@ Status App::stepScript() {
     if (a.kind == "scene" || (m_scene && (a.kind == "light" || a.kind == "export")))
         return runSceneAction(a);
     if (a.kind == "drive" || (m_drive && (a.kind == "frame" || a.kind == "export")) ||
-        a.kind == "coverage")
+        a.kind == "coverage" || a.kind == "diagnostics")
         return runDriveAction(a);
     if (a.kind == "open") m_drive.reset(), m_scene.reset();  // an image ends a drive or scene
     if (!isWindowAction(a.kind)) {
@@ -390,10 +396,10 @@ void App::updatePreview() {
     m_preview.fit(m_doc, m_viewMaxW, m_viewMaxH, coarse ? 2 : 1);
     m_preview.dragging = m_dragging;
     char view[160];
-    std::snprintf(view, sizeof view, "|%.3f,%.3f|%u|%d|%g|%d|%d|%g", double(m_doc.light.x),
+    std::snprintf(view, sizeof view, "|%.3f,%.3f|%u|%d|%g|%d|%d|%g|%d", double(m_doc.light.x),
                   double(m_doc.light.y), m_doc.imageVersion(), m_preview.width(),
                   double(m_doc.view.exposure), int(m_doc.view.curve), int(m_doc.view.fluxMode),
-                  double(m_doc.view.intensity));
+                  double(m_doc.view.intensity), int(m_doc.view.backend));
     // A lens dragged is drawn with its brightest ghosts only: the key says so, so that the
     // whole flare is drawn when the drag stops.
     const bool lensDrag = m_doc.kind == FlareKind::Lens && m_dragging;
@@ -408,6 +414,7 @@ void App::updatePreview() {
         m_renderedKey = key;
         m_lastRenderMs = frame->renderMs;
         ++m_renders;
+        m_glRenders += m_doc.view.backend == ViewBackend::Gl && m_doc.kind != FlareKind::Sprite;
         m_renderMsTotal += frame->renderMs;
     }
     // The passes, once the drag stops (and only at full size: a coarse view is not final).

@@ -74,6 +74,8 @@ class App {
     Status runDriveAction(const Action& a);
     void drawDriveView(float x, float y, float w, float h);
     void drawDrivePanel();
+    //! The bottom strip while the drive plays: the shown frame's diagnostic views (Diagnostics.h).
+    void drawDiagnosticStrip(float h);
     // A Scene JSON (ScenePlayback): opened by the script's "scene" action or `flarekit studio
     // scene.json`; the pointer aims its sun, the view shows its still.
     Status runSceneAction(const Action& a);
@@ -162,11 +164,16 @@ class App {
     ViewRect m_sceneRect;                     //!< where the still is drawn, for the pointer
     int m_driveFrame = 0, m_driveShown = -1;  //!< the frame on the timeline; the one uploaded
     GlTexture m_driveTexture;
+    // The diagnostic strip: the method's views of the shown frame, the PSP's of the latest made.
+    std::vector<std::pair<std::string, GlTexture>> m_methodViews, m_pspViews;
+    int m_methodViewsShown = -1, m_pspViewsShown = -1;  //!< the drive frames uploaded
+    std::string m_pspSummary;
+    PspDiagnosticsWorker m_psp;
     //! The drive's size in the studio: a 16:9 preview (480x270 x 240 frames keeps 124 MiB).
     static constexpr int kDriveWidth = 480, kDriveHeight = 270;
     std::string m_status;
     bool m_statusError = false;
-    long m_frames = 0, m_renders = 0, m_dragFrames = 0;
+    long m_frames = 0, m_renders = 0, m_glRenders = 0, m_dragFrames = 0;
     double m_frameStart = 0, m_dragSeconds = 0, m_longestBrowserFrame = 0;
     double m_renderMsTotal = 0;
 };

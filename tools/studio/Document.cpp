@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "GlViewBackends.h"
 #include "core/ParamJson.h"
 #include "core/SafeWrite.h"
 #include "flarekit/ImageIO.h"
@@ -111,6 +112,7 @@ LensJobOptions Document::lensOptions(double scale, bool coarse) const {
     o.lightMode = LensLightMode::At;
     o.light = Point{float(light.x * scale), float(light.y * scale)};
     o.tonemap = ToneOperator::None;
+    if (view.backend == ViewBackend::Gl && m_glLens) o.backend = m_glLens;
     if (coarse) {
         // A drag's preview: the eight brightest ghosts on 16-ray meshes, the starburst at three
         // wavelengths (about a tenth of the full render); refined when the drag stops.
@@ -290,15 +292,29 @@ PostFxJobOptions postFxDisplayOptions(const PostFxParams& preset, const ViewSett
 
 PostFxJobOptions Document::postFxOptions(bool display) const {
     const std::string name = m_presetPath[1].empty() ? "postfx preset" : m_presetPath[1];
-    if (display) return postFxDisplayOptions(m_post, view, name);
     PostFxJobOptions o;
-    o.preset = name;
-    o.presetParams = std::make_shared<const PostFxParams>(m_post);
+    if (display) {
+        o = postFxDisplayOptions(m_post, view, name);
+    } else {
+        o.preset = name;
+        o.presetParams = std::make_shared<const PostFxParams>(m_post);
+    }
+    if (view.backend == ViewBackend::Gl && m_glPostFx) o.backend = m_glPostFx;
     return o;
+}
+
+Status Document::prepareBackend() const {
+    if (view.backend != ViewBackend::Gl || m_glPostFx) return Ok{};
+    auto thread = GlViewThread::start();
+    if (!thread) return invalidInput("backend gl: " + thread.error().message);
+    m_glPostFx = glViewPostFxBackend(*thread);
+    m_glLens = glViewLensBackend(*thread);
+    return Ok{};
 }
 
 Status Document::exportRender(const std::string& path, SampleFormat depth) const {
     if (!hasImage()) return invalidInput(path + ": no image is open to render");
+    if (Status s = prepareBackend(); !s) return s;
     // An EXR export is the render at full float precision unless a depth is asked for.
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);

@@ -24,12 +24,17 @@ namespace flarekit::studio {
 enum class FlareKind { Sprite, PostFx, Lens };
 inline constexpr std::string_view kFlareKindNames[] = {"sprite", "postfx", "lens"};
 
+//! Where the view and the exports draw a post-process preset or a lens (GlViewBackends.h).
+enum class ViewBackend { Cpu, Gl };
+inline constexpr std::string_view kViewBackendNames[] = {"cpu", "gl"};
+
 //! How the image is shown (and how 8/16-bit exports are encoded); not part of the preset.
 struct ViewSettings {
     float exposure = 1.f;                     //!< multiplies the image before the curve
     ToneOperator curve = ToneOperator::None;  //!< set from the image on open
     FluxMode fluxMode = FluxMode::Fixed;      //!< the preset's own look while designing
     float intensity = 1.f;                    //!< the job's flare brightness multiplier
+    ViewBackend backend = ViewBackend::Cpu;
 };
 inline constexpr Param<ViewSettings> kViewParams[] = {
     param<&ViewSettings::exposure>("exposure", 0, 1000, "",
@@ -41,6 +46,11 @@ inline constexpr Param<ViewSettings> kViewParams[] = {
                                     "fixed: the preset's own strength wherever the light is; "
                                     "measured: as bright as the image is at the light"),
     param<&ViewSettings::intensity>("intensity", 0, 1000, "", "flare brightness multiplier"),
+    choice<&ViewSettings::backend>(
+        "backend", kViewBackendNames,
+        "where the view and the exports draw post-process presets and lenses: cpu, or gl "
+        "(flarekit's OpenGL backend, as --backend gl, in a context the studio keeps); sprite "
+        "presets are drawn on the CPU either way"),
 };
 
 //! The postfx job's options for `preset` on a display (the view, a thumbnail, an 8/16-bit file):
@@ -158,8 +168,13 @@ class Document {
     //! The postfx job's options: the preset in memory, and for a display (an 8/16-bit file or
     //! the view) the view's curve when the preset has none and its exposure on the preset's.
     PostFxJobOptions postFxOptions(bool display) const;
+    //! Starts the GL backends the first time the view asks for them (view.backend); after
+    //! that, postFxOptions and lensOptions draw through them. The error names the setting.
+    Status prepareBackend() const;
 
   private:
+    mutable std::shared_ptr<const PostFxBackend> m_glPostFx;  //!< made by prepareBackend
+    mutable std::shared_ptr<const LensBackend> m_glLens;
     Status saveLens(const std::string& path);  //!< the lens as its JSON file (savePreset)
     //! Both presets: what an undo step restores.
     struct Design {

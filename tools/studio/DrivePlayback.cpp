@@ -27,7 +27,10 @@ Result<std::unique_ptr<DrivePlayback>> DrivePlayback::start(const DemoSettings& 
 }
 
 DrivePlayback::DrivePlayback(const DemoSettings& settings, const Preset& preset)
-    : m_settings(settings), m_preset(preset), m_thread([this] { work(); }) {}
+    : m_settings(settings), m_preset(preset) {
+    m_settings.methodViews = true;  // read back after each frame: a few small textures
+    m_thread = std::thread([this] { work(); });
+}
 
 DrivePlayback::~DrivePlayback() {
     m_stop = true;
@@ -59,6 +62,8 @@ void DrivePlayback::work() {
             kept.time = f->time, kept.rawCoverage = f->rawCoverage;
             kept.filteredCoverage = f->temporal.coverage, kept.inFrame = f->inFrame;
             kept.sun = f->sunPixel, kept.sunInFront = f->sunInFront;
+            for (const MethodView& view : f->methodViews)
+                kept.methodViews.push_back(methodPicture(view));
             {
                 std::lock_guard lock(m_mutex);
                 m_frames.push_back(std::move(kept));

@@ -4,7 +4,7 @@
 // from frame to frame, so each frame is made once, in order, and kept), and the window shows
 // whichever frame the timeline is on, with the sun's raw and filtered coverage per frame. The
 // frames are exactly `flarekit demo`'s at the same settings (tested against its PNGs and its
-// coverage.csv).
+// coverage.csv). Each frame keeps the method's working textures for the diagnostic strip.
 #pragma once
 
 #include <atomic>
@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "Diagnostics.h"
 #include "flarekit/Demo.h"
 #include "flarekit/Flare.h"
 #include "flarekit/Image.h"
@@ -25,6 +26,9 @@ struct DriveFrame {
     double time = 0, rawCoverage = 0, filteredCoverage = 0, inFrame = 0;
     Point sun;
     bool sunInFront = false;
+    //! The GPU method's working textures for this frame (Diagnostics.h; none for raycast and
+    //! the late methods).
+    std::vector<DiagnosticPicture> methodViews;
 };
 
 class DrivePlayback {
@@ -61,7 +65,7 @@ class DrivePlayback {
     std::string m_error;               //!< guarded by m_mutex
     std::atomic<int> m_ready{0};
     std::atomic<bool> m_finished{false}, m_stop{false};
-    std::thread m_thread;  //!< last: starts after every member it reads exists
+    std::thread m_thread;  //!< started last, once every member it reads is set
 };
 
 }  // namespace flarekit::studio

@@ -27,16 +27,18 @@ class GlTexture {
     GlTexture(const GlTexture&) = delete;
     GlTexture& operator=(const GlTexture&) = delete;
 
-    //! The pixels (4 channels), replacing what was there; the name stays the same.
-    void upload(const Image8& image) {
+    //! The pixels (4 channels), replacing what was there; the name stays the same. `nearest`:
+    //! magnified as blocks (a 16x16 sun map shows its texels), else bilinear.
+    void upload(const Image8& image, bool nearest = false) {
         if (!m_id) glGenTextures(1, &m_id);
         glBindTexture(GL_TEXTURE_2D, m_id);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         if (image.width != m_w || image.height != m_h) {
             glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
                          GL_UNSIGNED_BYTE, image.pixels.data());
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            const GLint filter = nearest ? GL_NEAREST : GL_LINEAR;
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
             m_w = image.width, m_h = image.height;

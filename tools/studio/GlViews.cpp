@@ -45,6 +45,14 @@ Status App::runDriveAction(const Action& a) {
         m_driveFrame = int(v.get<long long>()) - 1;
         return Ok{};
     }
+    if (a.kind == "diagnostics") {
+        if (!a.args["dir"].is_string() || a.args["dir"].get<std::string>().empty())
+            return fail("dir: expected a folder name");
+        const DriveFrame shown = m_drive->frame(m_driveFrame);
+        auto psp = pspDiagnosticsAt(shown.time);
+        if (!psp) return fail(psp.error().message);
+        return writeDiagnostics(a.args["dir"].get<std::string>(), shown.methodViews, *psp);
+    }
     if (!a.args["path"].is_string()) return fail("path: expected a file name");
     const std::string path = a.args["path"].get<std::string>();
     if (a.kind == "coverage") return writeFileSafely(path, m_drive->coverageCsv());
@@ -104,7 +112,7 @@ Status App::startDrive(const DemoSettings& settings) {
     auto drive = DrivePlayback::start(settings, m_doc.preset());
     if (!drive) return drive.error();
     m_drive = std::move(*drive);
-    m_driveFrame = 0, m_driveShown = -1;
+    m_driveFrame = 0, m_driveShown = -1, m_methodViewsShown = -1;
     say("drive: " + std::to_string(settings.frames) + " frames, " + settings.method);
     return Ok{};
 }
@@ -179,6 +187,78 @@ void App::drawDriveView(float x, float y, float w, float h) {
     const float dw = k * float(m_driveTexture.width()), dh = k * float(m_driveTexture.height());
     const ImVec2 p0(x + 0.5f * (w - dw), y + 0.5f * (h - dh));
     ImGui::GetWindowDrawList()->AddImage(m_driveTexture.id(), p0, ImVec2(p0.x + dw, p0.y + dh));
+}
+
+void App::drawDiagnosticStrip(float h) {
+    if (!m_drive || m_drive->ready() == 0) return;
+    const int shown = std::clamp(m_driveFrame, 0, m_drive->ready() - 1);
+    const DriveFrame frame = m_drive->frame(shown);
+    const auto upload = [](std::vector<std::pair<std::string, GlTexture>>& textures,
+                           const std::vector<DiagnosticPicture>& pictures) {
+        textures.resize(pictures.size());
+        for (std::size_t i = 0; i < pictures.size(); ++i) {
+            textures[i].first = pictures[i].name;
+            textures[i].second.upload(pictures[i].image, true);
+        }
+    };
+    if (m_methodViewsShown != shown) {
+        upload(m_methodViews, frame.methodViews);
+        m_methodViewsShown = shown;
+    }
+    m_psp.request(shown, frame.time);
+    if (const auto& made = m_psp.latest(); made && made->first != m_pspViewsShown) {
+        m_pspViewsShown = made->first;
+        if (!made->second) {
+            m_pspViews.clear();
+            m_pspSummary = "PSP: " + made->second.error().message;
+        } else {
+            const psp::PspFrameResult& r = made->second->result;
+            upload(m_pspViews, made->second->pictures);
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "PSP GE, frame %d: %d of %d mask pixels visible, coverage byte %d, flare "
+                          "CLUT alpha %d",
+                          made->first + 1, r.visiblePixels, r.maskPixels, r.coverageByte,
+                          r.clutAlpha);
+            m_pspSummary = r.sunInFrame ? line : "PSP GE: the sun is out of frame (no mask)";
+        }
+    }
+    const float tall = stripPictureHeight(h) - ImGui::GetTextLineHeightWithSpacing();
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const auto picture = [&](const std::string& name, const GlTexture& texture, float high) {
+        ImGui::Image(
+            texture.id(),
+            ImVec2(high * float(texture.width()) / float(std::max(1, texture.height())), high));
+        ImGui::TextUnformatted(name.c_str());
+    };
+    const auto pictures = [&](const std::vector<std::pair<std::string, GlTexture>>& textures) {
+        for (std::size_t i = 0; i < textures.size(); ++i) {
+            const auto& [name, texture] = textures[i];
+            // The PSP's first and restored frames are the drive's frame again: in the files only.
+            if (name == "01-scene" || name == "07-restored") continue;
+            ImGui::BeginGroup();
+            if (name == "08-clut-before" && i + 1 < textures.size()) {
+                // The two CLUT strips (256 entries, 512x48) stacked: before, then after.
+                const float half = 0.5f * (tall - line);
+                picture(name, texture, half);
+                ++i;
+                picture(textures[i].first, textures[i].second, half);
+            } else {
+                picture(name, texture, tall);
+            }
+            ImGui::EndGroup();
+            ImGui::SameLine();
+        }
+    };
+    ImGui::Text("%s: %s   |   %s", m_drive->settings().method.c_str(),
+                m_methodViews.empty()
+                    ? "no working textures (raycast and the late methods keep none)"
+                    : "its working textures for this frame",
+                m_pspSummary.empty() ? "PSP GE: emulating..." : m_pspSummary.c_str());
+    pictures(m_methodViews);
+    if (!m_methodViews.empty()) ImGui::SameLine(0, 24.f);
+    pictures(m_pspViews);
+    ImGui::NewLine();
 }
 
 void App::drawScenePanel() {

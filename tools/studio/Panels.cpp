@@ -408,18 +408,26 @@ void App::drawComponents(float x, float y, float w, float h) {
         ImGui::EndTabItem();
     };
     if (ImGui::BeginTabBar("strip")) {
-        tab("Components", "components");
-        tab("Presets", "presets");
+        if (m_drive) {  // the drive's own strip: its frame's diagnostic views
+            if (ImGui::BeginTabItem("Diagnostics")) ImGui::EndTabItem();
+        } else {
+            tab("Components", "components");
+            tab("Presets", "presets");
+        }
         ImGui::EndTabBar();
     }
     m_panelChanged = false;
-    if (m_panel == "presets")
+    if (m_drive)
+        drawDiagnosticStrip(h);
+    else if (m_panel == "presets")
         drawBrowser(h);
     else
         drawComponentStrip(h);
     if (m_statusError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
-    ImGui::Text("preview %dx%d, %.1f ms   %s", m_preview.width(), m_preview.height(),
-                m_lastRenderMs, m_status.c_str());
+    // The backend that drew it: sprites are the CPU's whatever the view's setting.
+    const bool gl = m_doc.view.backend == ViewBackend::Gl && m_doc.kind != FlareKind::Sprite;
+    ImGui::Text("preview %dx%d, %.1f ms (%s)   %s", m_preview.width(), m_preview.height(),
+                m_lastRenderMs, gl ? "gl" : "cpu", m_status.c_str());
     if (m_statusError) ImGui::PopStyleColor();
     ImGui::End();
 }

@@ -84,6 +84,7 @@ Result<PreviewFrame> Preview::renderComponents(const Document& doc) const {
 Result<PreviewFrame> Preview::renderAt(const Document& doc, const PixelInput& image, double scale,
                                        bool layers) const {
     if (image.image.empty()) return invalidInput("no image is open");
+    if (Status s = doc.prepareBackend(); !s) return s.error();
     const auto start = std::chrono::steady_clock::now();
     // Each job's image and passes, and the curve and exposure that show them: the sprite and
     // lens jobs return linear light (the view's curve is applied here, to the passes too); the

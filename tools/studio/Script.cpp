@@ -46,6 +46,13 @@ constexpr ActionSpec kActions[] = {
      {"path"},
      "writes the drive's coverage per frame as CSV (frame, time_s, coverage_raw, "
      "coverage_smoothed, in_frame: `flarekit demo`'s columns)"},
+    {"diagnostics",
+     {"dir"},
+     "writes the drive's shown frame's diagnostic views into `dir` (made when missing): the "
+     "GPU method's working textures as method-NAME.png (texture-mask: the sun map and intensity "
+     "map; burnout: the mask, the 14x14 grid, the chain), and the same moment through the "
+     "emulated PSP GE as psp-STEP.png (as `flarekit psp burnout --dump` names them), "
+     "psp-occluders.png and psp.txt (the sun's pixel, coverage byte and CLUT alpha)"},
     {"frame",
      {"frame"},
      "shows frame `frame` of the open sequence (a frame number on disk; the light moves to "
@@ -68,7 +75,9 @@ constexpr ActionSpec kActions[] = {
      "preset without them"},
     {"add_ghost", {}, "post-process: adds a copy of the last ghost"},
     {"remove_ghost", {"ghost"}, "post-process: removes a ghost"},
-    {"view", {"key", "value"}, "sets a view setting: exposure, tonemap, flux_mode, intensity"},
+    {"view",
+     {"key", "value"},
+     "sets a view setting: exposure, tonemap, flux_mode, intensity, backend"},
     {"select", {"element"}, "selects an element for the parameter panel"},
     {"hide", {"element"}, "switches an element off (its `visible` becomes false)"},
     {"show", {"element"}, "switches an element on"},
@@ -206,8 +215,8 @@ Result<int> actionFrames(const Action& a, int fallback) {
 
 bool isWindowAction(const std::string& kind) {
     return kind == "drag" || kind == "screenshot" || kind == "choose" || kind == "answer" ||
-           kind == "drive" || kind == "coverage" || kind == "scene" || kind == "wait" ||
-           kind == "split" || kind == "panel" || kind == "pick";
+           kind == "drive" || kind == "coverage" || kind == "diagnostics" || kind == "scene" ||
+           kind == "wait" || kind == "split" || kind == "panel" || kind == "pick";
 }
 
 Status runDocumentAction(Document& doc, const Action& a) {

@@ -33,6 +33,9 @@ struct FramePipelineSettings {
     bool toneMap = true;  //!< ACES fit x the (adapted) exposure; false: linear HDR out
     //! `query` only: the flare's draws are conditional on the sun's occlusion query.
     bool conditionalRender = false;
+    //! Read the GPU method's working textures back after each frame (PipelineFrame::
+    //! methodViews): a wait per frame, for diagnostic panels.
+    bool methodViews = false;
 };
 
 struct PipelineFrame {
@@ -44,6 +47,9 @@ struct PipelineFrame {
     Point sunPixel;
     float flareIntensity = 0;  //!< the flare's weight x the sun's brightness scale
     double renderMs = 0, visibilityMs = 0, flareMs = 0;
+    //! With FramePipelineSettings::methodViews: the method's views of this frame (a late
+    //! method's, pbo or query: none).
+    std::vector<MethodView> methodViews;
 };
 
 class FramePipeline {

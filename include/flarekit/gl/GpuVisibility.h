@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flarekit/Image.h"
 #include "flarekit/Result.h"
 #include "flarekit/Scene.h"
 #include "flarekit/Visibility.h"
@@ -25,6 +26,13 @@ struct GpuVisibilityOptions {
     //! "bilinear" (16x16, 64 points each averaging a 2x2 block through bilinear filtering).
     std::string textureMaskVariant = "circle";
     int pboRing = 3;  //!< pbo: buffers in flight; results arrive up to ring - 1 frames late
+};
+
+//! One of a method's working textures, read back: the seeds' diagnostic views (GPG2 texture
+//! masking's sun map and intensity map, the Burnout chain's mask, 14x14 grid and downsamples).
+struct MethodView {
+    std::string name;  //!< what it is and its size, e.g. "sun map 16x16"
+    Image image;       //!< its texels top row first, RGBA as the shaders see them (unorm in [0, 1])
 };
 
 class GpuVisibility {
@@ -48,6 +56,10 @@ class GpuVisibility {
     //! glBeginConditionalRender (`query` only; 0 for the other methods): drawing gated by it
     //! is skipped by the GPU when the sun was hidden, with no CPU involvement.
     virtual unsigned conditionalRenderQuery() const { return 0; }
+    //! The working textures of the newest measure() (empty for a method that keeps none, or
+    //! when that measure() drew none: a sun out of frame or culled). Reading them waits for the
+    //! GPU: for diagnostic panels and tests, never a frame loop.
+    virtual std::vector<MethodView> views() const { return {}; }
 };
 
 //! One still frame measured to completion: draws `view` and measures it, again and again until

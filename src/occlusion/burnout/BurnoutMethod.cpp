@@ -87,6 +87,7 @@ class BurnoutMethod final : public GpuMethod {
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
         const SunDiscView v = sunDiscView(view);
+        m_drewChain = false;
         if (v.empty() || !v.bounded) {
             publish(0.0);
             return Ok{};
@@ -154,7 +155,22 @@ class BurnoutMethod final : public GpuMethod {
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         markPublished();
+        m_drewChain = true;
         return gl::checkError("burnout: chain");
+    }
+    //! The mask at sub-cell resolution, the 14x14 grid and each level of the chain.
+    std::vector<MethodView> views() const override {
+        if (!m_drewChain) return {};
+        const int maskSide = kGrid * kSubCells;
+        const std::string mask = std::to_string(maskSide);
+        std::vector<MethodView> out = {
+            readMethodView(m_mask.get(), maskSide, maskSide, "mask " + mask + "x" + mask)};
+        for (const Level& level : m_levels) {
+            const std::string n = std::to_string(level.size);
+            out.push_back(readMethodView(level.texture.get(), level.size, level.size,
+                                         (level.size == kGrid ? "grid " : "chain ") + n + "x" + n));
+        }
+        return out;
     }
 
   private:
@@ -196,6 +212,7 @@ class BurnoutMethod final : public GpuMethod {
     gl::Framebuffer m_maskTarget, m_coverageTarget;
     GLuint m_coverageAttached = 0;
     std::vector<Level> m_levels;
+    bool m_drewChain = false;  //!< the last measure() drew the chain (the sun was in frame)
 };
 }  // namespace
 

@@ -150,4 +150,11 @@ Status SunMapSum::sumInto(GLuint coverage) {
     return gl::checkError("texture mask: sum and resolve");
 }
 
+std::vector<MethodView> SunMapSum::views() const {
+    const int n = m_layout.size;
+    const std::string side = std::to_string(n);
+    return {readMethodView(m_map.get(), n, n, "sun map " + side + "x" + side),
+            readMethodView(m_intensity.get(), 1, 1, "intensity map 1x1")};
+}
+
 }  // namespace flarekit::occlusion

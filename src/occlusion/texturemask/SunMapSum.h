@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "flarekit/gl/GpuVisibility.h"
 #include "gl/GlObjects.h"
 #include "occlusion/SunDisc.h"
 
@@ -47,6 +48,8 @@ class SunMapSum {
     //! Resolves a multisampled map, sums the sun map and writes the coverage into `coverage` (1x1
     //! R32F texture).
     Status sumInto(GLuint coverage);
+    //! The sun map (resolved when multisampled) and the intensity map of the last sumInto().
+    std::vector<MethodView> views() const;
 
   private:
     SunMapLayout m_layout;

@@ -41,6 +41,7 @@ class TextureMaskMethod final : public GpuMethod {
     int latencyFrames() const override { return 0; }
 
     Status measure(const Scene& view, const SceneRenderer& renderer) override {
+        m_drewMaps = false;
         if (!cull(view)) {
             publish(0.0);  // early out: one object hides the whole sun
             return Ok{};
@@ -73,7 +74,11 @@ class TextureMaskMethod final : public GpuMethod {
         }
         if (Status s = sum.sumInto(coverageName()); !s) return s;
         markPublished();
+        m_drewMaps = true;
         return Ok{};
+    }
+    std::vector<MethodView> views() const override {
+        return m_drewMaps ? m_sum->views() : std::vector<MethodView>{};
     }
 
   private:
@@ -128,6 +133,7 @@ class TextureMaskMethod final : public GpuMethod {
 
     std::string m_variant;
     std::optional<SunMapSum> m_sum;
+    bool m_drewMaps = false;  //!< the last measure() drew the maps (no early out)
     gl::Program m_disc, m_black;
     gl::VertexArray m_emptyVao;
     std::vector<MeshObjectRange> m_ranges;

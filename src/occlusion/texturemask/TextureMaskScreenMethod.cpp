@@ -56,6 +56,7 @@ class TextureMaskScreenMethod final : public GpuMethod {
         markPublished();
         return Ok{};
     }
+    std::vector<MethodView> views() const override { return m_sum.views(); }
 
   private:
     TextureMaskScreenMethod(SunMapSum sum, FrameDepthProgram fromDepth)
