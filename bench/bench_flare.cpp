@@ -136,6 +136,21 @@ BENCHMARK(BM_FindLightsSample)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// --light X,Y on the sample photograph: the placed point's region, and the finder's pass that
+// tells whether that region is one part of a larger light (a strip's spot, a window's pane).
+void BM_MeasureLightAtSample(benchmark::State& state) {
+    auto loaded = readImage(std::string(FLAREKIT_SAMPLES) + "/sunset.png");
+    if (!loaded) {
+        state.SkipWithError(loaded.error().message.c_str());
+        return;
+    }
+    const Image& img = loaded->image;
+    const Point sun = findLights(img).lights.at(0).position;
+    for (auto _ : state) benchmark::DoNotOptimize(measureLightAt(img, sun).flux);
+    megapixels(state, double(img.pixelCount()));
+}
+BENCHMARK(BM_MeasureLightAtSample)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The flare alone (no light search), per preset, 1080p, 2 threads: cost follows coverage.
 void BM_RenderFlare(benchmark::State& state, const char* name) {
     ThreadLimit limit(2);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The studio's preview update on the CPU, as the window makes it while the light is dragged
+// The studio's preview update (on the CPU, and with the view's backend gl through flarekit's GL
+// backend, where it applies), as the window makes it while the light is dragged
 // (the view: the image with its flare at 1280x720, the sample photograph at its own size) and
 // when it stops (the component passes, each 320 pixels wide), for each shipped sprite preset;
 // each post-process preset's view, and a lens's view while dragged and when the drag stops.
@@ -18,8 +19,9 @@ using namespace flarekit::studio;
 namespace {
 
 void previewUpdate(benchmark::State& state, FlareKind kind, const std::string& preset, bool layers,
-                   bool dragging) {
+                   bool dragging, ViewBackend backend) {
     Document doc;
+    doc.view.backend = backend;
     if (Status s = doc.openImage(FLAREKIT_SAMPLES "/sunset.png"); !s)
         return state.SkipWithError(s.error().message.c_str());
     doc.kind = kind;
@@ -45,8 +47,9 @@ void previewUpdate(benchmark::State& state, FlareKind kind, const std::string& p
 }
 
 void add(const std::string& name, FlareKind kind, const std::string& preset, bool layers,
-         bool dragging) {
-    benchmark::RegisterBenchmark(name.c_str(), previewUpdate, kind, preset, layers, dragging)
+         bool dragging, ViewBackend backend = ViewBackend::Cpu) {
+    benchmark::RegisterBenchmark(name.c_str(), previewUpdate, kind, preset, layers, dragging,
+                                 backend)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
 }
@@ -57,13 +60,19 @@ void registerAll() {
         add("BM_StudioRefine/" + name, FlareKind::Sprite, name, true, false);
     }
     // A post-process flare does not follow the light: an update is an edit of the preset.
-    for (const std::string& name : shippedPostFxPresetNames())
+    for (const std::string& name : shippedPostFxPresetNames()) {
         add("BM_StudioPostFx/" + name, FlareKind::PostFx, name, false, false);
+        add("BM_StudioPostFxGl/" + name, FlareKind::PostFx, name, false, false, ViewBackend::Gl);
+    }
     // A lens while the light is dragged (its 8 brightest ghosts, coarse meshes) and when it
     // stops (every ghost of the render settings, 66 by default).
     for (const char* lens : {"angenieux-double-gauss", "canon-zoom-70-210"}) {
         add(std::string("BM_StudioLensDrag/") + lens, FlareKind::Lens, lens, false, true);
         add(std::string("BM_StudioLensFull/") + lens, FlareKind::Lens, lens, false, false);
+        add(std::string("BM_StudioLensDragGl/") + lens, FlareKind::Lens, lens, false, true,
+            ViewBackend::Gl);
+        add(std::string("BM_StudioLensFullGl/") + lens, FlareKind::Lens, lens, false, false,
+            ViewBackend::Gl);
     }
 }
 

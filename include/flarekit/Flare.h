@@ -244,8 +244,11 @@ inline float whiteShare(const LightCandidate& c) {
 //! (the pixels within its reach that are in the frame: a sun straddling the edge) and its
 //! flareScale faded out smoothly over that reach (1 at the edge, 0 one reach out), so a light
 //! walking across the edge never jumps; beyond the reach: flux 0 (`--flux-mode fixed` gives an
-//! off-frame light the preset's own look). The candidate's `position` is its measured centroid;
-//! it is not judged (`accepted` is true: the user placed it).
+//! off-frame light the preset's own look). A region that is one of several of one physical
+//! light (a strip's spots, a window's panes: the finder's merge rule) takes the flux of the
+//! light findLights makes of them all, so a light placed on it is the light found there. The
+//! candidate's `position` is its measured centroid; it is not judged (`accepted` is true: the
+//! user placed it).
 LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOptions& options = {});
 
 //! Most lights an 8/16-bit frame's highlights are expanded around (kLightSearchParams' largest

@@ -78,6 +78,16 @@ constexpr float kMinFlareScale = 0.02f, kMinHdrFlareScale = 0.01f;
 //! largest channel or more): a bright sky's crest is a few dozen pixels of a broad region.
 constexpr std::size_t kFlatTopPixels = 9;
 constexpr float kFlatTopTolerance = 0.015f, kMinFlatTopShare = 0.15f, kMinClippedContrast = 50.f;
+//! The frame's own clip: an HDR merge stores everything past its range at one value, which is
+//! then the frame's brightest, so a plateau at the frame's peak is that clip whatever the
+//! scene's key. It needs only kMinFrameClipContrast times the median: a sun clipped at 22 in a
+//! daylight frame whose median is 0.5 (blender-data's city with its range cut at 22) stands 44x
+//! over it, under the 50x asked of a plateau below the frame's peak. A clipped window or wall
+//! is a plateau at the peak too, but it ends at a hard edge where a sun's glare goes on
+//! falling around its clip: the plateau must have an aureole of kMinClipAureoleRings rings
+//! (city's clipped sun: 8; a flat bright window: none).
+constexpr float kMinFrameClipContrast = 20.f;
+constexpr int kMinClipAureoleRings = 4;
 
 std::string format(const char* fmt, double a, double b = 0) {
     char buf[160];
@@ -233,13 +243,20 @@ LightCandidate growRegion(const LuminanceMap& m, const Image* image, std::size_t
 //! plateau (as a clipped 8-bit pixel stands for clippedGain x white). A plateau at a light's
 //! contrast (a rendered emitter of constant radiance) is recorded whole, and one under a clip's
 //! (an even sky a light was placed on) is no clip. Found and placed lights alike.
+//! The contrast over the frame's median a capture-clipped plateau needs.
+float clipContrast(const LightCandidate& c, const LuminanceMap& m) {
+    const bool framesClip = c.peak >= (1.f - kFlatTopTolerance) * m.lum[m.peakIndex] &&
+                            c.aureoleRings >= kMinClipAureoleRings;
+    return framesClip ? kMinFrameClipContrast : kMinClippedContrast;
+}
+
 void addSceneReferredFlux(LightCandidate& c, const LuminanceMap& m, float frameKey,
                           float clippedGain) {
     const Aureole a = measureAureole(m, c.position, c.radius);
     c.aureoleFlux = a.flux, c.aureoleRings = a.rings;
     c.flux += a.flux;
     if (c.flatTopPixels >= kFlatTopPixels && c.peak < kMinKeyContrast * frameKey &&
-        c.peak >= kMinClippedContrast * frameKey)
+        c.peak >= clipContrast(c, m) * frameKey)
         c.flux += double(c.flatTopPixels) * double(clippedGain - 1.f) * double(c.peak);
 }
 
@@ -272,8 +289,9 @@ void judge(LightCandidate& c, const LightSearchOptions& o, const LuminanceMap& m
     if (displayReferred && !c.clipped)
         return reject("not clipped (a light in 8/16-bit data reaches white in all three channels)");
     passed();
-    const float keyContrast =
-        c.flatTopPixels >= kFlatTopPixels || isHazySun(c) ? kMinClippedContrast : kMinKeyContrast;
+    const float keyContrast = c.flatTopPixels >= kFlatTopPixels ? clipContrast(c, m)
+                              : isHazySun(c)                    ? kMinClippedContrast
+                                                                : kMinKeyContrast;
     if (!displayReferred && c.peak < keyContrast * frameKey)
         return reject(format("only %.1fx the frame's median luminance (a light is %.0fx)",
                              c.peak / frameKey, keyContrast));
@@ -358,6 +376,12 @@ void rejectGlareFragments(std::vector<LightCandidate>& candidates, float height)
 //! one- or two-pixel spots a thin strip breaks into.
 constexpr float kMergeRadii = 2.f, kMergeSlackPx = 4.f;
 
+//! Whether two regions are of one physical light by that rule.
+bool ofOneLight(const LightCandidate& a, const LightCandidate& b) {
+    const float reach = kMergeRadii * (a.radius + b.radius) + kMergeSlackPx;
+    return std::hypot(a.position.x - b.position.x, a.position.y - b.position.y) <= reach;
+}
+
 //! Candidate `b` folded into `a`: flux and pixels summed, the flux-weighted centre, the larger
 //! peak, the radius of the summed area, a verdict naming how many regions it joins.
 void mergeInto(LightCandidate& a, const LightCandidate& b, int height) {
@@ -391,10 +415,7 @@ void mergeNearbyLights(std::vector<LightCandidate>& candidates, int height) {
     };
     for (std::size_t i = 0; i < lights.size(); ++i)
         for (std::size_t j = i + 1; j < lights.size(); ++j) {
-            const LightCandidate &a = candidates[lights[i]], &b = candidates[lights[j]];
-            const float reach = kMergeRadii * (a.radius + b.radius) + kMergeSlackPx;
-            if (std::hypot(a.position.x - b.position.x, a.position.y - b.position.y) > reach)
-                continue;
+            if (!ofOneLight(candidates[lights[i]], candidates[lights[j]])) continue;
             const std::size_t ri = root(i), rj = root(j);
             parent[std::max(ri, rj)] = std::min(ri, rj);  // the root stays the brightest
         }
@@ -575,9 +596,22 @@ LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOpt
                    members, std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
     if (!displayReferred)
         addSceneReferredFlux(measured, m, medianLuminance(m), options.clippedGain);
-    measured.flareScale = flareScaleForFlux(measured.flux, m.h) * edgeFade;
     measured.accepted = true;
     measured.verdict = outside > 0 ? "placed outside the frame, measured at its edge" : "placed";
+    // One flare per physical light, placed or found: a point on one spot of a strip light or
+    // one pane of a window takes the flux of the light the finder makes of all of them (the
+    // accepted light this region would merge with, by the merge rule), as `--light auto` draws
+    // it. The flare stays where it was placed.
+    LightSearchOptions all = options;
+    all.maxLights = std::numeric_limits<int>::max();
+    for (const LightCandidate& light : findLights(image, all).lights)
+        if (light.flux > measured.flux && ofOneLight(light, measured)) {
+            measured.flux = light.flux;
+            measured.verdict +=
+                format(", on the light at %.0f,%.0f", light.position.x, light.position.y) + " (" +
+                light.verdict + ")";
+        }
+    measured.flareScale = flareScaleForFlux(measured.flux, m.h) * edgeFade;
     return measured;
 }
 

@@ -44,6 +44,27 @@ TEST(LightFinder, ASunClippedAtCaptureIsALightWithItsPlateauAtTheGain) {
     EXPECT_TRUE(peaked.lights.empty()) << peaked.lights.front().verdict;
 }
 
+// A daylight frame whose range was cut at 22 (median 0.5: the plateau 44x over it, under the
+// 50x a plateau needs): the plateau at the frame's peak is the capture's own clip, so the sun
+// is a light. The same plateau under a brighter pixel elsewhere (a glint of 2,000) is no longer
+// the frame's clip and needs its 50x.
+TEST(LightFinder, APlateauAtTheFramesPeakIsItsClipInABrightFrame) {
+    Image img = background(640, 360, 0.5f);
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const float d = std::hypot(float(x) + 0.5f - 400.f, float(y) + 0.5f - 120.f);
+            const float v = d < 6.f ? 22.f : 0.5f + 12.f / (1.f + 0.05f * d * d);
+            img.at(x, y) = {v, v, v, 1.f};
+        }
+    const LightSearch search = findLights(img);
+    ASSERT_EQ(search.lights.size(), 1u) << search.whyNone;
+    EXPECT_NEAR(search.lights[0].position.x, 400.f, 1.f);
+    EXPECT_GE(search.lights[0].flatTopPixels, 100u);  // the disc of radius 6: 113 pixels
+    img.at(100, 300) = {2000.f, 2000.f, 2000.f, 1.f};
+    for (const LightCandidate& c : findLights(img).lights)
+        EXPECT_GT(std::fabs(c.position.x - 400.f), 10.f) << c.verdict;
+}
+
 // A bright sky's smooth crest (a broad glow, no plateau) is not taken for a clip: no plateau
 // pixels, and at 20x the median no light.
 TEST(LightFinder, ABrightSkysCrestIsNoPlateau) {

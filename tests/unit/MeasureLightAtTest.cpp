@@ -34,6 +34,48 @@ TEST(MeasureLightAt, APlacedLightHasTheFluxTheFinderMeasuresThere) {
     }
 }
 
+// One flare per physical light, placed or found: a point on any spot of a strip light or on
+// either pane of a window has the flux of the one light the finder makes of them; a lamp 60 px
+// from another keeps its own.
+TEST(MeasureLightAt, APlacedLightOnAPartOfOneLightHasThatWholeLightsFlux) {
+    Image img = background(640, 360, 0.01f);
+    const float spots[] = {200.f, 206.f, 212.f, 218.f};
+    const float values[] = {3000.f, 2600.f, 2800.f, 2400.f};
+    for (int i = 0; i < 4; ++i) blob(img, spots[i], 100.f, 1.5f, values[i]);
+    blob(img, 420.f, 250.f, 5.f, 1500.f);  // a window's two panes
+    blob(img, 436.f, 250.f, 5.f, 1200.f);
+    blob(img, 560.f, 80.f, 2.f, 2000.f);  // two lamps 60 px apart
+    blob(img, 620.f, 80.f, 2.f, 2000.f);
+    LightSearchOptions options;
+    options.maxLights = 16;
+    const LightSearch search = findLights(img, options);
+    ASSERT_EQ(search.lights.size(), 4u) << search.whyNone;
+    const auto foundNear = [&](float y) {
+        for (const LightCandidate& l : search.lights)
+            if (std::fabs(l.position.y - y) < 2.f) return l;
+        ADD_FAILURE() << "no light at y " << y;
+        return LightCandidate{};
+    };
+    const LightCandidate strip = foundNear(100.f), window = foundNear(250.f);
+    for (const float x : spots) {
+        const LightCandidate placed = measureLightAt(img, {x, 100.f});
+        EXPECT_EQ(placed.flux, strip.flux) << x;
+        EXPECT_EQ(placed.flareScale, strip.flareScale) << x;
+        EXPECT_NE(placed.verdict.find("on the light at"), std::string::npos) << placed.verdict;
+    }
+    for (const float x : {420.f, 436.f})
+        EXPECT_EQ(measureLightAt(img, {x, 250.f}).flux, window.flux) << x;
+    // A lamp is its own light: the same flux as the finder's lamp there, not the pair's sum.
+    double lampFlux = 0;
+    for (const LightCandidate& l : search.lights)
+        if (std::fabs(l.position.x - 560.f) < 2.f) lampFlux = l.flux;
+    ASSERT_GT(lampFlux, 0);
+    EXPECT_EQ(measureLightAt(img, {560.f, 80.f}).flux, lampFlux);
+    // The part measured alone is less than the light: the test would see a placed light that
+    // measured only its own spot.
+    EXPECT_LT(discFlux(img, 200.f, 100.f, 2.f), 0.5 * strip.flux);
+}
+
 // In HDR data the finder counts a sun's aureole and a capture clip's plateau at the gain; a
 // light placed on the same sun counts them too (before, a placed hazy or clipped sun had only
 // its core: 59% and less of the found flux).
