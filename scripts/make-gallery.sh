@@ -46,6 +46,18 @@ oiiotool "$crops/interior.exr" --colorconvert linear sRGB -d uint8 -o "$out/inte
 for p in anamorphic killzone2 modern photo subtle; do
     "$build/flarekit" postfx "$crops/interior.exr" -o "$out/interior-postfx-$p.jpg" --preset "$p"
 done
+# A studio with a fluorescent strip light and globe lamps: each light one flare.
+oiiotool "$world/studio.exr" --cut 640x360+384+60 --origin +0+0 --fullpixels -d half \
+    -o "$crops/studio.exr"
+oiiotool "$crops/studio.exr" --colorconvert linear sRGB -d uint8 -o "$out/studio-input.jpg"
+"$build/flarekit" apply "$crops/studio.exr" -o "$out/studio-apply.jpg" --max-lights 4
+"$build/flarekit" postfx "$crops/studio.exr" -o "$out/studio-postfx.jpg"
+# A sunlit yard seen from a dark arcade (no sun in view): the whole frame, postfx's defaults
+# and killzone2, with the bright yard's bloom and ghosts capped (area_reference).
+oiiotool "$world/courtyard.exr" --colorconvert linear sRGB -d uint8 -o "$out/courtyard-input.jpg"
+for p in photo killzone2; do
+    "$build/flarekit" postfx "$world/courtyard.exr" -o "$out/courtyard-postfx-$p.jpg" --preset "$p"
+done
 # An 8-bit photograph with no light in it (MATE's GreenMeadow, from mate-backgrounds when
 # installed): apply and postfx --expand-highlights leave it as it is.
 meadow=/usr/share/backgrounds/mate/nature/GreenMeadow.jpg

@@ -258,7 +258,8 @@ inline constexpr int kMaxExpandedLights = 64;
 //! `--expand-highlights` on the lights of an 8/16-bit frame only: expandHighlights' inverse
 //! curve (Tonemap.h), weighed by each pixel's nearness to a light findLights accepts (1 within
 //! twice the light's radius plus 4 px, the reach it suppresses as the light's glare, easing to 0
-//! at 1.5 times that). A bright sky, snow or a white wall, which are no light, stay as they are,
+//! at 1.5 times that; the radius taken at most 5% of the frame height, a sun's disc through a
+//! 250 mm lens). A bright sky, snow or a white wall, which are no light, stay as they are,
 //! so the chain flares the lights and not every plateau near white. Returns the lights found.
 LightSearch expandHighlightsAtLights(Image& image, float gain, LightSearchOptions options = {});
 

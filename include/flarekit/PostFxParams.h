@@ -38,6 +38,10 @@ struct BrightParams {
     //! Threshold, knee, ceiling and the ghost, halo and streak thresholds are multiples of the
     //! frame's white (frameWhite) instead of absolute linear values.
     bool exposureRelative = false;
+    //! A light is small: the most light, as the bright pass's mean over the frame in units of
+    //! the frame's white (B), that bloom and the lens effects follow; a frame whose B is larger
+    //! has them scaled by this / B. 0: off. With exposure_relative only.
+    float areaReference = 0.f;
     //! Set by a caller that knows the frame's white better than its pixels do (display-referred
     //! input after --expand-highlights: 1); 0 measures it. Not read from JSON.
     float knownWhite = 0.f;
@@ -55,6 +59,13 @@ inline constexpr Param<BrightParams> kBrightParams[] = {
         "exposure_relative", 0, 1, "",
         "threshold, knee, ceiling and the ghost, halo and streak thresholds are multiples of "
         "the frame's white (its metered luminance / 0.18 for HDR, 1 for 8/16-bit data)"),
+    param<&BrightParams::areaReference>(
+        "area_reference", 0, kPostFxBig, "x white",
+        "with exposure_relative: the most light bloom and ghosts, halo and streaks follow, as B, "
+        "the bright pass's mean over the frame in units of its white (blender-data's suns "
+        "0.0004-0.03, a sunlit yard filling a fifth of the frame 0.46); a frame over it has "
+        "them scaled by this / B, so lights keep their flare and wide bright areas do not wash "
+        "the frame; 0 turns it off"),
 };
 
 //! Downsample (13-tap dual filter) and progressive tent upsample into the 1/4-res bloom buffer.

@@ -17,6 +17,15 @@ namespace {
 //! The reach of a light's expansion: full within twice its radius plus 4 px (the disc the
 //! finder keeps out of the search as the light's own glare), easing to 0 at kFadeReach times it.
 constexpr float kReachRadii = 2.f, kReachSlackPx = 4.f, kFadeReach = 1.5f;
+//! The largest core a light is expanded over, as a share of the frame height: the sun's 0.53
+//! degree disc is 1% of the height in radius through a 50 mm lens on full frame, 5% through
+//! 250 mm. A photo's clipped region around a low sun is often larger (its glare clips too: 117
+//! px of a 512-high sunset); expanded whole at the gain it carried dozens of suns' energy, and
+//! any bloom pushed the near-white sky around it to white (3.4-6.3% of blender-data's sunset
+//! as an 8-bit photo newly clipped; 0.4-1.1% with this bound, and 8% lets 2.4% through). The
+//! expansion is centred on the light's centroid over at most this radius; the rest of the
+//! clipped glare stays as it is.
+constexpr float kMaxExpandedCoreOfHeight = 0.05f;
 
 }  // namespace
 
@@ -28,7 +37,8 @@ LightSearch expandHighlightsAtLights(Image& image, float gain, LightSearchOption
     const int w = image.width(), h = image.height();
     std::vector<float> nearness(std::size_t(w) * std::size_t(h), 0.f);
     for (const LightCandidate& l : search.lights) {
-        const float reach = kReachRadii * l.radius + kReachSlackPx, outer = kFadeReach * reach;
+        const float core = std::min(l.radius, kMaxExpandedCoreOfHeight * float(h));
+        const float reach = kReachRadii * core + kReachSlackPx, outer = kFadeReach * reach;
         const int x0 = std::max(0, int(std::floor(l.position.x - outer))),
                   x1 = std::min(w - 1, int(std::ceil(l.position.x + outer))),
                   y0 = std::max(0, int(std::floor(l.position.y - outer))),

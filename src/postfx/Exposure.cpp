@@ -11,6 +11,7 @@
 #include "flarekit/Color.h"
 #include "flarekit/Flare.h"
 #include "flarekit/PostFxParams.h"
+#include "postfx/brightpass/BrightPass.h"
 
 namespace flarekit {
 
@@ -92,6 +93,26 @@ void placeStarCentres(StarburstParams& star, const Image& input) {
 
 }  // namespace
 
+//! The bright pass's mean over the frame, from the metering's sample of pixels, each through
+//! the pass's own curve (highlight compression, soft threshold) at the fitted thresholds.
+float brightPassMean(const BrightParams& bright, const Image& input) {
+    const std::size_t n = input.pixelCount();
+    if (n == 0) return 0.f;
+    const std::size_t stride = luminanceSampleStride(n);
+    double sum = 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n; i += stride, ++count) {
+        const float* p = input.data() + 4 * i;
+        const auto light = [](float v) { return std::isfinite(v) ? std::max(v, 0.f) : 0.f; };
+        const postfx::F4 c = postfx::softThreshold(
+            postfx::compressHighlights(postfx::F4{light(p[0]), light(p[1]), light(p[2]), 1.f},
+                                       bright.ceiling),
+            bright.threshold, bright.knee);
+        sum += std::max({c[0], c[1], c[2]});
+    }
+    return float(sum / double(count));
+}
+
 PostFxParams fitToFrame(const PostFxParams& params, const Image& input) {
     PostFxParams p = params;
     if (p.starburst.intensity > 0.f && p.starburst.centre == StarCentre::Lights && !input.empty())
@@ -104,6 +125,16 @@ PostFxParams fitToFrame(const PostFxParams& params, const Image& input) {
     for (GhostParams& g : p.ghosts) g.threshold *= white;
     p.halo.threshold *= white;
     p.streaks.threshold *= white;
+    if (p.bright.areaReference > 0.f) {
+        // Wide bright areas (a sunlit yard seen from an arcade, a sky over a third of the
+        // frame) pass the threshold as a sun does, over thousands of times its pixels: their
+        // bloom and ghosts would wash the whole frame. What the lens effects follow is capped
+        // at a bright pass whose mean is area_reference.
+        const float mean = brightPassMean(p.bright, input) / white;
+        const float dim = mean > p.bright.areaReference ? p.bright.areaReference / mean : 1.f;
+        p.bloom.intensity *= dim;
+        p.flareIntensity *= dim;
+    }
     return p;
 }
 
