@@ -54,4 +54,19 @@ inline void colouredBlob(Image& img, float cx, float cy, float radius, Rgba core
         }
 }
 
+//! One physical light found as several regions, and two that are not one: a strip light's
+//! four spots 6 px apart along y = 100 (x = kStripSpots), a window's two panes 16 px apart at
+//! (420, 250) and (436, 250), and two lamps 60 px apart at (560, 80) and (620, 80).
+inline constexpr float kStripSpots[] = {200.f, 206.f, 212.f, 218.f};
+inline Image stripWindowAndLamps() {
+    Image img = background(640, 360, 0.01f);
+    const float values[] = {3000.f, 2600.f, 2800.f, 2400.f};
+    for (int i = 0; i < 4; ++i) blob(img, kStripSpots[i], 100.f, 1.5f, values[i]);
+    blob(img, 420.f, 250.f, 5.f, 1500.f);
+    blob(img, 436.f, 250.f, 5.f, 1200.f);
+    blob(img, 560.f, 80.f, 2.f, 2000.f);
+    blob(img, 620.f, 80.f, 2.f, 2000.f);
+    return img;
+}
+
 }  // namespace flarekit::test

@@ -172,14 +172,8 @@ TEST(LightFinder, DisplayReferredIsJudgedOnTheBrightestChannelAndThePeakIsPlaced
 // peak) and a window found twice 16 px apart are one light each, with the summed flux at the
 // flux-weighted centre; two lamps 60 px apart stay two.
 TEST(LightFinder, SpotsOfOneStripOrWindowAreOneLightLampsApartAreTwo) {
-    Image img = background(640, 360, 0.01f);
-    const float spots[] = {200.f, 206.f, 212.f, 218.f};
-    const float values[] = {3000.f, 2600.f, 2800.f, 2400.f};
-    for (int i = 0; i < 4; ++i) blob(img, spots[i], 100.f, 1.5f, values[i]);
-    blob(img, 420.f, 250.f, 5.f, 1500.f);  // a window's two panes
-    blob(img, 436.f, 250.f, 5.f, 1200.f);
-    blob(img, 560.f, 80.f, 2.f, 2000.f);  // two lamps 60 px apart
-    blob(img, 620.f, 80.f, 2.f, 2000.f);
+    const Image img = stripWindowAndLamps();
+    const auto& spots = kStripSpots;
     LightSearchOptions options;
     options.maxLights = 16;
     const LightSearch search = findLights(img, options);

@@ -38,14 +38,7 @@ TEST(MeasureLightAt, APlacedLightHasTheFluxTheFinderMeasuresThere) {
 // either pane of a window has the flux of the one light the finder makes of them; a lamp 60 px
 // from another keeps its own.
 TEST(MeasureLightAt, APlacedLightOnAPartOfOneLightHasThatWholeLightsFlux) {
-    Image img = background(640, 360, 0.01f);
-    const float spots[] = {200.f, 206.f, 212.f, 218.f};
-    const float values[] = {3000.f, 2600.f, 2800.f, 2400.f};
-    for (int i = 0; i < 4; ++i) blob(img, spots[i], 100.f, 1.5f, values[i]);
-    blob(img, 420.f, 250.f, 5.f, 1500.f);  // a window's two panes
-    blob(img, 436.f, 250.f, 5.f, 1200.f);
-    blob(img, 560.f, 80.f, 2.f, 2000.f);  // two lamps 60 px apart
-    blob(img, 620.f, 80.f, 2.f, 2000.f);
+    const Image img = stripWindowAndLamps();
     LightSearchOptions options;
     options.maxLights = 16;
     const LightSearch search = findLights(img, options);
@@ -57,7 +50,7 @@ TEST(MeasureLightAt, APlacedLightOnAPartOfOneLightHasThatWholeLightsFlux) {
         return LightCandidate{};
     };
     const LightCandidate strip = foundNear(100.f), window = foundNear(250.f);
-    for (const float x : spots) {
+    for (const float x : kStripSpots) {
         const LightCandidate placed = measureLightAt(img, {x, 100.f});
         EXPECT_EQ(placed.flux, strip.flux) << x;
         EXPECT_EQ(placed.flareScale, strip.flareScale) << x;
