@@ -6,9 +6,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <functional>
-#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -16,7 +13,7 @@
 #include "core/LuminanceSample.h"
 #include "core/Parallel.h"
 #include "core/RadixSort.h"
-#include "core/Smoothstep.h"
+#include "flare/LightRegion.h"
 #include "flare/LightRings.h"
 #include "flare/LuminanceMap.h"
 #include "flarekit/Color.h"
@@ -36,10 +33,6 @@ constexpr std::size_t kMaxCandidates = 256;
 //! (blender-data's suns rendered to 8-bit: 67-84% at white). A sunlit white object is a broad
 //! plateau just under white with clipped spots in it (a dandelion's seeds: 10%).
 constexpr float kMinWhiteShare = 0.4f;
-//! In HDR data a light's flux is summed over the pixels above this fraction of its peak: the
-//! disc and its brightest fringe (a real sun falls from 31,000 to the sky's 50 within two
-//! pixels), not the sky around it.
-constexpr float kSourceFraction = 0.25f;
 //! Display-referred shape limits: a light is a compact blob (most of a sun's clipped glare lies
 //! within 1.25 radii of its centre, even cut by branches; a cloud or a lit edge spreads out), no
 //! smaller than 0.4% of the frame height in radius (a 4-pixel glint on a boat is not a light at
@@ -54,46 +47,11 @@ constexpr float kMaxFrameShare = 0.25f;
 constexpr float kMinHaloShare = 0.45f;
 //! Regions up to this share of the frame keep their surroundings out of later candidates.
 constexpr float kSuppressFrameShare = 0.04f;
-//! In scene-referred (HDR) data a light stands far above the frame's exposure: its peak is at
-//! least this many times the frame's median luminance. Real suns and lamps are 10^3-10^6 x
-//! (blender-data HDRIs: suns of 950-33,000 over medians of 0.1-0.25, 8,000-300,000 x; night
-//! lamps of 4,000 over 0.013); a bright sky through an arch, a sun's broken fringe or a lit
-//! cloud 5-250 x.
-constexpr float kMinKeyContrast = 1000.f;
 //! A light whose flare would be this faint (ghosts at 2% of the preset's look) is not flared.
 //! In HDR data a region that passed the contrast check (1000x the frame's median) is a light
 //! whatever its size, so the floor is halved there: blender-data's low, hazy sunset sun (2,090
 //! over two pixels, its aureole a few times the sky) measures 0.012.
 constexpr float kMinFlareScale = 0.02f, kMinHdrFlareScale = 0.01f;
-//! A sun clipped at capture: an HDR merge that ran out of range stores its disc as a plateau
-//! of one value in the channels it clipped. At least kFlatTopPixels pixels whose largest
-//! channel is within kFlatTopTolerance of the region's largest is such a clip (a real peak, or
-//! a bright sky's smooth crest, holds its top value in one or two pixels), and like a clipped 8-bit
-//! light it needs only kMinClippedContrast times the frame's median (a sun clipped at 22-676 in
-//! frames whose median is 0.1-0.3), while its flux counts each plateau pixel at clippedGain x the
-//! plateau, as the 8-bit path counts its clipped pixels at clippedGain x white (only below a
-//! light's contrast: above it a plateau is a rendered emitter, recorded whole).
-//! The tolerance is 1.5%: lossy EXR compression (DWAA/DWAB) jitters a clipped plateau by about
-//! 1%. A plateau is also most of the region's core (kMinFlatTopShare of its pixels at half its
-//! largest channel or more): a bright sky's crest is a few dozen pixels of a broad region.
-constexpr std::size_t kFlatTopPixels = 9;
-constexpr float kFlatTopTolerance = 0.015f, kMinFlatTopShare = 0.15f, kMinClippedContrast = 50.f;
-//! The frame's own clip: an HDR merge stores everything past its range at one value, which is
-//! then the frame's brightest, so a plateau at the frame's peak is that clip whatever the
-//! scene's key. It needs only kMinFrameClipContrast times the median: a sun clipped at 22 in a
-//! daylight frame whose median is 0.5 (blender-data's city with its range cut at 22) stands 44x
-//! over it, under the 50x asked of a plateau below the frame's peak. A clipped window or wall
-//! is a plateau at the peak too, but it ends at a hard edge where a sun's glare goes on
-//! falling around its clip: the plateau must have an aureole of kMinClipAureoleRings rings
-//! (city's clipped sun: 8; a flat bright window: none).
-constexpr float kMinFrameClipContrast = 20.f;
-constexpr int kMinClipAureoleRings = 4;
-
-std::string format(const char* fmt, double a, double b = 0) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, fmt, a, b);
-    return buf;
-}
 
 //! A float's bits: for non-negative values they order as the values do.
 std::uint32_t bitsOf(float l) {
@@ -132,132 +90,6 @@ SortKeys seedKeys(const LuminanceMap& m, float minLuminance) {
         }
     });
     return keys;
-}
-
-//! The frame's median luminance from a strided sample of at most ~64k pixels (exact enough for
-//! a contrast test, one cheap pass), floored at 1e-4 so a black frame still has a scale.
-float medianLuminance(const LuminanceMap& m) {
-    const std::size_t stride = luminanceSampleStride(m.lum.size());
-    std::vector<float> sample;
-    for (std::size_t i = 0; i < m.lum.size(); i += stride) sample.push_back(m.lum[i]);
-    return std::max(medianOf(sample), 1e-4f);
-}
-
-//! A pixel by its coordinates: the flood fill and the compactness count work in them, with no
-//! division per pixel to recover them from an index.
-struct PixelAt {
-    int x = 0, y = 0;
-};
-
-//! The luminance a light's region is grown down to from its `peak`: its core (nearPeak of the
-//! peak) in 8/16-bit data, where everything near the clip is the light; in HDR down to
-//! kSourceFraction of it, but never below the core when that is under 1 (a dim peak's fringe).
-float regionThreshold(float peak, float nearPeak, bool displayReferred) {
-    const float core = nearPeak * peak;
-    return displayReferred ? core : std::max(kSourceFraction * peak, std::min(core, 1.f));
-}
-
-//! Grows the region of `seed` over unseen pixels >= threshold (whose centres lie within
-//! `maxRadius` px of `capCentre`) and measures it.
-LightCandidate growRegion(const LuminanceMap& m, const Image* image, std::size_t seed,
-                          float threshold, float clippedGain, bool displayReferred,
-                          std::vector<std::uint8_t>& seen, std::vector<PixelAt>& stack,
-                          std::vector<PixelAt>& members,
-                          float maxRadius = std::numeric_limits<float>::infinity(),
-                          Point capCentre = {}) {
-    LightCandidate c;
-    c.peak = m.lum[seed];
-    double sum = 0, flux = 0, sx = 0, sy = 0;
-    std::size_t whitePixels = 0;
-    members.clear();
-    seen[seed] = 1;
-    const int seedX = int(seed % std::size_t(m.w)), seedY = int(seed / std::size_t(m.w));
-    const float cap2 = maxRadius * maxRadius;
-    stack.push_back({seedX, seedY});
-    while (!stack.empty()) {
-        const PixelAt p = stack.back();
-        stack.pop_back();
-        members.push_back(p);
-        const int x = p.x, y = p.y;
-        const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
-        const double l = m.lum[i];
-        sum += l;
-        flux += displayReferred && m.clipped(i) ? double(clippedGain) : l;
-        whitePixels += m.whiteCore(i) ? 1 : 0;
-        sx += l * (x + 0.5);
-        sy += l * (y + 0.5);
-        auto visit = [&](int nx, int ny) {
-            if (nx < 0 || ny < 0 || nx >= m.w || ny >= m.h) return;
-            const float dx = float(nx) + 0.5f - capCentre.x, dy = float(ny) + 0.5f - capCentre.y;
-            if (dx * dx + dy * dy > cap2) return;
-            const std::size_t j = std::size_t(ny) * std::size_t(m.w) + std::size_t(nx);
-            if (!seen[j] && m.lum[j] >= threshold) {
-                seen[j] = 1;
-                stack.push_back({nx, ny});
-            }
-        };
-        visit(x - 1, y);
-        visit(x + 1, y);
-        visit(x, y - 1);
-        visit(x, y + 1);
-    }
-    c.pixels = members.size();
-    if (!displayReferred && image) {
-        // A plateau at the top of the largest channel: the clip of an HDR merge (kFlatTopPixels).
-        const auto brightest = [&](PixelAt p) {
-            const Rgba& px = image->at(p.x, p.y);
-            return std::max({px.r, px.g, px.b});
-        };
-        float top = 0.f;
-        for (const PixelAt p : members) top = std::max(top, brightest(p));
-        std::size_t plateau = 0, core = 0;
-        for (const PixelAt p : members) {
-            plateau += brightest(p) >= top * (1.f - kFlatTopTolerance);
-            core += brightest(p) >= 0.5f * top;
-        }
-        if (float(plateau) >= kMinFlatTopShare * float(core)) c.flatTopPixels = plateau;
-    }
-    c.flux = flux;
-    c.meanLuminance = float(sum / double(c.pixels));
-    c.position = sum > 0 ? Point{float(sx / sum), float(sy / sum)}
-                         : Point{float(seed % std::size_t(m.w)) + 0.5f,
-                                 float(seed / std::size_t(m.w)) + 0.5f};
-    c.radius = std::sqrt(float(c.pixels) / std::numbers::pi_v<float>);
-    // Compactness: the share of its pixels within 1.25 radii of the centroid (1 for a disc or
-    // a square, low for a cloud, a branch or a lit edge however large its bounding circle).
-    const double reach2 = 1.5625 * double(c.radius) * double(c.radius) + 0.5;
-    std::size_t inside = 0;
-    for (const PixelAt p : members) {
-        const double dx = double(p.x) + 0.5 - c.position.x;
-        const double dy = double(p.y) + 0.5 - c.position.y;
-        inside += dx * dx + dy * dy <= reach2;
-    }
-    c.compactness = float(double(inside) / double(c.pixels));
-    c.clipped = displayReferred && m.whiteCore(seed);
-    c.whitePixels = whitePixels;
-    return c;
-}
-
-//! Scene-referred (HDR) data: a candidate's flux gains its aureole, and a plateau between a
-//! clip's contrast and a light's is a capture clip whose pixels stand for clippedGain x the
-//! plateau (as a clipped 8-bit pixel stands for clippedGain x white). A plateau at a light's
-//! contrast (a rendered emitter of constant radiance) is recorded whole, and one under a clip's
-//! (an even sky a light was placed on) is no clip. Found and placed lights alike.
-//! The contrast over the frame's median a capture-clipped plateau needs.
-float clipContrast(const LightCandidate& c, const LuminanceMap& m) {
-    const bool framesClip = c.peak >= (1.f - kFlatTopTolerance) * m.lum[m.peakIndex] &&
-                            c.aureoleRings >= kMinClipAureoleRings;
-    return framesClip ? kMinFrameClipContrast : kMinClippedContrast;
-}
-
-void addSceneReferredFlux(LightCandidate& c, const LuminanceMap& m, float frameKey,
-                          float clippedGain) {
-    const Aureole a = measureAureole(m, c.position, c.radius);
-    c.aureoleFlux = a.flux, c.aureoleRings = a.rings;
-    c.flux += a.flux;
-    if (c.flatTopPixels >= kFlatTopPixels && c.peak < kMinKeyContrast * frameKey &&
-        c.peak >= clipContrast(c, m) * frameKey)
-        c.flux += double(c.flatTopPixels) * double(clippedGain - 1.f) * double(c.peak);
 }
 
 //! A hazy sun: haze spreads most of its light into a wide aureole and leaves a dim core (a
@@ -368,20 +200,6 @@ void rejectGlareFragments(std::vector<LightCandidate>& candidates, float height)
     }
 }
 
-//! Two accepted candidates are one physical light when their centres lie within
-//! kMergeRadii x (r_a + r_b) + kMergeSlackPx of each other: each candidate already keeps the
-//! disc of twice its radius out of the search, so lights this close are the bright spots of
-//! one strip, tube or window (a ceiling strip found as 4 blobs 5-7 px apart, a church window
-//! twice 16 px apart), while lamps in a row stand many radii apart. The slack covers the
-//! one- or two-pixel spots a thin strip breaks into.
-constexpr float kMergeRadii = 2.f, kMergeSlackPx = 4.f;
-
-//! Whether two regions are of one physical light by that rule.
-bool ofOneLight(const LightCandidate& a, const LightCandidate& b) {
-    const float reach = kMergeRadii * (a.radius + b.radius) + kMergeSlackPx;
-    return std::hypot(a.position.x - b.position.x, a.position.y - b.position.y) <= reach;
-}
-
 //! Candidate `b` folded into `a`: flux and pixels summed, the flux-weighted centre, the larger
 //! peak, the radius of the summed area, a verdict naming how many regions it joins.
 void mergeInto(LightCandidate& a, const LightCandidate& b, int height) {
@@ -490,12 +308,17 @@ float flareScaleForFlux(double flux, int height) {
 }
 
 LightSearch findLights(const Image& image, const LightSearchOptions& options) {
-    LightSearch result;
     if (image.empty()) {
-        result.whyNone = "empty image";
-        return result;
+        LightSearch none;
+        none.whyNone = "empty image";
+        return none;
     }
-    const LuminanceMap m = luminanceMap(image);
+    return findLightsIn(luminanceMap(image), image, options);
+}
+
+LightSearch lightfinder::findLightsIn(const LuminanceMap& m, const Image& image,
+                                      const LightSearchOptions& options) {
+    LightSearch result;
     result.peak = m.lum[m.peakIndex];
     result.peakAt = {float(m.peakIndex % std::size_t(m.w)) + 0.5f,
                      float(m.peakIndex / std::size_t(m.w)) + 0.5f};
@@ -541,78 +364,6 @@ LightSearch findLights(const Image& image, const LightSearchOptions& options) {
                          format(" (peak %.4g), is ", double(best->peak)) + best->verdict;
     }
     return result;
-}
-
-//! How far from a hand-placed point the light's peak is looked for: 2% of the frame height
-//! (21 px at 1080p) covers a click beside a sun's core, not the next lamp along a street.
-constexpr float kPlacedReachOfHeight = 0.02f;
-constexpr float kMinPlacedReachPx = 4.f;
-//! A placed light's region stops 10% of the frame height from the point: the finder refuses
-//! regions larger than a light (a clipped sky, an even wall), a placed light has no verdict,
-//! so its region is bounded instead; a low sun's clipped glare in a phone photo, the largest
-//! light the finder takes, stays within it.
-constexpr float kPlacedRegionOfHeight = 0.1f;
-
-LightCandidate measureLightAt(const Image& image, Point at, const LightSearchOptions& options) {
-    LightCandidate c;
-    c.position = at;
-    c.accepted = true;
-    c.verdict = "placed";
-    if (image.empty()) return c;
-    // Outside the frame a light is measured as inside (the pixels of its reach that are in the
-    // frame: a sun straddling the edge), its flare then faded out over that reach, so a track
-    // crossing the edge changes by little between neighbouring positions, never from nothing
-    // to the preset's full strength.
-    const float reach = std::max(kMinPlacedReachPx, kPlacedReachOfHeight * float(image.height()));
-    const float outX = std::max({0.f, -at.x, at.x - float(image.width())}),
-                outY = std::max({0.f, -at.y, at.y - float(image.height())});
-    const float outside = std::hypot(outX, outY);
-    if (!(outside < reach)) {
-        c.verdict = "placed outside the frame beyond its measuring reach: no flux";
-        return c;
-    }
-    const float edgeFade = 1.f - smoothstep01(outside / reach);
-    const LuminanceMap m = luminanceMap(image);
-    const bool displayReferred = isDisplayReferred(m.brightestChannel);
-    std::size_t seed = 0;
-    float peak = -1.f;
-    const int x0 = std::max(0, int(std::floor(at.x - reach))),
-              x1 = std::min(m.w - 1, int(std::floor(at.x + reach))),
-              y0 = std::max(0, int(std::floor(at.y - reach))),
-              y1 = std::min(m.h - 1, int(std::floor(at.y + reach)));
-    for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-            const float dx = float(x) + 0.5f - at.x, dy = float(y) + 0.5f - at.y;
-            const std::size_t i = std::size_t(y) * std::size_t(m.w) + std::size_t(x);
-            if (dx * dx + dy * dy <= reach * reach && m.lum[i] > peak) peak = m.lum[i], seed = i;
-        }
-    if (!(peak > 0.f)) return c;
-    // The same region and flux as CandidateSearch::examine.
-    const float threshold = regionThreshold(peak, options.nearPeak, displayReferred);
-    std::vector<std::uint8_t> seen(m.lum.size(), 0);
-    std::vector<PixelAt> stack, members;
-    LightCandidate measured =
-        growRegion(m, &image, seed, threshold, options.clippedGain, displayReferred, seen, stack,
-                   members, std::max(reach, kPlacedRegionOfHeight * float(m.h)), at);
-    if (!displayReferred)
-        addSceneReferredFlux(measured, m, medianLuminance(m), options.clippedGain);
-    measured.accepted = true;
-    measured.verdict = outside > 0 ? "placed outside the frame, measured at its edge" : "placed";
-    // One flare per physical light, placed or found: a point on one spot of a strip light or
-    // one pane of a window takes the flux of the light the finder makes of all of them (the
-    // accepted light this region would merge with, by the merge rule), as `--light auto` draws
-    // it. The flare stays where it was placed.
-    LightSearchOptions all = options;
-    all.maxLights = std::numeric_limits<int>::max();
-    for (const LightCandidate& light : findLights(image, all).lights)
-        if (light.flux > measured.flux && ofOneLight(light, measured)) {
-            measured.flux = light.flux;
-            measured.verdict +=
-                format(", on the light at %.0f,%.0f", light.position.x, light.position.y) + " (" +
-                light.verdict + ")";
-        }
-    measured.flareScale = flareScaleForFlux(measured.flux, m.h) * edgeFade;
-    return measured;
 }
 
 }  // namespace flarekit
