@@ -157,5 +157,9 @@ std::string HeadlessGl::renderer() const {
 std::string HeadlessGl::version() const {
     return reinterpret_cast<const char*>(glGetString(GL_VERSION));
 }
+bool HeadlessGl::software() const {
+    const std::string name = renderer();
+    return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+}
 
 }  // namespace flarekit::gl

@@ -24,8 +24,7 @@ class GlBackend final : public PostFxBackend {
         if (!chain) return chain.error();
         const std::string renderer = (*context)->renderer();
         if (options.times) events.say("OpenGL: " + renderer);
-        const bool software = renderer.find("llvmpipe") != std::string::npos ||
-                              renderer.find("softpipe") != std::string::npos;
+        const bool software = (*context)->software();
         PostFxOptions glOptions = options;
         if (m_transfer == GlTransfer::Float || (m_transfer == GlTransfer::Auto && software))
             glOptions.halfInput = glOptions.halfReadback = false;

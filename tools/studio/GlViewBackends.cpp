@@ -48,9 +48,7 @@ void GlViewThread::loop(std::promise<Status>& started) {
             started.set_value(context.error());
             return;
         }
-        const std::string renderer = (*context)->renderer();
-        m_software = renderer.find("llvmpipe") != std::string::npos ||
-                     renderer.find("softpipe") != std::string::npos;
+        m_software = (*context)->software();
         started.set_value(Ok{});
         for (;;) {
             std::unique_lock lock(m_mutex);

@@ -22,6 +22,9 @@ class HeadlessGl {
 
     std::string renderer() const;  //!< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     std::string version() const;   //!< GL_VERSION
+    //! Mesa's llvmpipe or softpipe: the "GPU" is this CPU, so uploads in halves only add a
+    //! conversion each way.
+    bool software() const;
     const std::string& platform() const { return m_platform; }  //!< "device" or "surfaceless"
 
   private:
